@@ -1,0 +1,67 @@
+# glscene build.  `make` builds the tools into build/; `make test` runs the
+# test suite; `make demo` renders the demo.  Both install missing Debian
+# packages first (tools/deps.sh).
+CC      ?= cc
+CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
+WARN    := -Wall -Wextra -Werror
+OPT     ?= -O2 -g
+CFLAGS  += $(CSTD) $(WARN) $(OPT) -Iformat -Icompiler -Iruntime -Ibuild/gen
+LDLIBS  := -lzstd -lz -lm
+
+ifeq ($(SANITIZE),1)
+CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+LDFLAGS += -fsanitize=address,undefined
+endif
+
+B := build
+
+FORMAT_SRC   := $(wildcard format/*.c)
+COMPILER_SRC := $(filter-out compiler/glsc_main.c compiler/glsdis_main.c,$(wildcard compiler/*.c))
+RUNTIME_SRC  := $(filter-out runtime/glsplay_main.c,$(wildcard runtime/*.c))
+
+FORMAT_OBJ   := $(FORMAT_SRC:%.c=$(B)/%.o)
+COMPILER_OBJ := $(COMPILER_SRC:%.c=$(B)/%.o) $(B)/gen/lexer.o $(B)/gen/grammar.o
+RUNTIME_OBJ  := $(RUNTIME_SRC:%.c=$(B)/%.o)
+
+TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay
+
+.PHONY: all deps test demo clean bench-compile bench-play
+all: $(TOOLS)
+
+deps:
+	@sh tools/deps.sh
+
+$(B)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -MMD -MP -c $< -o $@
+
+# Generated sources: re2c lexer and lemon grammar, produced at build time.
+$(B)/gen/lexer.c: compiler/lexer.re $(B)/gen/grammar.h
+	@mkdir -p $(dir $@)
+	re2c --no-generation-date --no-version -W -o $@ $<
+$(B)/gen/grammar.c $(B)/gen/grammar.h: compiler/grammar.y
+	@mkdir -p $(B)/gen
+	cp compiler/grammar.y $(B)/gen/grammar.y
+	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y
+$(B)/gen/%.o: $(B)/gen/%.c
+	$(CC) $(CFLAGS) -Wno-unused-parameter -Icompiler -c $< -o $@
+$(COMPILER_OBJ): | $(B)/gen/grammar.h
+
+$(B)/libglsformat.a: $(FORMAT_OBJ)
+	$(AR) rcs $@ $^
+$(B)/libglscompiler.a: $(COMPILER_OBJ)
+	$(AR) rcs $@ $^
+$(B)/libglsruntime.a: $(RUNTIME_OBJ)
+	$(AR) rcs $@ $^
+
+$(B)/glsc: $(B)/compiler/glsc_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
+	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+$(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
+	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+$(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a
+	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) -lOSMesa -lGL -lspng
+
+clean:
+	rm -rf $(B) out
+
+-include $(shell find $(B) -name '*.d' 2>/dev/null)

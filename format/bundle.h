@@ -1,0 +1,160 @@
+/* The in-memory form of a glscene bundle, shared by the compiler (which
+ * builds one and writes it) and the player (which reads and validates one).
+ *
+ * The file layout is in spec/bundle.md.  A gls_bundle that came out of
+ * gls_bundle_read() has been validated completely: every index, count and
+ * operand in it is in range, every number finite, push/pop balanced, the
+ * call graph acyclic and within the depth limits.  Code that walks a read
+ * bundle may rely on that and need not re-check.
+ */
+#ifndef GLS_BUNDLE_H
+#define GLS_BUNDLE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "opcodes.h"
+
+#define GLS_FORMAT_VERSION 1u
+
+/* Feature flags: which effects a bundle's content uses.  Computed from the
+ * content by gls_bundle_features(), never set by hand, so they cannot lie. */
+#define GLS_FEATURES(X)                                                     \
+    X(TEXTURES,     0, "textures",      "some primitive is drawn with a texture") \
+    X(ALPHA_TEST,   1, "alpha-test",    "a used texture has transparent texels")  \
+    X(VERTEX_COLOR, 2, "vertex-color",  "some primitive has per-vertex colours")  \
+    X(TEXCOORDS,    3, "texcoords",     "some primitive has texture coordinates") \
+    X(HOMOGENEOUS,  4, "homogeneous-w", "some vertex has w != 1")                 \
+    X(MODULATE,     5, "modulate",      "texture mode modulate is used")          \
+    X(REPLACE,      6, "replace",       "texture mode replace is used")           \
+    X(TRANSLUCENT,  7, "translucent",   "some colour has alpha < 1")
+
+enum {
+#define GLS_X_FEAT(e, bit, name, why) GLS_FEAT_##e = 1u << (bit),
+    GLS_FEATURES(GLS_X_FEAT)
+#undef GLS_X_FEAT
+};
+extern const char *const gls_feature_name[32];
+extern const char *const gls_feature_why[32];
+
+/* Limits enforced by the validator (and by the compiler, with its own
+ * located messages).  See spec/bundle.md "Limits". */
+#define GLS_MAX_FILE_BYTES        (1ull << 32)   /* 4 GiB bundle          */
+#define GLS_MAX_SECTION_RAW       (1ull << 32)   /* decompressed section  */
+#define GLS_MAX_OBJECTS           (1u << 20)
+#define GLS_MAX_TEXTURES          (1u << 16)
+#define GLS_MAX_VERTICES          (1u << 28)     /* per bundle            */
+#define GLS_MAX_PRIM_VERTICES     (1u << 24)     /* per primitive         */
+#define GLS_MAX_TEXTURE_DIM       16384u         /* llvmpipe's GL limit   */
+#define GLS_MAX_PUSH_DEPTH        64u            /* per object            */
+#define GLS_MAX_CALL_DEPTH        256u           /* nested calls          */
+#define GLS_MAX_NAME_BYTES        1024u
+
+typedef struct {
+    double x, y, z, w;
+} gls_vec4;
+
+typedef struct {
+    float r, g, b, a;
+} gls_rgba;
+
+typedef struct {
+    float s, t;
+} gls_st;
+
+/* Where an instruction came from: file is an index into sources[]. */
+typedef struct {
+    uint32_t file;
+    uint32_t line;
+} gls_srcloc;
+
+typedef struct {
+    char *name;            /* dotted name, e.g. "road.vegetation.Birch"   */
+    uint8_t *code;         /* bytecode, ends with END                     */
+    uint32_t code_len;
+    uint32_t ninsn;        /* instructions in code (END included)         */
+    gls_srcloc *src;       /* ninsn entries, or NULL when not recorded    */
+} gls_object;
+
+#define GLS_TEX_ALPHA_HOLES 1u   /* some texel has alpha 0                 */
+
+typedef struct {
+    char *name;            /* dotted name, e.g. "road.tex.asphalt"        */
+    uint32_t width, height;
+    uint32_t flags;        /* GLS_TEX_*                                   */
+    uint8_t *rgba;         /* width*height*4 bytes, row 0 = top; alpha is
+                              binary (0 or 255)                           */
+} gls_texture;
+
+typedef struct {
+    uint32_t version;      /* format version the bundle was read as       */
+    uint32_t features;     /* GLS_FEAT_* bits                              */
+    uint32_t top;          /* index of the top-level object, or GLS_NONE
+                              for a library bundle                        */
+    uint32_t nobjects, ntextures, nsources;
+    gls_object *objects;   /* sorted by name (strcmp), names unique       */
+    gls_texture *textures; /* sorted by name                              */
+    char **sources;        /* source file paths for gls_srcloc.file       */
+
+    uint32_t npos, ncol, ntex;
+    gls_vec4 *pos;         /* vertex positions                             */
+    gls_rgba *col;         /* per-vertex colours                          */
+    gls_st *tc;            /* per-vertex texture coordinates              */
+} gls_bundle;
+
+/* One decoded instruction. */
+typedef struct {
+    gls_opcode op;
+    uint32_t nd;                        /* number of d operands            */
+    double d[GLS_MAX_OPERANDS];         /* d operands, in order            */
+    uint32_t nu;                        /* number of integer operands      */
+    uint32_t u[GLS_MAX_OPERANDS];       /* b n o t p c x operands, in order */
+} gls_insn;
+
+/* Decode the instruction at code[*pos]; advance *pos.  Returns 0 on success,
+ * -1 if the bytes are not a complete instruction (unknown opcode or
+ * truncated operands).  Checks nothing else: use on validated code. */
+int gls_insn_decode(const uint8_t *code, size_t len, size_t *pos, gls_insn *out);
+
+/* Append the encoding of in to a growing buffer.  Returns 0, or -1 on
+ * allocation failure. */
+typedef struct {
+    uint8_t *data;
+    size_t len, cap;
+} gls_buf;
+int gls_buf_put(gls_buf *b, const void *p, size_t n);
+int gls_buf_reserve(gls_buf *b, size_t extra); /* room for extra more bytes */
+int gls_insn_encode(gls_buf *b, const gls_insn *in);
+
+/* Error reporting for read/validate: one message, the first failure. */
+typedef struct {
+    char msg[512];
+    int check_line;        /* line of the check in format/ that failed */
+} gls_error;
+
+/* Read and validate a bundle from memory / from a file.  On success returns
+ * a bundle owning all its memory; on failure NULL with err filled in. */
+gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err);
+gls_bundle *gls_bundle_read_file(const char *path, gls_error *err);
+
+/* Validate an in-memory bundle (the compiler calls this on what it built
+ * before writing it; gls_bundle_read calls it on everything it reads). */
+int gls_bundle_validate(const gls_bundle *b, gls_error *err);
+
+/* Serialise to bytes (malloc'd).  Deterministic. Returns 0 or -1. */
+int gls_bundle_write(const gls_bundle *b, uint8_t **out, size_t *outlen, gls_error *err);
+
+/* Compute the feature flags from the content (used by the writer). */
+uint32_t gls_bundle_features(const gls_bundle *b);
+
+/* Find an object or texture by name (binary search); GLS_NONE if absent. */
+uint32_t gls_bundle_find_object(const gls_bundle *b, const char *name);
+uint32_t gls_bundle_find_texture(const gls_bundle *b, const char *name);
+
+void gls_bundle_free(gls_bundle *b);
+
+/* Write bytes to path atomically: a temporary file in the same directory,
+ * fsync'd, then renamed over path.  On failure nothing is left behind.
+ * Returns 0, or -1 with errno set. */
+int gls_write_file_atomic(const char *path, const void *data, size_t len);
+
+#endif

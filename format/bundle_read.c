@@ -1,0 +1,395 @@
+/* Read a bundle from bytes.  Mirror of bundle_write.c.  Every read goes
+ * through the bounds-checked cursor below; every count is checked against
+ * the bytes that remain before anything is allocated for it.  After the
+ * structure is read, gls_bundle_validate() checks the content. */
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+#include <zstd.h>
+#include "bundle.h"
+#include "layout.h"
+#include "le.h"
+#include "planes.h"
+
+#define FAIL(...) do { gls_fail(err, __LINE__, __VA_ARGS__); goto fail; } while (0)
+
+void gls_fail(gls_error *err, int line, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err->msg, sizeof err->msg, fmt, ap);
+    va_end(ap);
+    err->check_line = line;
+}
+
+/* The one bounds-checked reader. */
+typedef struct {
+    const uint8_t *p;
+    size_t len, pos;
+    int bad;   /* set once a read ran past the end; later reads give 0 */
+} cursor;
+
+static const uint8_t *take(cursor *c, size_t n)
+{
+    if (c->bad || n > c->len - c->pos) {
+        c->bad = 1;
+        return NULL;
+    }
+    const uint8_t *r = c->p + c->pos;
+    c->pos += n;
+    return r;
+}
+
+static uint32_t get_u32(cursor *c)
+{
+    const uint8_t *q = take(c, 4);
+    return q ? gls_le_get_u32(q) : 0;
+}
+
+/* A length-prefixed name, returned as a new NUL-terminated string. */
+static char *get_str(cursor *c)
+{
+    uint32_t n = get_u32(c);
+    if (n > GLS_MAX_NAME_BYTES) {
+        c->bad = 1;
+        return NULL;
+    }
+    const uint8_t *q = take(c, n);
+    if (!q)
+        return NULL;
+    if (memchr(q, 0, n)) {
+        c->bad = 1;
+        return NULL;
+    }
+    char *s = malloc(n + 1);
+    if (!s)
+        return NULL;
+    memcpy(s, q, n);
+    s[n] = 0;
+    return s;
+}
+
+/* count items of at least min_bytes each must fit in what is left */
+static int count_fits(const cursor *c, uint64_t count, uint64_t min_bytes)
+{
+    return !c->bad && count * min_bytes <= c->len - c->pos;
+}
+
+static int read_objects(gls_bundle *b, cursor *c, gls_error *err)
+{
+    uint32_t n = get_u32(c);
+    if (n > GLS_MAX_OBJECTS || !count_fits(c, n, 12))
+        FAIL("object table: %u objects do not fit in the section", n);
+    b->objects = calloc(n ? n : 1, sizeof *b->objects);
+    if (!b->objects)
+        FAIL("out of memory");
+    b->nobjects = n;
+    for (uint32_t i = 0; i < n; i++) {
+        gls_object *o = &b->objects[i];
+        o->name = get_str(c);
+        o->ninsn = get_u32(c);
+        o->code_len = get_u32(c);
+        const uint8_t *code = take(c, o->code_len);
+        if (!o->name || !code)
+            FAIL("object table: entry %u is truncated or malformed", i);
+        o->code = malloc(o->code_len ? o->code_len : 1);
+        if (!o->code)
+            FAIL("out of memory");
+        memcpy(o->code, code, o->code_len);
+    }
+    if (c->pos != c->len)
+        FAIL("object table: %zu stray bytes at its end", c->len - c->pos);
+    return 0;
+fail:
+    return -1;
+}
+
+static int read_sources(gls_bundle *b, cursor *c, gls_error *err)
+{
+    uint32_t n = get_u32(c);
+    if (!count_fits(c, n, 4))
+        FAIL("source table: %u names do not fit in the section", n);
+    b->sources = calloc(n ? n : 1, sizeof *b->sources);
+    if (!b->sources)
+        FAIL("out of memory");
+    b->nsources = n;
+    for (uint32_t i = 0; i < n; i++)
+        if (!(b->sources[i] = get_str(c)))
+            FAIL("source table: name %u is truncated or malformed", i);
+    for (uint32_t i = 0; i < b->nobjects; i++) {
+        gls_object *o = &b->objects[i];
+        uint32_t has = get_u32(c);
+        if (has > 1)
+            FAIL("source map of object %u: flag %u is neither 0 nor 1", i, has);
+        if (!has)
+            continue;
+        if (!count_fits(c, o->ninsn, 8))
+            FAIL("source map of object %u: %u entries do not fit", i, o->ninsn);
+        o->src = malloc((size_t)(o->ninsn ? o->ninsn : 1) * sizeof *o->src);
+        if (!o->src)
+            FAIL("out of memory");
+        for (uint32_t k = 0; k < o->ninsn; k++) {
+            o->src[k].file = get_u32(c);
+            o->src[k].line = get_u32(c);
+        }
+    }
+    if (c->bad || c->pos != c->len)
+        FAIL("source table: malformed or stray bytes at its end");
+    return 0;
+fail:
+    return -1;
+}
+
+static int read_textures(gls_bundle *b, cursor *c, gls_error *err)
+{
+    uint32_t n = get_u32(c);
+    if (n > GLS_MAX_TEXTURES || !count_fits(c, n, 16))
+        FAIL("texture table: %u textures do not fit in the section", n);
+    b->textures = calloc(n ? n : 1, sizeof *b->textures);
+    if (!b->textures)
+        FAIL("out of memory");
+    b->ntextures = n;
+    for (uint32_t i = 0; i < n; i++) {
+        gls_texture *t = &b->textures[i];
+        t->name = get_str(c);
+        t->width = get_u32(c);
+        t->height = get_u32(c);
+        t->flags = get_u32(c);
+        if (!t->name)
+            FAIL("texture table: entry %u is truncated or malformed", i);
+        if (t->width == 0 || t->height == 0 || t->width > GLS_MAX_TEXTURE_DIM || t->height > GLS_MAX_TEXTURE_DIM)
+            FAIL("texture %s: size %ux%u is outside 1..%u", t->name, t->width, t->height, GLS_MAX_TEXTURE_DIM);
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        gls_texture *t = &b->textures[i];
+        size_t bytes = (size_t)t->width * t->height * 4;
+        const uint8_t *q = take(c, bytes);
+        if (!q)
+            FAIL("texture %s: texels are truncated", t->name);
+        t->rgba = malloc(bytes);
+        if (!t->rgba)
+            FAIL("out of memory");
+        memcpy(t->rgba, q, bytes);
+    }
+    if (c->pos != c->len)
+        FAIL("texture table: %zu stray bytes at its end", c->len - c->pos);
+    return 0;
+fail:
+    return -1;
+}
+
+static int read_positions(gls_bundle *b, cursor *c, gls_error *err)
+{
+    uint32_t n = get_u32(c), ncomp = get_u32(c);
+    if (ncomp != 3 && ncomp != 4)
+        FAIL("position stream: %u components per vertex (must be 3 or 4)", ncomp);
+    if (n > GLS_MAX_VERTICES || (uint64_t)n * ncomp * 8 != c->len - c->pos || c->bad)
+        FAIL("position stream: %u vertices do not match the section size", n);
+    double *v = malloc((size_t)n * ncomp * 8 + 1);
+    b->pos = malloc((size_t)n * sizeof *b->pos + 1);
+    if (!v || !b->pos) {
+        free(v);
+        FAIL("out of memory");
+    }
+    gls_planes_decode(c->p + c->pos, n, ncomp, 8, v);
+    for (uint32_t i = 0; i < n; i++) {
+        b->pos[i].x = v[i * ncomp];
+        b->pos[i].y = v[i * ncomp + 1];
+        b->pos[i].z = v[i * ncomp + 2];
+        b->pos[i].w = ncomp == 4 ? v[i * ncomp + 3] : 1.0;
+    }
+    free(v);
+    b->npos = n;
+    return 0;
+fail:
+    return -1;
+}
+
+static int read_floats(cursor *c, uint32_t *count, void **out, unsigned ncomp, const char *what, gls_error *err)
+{
+    uint32_t n = get_u32(c);
+    if (n > GLS_MAX_VERTICES || (uint64_t)n * ncomp * 4 != c->len - c->pos || c->bad)
+        FAIL("%s stream: %u entries do not match the section size", what, n);
+    *out = malloc((size_t)n * ncomp * 4 + 1);
+    if (!*out)
+        FAIL("out of memory");
+    gls_planes_decode(c->p + c->pos, n, ncomp, 4, *out);
+    *count = n;
+    return 0;
+fail:
+    return -1;
+}
+
+gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
+{
+    uint8_t *raw[GLS_SEC_COUNT] = {0};
+    uint64_t rawlen[GLS_SEC_COUNT] = {0};
+    gls_bundle *b = calloc(1, sizeof *b);
+    if (!b)
+        FAIL("out of memory");
+
+    if (len < GLS_MAGIC_LEN || memcmp(data, GLS_MAGIC, GLS_MAGIC_LEN) != 0)
+        FAIL("not a glscene bundle (bad magic number)");
+    if (len < GLS_HEADER_SIZE)
+        FAIL("bundle is truncated: %zu bytes, shorter than its %u-byte header", len, GLS_HEADER_SIZE);
+    uint32_t version = gls_le_get_u32(data + GLS_HDR_VERSION);
+    if (version != GLS_FORMAT_VERSION)
+        FAIL("bundle format version %u is not supported: this build reads version %u (recompile the scene with this glsc)",
+             version, GLS_FORMAT_VERSION);
+    uint64_t fsize = gls_le_get_u64(data + GLS_HDR_FSIZE);
+    if (fsize > len)
+        FAIL("bundle is truncated: header says %llu bytes, only %zu present", (unsigned long long)fsize, len);
+    if (fsize < len)
+        FAIL("bundle has %zu bytes after its declared end (%llu bytes)", len - (size_t)fsize, (unsigned long long)fsize);
+    {
+        uint8_t zero[4] = {0};
+        uLong crc = crc32(0L, Z_NULL, 0);
+        crc = crc32_z(crc, data, GLS_HDR_CRC);
+        crc = crc32_z(crc, zero, 4);
+        crc = crc32_z(crc, data + GLS_HDR_CRC + 4, len - GLS_HDR_CRC - 4);
+        if ((uint32_t)crc != gls_le_get_u32(data + GLS_HDR_CRC))
+            FAIL("bundle is corrupted: checksum mismatch (stored %08x, computed %08x)",
+                 gls_le_get_u32(data + GLS_HDR_CRC), (unsigned)crc);
+    }
+    if (gls_le_get_u32(data + GLS_HDR_HSIZE) != GLS_HEADER_SIZE)
+        FAIL("bundle header size %u is not %u", gls_le_get_u32(data + GLS_HDR_HSIZE), GLS_HEADER_SIZE);
+    if (gls_le_get_u32(data + GLS_HDR_NSECT) != GLS_SEC_COUNT)
+        FAIL("bundle has %u sections, expected %u", gls_le_get_u32(data + GLS_HDR_NSECT), GLS_SEC_COUNT);
+    if (gls_le_get_u32(data + GLS_HDR_RES0) || gls_le_get_u32(data + GLS_HDR_RES1))
+        FAIL("bundle header: reserved fields are not zero");
+    b->version = version;
+    b->features = gls_le_get_u32(data + GLS_HDR_FEATURES);
+    b->top = gls_le_get_u32(data + GLS_HDR_TOP);
+
+    size_t dir_end = GLS_HEADER_SIZE + GLS_SEC_COUNT * GLS_DIRENT_SIZE;
+    if (len < dir_end)
+        FAIL("bundle is truncated inside its section directory");
+    uint64_t expect_off = dir_end, total_raw = 0;
+    for (unsigned s = 0; s < GLS_SEC_COUNT; s++) {
+        const uint8_t *e = data + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
+        uint32_t id = gls_le_get_u32(e), codec = gls_le_get_u32(e + 4);
+        uint64_t off = gls_le_get_u64(e + 8), stored = gls_le_get_u64(e + 16), rl = gls_le_get_u64(e + 24);
+        if (id != GLS_SEC_OBJECTS + s)
+            FAIL("section directory entry %u has id %u, expected %u", s, id, GLS_SEC_OBJECTS + s);
+        if (off != expect_off || stored > len - off)
+            FAIL("section %u: offset %llu / size %llu outside the file or not contiguous", id,
+                 (unsigned long long)off, (unsigned long long)stored);
+        expect_off = off + stored;
+        if (rl > GLS_MAX_SECTION_RAW || total_raw + rl > GLS_MAX_SECTION_RAW)
+            FAIL("section %u declares %llu decoded bytes, over the limit of %llu", id,
+                 (unsigned long long)rl, (unsigned long long)GLS_MAX_SECTION_RAW);
+        total_raw += rl;
+        if (codec == GLS_CODEC_RAW) {
+            if (rl != stored)
+                FAIL("section %u: raw section with stored size %llu != decoded size %llu", id,
+                     (unsigned long long)stored, (unsigned long long)rl);
+        } else if (codec == GLS_CODEC_ZSTD) {
+            unsigned long long fcs = ZSTD_getFrameContentSize(data + off, stored);
+            if (fcs == ZSTD_CONTENTSIZE_ERROR || fcs == ZSTD_CONTENTSIZE_UNKNOWN || fcs != rl)
+                FAIL("section %u: zstd frame header does not declare the %llu bytes the directory says", id,
+                     (unsigned long long)rl);
+        } else {
+            FAIL("section %u: unknown codec %u", id, codec);
+        }
+        raw[s] = malloc(rl ? rl : 1);
+        if (!raw[s])
+            FAIL("out of memory for section %u (%llu bytes)", id, (unsigned long long)rl);
+        rawlen[s] = rl;
+        if (codec == GLS_CODEC_RAW) {
+            memcpy(raw[s], data + off, rl);
+        } else {
+            size_t got = ZSTD_decompress(raw[s], rl, data + off, stored);
+            if (ZSTD_isError(got) || got != rl)
+                FAIL("section %u: zstd data is corrupted (%s)", id,
+                     ZSTD_isError(got) ? ZSTD_getErrorName(got) : "short");
+        }
+    }
+    if (expect_off != len)
+        FAIL("bundle has %llu bytes after its last section", (unsigned long long)(len - expect_off));
+
+#define CUR(s) (cursor){raw[(s) - 1], rawlen[(s) - 1], 0, 0}
+    cursor c;
+    c = CUR(GLS_SEC_OBJECTS);
+    if (read_objects(b, &c, err)) goto fail;
+    c = CUR(GLS_SEC_SOURCES);
+    if (read_sources(b, &c, err)) goto fail;
+    c = CUR(GLS_SEC_TEXTURES);
+    if (read_textures(b, &c, err)) goto fail;
+    c = CUR(GLS_SEC_POSITIONS);
+    if (read_positions(b, &c, err)) goto fail;
+    c = CUR(GLS_SEC_COLORS);
+    if (read_floats(&c, &b->ncol, (void **)&b->col, 4, "colour", err)) goto fail;
+    c = CUR(GLS_SEC_TEXCOORDS);
+    if (read_floats(&c, &b->ntex, (void **)&b->tc, 2, "texcoord", err)) goto fail;
+#undef CUR
+    for (unsigned s = 0; s < GLS_SEC_COUNT; s++)
+        free(raw[s]);
+    if (gls_bundle_validate(b, err)) {
+        gls_bundle_free(b);
+        return NULL;
+    }
+    if (b->features != gls_bundle_features(b)) {
+        gls_fail(err, __LINE__, "bundle header feature flags %#x do not match its content (%#x)", b->features,
+                 gls_bundle_features(b));
+        gls_bundle_free(b);
+        return NULL;
+    }
+    return b;
+fail:
+    for (unsigned s = 0; s < GLS_SEC_COUNT; s++)
+        free(raw[s]);
+    gls_bundle_free(b);
+    return NULL;
+}
+
+gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        gls_fail(err, __LINE__, "%s: cannot open: %s", path, strerror(errno));
+        return NULL;
+    }
+    uint8_t *data = NULL;
+    size_t len = 0, cap = 0;
+    for (;;) {
+        if (len == cap) {
+            if (cap >= GLS_MAX_FILE_BYTES) {
+                gls_fail(err, __LINE__, "%s: larger than the %llu-byte bundle limit", path,
+                         (unsigned long long)GLS_MAX_FILE_BYTES);
+                goto fail;
+            }
+            cap = cap ? cap * 2 : 65536;
+            uint8_t *d = realloc(data, cap);
+            if (!d) {
+                gls_fail(err, __LINE__, "%s: out of memory", path);
+                goto fail;
+            }
+            data = d;
+        }
+        size_t r = fread(data + len, 1, cap - len, f);
+        len += r;
+        if (r == 0)
+            break;
+    }
+    if (ferror(f)) {
+        gls_fail(err, __LINE__, "%s: read error: %s", path, strerror(errno));
+        goto fail;
+    }
+    fclose(f);
+    gls_bundle *b = gls_bundle_read(data, len, err);
+    free(data);
+    if (!b) {
+        /* prefix the file name, keeping the message one line */
+        char tmp[sizeof err->msg];
+        memcpy(tmp, err->msg, sizeof tmp);
+        snprintf(err->msg, sizeof err->msg, "%.200s: %.300s", path, tmp);
+    }
+    return b;
+fail:
+    fclose(f);
+    free(data);
+    return NULL;
+}

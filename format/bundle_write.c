@@ -1,0 +1,178 @@
+/* Serialise a gls_bundle.  Mirror of bundle_read.c: every field written
+ * here is read there, in the same order, through the same widths. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+#include <zstd.h>
+#include "bundle.h"
+#include "layout.h"
+#include "le.h"
+#include "planes.h"
+
+static int put_u32(gls_buf *b, uint32_t v)
+{
+    uint8_t t[4];
+    gls_le_put_u32(t, v);
+    return gls_buf_put(b, t, 4);
+}
+
+static int put_str(gls_buf *b, const char *s)
+{
+    size_t n = strlen(s);
+    return put_u32(b, (uint32_t)n) || gls_buf_put(b, s, n);
+}
+
+static int sec_objects(const gls_bundle *bd, gls_buf *b)
+{
+    if (put_u32(b, bd->nobjects))
+        return -1;
+    for (uint32_t i = 0; i < bd->nobjects; i++) {
+        const gls_object *o = &bd->objects[i];
+        if (put_str(b, o->name) || put_u32(b, o->ninsn) || put_u32(b, o->code_len) ||
+            gls_buf_put(b, o->code, o->code_len))
+            return -1;
+    }
+    return 0;
+}
+
+static int sec_sources(const gls_bundle *bd, gls_buf *b)
+{
+    if (put_u32(b, bd->nsources))
+        return -1;
+    for (uint32_t i = 0; i < bd->nsources; i++)
+        if (put_str(b, bd->sources[i]))
+            return -1;
+    for (uint32_t i = 0; i < bd->nobjects; i++) {
+        const gls_object *o = &bd->objects[i];
+        if (put_u32(b, o->src ? 1 : 0))
+            return -1;
+        for (uint32_t k = 0; o->src && k < o->ninsn; k++)
+            if (put_u32(b, o->src[k].file) || put_u32(b, o->src[k].line))
+                return -1;
+    }
+    return 0;
+}
+
+static int sec_textures(const gls_bundle *bd, gls_buf *b)
+{
+    if (put_u32(b, bd->ntextures))
+        return -1;
+    for (uint32_t i = 0; i < bd->ntextures; i++) {
+        const gls_texture *t = &bd->textures[i];
+        if (put_str(b, t->name) || put_u32(b, t->width) || put_u32(b, t->height) || put_u32(b, t->flags))
+            return -1;
+    }
+    for (uint32_t i = 0; i < bd->ntextures; i++) {
+        const gls_texture *t = &bd->textures[i];
+        if (gls_buf_put(b, t->rgba, (size_t)t->width * t->height * 4))
+            return -1;
+    }
+    return 0;
+}
+
+/* A stream of count*ncomp numbers, each width bytes, as planes. */
+static int put_planes(gls_buf *b, const void *vals, size_t count, unsigned ncomp, unsigned width)
+{
+    size_t n = count * ncomp * width;
+    uint8_t *tmp = malloc(n ? n : 1);
+    if (!tmp)
+        return -1;
+    gls_planes_encode(vals, count, ncomp, width, tmp);
+    int r = gls_buf_put(b, tmp, n);
+    free(tmp);
+    return r;
+}
+
+static int sec_positions(const gls_bundle *bd, gls_buf *b)
+{
+    unsigned ncomp = (gls_bundle_features(bd) & GLS_FEAT_HOMOGENEOUS) ? 4 : 3;
+    if (put_u32(b, bd->npos) || put_u32(b, ncomp))
+        return -1;
+    double *v = malloc((size_t)bd->npos * ncomp * sizeof(double) + 1);
+    if (!v)
+        return -1;
+    for (uint32_t i = 0; i < bd->npos; i++) {
+        v[i * ncomp + 0] = bd->pos[i].x;
+        v[i * ncomp + 1] = bd->pos[i].y;
+        v[i * ncomp + 2] = bd->pos[i].z;
+        if (ncomp == 4)
+            v[i * ncomp + 3] = bd->pos[i].w;
+    }
+    int r = put_planes(b, v, bd->npos, ncomp, 8);
+    free(v);
+    return r;
+}
+
+static int sec_colors(const gls_bundle *bd, gls_buf *b)
+{
+    return put_u32(b, bd->ncol) || put_planes(b, bd->col, bd->ncol, 4, 4);
+}
+
+static int sec_texcoords(const gls_bundle *bd, gls_buf *b)
+{
+    return put_u32(b, bd->ntex) || put_planes(b, bd->tc, bd->ntex, 2, 4);
+}
+
+typedef int (*sec_fn)(const gls_bundle *, gls_buf *);
+
+int gls_bundle_write(const gls_bundle *bd, uint8_t **out, size_t *outlen, gls_error *err)
+{
+    static const sec_fn fns[GLS_SEC_COUNT] = {sec_objects, sec_sources, sec_textures,
+                                              sec_positions, sec_colors, sec_texcoords};
+    gls_buf file = {0};
+    gls_buf raw = {0};
+    ZSTD_CCtx *cctx = ZSTD_createCCtx();
+    uint8_t hdr[GLS_HEADER_SIZE + GLS_SEC_COUNT * GLS_DIRENT_SIZE];
+    memset(hdr, 0, sizeof hdr);
+    if (!cctx || gls_buf_put(&file, hdr, sizeof hdr))
+        goto oom;
+
+    for (unsigned s = 0; s < GLS_SEC_COUNT; s++) {
+        raw.len = 0;
+        if (fns[s](bd, &raw))
+            goto oom;
+        size_t bound = ZSTD_compressBound(raw.len);
+        size_t off = file.len;
+        if (gls_buf_reserve(&file, bound))
+            goto oom;
+        size_t z = ZSTD_compressCCtx(cctx, file.data + off, bound, raw.data, raw.len, GLS_ZSTD_LEVEL);
+        if (ZSTD_isError(z)) {
+            snprintf(err->msg, sizeof err->msg, "zstd: %s", ZSTD_getErrorName(z));
+            err->check_line = __LINE__;
+            goto fail;
+        }
+        file.len = off + z;
+        uint8_t *e = hdr + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
+        gls_le_put_u32(e + 0, GLS_SEC_OBJECTS + s);
+        gls_le_put_u32(e + 4, GLS_CODEC_ZSTD);
+        gls_le_put_u64(e + 8, off);
+        gls_le_put_u64(e + 16, z);
+        gls_le_put_u64(e + 24, raw.len);
+    }
+    memcpy(hdr, GLS_MAGIC, GLS_MAGIC_LEN);
+    gls_le_put_u32(hdr + GLS_HDR_VERSION, GLS_FORMAT_VERSION);
+    gls_le_put_u32(hdr + GLS_HDR_HSIZE, GLS_HEADER_SIZE);
+    gls_le_put_u32(hdr + GLS_HDR_FEATURES, gls_bundle_features(bd));
+    gls_le_put_u32(hdr + GLS_HDR_TOP, bd->top);
+    gls_le_put_u32(hdr + GLS_HDR_NSECT, GLS_SEC_COUNT);
+    gls_le_put_u64(hdr + GLS_HDR_FSIZE, file.len);
+    memcpy(file.data, hdr, sizeof hdr);
+    uLong crc = crc32(0L, Z_NULL, 0);
+    crc = crc32_z(crc, file.data, file.len);
+    gls_le_put_u32(file.data + GLS_HDR_CRC, (uint32_t)crc);
+
+    free(raw.data);
+    ZSTD_freeCCtx(cctx);
+    *out = file.data;
+    *outlen = file.len;
+    return 0;
+oom:
+    snprintf(err->msg, sizeof err->msg, "out of memory while writing the bundle");
+    err->check_line = __LINE__;
+fail:
+    free(raw.data);
+    free(file.data);
+    ZSTD_freeCCtx(cctx);
+    return -1;
+}

@@ -1,0 +1,55 @@
+/* The on-disk layout of a bundle: header, section directory, section ids.
+ * spec/bundle.md is the prose version of this file; keep them in step. */
+#ifndef GLS_LAYOUT_H
+#define GLS_LAYOUT_H
+
+/* PNG-style magic: a high byte (catches 7-bit transfers), the name, CR LF
+ * (catches newline translation), ^Z (stops DOS type), LF. */
+#define GLS_MAGIC "\x89GLS\r\n\x1a\n"
+#define GLS_MAGIC_LEN 8
+
+/* Header: 48 bytes.
+ *   0  magic[8]
+ *   8  u32 format version
+ *  12  u32 header size (48)
+ *  16  u32 feature flags
+ *  20  u32 top object index, or 0xFFFFFFFF for a library bundle
+ *  24  u32 number of sections (GLS_SEC_COUNT)
+ *  28  u32 reserved, zero
+ *  32  u64 total file size
+ *  40  u32 CRC-32 of the whole file with this field taken as zero
+ *  44  u32 reserved, zero
+ */
+#define GLS_HEADER_SIZE 48u
+#define GLS_HDR_VERSION 8
+#define GLS_HDR_HSIZE 12
+#define GLS_HDR_FEATURES 16
+#define GLS_HDR_TOP 20
+#define GLS_HDR_NSECT 24
+#define GLS_HDR_RES0 28
+#define GLS_HDR_FSIZE 32
+#define GLS_HDR_CRC 40
+#define GLS_HDR_RES1 44
+
+/* Directory entry: 32 bytes: u32 id, u32 codec, u64 offset, u64 stored size,
+ * u64 raw (decoded) size.  Entries appear in id order, sections in the file
+ * in the same order, contiguous, right after the directory. */
+#define GLS_DIRENT_SIZE 32u
+
+enum {
+    GLS_SEC_OBJECTS = 1,   /* names, instruction counts, bytecode          */
+    GLS_SEC_SOURCES,       /* source file names and per-instruction lines  */
+    GLS_SEC_TEXTURES,      /* texture names, sizes, flags, then texels      */
+    GLS_SEC_POSITIONS,     /* vertex positions, float64, delta+byte planes  */
+    GLS_SEC_COLORS,        /* vertex colours, float32, delta+byte planes    */
+    GLS_SEC_TEXCOORDS,     /* texture coordinates, float32, delta+planes    */
+    GLS_SEC_LAST = GLS_SEC_TEXCOORDS
+};
+#define GLS_SEC_COUNT 6u
+
+enum { GLS_CODEC_RAW = 0, GLS_CODEC_ZSTD = 1 };
+
+/* zstd level used by the writer: fixed, so output is deterministic. */
+#define GLS_ZSTD_LEVEL 6
+
+#endif

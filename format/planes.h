@@ -1,0 +1,15 @@
+/* Lossless transform for number streams before compression: each value is
+ * XOR-ed with the previous value of the same component (neighbouring
+ * vertices share sign, exponent and leading mantissa bits, which become
+ * zeros), then the bytes are split into planes (all byte 0s, all byte 1s,
+ * ...) so that those zeros form long runs zstd compresses well. */
+#ifndef GLS_PLANES_H
+#define GLS_PLANES_H
+#include <stddef.h>
+#include <stdint.h>
+
+/* in: count*ncomp words of width bytes (4 or 8), native order, interleaved.
+ * out: the same number of bytes, planar.  Mirror of gls_planes_decode. */
+void gls_planes_encode(const void *in, size_t count, unsigned ncomp, unsigned width, uint8_t *out);
+void gls_planes_decode(const uint8_t *in, size_t count, unsigned ncomp, unsigned width, void *out);
+#endif

@@ -1,0 +1,255 @@
+/* Complete validation of a bundle's content.  A bundle that passes cannot
+ * make a walker of its code read outside its arrays: see the list of
+ * guarantees in bundle.h and spec/bundle.md "Validation". */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "bundle.h"
+
+void gls_fail(gls_error *err, int line, const char *fmt, ...);
+#define FAIL(...) do { gls_fail(err, __LINE__, __VA_ARGS__); goto fail; } while (0)
+
+static int valid_name(const char *s)
+{
+    /* dot-separated identifiers: [A-Za-z_][A-Za-z0-9_]* */
+    if (!s || !*s || strlen(s) > GLS_MAX_NAME_BYTES)
+        return 0;
+    int start = 1;
+    for (const char *p = s; *p; p++) {
+        char ch = *p;
+        int alpha = (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || ch == '_';
+        int digit = ch >= '0' && ch <= '9';
+        if (ch == '.') {
+            if (start)
+                return 0;
+            start = 1;
+        } else if (alpha || (digit && !start)) {
+            start = 0;
+        } else {
+            return 0;
+        }
+    }
+    return !start;
+}
+
+static int check_names(const gls_bundle *b, gls_error *err)
+{
+    for (uint32_t i = 0; i < b->nobjects; i++) {
+        const char *n = b->objects[i].name;
+        if (!valid_name(n))
+            FAIL("object %u: invalid name", i);
+        if (i && strcmp(b->objects[i - 1].name, n) >= 0)
+            FAIL("object table not sorted or has a duplicate at %s", n);
+    }
+    for (uint32_t i = 0; i < b->ntextures; i++) {
+        const char *n = b->textures[i].name;
+        if (!valid_name(n))
+            FAIL("texture %u: invalid name", i);
+        if (i && strcmp(b->textures[i - 1].name, n) >= 0)
+            FAIL("texture table not sorted or has a duplicate at %s", n);
+    }
+    for (uint32_t i = 0; i < b->nsources; i++)
+        if (!b->sources[i])
+            FAIL("source name %u missing", i);
+    return 0;
+fail:
+    return -1;
+}
+
+static int check_textures(const gls_bundle *b, gls_error *err)
+{
+    for (uint32_t i = 0; i < b->ntextures; i++) {
+        const gls_texture *t = &b->textures[i];
+        if (t->width == 0 || t->height == 0 || t->width > GLS_MAX_TEXTURE_DIM || t->height > GLS_MAX_TEXTURE_DIM)
+            FAIL("texture %s: size %ux%u is outside 1..%u", t->name, t->width, t->height, GLS_MAX_TEXTURE_DIM);
+        if (t->flags & ~GLS_TEX_ALPHA_HOLES)
+            FAIL("texture %s: unknown flags %#x", t->name, t->flags);
+        uint32_t holes = 0;
+        size_t n = (size_t)t->width * t->height;
+        for (size_t k = 0; k < n; k++) {
+            uint8_t a = t->rgba[k * 4 + 3];
+            if (a != 0 && a != 255)
+                FAIL("texture %s: alpha %u at texel %zu is not binary (0 or 255)", t->name, a, k);
+            if (a == 0)
+                holes = GLS_TEX_ALPHA_HOLES;
+        }
+        if (holes != (t->flags & GLS_TEX_ALPHA_HOLES))
+            FAIL("texture %s: alpha flag does not match its texels", t->name);
+    }
+    return 0;
+fail:
+    return -1;
+}
+
+static int check_vertices(const gls_bundle *b, gls_error *err)
+{
+    if (b->npos > GLS_MAX_VERTICES || b->ncol > GLS_MAX_VERTICES || b->ntex > GLS_MAX_VERTICES)
+        FAIL("more than %u vertices", GLS_MAX_VERTICES);
+    for (uint32_t i = 0; i < b->npos; i++) {
+        const gls_vec4 *p = &b->pos[i];
+        if (!isfinite(p->x) || !isfinite(p->y) || !isfinite(p->z) || !isfinite(p->w) || p->w == 0)
+            FAIL("position %u is not finite or has w = 0", i);
+    }
+    for (uint32_t i = 0; i < b->ncol; i++) {
+        const gls_rgba *c = &b->col[i];
+        if (!(c->r >= 0 && c->r <= 1 && c->g >= 0 && c->g <= 1 && c->b >= 0 && c->b <= 1 && c->a >= 0 && c->a <= 1))
+            FAIL("colour %u has a component outside 0..1 or not a number", i);
+    }
+    for (uint32_t i = 0; i < b->ntex; i++)
+        if (!isfinite(b->tc[i].s) || !isfinite(b->tc[i].t))
+            FAIL("texture coordinate %u is not finite", i);
+    return 0;
+fail:
+    return -1;
+}
+
+/* One object's code: decodable, operands in range, stack balanced. */
+static int check_code(const gls_bundle *b, uint32_t oi, gls_error *err)
+{
+    const gls_object *o = &b->objects[oi];
+    size_t pos = 0;
+    uint32_t k = 0, depth = 0;
+    gls_insn in;
+    for (;; k++) {
+        if (k >= o->ninsn)
+            FAIL("object %s: more instructions than the %u declared", o->name, o->ninsn);
+        if (gls_insn_decode(o->code, o->code_len, &pos, &in))
+            FAIL("object %s, instruction %u: unknown opcode or truncated operands", o->name, k);
+        const char *nm = gls_op_name[in.op];
+        for (uint32_t j = 0; j < in.nd; j++)
+            if (!isfinite(in.d[j]))
+                FAIL("object %s, instruction %u (%s): operand %u is not finite", o->name, k, nm, j + 1);
+        if (o->src && (o->src[k].file >= b->nsources))
+            FAIL("object %s, instruction %u: source file index out of range", o->name, k);
+        switch (in.op) {
+        case GLS_OP_END:
+            if (depth != 0)
+                FAIL("object %s: ends with %u unbalanced push", o->name, depth);
+            if (pos != o->code_len || k + 1 != o->ninsn)
+                FAIL("object %s: end is not the last instruction", o->name);
+            return 0;
+        case GLS_OP_COLOR:
+            for (int j = 0; j < 4; j++)
+                if (in.d[j] < 0 || in.d[j] > 1)
+                    FAIL("object %s, instruction %u (color): component outside 0..1", o->name, k);
+            break;
+        case GLS_OP_TEXMODE:
+            if (in.u[0] >= GLS_MODE_COUNT)
+                FAIL("object %s, instruction %u (texmode): mode %u unknown", o->name, k, in.u[0]);
+            break;
+        case GLS_OP_TEXTURE:
+            if (in.u[0] >= b->ntextures)
+                FAIL("object %s, instruction %u (texture): index %u >= %u textures", o->name, k, in.u[0], b->ntextures);
+            break;
+        case GLS_OP_PUSH:
+            if (++depth > GLS_MAX_PUSH_DEPTH)
+                FAIL("object %s, instruction %u: push nested deeper than %u", o->name, k, GLS_MAX_PUSH_DEPTH);
+            break;
+        case GLS_OP_POP:
+            if (depth == 0)
+                FAIL("object %s, instruction %u: pop without push", o->name, k);
+            depth--;
+            break;
+        case GLS_OP_CALL:
+            if (in.u[0] >= b->nobjects)
+                FAIL("object %s, instruction %u (call): index %u >= %u objects", o->name, k, in.u[0], b->nobjects);
+            break;
+        case GLS_OP_PRIM: {
+            uint32_t kind = in.u[0], n = in.u[1], p = in.u[2], c = in.u[3], x = in.u[4];
+            if (kind >= GLS_PRIM_COUNT)
+                FAIL("object %s, instruction %u (prim): kind %u unknown", o->name, k, kind);
+            if (n < gls_prim_min_verts(kind) || n > GLS_MAX_PRIM_VERTICES ||
+                (gls_prim_needs_even(kind) && n % 2))
+                FAIL("object %s, instruction %u (%s): %u vertices is not a legal count", o->name, k,
+                     gls_prim_name[kind], n);
+            if (p > b->npos || n > b->npos - p)
+                FAIL("object %s, instruction %u (prim): positions %u+%u beyond %u", o->name, k, p, n, b->npos);
+            if (c != GLS_NONE && (c > b->ncol || n > b->ncol - c))
+                FAIL("object %s, instruction %u (prim): colours %u+%u beyond %u", o->name, k, c, n, b->ncol);
+            if (x != GLS_NONE && (x > b->ntex || n > b->ntex - x))
+                FAIL("object %s, instruction %u (prim): texcoords %u+%u beyond %u", o->name, k, x, n, b->ntex);
+            break;
+        }
+        default:
+            break;
+        }
+    }
+fail:
+    return -1;
+}
+
+/* Calls form a DAG no deeper than GLS_MAX_CALL_DEPTH.  Iterative DFS with
+ * memoised heights, so a hostile bundle cannot exhaust the C stack. */
+static int check_calls(const gls_bundle *b, gls_error *err)
+{
+    uint32_t n = b->nobjects;
+    uint8_t *state = calloc(n ? n : 1, 1);          /* 0 new, 1 open, 2 done */
+    uint32_t *height = calloc(n ? n : 1, sizeof *height);
+    uint32_t *stack = malloc((size_t)(n ? n : 1) * sizeof *stack);
+    size_t *pc = malloc((size_t)(n ? n : 1) * sizeof *pc);
+    if (!state || !height || !stack || !pc)
+        FAIL("out of memory");
+    for (uint32_t root = 0; root < n; root++) {
+        if (state[root])
+            continue;
+        uint32_t sp = 0;
+        stack[sp] = root;
+        pc[sp] = 0;
+        state[root] = 1;
+        sp++;
+        while (sp) {
+            uint32_t cur = stack[sp - 1];
+            const gls_object *o = &b->objects[cur];
+            gls_insn in;
+            int descended = 0;
+            while (pc[sp - 1] < o->code_len) {
+                gls_insn_decode(o->code, o->code_len, &pc[sp - 1], &in);
+                if (in.op != GLS_OP_CALL)
+                    continue;
+                uint32_t callee = in.u[0];
+                if (state[callee] == 1)
+                    FAIL("call cycle through %s and %s", o->name, b->objects[callee].name);
+                if (state[callee] == 2) {
+                    if (height[callee] + 1 > height[cur])
+                        height[cur] = height[callee] + 1;
+                    continue;
+                }
+                state[callee] = 1;
+                stack[sp] = callee;
+                pc[sp] = 0;
+                sp++;
+                descended = 1;
+                break;
+            }
+            if (descended)
+                continue;
+            state[cur] = 2;
+            if (height[cur] > GLS_MAX_CALL_DEPTH)
+                FAIL("object %s: calls nest %u deep, more than %u", o->name, height[cur], GLS_MAX_CALL_DEPTH);
+            sp--;
+            if (sp && height[cur] + 1 > height[stack[sp - 1]])
+                height[stack[sp - 1]] = height[cur] + 1;
+        }
+    }
+    free(state), free(height), free(stack), free(pc);
+    return 0;
+fail:
+    free(state), free(height), free(stack), free(pc);
+    return -1;
+}
+
+int gls_bundle_validate(const gls_bundle *b, gls_error *err)
+{
+    if (b->nobjects > GLS_MAX_OBJECTS || b->ntextures > GLS_MAX_TEXTURES)
+        FAIL("too many objects or textures");
+    if (b->top != GLS_NONE && b->top >= b->nobjects)
+        FAIL("top-level object index %u >= %u objects", b->top, b->nobjects);
+    if (check_names(b, err) || check_textures(b, err) || check_vertices(b, err))
+        return -1;
+    for (uint32_t i = 0; i < b->nobjects; i++)
+        if (check_code(b, i, err))
+            return -1;
+    return check_calls(b, err);
+fail:
+    return -1;
+}
