@@ -25,8 +25,23 @@ RUNTIME_OBJ  := $(RUNTIME_SRC:%.c=$(B)/%.o)
 
 TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay
 
-.PHONY: all deps test demo clean bench-compile bench-play
+GL_LIBS := -lOSMesa -lGL -lspng
+
+UNIT_SRC := $(wildcard tests/unit/*.c)
+UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
+
+.PHONY: all deps test check demo clean bench-compile bench-play
 all: $(TOOLS)
+
+# The README's test command: install what is missing, build, run everything.
+test:
+	@sh tools/deps.sh
+	@$(MAKE) --no-print-directory all $(UNIT_BIN)
+	@sh tests/run.sh
+
+$(B)/tests/%: tests/unit/%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -Itests $(LDFLAGS) $< -o $@ $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
 
 deps:
 	@sh tools/deps.sh
@@ -59,7 +74,7 @@ $(B)/glsc: $(B)/compiler/glsc_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
 $(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a
-	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) -lOSMesa -lGL -lspng
+	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
 
 clean:
 	rm -rf $(B) out
