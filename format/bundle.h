@@ -152,6 +152,10 @@ uint32_t gls_bundle_find_texture(const gls_bundle *b, const char *name);
 
 void gls_bundle_free(gls_bundle *b);
 
+/* Is s[0..n) a valid dotted name: identifiers ([A-Za-z_][A-Za-z0-9_]*)
+ * joined by single dots, at most GLS_MAX_NAME_BYTES long? */
+int gls_valid_name(const char *s, size_t n);
+
 /* Write bytes to path atomically: a temporary file in the same directory,
  * fsync'd, then renamed over path.  On failure nothing is left behind.
  * Returns 0, or -1 with errno set. */

@@ -9,14 +9,14 @@
 void gls_fail(gls_error *err, int line, const char *fmt, ...);
 #define FAIL(...) do { gls_fail(err, __LINE__, __VA_ARGS__); goto fail; } while (0)
 
-static int valid_name(const char *s)
+int gls_valid_name(const char *s, size_t n)
 {
     /* dot-separated identifiers: [A-Za-z_][A-Za-z0-9_]* */
-    if (!s || !*s || strlen(s) > GLS_MAX_NAME_BYTES)
+    if (!s || n == 0 || n > GLS_MAX_NAME_BYTES)
         return 0;
     int start = 1;
-    for (const char *p = s; *p; p++) {
-        char ch = *p;
+    for (size_t i = 0; i < n; i++) {
+        char ch = s[i];
         int alpha = (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || ch == '_';
         int digit = ch >= '0' && ch <= '9';
         if (ch == '.') {
@@ -36,14 +36,14 @@ static int check_names(const gls_bundle *b, gls_error *err)
 {
     for (uint32_t i = 0; i < b->nobjects; i++) {
         const char *n = b->objects[i].name;
-        if (!valid_name(n))
+        if (!n || !gls_valid_name(n, strlen(n)))
             FAIL("object %u: invalid name", i);
         if (i && strcmp(b->objects[i - 1].name, n) >= 0)
             FAIL("object table not sorted or has a duplicate at %s", n);
     }
     for (uint32_t i = 0; i < b->ntextures; i++) {
         const char *n = b->textures[i].name;
-        if (!valid_name(n))
+        if (!n || !gls_valid_name(n, strlen(n)))
             FAIL("texture %u: invalid name", i);
         if (i && strcmp(b->textures[i - 1].name, n) >= 0)
             FAIL("texture table not sorted or has a duplicate at %s", n);

@@ -1,0 +1,34 @@
+/* Diagnostics: "file:line:col: error: message", then the source line and a
+ * caret under the column.  Counts errors and stops at a limit. */
+#ifndef GLS_DIAG_H
+#define GLS_DIAG_H
+#include <stddef.h>
+#include <stdio.h>
+
+#define GLS_MAX_ERRORS 20
+
+typedef struct {
+    const char *path;   /* file name as given                       */
+    const char *text;   /* whole source, NUL-terminated              */
+    size_t len;
+} gls_source;
+
+typedef struct {
+    const gls_source *src;   /* NULL for errors with no source position */
+    unsigned line, col;      /* 1-based                                  */
+} gls_loc;
+
+typedef struct {
+    FILE *out;
+    unsigned errors;
+    int stopped;   /* the error limit was reached: callers stop */
+} gls_diag;
+
+void gls_error_at(gls_diag *d, gls_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+void gls_note_at(gls_diag *d, gls_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+/* Edit distance between a and b (for "did you mean"). */
+unsigned gls_edit_distance(const char *a, size_t alen, const char *b);
+/* The candidate closest to word, or NULL if none is close enough. */
+const char *gls_suggest(const char *word, size_t len, const char *const *cands, size_t n);
+#endif

@@ -1,0 +1,120 @@
+/* glsc: compile a scene (or a whole library) into a bundle. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "compile.h"
+
+static const char usage[] =
+    "usage: glsc [-I ROOT]... [-o OUT.glsb] TOP\n"
+    "       glsc [-I ROOT]... --lib DIR -o LIB.glsb\n"
+    "\n"
+    "Compile the top-level object TOP (a .scene file or a dotted name such as\n"
+    "road.scenes.Demo) and everything it calls into one bundle; or, with --lib,\n"
+    "every object and texture under DIR into a library bundle.\n"
+    "\n"
+    "  -I ROOT     search root: a directory or a library bundle (repeatable,\n"
+    "              searched in order, then the roots in $GLSCENE_PATH)\n"
+    "  -o FILE     output bundle (default: the top object's last name + .glsb)\n"
+    "  --lib DIR   compile a library bundle\n"
+    "  --help      this text\n"
+    "\n"
+    "Exit status: 0 success, 1 compile error, 2 usage error.\n";
+
+static int usage_error(const char *msg, const char *arg)
+{
+    fprintf(stderr, "glsc: error: %s%s\n%s", msg, arg ? arg : "", usage);
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    const char *out = NULL, *lib = NULL, *top = NULL;
+    const char **roots = calloc((size_t)argc, sizeof *roots);
+    int nroots = 0;
+    if (!roots)
+        return 1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            fputs(usage, stdout);
+            free(roots);
+            return 0;
+        } else if (strcmp(a, "-I") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--lib") == 0) {
+            if (i + 1 >= argc) {
+                free(roots);
+                return usage_error("missing argument after ", a);
+            }
+            const char *v = argv[++i];
+            if (a[1] == 'I')
+                roots[nroots++] = v;
+            else if (a[1] == 'o')
+                out = v;
+            else
+                lib = v;
+        } else if (strncmp(a, "-I", 2) == 0) {
+            roots[nroots++] = a + 2;
+        } else if (a[0] == '-' && a[1]) {
+            free(roots);
+            return usage_error("unknown option ", a);
+        } else if (top) {
+            free(roots);
+            return usage_error("more than one top-level object: ", a);
+        } else {
+            top = a;
+        }
+    }
+    if (lib && top) {
+        free(roots);
+        return usage_error("--lib takes no top-level object", NULL);
+    }
+    if (!lib && !top) {
+        free(roots);
+        return usage_error("no top-level object given", NULL);
+    }
+    if (lib && !out) {
+        free(roots);
+        return usage_error("--lib needs -o LIB.glsb", NULL);
+    }
+
+    gls_compiler *c = gls_compiler_new(stderr);
+    int rc = 0;
+    for (int i = 0; i < nroots && rc == 0; i++)
+        rc = gls_compiler_add_root(c, roots[i]);
+    if (rc == 0)
+        rc = gls_compiler_add_env_roots(c);
+    free(roots);
+    gls_bundle *b = NULL;
+    if (rc == 0)
+        rc = lib ? gls_compile_lib(c, lib, &b) : gls_compile_top(c, top, &b);
+    char *defout = NULL;
+    if (rc == 0 && !out) {
+        /* default: last component of the top name, + .glsb */
+        const char *base = b->objects[b->top].name;
+        const char *dot = strrchr(base, '.');
+        base = dot ? dot + 1 : base;
+        defout = malloc(strlen(base) + 6);
+        if (defout)
+            sprintf(defout, "%s.glsb", base);
+        out = defout;
+    }
+    if (rc == 0) {
+        uint8_t *bytes;
+        size_t len;
+        gls_error err;
+        if (gls_bundle_write(b, &bytes, &len, &err)) {
+            fprintf(stderr, "glsc: error: %s\n", err.msg);
+            rc = -1;
+        } else {
+            if (gls_write_file_atomic(out, bytes, len)) {
+                fprintf(stderr, "glsc: error: cannot write %s: %s\n", out, strerror(errno));
+                rc = -1;
+            }
+            free(bytes);
+        }
+    }
+    gls_bundle_free(b);
+    gls_compiler_free(c);
+    free(defout);
+    return rc == 0 ? 0 : 1;
+}

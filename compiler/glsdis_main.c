@@ -1,0 +1,50 @@
+/* glsdis: print a bundle as a stable, diffable text dump. */
+#include <stdio.h>
+#include <string.h>
+#include "disasm.h"
+
+static const char usage[] =
+    "usage: glsdis [--source] BUNDLE.glsb\n"
+    "\n"
+    "Print the bundle as text: header and features, textures (size and content\n"
+    "hash), then each object's instructions and vertices.  --source appends the\n"
+    "file:line each instruction came from.\n"
+    "Exit status: 0 success, 1 unreadable or invalid bundle, 2 usage error.\n";
+
+int main(int argc, char **argv)
+{
+    int with_source = 0;
+    const char *path = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--source") == 0)
+            with_source = 1;
+        else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (argv[i][0] == '-' && argv[i][1]) {
+            fprintf(stderr, "glsdis: error: unknown option %s\n%s", argv[i], usage);
+            return 2;
+        } else if (path) {
+            fprintf(stderr, "glsdis: error: more than one bundle given\n%s", usage);
+            return 2;
+        } else
+            path = argv[i];
+    }
+    if (!path) {
+        fprintf(stderr, "glsdis: error: no bundle given\n%s", usage);
+        return 2;
+    }
+    gls_error err;
+    gls_bundle *b = gls_bundle_read_file(path, &err);
+    if (!b) {
+        fprintf(stderr, "glsdis: error: %s\n", err.msg);
+        return 1;
+    }
+    gls_disassemble(b, stdout, with_source);
+    gls_bundle_free(b);
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "glsdis: error: writing the dump failed\n");
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,630 @@
+/* Semantic actions of the scene language: called by the lemon grammar as
+ * it reduces, they check each statement and emit bytecode into the unit.
+ * Numbers are folded here, in double precision. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "grammar.h"
+#include "parse.h"
+
+#define ERR(ctx, line, col, ...) gls_error_at((ctx)->d, gls_tok_loc((ctx), (line), (col)), __VA_ARGS__)
+
+/* ---- instruction table -------------------------------------------------- */
+
+enum { WHERE_OUTSIDE, WHERE_PRIM };
+typedef void (*handler_fn)(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n);
+
+static void h_vert(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_col(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_tex(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_color(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_texmode(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_texture(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_notexture(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_trans(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_rot(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_scale(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_transform(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_push(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_pop(gls_parse *, gls_tok, const gls_val *, unsigned);
+static void h_call(gls_parse *, gls_tok, const gls_val *, unsigned);
+
+/* kinds: one letter per argument position: n number, s string, w word */
+static const struct instr {
+    const char *name;
+    unsigned min, max;
+    const char *kinds;
+    int where;
+    handler_fn fn;
+} instrs[] = {
+    {"vert", 1, 4, "nnnn", WHERE_PRIM, h_vert},
+    {"col", 3, 4, "nnnn", WHERE_PRIM, h_col},
+    {"tex", 2, 2, "nn", WHERE_PRIM, h_tex},
+    {"color", 3, 4, "nnnn", WHERE_OUTSIDE, h_color},
+    {"texmode", 1, 1, "w", WHERE_OUTSIDE, h_texmode},
+    {"texture", 1, 1, "s", WHERE_OUTSIDE, h_texture},
+    {"notexture", 0, 0, "", WHERE_OUTSIDE, h_notexture},
+    {"trans", 3, 3, "nnn", WHERE_OUTSIDE, h_trans},
+    {"rot", 4, 4, "nnnn", WHERE_OUTSIDE, h_rot},
+    {"scale", 1, 3, "nnn", WHERE_OUTSIDE, h_scale},
+    {"transform", 16, 16, "nnnnnnnnnnnnnnnn", WHERE_OUTSIDE, h_transform},
+    {"push", 0, 0, "", WHERE_OUTSIDE, h_push},
+    {"pop", 0, 0, "", WHERE_OUTSIDE, h_pop},
+    {"call", 1, 1, "s", WHERE_OUTSIDE, h_call},
+};
+#define NINSTRS (sizeof instrs / sizeof instrs[0])
+
+static const char *const all_words[] = {"vert", "col", "tex", "color", "texmode", "texture", "notexture",
+                                        "trans", "rot", "scale", "transform", "push", "pop", "call",
+                                        "poly", "qstrip", "tstrip", "tfan", "const"};
+
+static int tok_is(gls_tok t, const char *s)
+{
+    size_t n = strlen(s);
+    return t.len == n && memcmp(t.p, s, n) == 0;
+}
+
+static int prim_kind_of(gls_tok t)
+{
+    for (int k = 0; k < GLS_PRIM_COUNT; k++)
+        if (tok_is(t, gls_prim_name[k]))
+            return k;
+    return -1;
+}
+
+static void emit(gls_parse *ctx, gls_insn *in, unsigned line)
+{
+    if (gls_unit_emit(ctx->u, in, line))
+        ERR(ctx, line, 1, "out of memory");
+}
+
+static void emit_d(gls_parse *ctx, gls_opcode op, const double *d, unsigned nd, unsigned line)
+{
+    gls_insn in = {.op = op, .nd = nd, .nu = 0};
+    memcpy(in.d, d, nd * sizeof *d);
+    emit(ctx, &in, line);
+}
+
+static void emit_u(gls_parse *ctx, gls_opcode op, uint32_t u, unsigned line)
+{
+    gls_insn in = {.op = op, .nd = 0, .nu = 1};
+    in.u[0] = u;
+    emit(ctx, &in, line);
+}
+
+/* ---- statements ----------------------------------------------------------- */
+
+static void describe_kind(const gls_val *v, char *buf, size_t n)
+{
+    if (v->kind == VAL_STR)
+        snprintf(buf, n, "a string");
+    else if (v->kind == VAL_WORD)
+        snprintf(buf, n, "the word '%.*s'", (int)v->len, v->s);
+    else
+        snprintf(buf, n, "a number");
+}
+
+void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
+{
+    unsigned n = ctx->nargs;
+    int too_many = ctx->too_many_args;
+    ctx->nargs = 0;
+    ctx->too_many_args = 0;
+    (void)parens;
+
+    const struct instr *ins = NULL;
+    for (size_t i = 0; i < NINSTRS; i++)
+        if (tok_is(name, instrs[i].name)) {
+            ins = &instrs[i];
+            break;
+        }
+    if (!ins) {
+        if (prim_kind_of(name) >= 0) {
+            ERR(ctx, name.line, name.col, "'%.*s' is a primitive block: write %.*s { vert(...); ... }",
+                (int)name.len, name.p, (int)name.len, name.p);
+            return;
+        }
+        const char *s = gls_suggest(name.p, name.len, all_words, sizeof all_words / sizeof all_words[0]);
+        if (s)
+            ERR(ctx, name.line, name.col, "unknown instruction '%.*s'; did you mean '%s'?", (int)name.len, name.p, s);
+        else
+            ERR(ctx, name.line, name.col, "unknown instruction '%.*s'", (int)name.len, name.p);
+        return;
+    }
+    if (ins->where == WHERE_PRIM && !ctx->in_prim) {
+        ERR(ctx, name.line, name.col, "'%s' is only allowed inside a primitive block (poly, qstrip, tstrip, tfan)",
+            ins->name);
+        return;
+    }
+    if (ins->where == WHERE_OUTSIDE && ctx->in_prim) {
+        ERR(ctx, name.line, name.col, "'%s' is not allowed inside a primitive block", ins->name);
+        return;
+    }
+    if (too_many || n < ins->min || n > ins->max || (ins->fn == h_scale && n == 2)) {
+        if (ins->fn == h_scale)
+            ERR(ctx, name.line, name.col, "'scale' takes 1 or 3 arguments, got %u", n);
+        else if (ins->min == ins->max)
+            ERR(ctx, name.line, name.col, "'%s' takes %u argument%s, got %u", ins->name, ins->min,
+                ins->min == 1 ? "" : "s", n);
+        else
+            ERR(ctx, name.line, name.col, "'%s' takes %u to %u arguments, got %s%u", ins->name, ins->min, ins->max,
+                too_many ? "more than " : "", n);
+        return;
+    }
+    const gls_val *a = ctx->args;
+    for (unsigned i = 0; i < n; i++) {
+        char want = ins->kinds[i];
+        if (a[i].kind == VAL_ERR)
+            return; /* already reported */
+        int ok = (want == 'n' && a[i].kind == VAL_NUM) || (want == 's' && a[i].kind == VAL_STR) ||
+                 (want == 'w' && a[i].kind == VAL_WORD);
+        if (ok)
+            continue;
+        if (want == 'n' && a[i].kind == VAL_WORD) {
+            ERR(ctx, a[i].line, a[i].col, "unknown constant '%.*s'", (int)a[i].len, a[i].s);
+            return;
+        }
+        char got[128];
+        describe_kind(&a[i], got, sizeof got);
+        ERR(ctx, a[i].line, a[i].col, "argument %u of '%s' must be %s, not %s", i + 1, ins->name,
+            want == 'n' ? "a number" : want == 's' ? "a quoted name" : "a word", got);
+        return;
+    }
+    ins->fn(ctx, name, a, n);
+}
+
+static int check_unit_range(gls_parse *ctx, const gls_val *a, unsigned n, const char *what)
+{
+    for (unsigned i = 0; i < n; i++)
+        if (a[i].num < 0 || a[i].num > 1) {
+            ERR(ctx, a[i].line, a[i].col, "%s component %g is outside 0..1", what, a[i].num);
+            return -1;
+        }
+    return 0;
+}
+
+static int grow(void **arr, uint32_t *cap, uint32_t need, size_t elem)
+{
+    if (need <= *cap)
+        return 0;
+    uint32_t c = *cap ? *cap : 64;
+    while (c < need) {
+        if (c > UINT32_MAX / 2)
+            return -1;
+        c *= 2;
+    }
+    void *p = realloc(*arr, (size_t)c * elem);
+    if (!p)
+        return -1;
+    *arr = p;
+    *cap = c;
+    return 0;
+}
+
+static void h_vert(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    gls_unit *u = ctx->u;
+    gls_vec4 p = {a[0].num, n > 1 ? a[1].num : 0, n > 2 ? a[2].num : 0, n > 3 ? a[3].num : 1};
+    if (p.w == 0) {
+        ERR(ctx, a[3].line, a[3].col, "w must not be 0");
+        return;
+    }
+    if (ctx->prim_kind < 0)
+        return;
+    if (ctx->prim_nvert >= GLS_MAX_PRIM_VERTICES || u->npos >= GLS_MAX_VERTICES) {
+        ERR(ctx, name.line, name.col, "too many vertices (a primitive may have %u, an object %u)",
+            GLS_MAX_PRIM_VERTICES, GLS_MAX_VERTICES);
+        ctx->prim_kind = -1;
+        return;
+    }
+    if (grow((void **)&u->pos, &u->pos_cap, u->npos + 1, sizeof *u->pos) ||
+        (ctx->prim_has_col && grow((void **)&u->col, &u->col_cap, u->ncol + 1, sizeof *u->col)) ||
+        (ctx->prim_has_tc && grow((void **)&u->tc, &u->tc_cap, u->ntc + 1, sizeof *u->tc))) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        ctx->stop = 1;
+        return;
+    }
+    u->pos[u->npos++] = p;
+    if (ctx->prim_has_col)
+        u->col[u->ncol++] = ctx->cur_col;
+    if (ctx->prim_has_tc)
+        u->tc[u->ntc++] = ctx->cur_tc;
+    ctx->prim_nvert++;
+}
+
+static void h_col(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    if (check_unit_range(ctx, a, n, "colour"))
+        return;
+    if (!ctx->prim_has_col && ctx->prim_nvert > 0) {
+        ERR(ctx, name.line, name.col,
+            "'col' after the first 'vert' of this primitive: put a 'col' before the first vertex so every vertex has a colour");
+        return;
+    }
+    ctx->prim_has_col = 1;
+    ctx->cur_col = (gls_rgba){(float)a[0].num, (float)a[1].num, (float)a[2].num, n > 3 ? (float)a[3].num : 1.0f};
+}
+
+static void h_tex(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    if (!ctx->prim_has_tc && ctx->prim_nvert > 0) {
+        ERR(ctx, name.line, name.col,
+            "'tex' after the first 'vert' of this primitive: put a 'tex' before the first vertex so every vertex has coordinates");
+        return;
+    }
+    ctx->prim_has_tc = 1;
+    ctx->cur_tc = (gls_st){(float)a[0].num, (float)a[1].num};
+}
+
+static void h_color(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    if (check_unit_range(ctx, a, n, "colour"))
+        return;
+    double d[4] = {a[0].num, a[1].num, a[2].num, n > 3 ? a[3].num : 1.0};
+    emit_d(ctx, GLS_OP_COLOR, d, 4, name.line);
+}
+
+static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    for (unsigned m = 0; m < GLS_MODE_COUNT; m++) {
+        size_t l = strlen(gls_texmode_name[m]);
+        if (a[0].len == l && memcmp(a[0].s, gls_texmode_name[m], l) == 0) {
+            emit_u(ctx, GLS_OP_TEXMODE, m, name.line);
+            return;
+        }
+    }
+    const char *s = gls_suggest(a[0].s, a[0].len, gls_texmode_name, GLS_MODE_COUNT);
+    ERR(ctx, a[0].line, a[0].col, "unknown texture mode '%.*s'%s%s%s (the modes are color, replace, modulate)",
+        (int)a[0].len, a[0].s, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
+}
+
+/* The string argument's text without its quotes. */
+static int ref_arg(gls_parse *ctx, const gls_val *a, const char *what)
+{
+    if (!gls_valid_name(a->s + 1, a->len - 2)) {
+        ERR(ctx, a->line, a->col, "%.*s is not a valid %s name (dotted identifiers, like \"road.vegetation.Birch\")",
+            (int)a->len, a->s, what);
+        return -1;
+    }
+    return 0;
+}
+
+static void h_texture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    if (ref_arg(ctx, a, "texture"))
+        return;
+    gls_unit *u = ctx->u;
+    uint32_t r = gls_unit_add_ref(&u->texrefs, &u->ntexrefs, &u->texrefs_cap, a->s + 1, a->len - 2,
+                                  gls_tok_loc(ctx, a->line, a->col + 1));
+    if (r == GLS_NONE) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return;
+    }
+    emit_u(ctx, GLS_OP_TEXTURE, r, name.line);
+}
+
+static void h_notexture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)a, (void)n;
+    gls_insn in = {.op = GLS_OP_NOTEXTURE};
+    emit(ctx, &in, name.line);
+}
+
+static void h_trans(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[3] = {a[0].num, a[1].num, a[2].num};
+    (void)n;
+    emit_d(ctx, GLS_OP_TRANS, d, 3, name.line);
+}
+
+static void h_rot(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[4] = {a[0].num, a[1].num, a[2].num, a[3].num};
+    (void)n;
+    if (d[1] == 0 && d[2] == 0 && d[3] == 0) {
+        ERR(ctx, a[1].line, a[1].col, "rotation axis is zero");
+        return;
+    }
+    emit_d(ctx, GLS_OP_ROT, d, 4, name.line);
+}
+
+static void h_scale(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[3] = {a[0].num, n == 3 ? a[1].num : a[0].num, n == 3 ? a[2].num : a[0].num};
+    emit_d(ctx, GLS_OP_SCALE, d, 3, name.line);
+}
+
+static void h_transform(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[16];
+    for (unsigned i = 0; i < 16; i++)
+        d[i] = a[i].num;
+    (void)n;
+    emit_d(ctx, GLS_OP_TRANSFORM, d, 16, name.line);
+}
+
+static void h_push(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)a, (void)n;
+    if (ctx->depth >= GLS_MAX_PUSH_DEPTH) {
+        ERR(ctx, name.line, name.col, "'push' nested deeper than %u", GLS_MAX_PUSH_DEPTH);
+        return;
+    }
+    ctx->push_tok[ctx->depth++] = name;
+    gls_insn in = {.op = GLS_OP_PUSH};
+    emit(ctx, &in, name.line);
+}
+
+static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)a, (void)n;
+    if (ctx->depth == 0) {
+        ERR(ctx, name.line, name.col, "'pop' without a matching 'push'");
+        return;
+    }
+    ctx->depth--;
+    gls_insn in = {.op = GLS_OP_POP};
+    emit(ctx, &in, name.line);
+}
+
+static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    if (ref_arg(ctx, a, "object"))
+        return;
+    gls_unit *u = ctx->u;
+    uint32_t r = gls_unit_add_ref(&u->refs, &u->nrefs, &u->refs_cap, a->s + 1, a->len - 2,
+                                  gls_tok_loc(ctx, a->line, a->col + 1));
+    if (r == GLS_NONE) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return;
+    }
+    emit_u(ctx, GLS_OP_CALL, r, name.line);
+}
+
+/* ---- primitive blocks ------------------------------------------------------ */
+
+void sema_block_open(gls_parse *ctx, gls_tok name)
+{
+    ctx->nargs = 0;
+    if (ctx->in_prim) {
+        ERR(ctx, name.line, name.col, "primitive blocks cannot be nested");
+        ctx->in_prim++;
+        return;
+    }
+    int k = prim_kind_of(name);
+    if (k < 0) {
+        int is_instr = 0;
+        for (size_t i = 0; i < NINSTRS; i++)
+            is_instr |= tok_is(name, instrs[i].name);
+        const char *s = is_instr ? NULL : gls_suggest(name.p, name.len, gls_prim_name, GLS_PRIM_COUNT);
+        if (s)
+            ERR(ctx, name.line, name.col, "unknown primitive '%.*s'; did you mean '%s'?", (int)name.len, name.p, s);
+        else
+            ERR(ctx, name.line, name.col, "'%.*s' is not a primitive; the primitives are poly, qstrip, tstrip, tfan",
+                (int)name.len, name.p);
+    }
+    ctx->in_prim = 1;
+    ctx->prim_kind = k;
+    ctx->prim_tok = name;
+    ctx->prim_pos0 = ctx->u->npos;
+    ctx->prim_col0 = ctx->u->ncol;
+    ctx->prim_tc0 = ctx->u->ntc;
+    ctx->prim_nvert = 0;
+    ctx->prim_has_col = ctx->prim_has_tc = 0;
+}
+
+void sema_block_close(gls_parse *ctx, gls_tok rbrace)
+{
+    (void)rbrace;
+    if (ctx->in_prim > 1) {
+        ctx->in_prim--;
+        return;
+    }
+    ctx->in_prim = 0;
+    int k = ctx->prim_kind;
+    if (k < 0)
+        return;
+    gls_tok t = ctx->prim_tok;
+    unsigned nv = ctx->prim_nvert, min = gls_prim_min_verts(k);
+    if (nv < min || (gls_prim_needs_even(k) && nv % 2)) {
+        if (gls_prim_needs_even(k))
+            ERR(ctx, t.line, t.col, "'%s' needs an even number of vertices, at least %u; it has %u", gls_prim_name[k],
+                min, nv);
+        else
+            ERR(ctx, t.line, t.col, "'%s' needs at least %u vertices; it has %u", gls_prim_name[k], min, nv);
+        return;
+    }
+    gls_insn in = {.op = GLS_OP_PRIM, .nd = 0, .nu = 5};
+    in.u[0] = (uint32_t)k;
+    in.u[1] = nv;
+    in.u[2] = ctx->prim_pos0;
+    in.u[3] = ctx->prim_has_col ? ctx->prim_col0 : GLS_NONE;
+    in.u[4] = ctx->prim_has_tc ? ctx->prim_tc0 : GLS_NONE;
+    emit(ctx, &in, t.line);
+}
+
+/* ---- constants and expressions -------------------------------------------- */
+
+static unsigned hash_name(const char *s, size_t n)
+{
+    unsigned h = 2166136261u;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ (unsigned char)s[i]) * 16777619u;
+    return h % GLS_MAX_CONSTS_BUCKETS;
+}
+
+static gls_const *find_const(gls_parse *ctx, const char *s, size_t n)
+{
+    for (gls_const *c = ctx->consts[hash_name(s, n)]; c; c = c->next)
+        if (c->len == n && memcmp(c->name, s, n) == 0)
+            return c;
+    return NULL;
+}
+
+void sema_const(gls_parse *ctx, gls_tok name, gls_val v)
+{
+    if (v.kind == VAL_ERR)
+        return;
+    if (v.kind == VAL_WORD) {
+        ERR(ctx, v.line, v.col, "unknown constant '%.*s'", (int)v.len, v.s);
+        return;
+    }
+    if (ctx->in_prim) {
+        ERR(ctx, name.line, name.col, "'const' is not allowed inside a primitive block");
+        return;
+    }
+    for (size_t i = 0; i < sizeof all_words / sizeof all_words[0]; i++)
+        if (tok_is(name, all_words[i])) {
+            ERR(ctx, name.line, name.col, "'%s' is an instruction name and cannot be a constant", all_words[i]);
+            return;
+        }
+    if (find_const(ctx, name.p, name.len)) {
+        ERR(ctx, name.line, name.col, "constant '%.*s' is already defined", (int)name.len, name.p);
+        return;
+    }
+    gls_const *c = malloc(sizeof *c);
+    if (!c) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return;
+    }
+    unsigned h = hash_name(name.p, name.len);
+    *c = (gls_const){name.p, name.len, v.num, ctx->consts[h]};
+    ctx->consts[h] = c;
+}
+
+void sema_arg(gls_parse *ctx, gls_val v)
+{
+    if (ctx->nargs >= GLS_MAX_ARGS) {
+        ctx->too_many_args = 1;
+        return;
+    }
+    ctx->args[ctx->nargs++] = v;
+}
+
+void sema_recover(gls_parse *ctx)
+{
+    ctx->nargs = 0;
+    ctx->too_many_args = 0;
+}
+
+static const char *token_desc(int major)
+{
+    switch (major) {
+    case 0: return "end of file";
+    case TK_SEMI: return "';'";
+    case TK_LPAREN: return "'('";
+    case TK_RPAREN: return "')'";
+    case TK_LBRACE: return "'{'";
+    case TK_RBRACE: return "'}'";
+    case TK_COMMA: return "','";
+    case TK_ASSIGN: return "'='";
+    default: return NULL;
+    }
+}
+
+void sema_syntax_error(gls_parse *ctx, int major, gls_tok tok)
+{
+    ctx->nargs = 0;
+    const char *d = token_desc(major);
+    if (major == 0 && ctx->in_prim)
+        ERR(ctx, ctx->prim_tok.line, ctx->prim_tok.col, "syntax error: '%.*s' block is not closed with '}'",
+            (int)ctx->prim_tok.len, ctx->prim_tok.p);
+    else if (d)
+        ERR(ctx, tok.line, tok.col, "syntax error: unexpected %s", d);
+    else
+        ERR(ctx, tok.line, tok.col, "syntax error: unexpected '%.*s'", (int)(tok.len > 40 ? 40 : tok.len), tok.p);
+}
+
+gls_val sema_number(gls_parse *ctx, gls_tok t)
+{
+    gls_val v = {.kind = VAL_NUM, .line = t.line, .col = t.col};
+    char *end;
+    errno = 0;
+    v.num = strtod(t.p, &end);
+    if (end != t.p + t.len) {
+        v.kind = VAL_ERR; /* the lexer reported the malformed number */
+        return v;
+    }
+    if (!isfinite(v.num)) {
+        ERR(ctx, t.line, t.col, "number '%.*s' is not finite (outside the range of a double)", (int)t.len, t.p);
+        v.kind = VAL_ERR;
+    }
+    return v;
+}
+
+gls_val sema_string(gls_parse *ctx, gls_tok t)
+{
+    (void)ctx;
+    gls_val v = {.kind = VAL_STR, .s = t.p, .len = t.len, .line = t.line, .col = t.col};
+    return v;
+}
+
+gls_val sema_ident(gls_parse *ctx, gls_tok t)
+{
+    gls_val v = {.kind = VAL_WORD, .s = t.p, .len = t.len, .line = t.line, .col = t.col};
+    gls_const *c = find_const(ctx, t.p, t.len);
+    if (c) {
+        v.kind = VAL_NUM;
+        v.num = c->value;
+    }
+    return v;
+}
+
+static int need_number(gls_parse *ctx, const gls_val *a)
+{
+    if (a->kind == VAL_NUM)
+        return 1;
+    if (a->kind == VAL_WORD)
+        ERR(ctx, a->line, a->col, "unknown constant '%.*s'", (int)a->len, a->s);
+    else if (a->kind == VAL_STR)
+        ERR(ctx, a->line, a->col, "a string cannot be used in arithmetic");
+    return 0;
+}
+
+gls_val sema_unary(gls_parse *ctx, char op, gls_val a, gls_tok optok)
+{
+    gls_val r = a;
+    r.line = optok.line;
+    r.col = optok.col;
+    if (!need_number(ctx, &a)) {
+        r.kind = VAL_ERR;
+        return r;
+    }
+    if (op == '-')
+        r.num = -a.num;
+    return r;
+}
+
+gls_val sema_binary(gls_parse *ctx, char op, gls_val a, gls_val b, gls_tok optok)
+{
+    gls_val r = {.kind = VAL_NUM, .line = a.line, .col = a.col};
+    int ok = need_number(ctx, &a);
+    ok &= need_number(ctx, &b);
+    if (!ok) {
+        r.kind = VAL_ERR;
+        return r;
+    }
+    switch (op) {
+    case '+': r.num = a.num + b.num; break;
+    case '-': r.num = a.num - b.num; break;
+    case '*': r.num = a.num * b.num; break;
+    default:
+        if (b.num == 0) {
+            ERR(ctx, optok.line, optok.col, "division by zero");
+            r.kind = VAL_ERR;
+            return r;
+        }
+        r.num = a.num / b.num;
+        break;
+    }
+    if (!isfinite(r.num)) {
+        ERR(ctx, optok.line, optok.col, "result of '%c' is not finite", op);
+        r.kind = VAL_ERR;
+    }
+    return r;
+}

@@ -1,0 +1,106 @@
+/* Compilation units: storage, and the driver that feeds the scanner's
+ * tokens to the lemon parser for one .scene file. */
+#include <stdlib.h>
+#include <string.h>
+#include "grammar.h"
+#include "parse.h"
+
+void gls_unit_free(gls_unit *u)
+{
+    if (!u)
+        return;
+    free(u->name);
+    free((char *)u->src.text);
+    free(u->code.data);
+    free(u->lines);
+    for (uint32_t i = 0; i < u->nrefs; i++)
+        free(u->refs[i].name);
+    for (uint32_t i = 0; i < u->ntexrefs; i++)
+        free(u->texrefs[i].name);
+    free(u->refs);
+    free(u->texrefs);
+    free(u->pos);
+    free(u->col);
+    free(u->tc);
+    free(u);
+}
+
+int gls_unit_emit(gls_unit *u, const gls_insn *in, uint32_t line)
+{
+    if (u->ninsn >= u->lines_cap) {
+        size_t cap = u->lines_cap ? u->lines_cap * 2 : 64;
+        gls_srcloc *l = realloc(u->lines, cap * sizeof *l);
+        if (!l)
+            return -1;
+        u->lines = l;
+        u->lines_cap = cap;
+    }
+    if (gls_insn_encode(&u->code, in))
+        return -1;
+    u->lines[u->ninsn].file = u->src_file;
+    u->lines[u->ninsn].line = line;
+    u->ninsn++;
+    return 0;
+}
+
+uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, uint32_t *cap, const char *name, size_t len, gls_loc loc)
+{
+    if (*n >= *cap) {
+        uint32_t c = *cap ? *cap * 2 : 8;
+        gls_ref *r = realloc(*arr, c * sizeof *r);
+        if (!r)
+            return GLS_NONE;
+        *arr = r;
+        *cap = c;
+    }
+    char *s = malloc(len + 1);
+    if (!s)
+        return GLS_NONE;
+    memcpy(s, name, len);
+    s[len] = 0;
+    (*arr)[*n].name = s;
+    (*arr)[*n].loc = loc;
+    return (*n)++;
+}
+
+int gls_compile_source(gls_unit *u, gls_diag *d)
+{
+    gls_parse *ctx = calloc(1, sizeof *ctx);
+    if (!ctx) {
+        gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");
+        return -1;
+    }
+    ctx->u = u;
+    ctx->d = d;
+    unsigned errors0 = d->errors;
+    void *parser = glsParseAlloc(malloc, ctx);
+    if (!parser) {
+        free(ctx);
+        gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");
+        return -1;
+    }
+    gls_lexer lx = {u->src.text, u->src.text + u->src.len, u->src.text, NULL, 1};
+    gls_tok t;
+    int code;
+    do {
+        code = gls_lex(&lx, &t, ctx);
+        glsParse(parser, code, t);
+    } while (code != 0 && !ctx->stop && !d->stopped);
+    glsParseFree(parser, free);
+
+    /* end of the object: every push must have been popped */
+    for (unsigned i = 0; i < ctx->depth && !ctx->in_prim; i++) {
+        gls_tok p = ctx->push_tok[i];
+        gls_error_at(d, gls_tok_loc(ctx, p.line, p.col), "'push' without a matching 'pop' before the end of the object");
+    }
+    gls_insn end = {.op = GLS_OP_END};
+    if (gls_unit_emit(u, &end, lx.line))
+        gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");
+    for (unsigned h = 0; h < GLS_MAX_CONSTS_BUCKETS; h++)
+        for (gls_const *c = ctx->consts[h], *next; c; c = next) {
+            next = c->next;
+            free(c);
+        }
+    free(ctx);
+    return d->errors == errors0 ? 0 : -1;
+}

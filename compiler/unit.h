@@ -1,0 +1,52 @@
+/* A compilation unit: one object, compiled from one .scene file (or
+ * imported from a library bundle).  Its bytecode uses unit-local indices
+ * that the linker (link.c) relocates when it assembles the bundle:
+ *   CALL operand    -> index into unit->refs (resolved by name later)
+ *   TEXTURE operand -> index into unit->texrefs
+ *   PRIM p, c, x    -> indices into the unit's own vertex arrays
+ */
+#ifndef GLS_UNIT_H
+#define GLS_UNIT_H
+#include "bundle.h"
+#include "diag.h"
+
+typedef struct {
+    char *name;        /* dotted name being referred to              */
+    gls_loc loc;       /* where (the string argument)                */
+} gls_ref;
+
+typedef struct {
+    double v[16];
+} gls_numargs;
+
+typedef struct gls_unit {
+    char *name;
+    gls_source src;          /* owned text (compiled units only)          */
+    uint32_t src_file;       /* index in the compiler's source-name list  */
+    gls_buf code;
+    uint32_t ninsn;
+    gls_srcloc *lines;       /* per instruction                           */
+    size_t lines_cap;
+    gls_ref *refs;           /* call targets, in CALL operand order        */
+    uint32_t nrefs, refs_cap;
+    gls_ref *texrefs;        /* textures named by texture("...")          */
+    uint32_t ntexrefs, texrefs_cap;
+    gls_vec4 *pos; uint32_t npos, pos_cap;
+    gls_rgba *col; uint32_t ncol, col_cap;
+    gls_st *tc;    uint32_t ntc, tc_cap;
+    /* linker state */
+    int state;               /* 0 unvisited, 1 on the DFS stack, 2 done   */
+    uint32_t final_index;
+} gls_unit;
+
+void gls_unit_free(gls_unit *u);
+
+/* Append instruction in (with local operands) and its source line. */
+int gls_unit_emit(gls_unit *u, const gls_insn *in, uint32_t line);
+/* Add a reference (call or texture); returns its index or GLS_NONE. */
+uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, uint32_t *cap, const char *name, size_t len, gls_loc loc);
+
+/* Parse and compile one .scene source into u (u->name and u->src set by
+ * the caller).  Errors go to d.  Returns 0 if no error was reported. */
+int gls_compile_source(gls_unit *u, gls_diag *d);
+#endif
