@@ -1,0 +1,329 @@
+/* Camera files (spec/camera.md "File format") and the camera's matrices
+ * (spec/camera.md "Projection", "Depth", "Back-projection"). */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "camera.h"
+
+enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_COUNT };
+static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
+                                              "skew", "R", "T", "near", "far"};
+static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1};
+
+static void errf(char *err, size_t errlen, const char *fname, unsigned line, const char *fmt, ...)
+{
+    int k = snprintf(err, errlen, "%s:%u: error: ", fname, line);
+    if (k < 0 || (size_t)k >= errlen)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err + k, errlen - (size_t)k, fmt, ap);
+    va_end(ap);
+}
+
+/* Levenshtein distance with case-insensitive comparison, for "did you
+ * mean" (so "r" suggests "R").  Keys are short; longer words never match. */
+static size_t edit_distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b);
+    if (la > 32 || lb > 32)
+        return 99;
+    size_t row[33];
+    for (size_t j = 0; j <= lb; j++)
+        row[j] = j;
+    for (size_t i = 1; i <= la; i++) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= lb; j++) {
+            size_t up = row[j];
+            int same = tolower((unsigned char)a[i - 1]) == tolower((unsigned char)b[j - 1]);
+            size_t best = diag + !same;
+            if (up + 1 < best)
+                best = up + 1;
+            if (row[j - 1] + 1 < best)
+                best = row[j - 1] + 1;
+            row[j] = best;
+            diag = up;
+        }
+    }
+    return row[lb];
+}
+
+static const char *suggest(const char *word)
+{
+    const char *best = NULL;
+    size_t bd = strlen(word) <= 2 ? 2 : 3; /* within distance 1 for tiny words, else 2 */
+    for (int k = 0; k < K_COUNT; k++) {
+        size_t d = edit_distance(word, key_name[k]);
+        if (d < bd) {
+            bd = d;
+            best = key_name[k];
+        }
+    }
+    return best;
+}
+
+/* One number token: the whole token must be a finite decimal number. */
+static int parse_number(const char *tok, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (end == tok || *end || errno == ERANGE || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+static int check_rotation(const double R[9], char *why, size_t whylen)
+{
+    /* R R^T = I to 1e-6 (each entry), det R = +1 to 1e-6. */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double s = 0;
+            for (int k = 0; k < 3; k++)
+                s += R[3 * i + k] * R[3 * j + k];
+            double e = s - (i == j);
+            if (fabs(e) > 1e-6) {
+                snprintf(why, whylen, "R is not orthonormal: (R R^T)[%d][%d] = %.9g, must be %d within 1e-6", i,
+                         j, s, i == j);
+                return -1;
+            }
+        }
+    double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+                 R[2] * (R[3] * R[7] - R[4] * R[6]);
+    if (fabs(det - 1) > 1e-6) {
+        snprintf(why, whylen, "R has determinant %.9g; a rotation needs +1 (a reflection swaps handedness)", det);
+        return -1;
+    }
+    return 0;
+}
+
+#define MAX_TOKENS 16
+
+int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera *cam, char *err, size_t errlen)
+{
+    double val[K_COUNT][9];
+    unsigned seen[K_COUNT] = {0}; /* line where each key was given, 0 = absent */
+    unsigned line = 0;
+    size_t p = 0;
+    char buf[4096];
+    while (p < len) {
+        size_t e = p;
+        while (e < len && text[e] != '\n')
+            e++;
+        line++;
+        size_t n = e - p;
+        if (n >= sizeof buf) {
+            errf(err, errlen, fname, line, "line longer than %zu bytes", sizeof buf - 1);
+            return -1;
+        }
+        memcpy(buf, text + p, n);
+        buf[n] = 0;
+        p = e + 1;
+        for (size_t i = 0; i < n; i++)
+            if (buf[i] == '#' || buf[i] == '\r')
+                buf[i] = 0;
+            else if (buf[i] == 0) {
+                errf(err, errlen, fname, line, "NUL byte in camera file (is it a text file?)");
+                return -1;
+            }
+        char *tok[MAX_TOKENS + 1];
+        int nt = 0;
+        for (char *s = strtok(buf, " \t\f\v"); s; s = strtok(NULL, " \t\f\v")) {
+            if (nt == MAX_TOKENS + 1)
+                break;
+            tok[nt++] = s;
+        }
+        if (nt == 0)
+            continue;
+        int k;
+        for (k = 0; k < K_COUNT; k++)
+            if (strcmp(tok[0], key_name[k]) == 0)
+                break;
+        if (k == K_COUNT) {
+            const char *s = suggest(tok[0]);
+            if (s)
+                errf(err, errlen, fname, line, "unknown key '%s' (did you mean '%s'?)", tok[0], s);
+            else
+                errf(err, errlen, fname, line,
+                     "unknown key '%s' (keys: width height fx fy cx cy skew R T near far)", tok[0]);
+            return -1;
+        }
+        if (seen[k]) {
+            errf(err, errlen, fname, line, "key '%s' given twice (first on line %u)", key_name[k], seen[k]);
+            return -1;
+        }
+        if (nt - 1 != key_arity[k]) {
+            errf(err, errlen, fname, line, "key '%s' takes %d number%s, got %s%d", key_name[k], key_arity[k],
+                 key_arity[k] == 1 ? "" : "s", nt > MAX_TOKENS ? "more than " : "", nt - 1);
+            return -1;
+        }
+        for (int j = 0; j < key_arity[k]; j++)
+            if (parse_number(tok[1 + j], &val[k][j])) {
+                errf(err, errlen, fname, line, "key '%s': '%s' is not a finite number", key_name[k], tok[1 + j]);
+                return -1;
+            }
+        seen[k] = line;
+    }
+    for (int k = 0; k < K_COUNT; k++)
+        if (!seen[k] && k != K_SKEW) {
+            errf(err, errlen, fname, line, "missing key '%s' (required: width height fx fy cx cy R T near far)",
+                 key_name[k]);
+            return -1;
+        }
+    static const int dims[2] = {K_WIDTH, K_HEIGHT};
+    for (int i = 0; i < 2; i++) {
+        double v = val[dims[i]][0];
+        if (v != floor(v) || v < 1 || v > GLS_CAMERA_MAX_DIM) {
+            errf(err, errlen, fname, seen[dims[i]], "%s %.17g must be a whole number in 1..%u", key_name[dims[i]],
+                 v, GLS_CAMERA_MAX_DIM);
+            return -1;
+        }
+    }
+    if (!(val[K_FX][0] > 0)) {
+        errf(err, errlen, fname, seen[K_FX], "fx must be > 0 (focal length in pixels)");
+        return -1;
+    }
+    if (!(val[K_FY][0] > 0)) {
+        errf(err, errlen, fname, seen[K_FY], "fy must be > 0 (focal length in pixels)");
+        return -1;
+    }
+    if (!(val[K_NEAR][0] > 0)) {
+        errf(err, errlen, fname, seen[K_NEAR], "near must be > 0");
+        return -1;
+    }
+    if (!(val[K_FAR][0] > val[K_NEAR][0])) {
+        errf(err, errlen, fname, seen[K_FAR], "far (%.17g) must be greater than near (%.17g)", val[K_FAR][0],
+             val[K_NEAR][0]);
+        return -1;
+    }
+    char why[200];
+    if (check_rotation(val[K_R], why, sizeof why)) {
+        errf(err, errlen, fname, seen[K_R], "%s", why);
+        return -1;
+    }
+    memset(cam, 0, sizeof *cam);
+    cam->width = (uint32_t)val[K_WIDTH][0];
+    cam->height = (uint32_t)val[K_HEIGHT][0];
+    cam->fx = val[K_FX][0];
+    cam->fy = val[K_FY][0];
+    cam->cx = val[K_CX][0];
+    cam->cy = val[K_CY][0];
+    cam->skew = seen[K_SKEW] ? val[K_SKEW][0] : 0.0;
+    memcpy(cam->R, val[K_R], sizeof cam->R);
+    memcpy(cam->T, val[K_T], sizeof cam->T);
+    cam->near = val[K_NEAR][0];
+    cam->far = val[K_FAR][0];
+    return 0;
+}
+
+int gls_camera_load(const char *path, gls_camera *cam, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "%s: error: cannot open camera file: %s", path, strerror(errno));
+        return -1;
+    }
+    /* Camera files are a few hundred bytes; 1 MiB is a generous cap that
+     * keeps a wrong path (a bundle, a device) from being slurped whole. */
+    size_t cap = 1u << 20, n = 0;
+    char *text = malloc(cap);
+    if (!text) {
+        fclose(f);
+        snprintf(err, errlen, "%s: error: out of memory", path);
+        return -1;
+    }
+    n = fread(text, 1, cap, f);
+    int bad = ferror(f);
+    int more = !bad && n == cap && fgetc(f) != EOF;
+    fclose(f);
+    if (bad || more) {
+        free(text);
+        snprintf(err, errlen, "%s: error: %s", path, bad ? "read error" : "camera file larger than 1 MiB");
+        return -1;
+    }
+    int r = gls_camera_parse(text, n, path, cam, err, errlen);
+    free(text);
+    return r;
+}
+
+void gls_camera_projection(const gls_camera *c, double du, double dv, double P[16])
+{
+    /* spec/camera.md "Projection": eye = (x, -y, -z) of the camera frame;
+     * x_w = u + 0.5, y_w = v + 0.5 with viewport (0, 0, W, H). */
+    double W = c->width, H = c->height, n = c->near, f = c->far;
+    double cx = c->cx + du, cy = c->cy + dv;
+    memset(P, 0, 16 * sizeof *P);
+    P[0] = 2 * c->fx / W;
+    P[1] = -2 * c->skew / W;
+    P[2] = 1 - 2 * (cx + 0.5) / W;
+    P[5] = -2 * c->fy / H;
+    P[6] = 1 - 2 * (cy + 0.5) / H;
+    P[10] = n / (f - n);
+    P[11] = n * f / (f - n);
+    P[14] = -1;
+}
+
+void gls_camera_modelview(const gls_camera *c, const double a[3], double MV[16])
+{
+    const double *R = c->R;
+    memset(MV, 0, 16 * sizeof *MV);
+    for (int i = 0; i < 3; i++) {
+        double s = i == 0 ? 1.0 : -1.0; /* the flip diag(1, -1, -1) */
+        for (int j = 0; j < 3; j++)
+            MV[4 * i + j] = s * R[3 * i + j];
+        /* R*a + T: the large parts cancel here, in double */
+        MV[4 * i + 3] = s * (R[3 * i] * a[0] + R[3 * i + 1] * a[1] + R[3 * i + 2] * a[2] + c->T[i]);
+    }
+    MV[15] = 1;
+}
+
+double gls_camera_depth_to_z(const gls_camera *c, double d)
+{
+    if (d <= 0)
+        return INFINITY;
+    double n = c->near, f = c->far;
+    return n * f / ((f - n) * d + n);
+}
+
+void gls_camera_unproject(const gls_camera *c, double u, double v, double Zc, double Pc[3])
+{
+    double y = (v - c->cy) / c->fy;                  /* Yc / Zc */
+    double x = ((u - c->cx) - c->skew * y) / c->fx;  /* Xc / Zc */
+    Pc[0] = x * Zc;
+    Pc[1] = y * Zc;
+    Pc[2] = Zc;
+}
+
+void gls_camera_to_world(const gls_camera *c, const double Pc[3], double P[3])
+{
+    double d[3] = {Pc[0] - c->T[0], Pc[1] - c->T[1], Pc[2] - c->T[2]};
+    for (int j = 0; j < 3; j++)
+        P[j] = c->R[j] * d[0] + c->R[3 + j] * d[1] + c->R[6 + j] * d[2];
+}
+
+void gls_camera_to_cam(const gls_camera *c, const double P[3], double Pc[3])
+{
+    for (int i = 0; i < 3; i++)
+        Pc[i] = c->R[3 * i] * P[0] + c->R[3 * i + 1] * P[1] + c->R[3 * i + 2] * P[2] + c->T[i];
+}
+
+double gls_camera_project(const gls_camera *c, const double P[3], double *u, double *v)
+{
+    double Pc[3];
+    gls_camera_to_cam(c, P, Pc);
+    *u = (c->fx * Pc[0] + c->skew * Pc[1]) / Pc[2] + c->cx;
+    *v = c->fy * Pc[1] / Pc[2] + c->cy;
+    return Pc[2];
+}
+
+void gls_camera_centre(const gls_camera *c, double C[3])
+{
+    double z[3] = {0, 0, 0};
+    gls_camera_to_world(c, z, C);
+}

@@ -1,0 +1,61 @@
+/* The OpenCV pinhole camera of glscene and its mapping onto OpenGL.
+ *
+ * spec/camera.md derives every formula in this file; the comments here
+ * only name them.  All arithmetic is double precision: GL receives the
+ * results as float only after the large terms have cancelled (the
+ * modelview is camera-relative), see gls_camera_modelview().
+ */
+#ifndef GLS_CAMERA_H
+#define GLS_CAMERA_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define GLS_CAMERA_MAX_DIM 16384u
+
+typedef struct {
+    uint32_t width, height;
+    double fx, fy, cx, cy, skew;
+    double R[9];           /* world to camera, row-major                  */
+    double T[3];           /* Pc = R * P + T                               */
+    double near, far;      /* clipping distances along +Z, scene units    */
+} gls_camera;
+
+/* Parse a camera file's text.  fname is used only in messages.  On error
+ * returns -1 and writes one line "fname:line: error: message" to err. */
+int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera *cam, char *err,
+                     size_t errlen);
+
+/* Read and parse a camera file ("fname: error: ..." if it cannot be read). */
+int gls_camera_load(const char *path, gls_camera *cam, char *err, size_t errlen);
+
+/* Projection matrix, row-major, eye space -> clip space, for a principal
+ * point shifted by (du, dv) pixels (0,0 for a plain render; sub-pixel
+ * jitter for anti-aliasing passes).  Maps image (u, v) to GL window
+ * (u + 0.5, v + 0.5) and Zc in [near, far] to depth [1, 0] (reversed Z,
+ * glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)). */
+void gls_camera_projection(const gls_camera *c, double du, double dv, double P[16]);
+
+/* Modelview, row-major, for geometry stored as offsets from anchor (world
+ * coordinates): eye = diag(1,-1,-1) * (R * (anchor + off) + T).  The
+ * translation R*anchor + T is formed in double, so it is small whenever the
+ * anchor is near the camera, however far both are from the world origin. */
+void gls_camera_modelview(const gls_camera *c, const double anchor[3], double MV[16]);
+
+/* Depth buffer value -> camera Zc (reversed Z): Zc = n f / ((f - n) d + n).
+ * d == 0 (the clear value: no surface) gives +inf. */
+double gls_camera_depth_to_z(const gls_camera *c, double d);
+
+/* Camera-frame point of pixel (u, v) at depth Zc (exact inverse of the
+ * projection, skew included), and the same point in world coordinates. */
+void gls_camera_unproject(const gls_camera *c, double u, double v, double Zc, double Pc[3]);
+void gls_camera_to_world(const gls_camera *c, const double Pc[3], double P[3]);
+
+/* World point -> camera frame, and -> pixel (u, v); returns Zc. */
+void gls_camera_to_cam(const gls_camera *c, const double P[3], double Pc[3]);
+double gls_camera_project(const gls_camera *c, const double P[3], double *u, double *v);
+
+/* Camera centre in world coordinates: C = -R^T T. */
+void gls_camera_centre(const gls_camera *c, double C[3]);
+
+#endif

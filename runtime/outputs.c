@@ -1,0 +1,98 @@
+/* PNG, PFM and PLY encoders (outputs.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "outputs.h"
+#include <stb/stb_image_write.h>
+
+typedef struct {
+    gls_buf *out;
+    int failed;
+} sink;
+
+static void to_buf(void *ctx, void *data, int size)
+{
+    sink *s = ctx;
+    if (size > 0 && gls_buf_put(s->out, data, (size_t)size))
+        s->failed = 1;
+}
+
+int gls_encode_png(const uint8_t *rgba, uint32_t w, uint32_t h, gls_buf *out)
+{
+    size_t n = (size_t)w * h;
+    uint8_t *rgb = malloc(n ? n * 3 : 1);
+    if (!rgb)
+        return -1;
+    for (size_t i = 0; i < n; i++)
+        memcpy(rgb + 3 * i, rgba + 4 * i, 3);
+    sink s = {out, 0};
+    int ok = stbi_write_png_to_func(to_buf, &s, (int)w, (int)h, 3, rgb, (int)(w * 3));
+    free(rgb);
+    return ok && !s.failed ? 0 : -1;
+}
+
+static void put_f32le(uint8_t *p, float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, 4);
+    for (int i = 0; i < 4; i++)
+        p[i] = (uint8_t)(u >> (8 * i));
+}
+
+static void put_f64le(uint8_t *p, double f)
+{
+    uint64_t u;
+    memcpy(&u, &f, 8);
+    for (int i = 0; i < 8; i++)
+        p[i] = (uint8_t)(u >> (8 * i));
+}
+
+int gls_encode_pfm(const float *z, uint32_t w, uint32_t h, gls_buf *out)
+{
+    char hdr[64];
+    int k = snprintf(hdr, sizeof hdr, "Pf\n%u %u\n-1.0\n", w, h);
+    if (gls_buf_put(out, hdr, (size_t)k) || gls_buf_reserve(out, (size_t)w * h * 4))
+        return -1;
+    for (uint32_t r = h; r-- > 0;) {
+        const float *row = z + (size_t)r * w;
+        for (uint32_t x = 0; x < w; x++)
+            put_f32le(out->data + out->len + 4 * (size_t)x, row[x]);
+        out->len += (size_t)w * 4;
+    }
+    return 0;
+}
+
+int gls_encode_ply(const gls_camera *c, const float *z, const uint8_t *rgba, gls_buf *out, uint64_t *npoints)
+{
+    size_t n = (size_t)c->width * c->height;
+    uint64_t count = 0;
+    for (size_t i = 0; i < n; i++)
+        count += isfinite(z[i]) != 0;
+    char hdr[512];
+    int k = snprintf(hdr, sizeof hdr,
+                     "ply\nformat binary_little_endian 1.0\n"
+                     "comment glscene: world coordinates of the surface seen at each pixel centre\n"
+                     "element vertex %llu\n"
+                     "property double x\nproperty double y\nproperty double z\n"
+                     "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n",
+                     (unsigned long long)count);
+    if (gls_buf_put(out, hdr, (size_t)k) || gls_buf_reserve(out, (size_t)count * 27))
+        return -1;
+    for (uint32_t v = 0; v < c->height; v++)
+        for (uint32_t u = 0; u < c->width; u++) {
+            size_t i = (size_t)v * c->width + u;
+            if (!isfinite(z[i]))
+                continue;
+            double Pc[3], P[3];
+            gls_camera_unproject(c, u, v, z[i], Pc);
+            gls_camera_to_world(c, Pc, P);
+            uint8_t *p = out->data + out->len;
+            for (int j = 0; j < 3; j++)
+                put_f64le(p + 8 * j, P[j]);
+            memcpy(p + 24, rgba + 4 * i, 3);
+            out->len += 27;
+        }
+    *npoints = count;
+    return 0;
+}

@@ -1,0 +1,25 @@
+/* Encoders of the player's output files, into memory; the caller writes
+ * the bytes with gls_write_file_atomic() so no partial file is ever seen.
+ * All encoders are deterministic: same pixels, same bytes. */
+#ifndef GLS_OUTPUTS_H
+#define GLS_OUTPUTS_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "bundle.h"
+#include "camera.h"
+
+/* 8-bit RGB PNG of an RGBA image (alpha dropped), top row first. */
+int gls_encode_png(const uint8_t *rgba, uint32_t w, uint32_t h, gls_buf *out);
+
+/* PFM ("Pf", one channel float32, scale -1.0 = little-endian), rows
+ * bottom to top as the format (Middlebury) requires; z is top row first. */
+int gls_encode_pfm(const float *z, uint32_t w, uint32_t h, gls_buf *out);
+
+/* Binary little-endian PLY of every pixel with a surface (finite z):
+ * world coordinates as double x y z (float would lose millimetres 1e5
+ * units from the origin) and uchar red green blue.  Points are in pixel
+ * order, row by row from the top.  *npoints receives the count. */
+int gls_encode_ply(const gls_camera *c, const float *z, const uint8_t *rgba, gls_buf *out, uint64_t *npoints);
+
+#endif

@@ -1,0 +1,233 @@
+/* gls_play(): load, check everything, then render and write (player.h).
+ * Every input is checked before the first pixel is drawn, so an error in
+ * the last camera file leaves no output of the first camera behind. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "glctx.h"
+#include "outputs.h"
+#include "player.h"
+#include "render.h"
+
+#define MAXPATH 4096
+
+int gls_output_path(char *buf, size_t len, const char *outdir, const char *name, const char *kind,
+                    uint32_t frame, const char *ext)
+{
+    int k = snprintf(buf, len, "%s/%s/%s_%06u.%s", outdir, name, kind, frame, ext);
+    return k < 0 || (size_t)k >= len ? -1 : 0;
+}
+
+/* mkdir -p: create path and its missing parents. */
+static int make_dirs(const char *path)
+{
+    char tmp[MAXPATH];
+    size_t n = strlen(path);
+    if (n == 0 || n >= sizeof tmp) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    memcpy(tmp, path, n + 1);
+    for (size_t i = 1; i <= n; i++) {
+        if (tmp[i] != '/' && tmp[i] != 0)
+            continue;
+        char save = tmp[i];
+        tmp[i] = 0;
+        if (mkdir(tmp, 0777) && errno != EEXIST)
+            return -1;
+        tmp[i] = save;
+    }
+    struct stat st;
+    if (stat(path, &st))
+        return -1;
+    if (!S_ISDIR(st.st_mode)) {
+        errno = ENOTDIR;
+        return -1;
+    }
+    return 0;
+}
+
+/* Camera name: the file name without directory and without ".cam". */
+static char *camera_name(const char *path)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    size_t n = strlen(base);
+    if (n > 4 && strcmp(base + n - 4, ".cam") == 0)
+        n -= 4;
+    char *s = malloc(n + 1);
+    if (s) {
+        memcpy(s, base, n);
+        s[n] = 0;
+    }
+    return s;
+}
+
+static int write_buf(FILE *errs, const char *path, gls_buf *b)
+{
+    if (gls_write_file_atomic(path, b->data, b->len)) {
+        fprintf(errs, "glsplay: error: cannot write %s: %s\n", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* Render one camera and write what was asked for. */
+static int play_camera(const gls_play_opts *o, gls_renderer *r, const gls_camera *c, const char *name, FILE *errs)
+{
+    char err[512], path[MAXPATH];
+    size_t n = (size_t)c->width * c->height;
+    uint8_t *rgba = NULL;
+    float *z = NULL;
+    gls_buf buf = {0};
+    int rc = -1;
+    if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
+        fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
+        return -1;
+    }
+    gls_render_pass(r, c, 0.0, 0.0);
+    if (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_POINTS)) {
+        rgba = malloc(n * 4);
+        if (!rgba)
+            goto oom;
+        gls_render_read_rgba(r, rgba);
+    }
+    if (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) {
+        z = malloc(n * sizeof *z);
+        if (!z)
+            goto oom;
+        gls_render_read_z(r, z);
+    }
+    static const struct {
+        unsigned bit;
+        const char *kind, *ext;
+    } outs[] = {{GLS_OUT_IMAGE, "image", "png"}, {GLS_OUT_DEPTH, "depth", "pfm"}, {GLS_OUT_POINTS, "points", "ply"}};
+    for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
+        if (!(o->outputs & outs[k].bit))
+            continue;
+        if (gls_output_path(path, sizeof path, o->outdir, name, outs[k].kind, o->frame, outs[k].ext)) {
+            fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
+            goto out;
+        }
+        buf.len = 0;
+        uint64_t np;
+        int e = outs[k].bit == GLS_OUT_IMAGE   ? gls_encode_png(rgba, c->width, c->height, &buf)
+                : outs[k].bit == GLS_OUT_DEPTH ? gls_encode_pfm(z, c->width, c->height, &buf)
+                                               : gls_encode_ply(c, z, rgba, &buf, &np);
+        if (e)
+            goto oom;
+        if (write_buf(errs, path, &buf))
+            goto out;
+    }
+    rc = 0;
+    goto out;
+oom:
+    fprintf(errs, "glsplay: error: camera %s: out of memory\n", name);
+out:
+    free(rgba);
+    free(z);
+    free(buf.data);
+    return rc;
+}
+
+int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
+{
+    char err[1024];
+    gls_error gerr;
+    int rc = 1;
+    gls_scene scene;
+    memset(&scene, 0, sizeof scene);
+    gls_glctx *ctx = NULL;
+    gls_renderer *r = NULL;
+    gls_camera *cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *cams);
+    char **names = calloc(o->ncameras ? o->ncameras : 1, sizeof *names);
+    gls_bundle *b = NULL;
+    if (!cams || !names) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        goto out;
+    }
+    b = gls_bundle_read_file(o->bundle, &gerr);
+    if (!b) {
+        fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, gerr.msg);
+        goto out;
+    }
+    if (b->top == GLS_NONE) {
+        fprintf(errs, "glsplay: error: %s: a library bundle (no top-level object) cannot be played; "
+                      "compile a scene with a top-level object\n", o->bundle);
+        goto out;
+    }
+    for (size_t i = 0; i < o->ncameras; i++) {
+        if (gls_camera_load(o->cameras[i], &cams[i], err, sizeof err)) {
+            fprintf(errs, "%s\n", err);
+            goto out;
+        }
+        if (o->width)
+            cams[i].width = o->width, cams[i].height = o->height;
+        names[i] = camera_name(o->cameras[i]);
+        if (!names[i]) {
+            fprintf(errs, "glsplay: error: out of memory\n");
+            goto out;
+        }
+        if (!names[i][0] || strcmp(names[i], ".") == 0 || strcmp(names[i], "..") == 0) {
+            fprintf(errs, "glsplay: error: %s: cannot name an output directory after this camera file\n",
+                    o->cameras[i]);
+            goto out;
+        }
+        for (size_t j = 0; j < i; j++)
+            if (strcmp(names[i], names[j]) == 0) {
+                fprintf(errs, "glsplay: error: cameras %s and %s would both write to %s/%s/\n", o->cameras[j],
+                        o->cameras[i], o->outdir ? o->outdir : "OUTDIR", names[i]);
+                goto out;
+            }
+    }
+    if (gls_scene_flatten(b, &scene, err, sizeof err)) {
+        fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, err);
+        goto out;
+    }
+    if (o->explain)
+        gls_explain(out, o->bundle, b, &scene, cams, (const char *const *)names, o->ncameras, o->outputs);
+    if (!o->outdir) {
+        rc = 0;
+        goto out;
+    }
+    /* All directories before any rendering: an unwritable output fails
+     * before anything is written. */
+    for (size_t i = 0; i < o->ncameras; i++) {
+        char dir[MAXPATH];
+        int k = snprintf(dir, sizeof dir, "%s/%s", o->outdir, names[i]);
+        if (k < 0 || (size_t)k >= sizeof dir || make_dirs(dir)) {
+            fprintf(errs, "glsplay: error: cannot create output directory %s: %s\n", dir,
+                    k < 0 || (size_t)k >= sizeof dir ? "path too long" : strerror(errno));
+            goto out;
+        }
+    }
+    ctx = gls_glctx_create(1, 1, err, sizeof err);
+    if (!ctx) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        goto out;
+    }
+    r = gls_renderer_create(ctx, b, &scene, err, sizeof err);
+    if (!r) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        goto out;
+    }
+    /* The bundle's texels and code are on the GPU side or in the scene
+     * now: free them before the per-camera buffers are allocated. */
+    gls_bundle_free(b);
+    b = NULL;
+    for (size_t i = 0; i < o->ncameras; i++)
+        if (play_camera(o, r, &cams[i], names[i], errs))
+            goto out;
+    rc = 0;
+out:
+    gls_renderer_destroy(r);
+    gls_glctx_destroy(ctx);
+    gls_scene_free(&scene);
+    gls_bundle_free(b);
+    for (size_t i = 0; names && i < o->ncameras; i++)
+        free(names[i]);
+    free(names);
+    free(cams);
+    return rc;
+}

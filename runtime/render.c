@@ -1,0 +1,319 @@
+/* The GL renderer (render.h).
+ *
+ * Fixed-function GL (compatibility profile) rather than shaders: the
+ * bundle's drawing model is exactly the fixed-function one (per-vertex
+ * colour, texture env REPLACE/MODULATE, alpha test), llvmpipe compiles the
+ * fixed-function state into the same LLVM code a GLSL shader would give,
+ * and there is no shader source to embed, compile and diagnose.  Matrices
+ * go in with glLoadMatrixf after being formed in double on the CPU.
+ */
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "render.h"
+
+#ifndef GL_TEXTURE_MAX_ANISOTROPY
+#define GL_TEXTURE_MAX_ANISOTROPY 0x84FE
+#define GL_MAX_TEXTURE_MAX_ANISOTROPY 0x84FF
+#endif
+
+/* GL entry points beyond GL 1.1 come through the backend's proc lookup,
+ * so the renderer does not depend on what a library happens to export. */
+#define GLS_GLFUNCS(X)                                                    \
+    X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                        \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                  \
+    X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                        \
+    X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                      \
+    X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)                \
+    X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                      \
+    X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                \
+    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)        \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)          \
+    X(PFNGLCLIPCONTROLPROC, glClipControl)                                \
+    X(PFNGLGENBUFFERSPROC, glGenBuffers)                                  \
+    X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                            \
+    X(PFNGLBINDBUFFERPROC, glBindBuffer)                                  \
+    X(PFNGLBUFFERDATAPROC, glBufferData)                                  \
+    X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                          \
+    X(PFNGLGETSTRINGIPROC, glGetStringi)
+
+struct gls_renderer {
+#define GLS_X_FN(type, name) type name;
+    GLS_GLFUNCS(GLS_X_FN)
+#undef GLS_X_FN
+    const gls_scene *scene;
+    GLuint vbo, fbo, rb_color, rb_depth;
+    GLuint *tex;           /* per bundle texture: GL name or 0 if unused */
+    uint32_t ntex;
+    uint32_t width, height;
+    int aniso;
+    float zc_a, zc_b;      /* projection [2][2], [2][3] as GL got them */
+    float *dbuf;           /* depth read-back scratch */
+    char gl_name[128], gl_version[128];
+};
+
+void gls_mat_to_gl(const double rm[16], float cm[16])
+{
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            cm[4 * j + i] = (float)rm[4 * i + j];
+}
+
+static int has_extension(gls_renderer *r, const char *name)
+{
+    GLint n = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+    for (GLint i = 0; i < n; i++) {
+        const char *e = (const char *)r->glGetStringi(GL_EXTENSIONS, (GLuint)i);
+        if (e && strcmp(e, name) == 0)
+            return 1;
+    }
+    return 0;
+}
+
+static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size_t errlen)
+{
+    const gls_scene *s = r->scene;
+    r->ntex = b->ntextures;
+    r->tex = calloc(b->ntextures ? b->ntextures : 1, sizeof *r->tex);
+    if (!r->tex) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    if (!(s->features & GLS_FEAT_TEXTURES))
+        return 0;
+    GLfloat maxaniso = 1;
+    if (r->aniso)
+        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxaniso);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (uint32_t i = 0; i < s->nchunks; i++) {
+        uint32_t t = s->chunks[i].key.texture;
+        if (t == GLS_NONE || r->tex[t])
+            continue;
+        const gls_texture *tx = &b->textures[t];
+        glGenTextures(1, &r->tex[t]);
+        glBindTexture(GL_TEXTURE_2D, r->tex[t]);
+        /* Texel row 0 (the top row of the image) is GL row 0: t = 0. */
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, (GLsizei)tx->width, (GLsizei)tx->height, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, tx->rgba);
+        r->glGenerateMipmap(GL_TEXTURE_2D);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        /* grazing angles (a road towards the horizon) blur badly with
+         * isotropic mipmapping alone */
+        if (r->aniso)
+            glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, maxaniso < 16 ? maxaniso : 16);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR) {
+        snprintf(err, errlen, "GL error %#x while uploading textures", e);
+        return -1;
+    }
+    return 0;
+}
+
+gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls_scene *scene, char *err,
+                                  size_t errlen)
+{
+    gls_renderer *r = calloc(1, sizeof *r);
+    if (!r) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    r->scene = scene;
+#define GLS_X_LOAD(type, name)                                                    \
+    r->name = (type)(uintptr_t)gls_glctx_proc(ctx, #name);                        \
+    if (!r->name) {                                                               \
+        snprintf(err, errlen, "%s: GL function %s is missing", gls_glctx_backend(ctx), #name); \
+        free(r);                                                                  \
+        return NULL;                                                              \
+    }
+    GLS_GLFUNCS(GLS_X_LOAD)
+#undef GLS_X_LOAD
+    snprintf(r->gl_name, sizeof r->gl_name, "%s", (const char *)glGetString(GL_RENDERER));
+    snprintf(r->gl_version, sizeof r->gl_version, "%s", (const char *)glGetString(GL_VERSION));
+    r->aniso = has_extension(r, "GL_EXT_texture_filter_anisotropic") ||
+               has_extension(r, "GL_ARB_texture_filter_anisotropic");
+
+    /* reversed Z: z_ndc in [0, 1], 1 at near; see spec/camera.md */
+    r->glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glClearDepth(0.0);
+    glDepthFunc(GL_GREATER);
+    glEnable(GL_DEPTH_TEST);
+    glDisable(GL_DITHER);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_LIGHTING);
+    glClearColor(0, 0, 0, 1);
+    if (scene->features & GLS_FEAT_ALPHA_TEST) {
+        glEnable(GL_ALPHA_TEST);
+        glAlphaFunc(GL_GEQUAL, 0.5f);
+    }
+
+    r->glGenBuffers(1, &r->vbo);
+    r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    r->glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)scene->nverts * scene->stride), scene->verts,
+                    GL_STATIC_DRAW);
+    GLsizei stride = (GLsizei)scene->stride;
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(3, GL_FLOAT, stride, (const void *)0);
+    if (scene->has_color) {
+        glEnableClientState(GL_COLOR_ARRAY);
+        glColorPointer(4, GL_UNSIGNED_BYTE, stride, (const void *)(uintptr_t)scene->color_offset);
+    }
+    if (scene->has_texcoord) {
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(uintptr_t)scene->texcoord_offset);
+    } else {
+        glTexCoord2f(0, 0); /* texcoords absent: (0, 0) */
+    }
+    if (upload_textures(r, b, err, errlen)) {
+        gls_renderer_destroy(r);
+        return NULL;
+    }
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR) {
+        snprintf(err, errlen, "GL error %#x while setting up the renderer", e);
+        gls_renderer_destroy(r);
+        return NULL;
+    }
+    return r;
+}
+
+int gls_renderer_set_size(gls_renderer *r, uint32_t w, uint32_t h, char *err, size_t errlen)
+{
+    if (r->fbo && r->width == w && r->height == h)
+        return 0;
+    GLint maxrb = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxrb);
+    if ((GLint)w > maxrb || (GLint)h > maxrb) {
+        snprintf(err, errlen, "image size %ux%u exceeds the GL limit %d", w, h, maxrb);
+        return -1;
+    }
+    float *d = realloc(r->dbuf, (size_t)w * h * sizeof *d);
+    if (!d) {
+        snprintf(err, errlen, "out of memory for a %ux%u depth image", w, h);
+        return -1;
+    }
+    r->dbuf = d;
+    if (!r->fbo) {
+        r->glGenFramebuffers(1, &r->fbo);
+        r->glGenRenderbuffers(1, &r->rb_color);
+        r->glGenRenderbuffers(1, &r->rb_depth);
+    }
+    r->glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
+    r->glBindRenderbuffer(GL_RENDERBUFFER, r->rb_color);
+    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, (GLsizei)w, (GLsizei)h);
+    r->glBindRenderbuffer(GL_RENDERBUFFER, r->rb_depth);
+    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, (GLsizei)w, (GLsizei)h);
+    r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->rb_color);
+    r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->rb_depth);
+    GLenum st = r->glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (st != GL_FRAMEBUFFER_COMPLETE) {
+        snprintf(err, errlen, "framebuffer %ux%u incomplete (status %#x)", w, h, st);
+        return -1;
+    }
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glViewport(0, 0, (GLsizei)w, (GLsizei)h);
+    r->width = w;
+    r->height = h;
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR) {
+        snprintf(err, errlen, "GL error %#x while creating a %ux%u framebuffer", e, w, h);
+        return -1;
+    }
+    return 0;
+}
+
+static void apply_key(gls_renderer *r, const gls_drawkey *k)
+{
+    if (k->texture == GLS_NONE) {
+        glDisable(GL_TEXTURE_2D);
+    } else {
+        glEnable(GL_TEXTURE_2D);
+        glBindTexture(GL_TEXTURE_2D, r->tex[k->texture]);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, k->mode == GLS_MODE_REPLACE ? GL_REPLACE : GL_MODULATE);
+    }
+    if (!r->scene->has_color)
+        glColor4ub(k->rgba[0], k->rgba[1], k->rgba[2], k->rgba[3]);
+}
+
+void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
+{
+    double P[16], MV[16];
+    float f[16];
+    gls_camera_projection(c, du, dv, P);
+    gls_mat_to_gl(P, f);
+    r->zc_a = f[10]; /* row 2: z_clip = a * ze + b */
+    r->zc_b = f[14];
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(f);
+    glMatrixMode(GL_MODELVIEW);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const gls_scene *s = r->scene;
+    const gls_drawkey *prev = NULL;
+    for (uint32_t i = 0; i < s->nchunks; i++) {
+        const gls_chunk *ch = &s->chunks[i];
+        if (!prev || memcmp(prev, &ch->key, sizeof *prev)) {
+            apply_key(r, &ch->key);
+            prev = &ch->key;
+        }
+        gls_camera_modelview(c, ch->anchor, MV);
+        gls_mat_to_gl(MV, f);
+        glLoadMatrixf(f);
+        glDrawArrays(GL_TRIANGLES, (GLint)ch->first, (GLsizei)ch->count);
+    }
+}
+
+void gls_render_read_rgba(gls_renderer *r, uint8_t *rgba)
+{
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, (GLsizei)r->width, (GLsizei)r->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+}
+
+void gls_render_read_z(gls_renderer *r, float *z)
+{
+    size_t n = (size_t)r->width * r->height;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, (GLsizei)r->width, (GLsizei)r->height, GL_DEPTH_COMPONENT, GL_FLOAT, r->dbuf);
+    /* z_ndc = d = (a*ze + b) / -ze with ze = -Zc  =>  Zc = b / (d + a).
+     * a = n/(f-n) and b = n f/(f-n) exactly as the floats GL used, so the
+     * inversion adds no error of its own.  d == 0 is the clear value. */
+    double a = r->zc_a, b = r->zc_b;
+    for (size_t i = 0; i < n; i++) {
+        double d = r->dbuf[i];
+        z[i] = d > 0 ? (float)(b / (d + a)) : INFINITY;
+    }
+}
+
+const char *gls_renderer_gl_name(const gls_renderer *r) { return r->gl_name; }
+const char *gls_renderer_gl_version(const gls_renderer *r) { return r->gl_version; }
+int gls_renderer_anisotropic(const gls_renderer *r) { return r->aniso; }
+
+void gls_renderer_destroy(gls_renderer *r)
+{
+    if (!r)
+        return;
+    if (r->tex) {
+        for (uint32_t i = 0; i < r->ntex; i++)
+            if (r->tex[i])
+                glDeleteTextures(1, &r->tex[i]);
+        free(r->tex);
+    }
+    if (r->vbo)
+        r->glDeleteBuffers(1, &r->vbo);
+    if (r->fbo) {
+        r->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        r->glDeleteFramebuffers(1, &r->fbo);
+        r->glDeleteRenderbuffers(1, &r->rb_color);
+        r->glDeleteRenderbuffers(1, &r->rb_depth);
+    }
+    free(r->dbuf);
+    free(r);
+}

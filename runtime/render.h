@@ -1,0 +1,56 @@
+/* Drawing a flattened scene (scene.h) through one camera (camera.h) into
+ * an off-screen framebuffer, and reading the result back.
+ *
+ * The framebuffer: RGBA8 colour and 32-bit float depth renderbuffers in a
+ * framebuffer object, reversed Z (depth 1 at near, 0 at far, cleared to 0,
+ * GL_GREATER), so recovered depth keeps ~float precision relative to the
+ * distance over the whole near..far range (spec/camera.md "Depth").
+ * Framebuffer row r is image row r (the y flip is in the projection), so
+ * read-backs come out top row first.
+ */
+#ifndef GLS_RENDER_H
+#define GLS_RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "bundle.h"
+#include "camera.h"
+#include "glctx.h"
+#include "scene.h"
+
+typedef struct gls_renderer gls_renderer;
+
+/* Upload the scene's vertices and the textures it uses.  The context must
+ * be current; scene must outlive the renderer (its chunks are drawn from
+ * it), the bundle need not.  NULL with a message on failure. */
+gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls_scene *scene, char *err,
+                                  size_t errlen);
+
+/* (Re)allocate the framebuffer for width x height images. */
+int gls_renderer_set_size(gls_renderer *r, uint32_t width, uint32_t height, char *err, size_t errlen);
+
+/* Render one pass: clear, draw every chunk.  (du, dv) shifts the principal
+ * point by a sub-pixel amount (0, 0 for a plain image): the hook for
+ * anti-aliasing by jittered multi-pass accumulation.  The camera's
+ * width/height must equal the framebuffer size. */
+void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv);
+
+/* Read back the last pass: RGBA8 top row first (width*height*4 bytes);
+ * depth as camera Zc (float, +inf where nothing was drawn), top row first.
+ * Zc is recovered from the depth buffer with the projection coefficients
+ * exactly as they were handed to GL (as float), in double. */
+void gls_render_read_rgba(gls_renderer *r, uint8_t *rgba);
+void gls_render_read_z(gls_renderer *r, float *z);
+
+/* GL_RENDERER and GL_VERSION strings of the context, for reports. */
+const char *gls_renderer_gl_name(const gls_renderer *r);
+const char *gls_renderer_gl_version(const gls_renderer *r);
+/* 1 if anisotropic filtering is available (and used for textures). */
+int gls_renderer_anisotropic(const gls_renderer *r);
+
+void gls_renderer_destroy(gls_renderer *r);
+
+/* Column-major float copy of a row-major double matrix, for glLoadMatrixf. */
+void gls_mat_to_gl(const double rm[16], float cm[16]);
+
+#endif
