@@ -60,29 +60,31 @@ void gls_note_at(gls_diag *d, gls_loc loc, const char *fmt, ...)
     va_end(ap);
 }
 
+/* Optimal-string-alignment distance: insertions, deletions, substitutions
+ * and swaps of two neighbouring letters each cost 1 ("trnas" is 1 from
+ * "trans"). */
 unsigned gls_edit_distance(const char *a, size_t alen, const char *b)
 {
     size_t blen = strlen(b);
     if (alen > 64 || blen > 64)
         return 1000;
-    unsigned row[65];
+    unsigned d[65][65];
+    for (size_t i = 0; i <= alen; i++)
+        d[i][0] = (unsigned)i;
     for (size_t j = 0; j <= blen; j++)
-        row[j] = (unsigned)j;
-    for (size_t i = 1; i <= alen; i++) {
-        unsigned diag = row[0];
-        row[0] = (unsigned)i;
+        d[0][j] = (unsigned)j;
+    for (size_t i = 1; i <= alen; i++)
         for (size_t j = 1; j <= blen; j++) {
-            unsigned up = row[j];
-            unsigned best = diag + (a[i - 1] != b[j - 1]);
-            if (up + 1 < best)
-                best = up + 1;
-            if (row[j - 1] + 1 < best)
-                best = row[j - 1] + 1;
-            row[j] = best;
-            diag = up;
+            unsigned best = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            if (d[i - 1][j] + 1 < best)
+                best = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < best)
+                best = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < best)
+                best = d[i - 2][j - 2] + 1;
+            d[i][j] = best;
         }
-    }
-    return row[blen];
+    return d[alen][blen];
 }
 
 const char *gls_suggest(const char *word, size_t len, const char *const *cands, size_t n)

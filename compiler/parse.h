@@ -54,6 +54,10 @@ typedef struct {
     gls_const *consts[GLS_MAX_CONSTS_BUCKETS];
     /* parser health */
     int stop;               /* stack overflow or error limit: stop feeding */
+    unsigned errors_at_start;   /* diag error count when this file began   */
+    unsigned errors_at_block;   /* ... when the open primitive block began */
+    int syntax_errors;          /* statements were dropped by recovery     */
+    int prev_major;             /* previous token, for "missing ';'" hints */
 } gls_parse;
 
 static inline gls_loc gls_tok_loc(const gls_parse *ctx, unsigned line, unsigned col)

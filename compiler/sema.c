@@ -363,7 +363,9 @@ static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     (void)a, (void)n;
     if (ctx->depth == 0) {
-        ERR(ctx, name.line, name.col, "'pop' without a matching 'push'");
+        /* after a syntax error the matching push may be what was dropped */
+        if (!ctx->syntax_errors)
+            ERR(ctx, name.line, name.col, "'pop' without a matching 'push'");
         return;
     }
     ctx->depth--;
@@ -416,6 +418,7 @@ void sema_block_open(gls_parse *ctx, gls_tok name)
     ctx->prim_tc0 = ctx->u->ntc;
     ctx->prim_nvert = 0;
     ctx->prim_has_col = ctx->prim_has_tc = 0;
+    ctx->errors_at_block = ctx->d->errors;
 }
 
 void sema_block_close(gls_parse *ctx, gls_tok rbrace)
@@ -427,7 +430,9 @@ void sema_block_close(gls_parse *ctx, gls_tok rbrace)
     }
     ctx->in_prim = 0;
     int k = ctx->prim_kind;
-    if (k < 0)
+    /* an error inside the block already dropped something: do not pile a
+       vertex-count error on top of it */
+    if (k < 0 || ctx->d->errors != ctx->errors_at_block)
         return;
     gls_tok t = ctx->prim_tok;
     unsigned nv = ctx->prim_nvert, min = gls_prim_min_verts(k);
@@ -530,8 +535,16 @@ static const char *token_desc(int major)
 void sema_syntax_error(gls_parse *ctx, int major, gls_tok tok)
 {
     ctx->nargs = 0;
+    ctx->syntax_errors++;
     const char *d = token_desc(major);
-    if (major == 0 && ctx->in_prim)
+    /* an unexpected end of file after a lexical error (unterminated string
+       or comment) is explained by that error already */
+    if (major == 0 && ctx->d->errors != ctx->errors_at_start)
+        return;
+    if (ctx->prev_major == TK_RPAREN && major == TK_IDENT)
+        ERR(ctx, tok.line, tok.col, "syntax error: unexpected '%.*s' (missing ';' after the previous statement?)",
+            (int)(tok.len > 40 ? 40 : tok.len), tok.p);
+    else if (major == 0 && ctx->in_prim)
         ERR(ctx, ctx->prim_tok.line, ctx->prim_tok.col, "syntax error: '%.*s' block is not closed with '}'",
             (int)ctx->prim_tok.len, ctx->prim_tok.p);
     else if (d)

@@ -72,6 +72,7 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
     }
     ctx->u = u;
     ctx->d = d;
+    ctx->errors_at_start = d->errors;
     unsigned errors0 = d->errors;
     void *parser = glsParseAlloc(malloc, ctx);
     if (!parser) {
@@ -85,11 +86,13 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
     do {
         code = gls_lex(&lx, &t, ctx);
         glsParse(parser, code, t);
+        ctx->prev_major = code;
     } while (code != 0 && !ctx->stop && !d->stopped);
     glsParseFree(parser, free);
 
-    /* end of the object: every push must have been popped */
-    for (unsigned i = 0; i < ctx->depth && !ctx->in_prim; i++) {
+    /* end of the object: every push must have been popped (unless error
+       recovery dropped statements, which would make this a false alarm) */
+    for (unsigned i = 0; i < ctx->depth && !ctx->in_prim && !ctx->syntax_errors; i++) {
         gls_tok p = ctx->push_tok[i];
         gls_error_at(d, gls_tok_loc(ctx, p.line, p.col), "'push' without a matching 'pop' before the end of the object");
     }
