@@ -1,0 +1,102 @@
+#!/bin/sh
+# End-to-end tests of glsc and glsdis.  Prints "ok NAME" / "FAIL NAME".
+BIN=$(cd "${GLS_BIN:-build}" && pwd)
+ROOT=$(pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+
+# Every construct, checked in the dump against a reviewed golden file.
+if "$BIN/glsc" -I tests/compiler/lang -o "$tmp/lang.glsb" tests/compiler/lang/Top.scene &&
+    "$BIN/glsdis" "$tmp/lang.glsb" >"$tmp/lang.dis" && cmp -s "$tmp/lang.dis" tests/compiler/all_constructs.dis; then
+    ok compile_all_constructs
+else
+    fail compile_all_constructs "dump differs from tests/compiler/all_constructs.dis"
+    diff tests/compiler/all_constructs.dis "$tmp/lang.dis" | head -20 | sed 's/^/    /'
+fi
+if "$BIN/glsdis" --source "$tmp/lang.glsb" >"$tmp/src.dis" && cmp -s "$tmp/src.dis" tests/compiler/all_constructs_source.dis; then
+    ok dump_with_source_lines
+else
+    fail dump_with_source_lines "differs from tests/compiler/all_constructs_source.dis"
+fi
+
+# The paper's Figure 7, as it stands.
+if "$BIN/glsc" -I tests/compiler/paper -o "$tmp/fig7.glsb" tests/compiler/paper/Figure7.scene 2>"$tmp/err" &&
+    "$BIN/glsdis" "$tmp/fig7.glsb" | grep -q '^  call road.tex.vegetation.Tree2$'; then
+    ok paper_figure7_compiles
+else
+    fail paper_figure7_compiles "$(head -3 "$tmp/err")"
+fi
+
+# The top can be named by dotted name, found through GLSCENE_PATH, and the
+# default output is the last name component + .glsb, in the current directory.
+(cd "$tmp" && GLSCENE_PATH="$ROOT/tests/compiler/paper" "$BIN/glsc" road.tex.roads.Curve400m) 2>"$tmp/err"
+if [ -f "$tmp/Curve400m.glsb" ] && "$BIN/glsdis" "$tmp/Curve400m.glsb" | grep -q '^top: road.tex.roads.Curve400m$'; then
+    ok top_by_dotted_name_via_GLSCENE_PATH
+else
+    fail top_by_dotted_name_via_GLSCENE_PATH "$(cat "$tmp/err")"
+fi
+
+# Only what the top reaches goes into the bundle.
+if "$BIN/glsc" -I tests/compiler/lang -o "$tmp/leaf.glsb" pkg.Leaf && "$BIN/glsdis" "$tmp/leaf.glsb" | grep -q '^objects: 1, textures: 1,'; then
+    ok bundle_holds_only_reachable_objects
+else
+    fail bundle_holds_only_reachable_objects "pkg.Leaf bundle has other objects"
+fi
+
+# Determinism: same sources twice; and a library tree whose files were
+# created in the opposite order (different directory listing order).
+"$BIN/glsc" -I tests/compiler/lang -o "$tmp/lang2.glsb" tests/compiler/lang/Top.scene
+if cmp -s "$tmp/lang.glsb" "$tmp/lang2.glsb"; then ok deterministic_same_input; else fail deterministic_same_input "bundles differ"; fi
+mkdir -p "$tmp/a" "$tmp/b"
+for f in $(cd tests/compiler/paper && find . -type f | sort); do mkdir -p "$tmp/a/lib/$(dirname "$f")"; cp "tests/compiler/paper/$f" "$tmp/a/lib/$f"; done
+for f in $(cd tests/compiler/paper && find . -type f | sort -r); do mkdir -p "$tmp/b/lib/$(dirname "$f")"; cp "tests/compiler/paper/$f" "$tmp/b/lib/$f"; done
+(cd "$tmp/a" && "$BIN/glsc" --lib lib -o lib.glsb) && (cd "$tmp/b" && sleep 1 && TZ=Asia/Tokyo "$BIN/glsc" --lib lib -o lib.glsb)
+if cmp -s "$tmp/a/lib.glsb" "$tmp/b/lib.glsb"; then ok deterministic_listing_order_and_time; else fail deterministic_listing_order_and_time "library bundles differ"; fi
+
+# A library bundle stands in a search path exactly like its directory tree.
+"$BIN/glsc" --lib tests/compiler/paper -o "$tmp/paper.glsb" 2>"$tmp/err"
+"$BIN/glsdis" "$tmp/paper.glsb" | grep -q '^top: none (library bundle)$' || fail library_bundle_has_no_top "$(cat "$tmp/err")"
+"$BIN/glsc" -I tests/compiler/paper -o "$tmp/viadir.glsb" tests/compiler/paper/Figure7.scene
+cp tests/compiler/paper/Figure7.scene "$tmp/Figure7.scene"
+"$BIN/glsc" -I "$tmp/paper.glsb" -o "$tmp/vialib.glsb" "$tmp/Figure7.scene" 2>"$tmp/err"
+if "$BIN/glsdis" "$tmp/viadir.glsb" >"$tmp/d1" && "$BIN/glsdis" "$tmp/vialib.glsb" >"$tmp/d2" && cmp -s "$tmp/d1" "$tmp/d2"; then
+    ok library_bundle_links_like_directory
+else
+    fail library_bundle_links_like_directory "$(cat "$tmp/err"; diff "$tmp/d1" "$tmp/d2" | head -5)"
+fi
+
+# Numbers print so that they round-trip: dump -> scene -> dump is a fixed point.
+cat >"$tmp/Num.scene" <<'SCENE'
+poly { vert(0.1, 1/3, -2/3); vert(1e-300, 123456789.123456789, 6.02214076e23); vert(10000000.001, -0.0, 2.5e-5); vert(1e16, 9007199254740993, 0.30000000000000004); }
+SCENE
+"$BIN/glsc" -I "$tmp" -o "$tmp/num.glsb" Num && "$BIN/glsdis" "$tmp/num.glsb" >"$tmp/num.dis"
+{ echo 'poly {'; sed -n 's/^    vert \(.*\)$/\1/p' "$tmp/num.dis" | sed 's/ /, /g; s/^/vert(/; s/$/);/'; echo '}'; } >"$tmp/Num2.scene"
+"$BIN/glsc" -I "$tmp" -o "$tmp/num2.glsb" Num2 && "$BIN/glsdis" "$tmp/num2.glsb" | sed 's/^top: Num2$/top: Num/; s/^object Num2$/object Num/' >"$tmp/num2.dis"
+if cmp -s "$tmp/num.dis" "$tmp/num2.dis" && grep -q '^    vert 0.1 0.3333333333333333 -0.6666666666666666$' "$tmp/num.dis"; then
+    ok numbers_round_trip_through_dump
+else
+    fail numbers_round_trip_through_dump "$(diff "$tmp/num.dis" "$tmp/num2.dis" | head -5)"
+fi
+
+# Corrupted and truncated bundles are refused with a message saying so.
+size=$(wc -c <"$tmp/lang.glsb")
+head -c $((size - 7)) "$tmp/lang.glsb" >"$tmp/trunc.glsb"
+"$BIN/glsdis" "$tmp/trunc.glsb" >/dev/null 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && grep -q 'truncated' "$tmp/err"; then ok truncated_bundle_refused; else fail truncated_bundle_refused "rc=$rc $(cat "$tmp/err")"; fi
+cp "$tmp/lang.glsb" "$tmp/bad.glsb"
+printf '\377' | dd of="$tmp/bad.glsb" bs=1 seek=$((size / 2)) conv=notrunc 2>/dev/null
+"$BIN/glsdis" "$tmp/bad.glsb" >/dev/null 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && grep -q 'corrupted' "$tmp/err"; then ok corrupted_bundle_refused; else fail corrupted_bundle_refused "rc=$rc $(cat "$tmp/err")"; fi
+
+# Usage errors exit 2; --help exits 0.
+"$BIN/glsc" >/dev/null 2>&1; r1=$?
+"$BIN/glsc" --bogus x >/dev/null 2>&1; r2=$?
+"$BIN/glsdis" >/dev/null 2>&1; r3=$?
+"$BIN/glsc" --help >/dev/null 2>&1; r4=$?
+if [ $r1 -eq 2 ] && [ $r2 -eq 2 ] && [ $r3 -eq 2 ] && [ $r4 -eq 0 ]; then ok usage_exit_status; else fail usage_exit_status "$r1 $r2 $r3 $r4"; fi
+
+# An unwritable output leaves nothing behind and exits 1.
+"$BIN/glsc" -I tests/compiler/lang -o /nonexistent-dir/x.glsb pkg.Leaf 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && grep -q 'cannot write' "$tmp/err"; then ok unwritable_output; else fail unwritable_output "rc=$rc"; fi
