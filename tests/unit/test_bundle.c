@@ -1,0 +1,247 @@
+/* Unit tests of the bundle format: write/read round trip, refusal of every
+ * truncation and every flipped header byte, validator rejections, and the
+ * precision requirement for coordinates far from the origin. */
+#include <stdlib.h>
+#include <string.h>
+#include "bundle.h"
+#include "check.h"
+#include "layout.h"
+#include "le.h"
+
+/* A small bundle: object "a.Top" calls "a.Tri", which draws one coloured,
+ * textured triangle 1e7 units from the origin. */
+static gls_bundle *make_bundle(void)
+{
+    gls_bundle *b = calloc(1, sizeof *b);
+    b->version = GLS_FORMAT_VERSION;
+    b->nobjects = 2;
+    b->objects = calloc(2, sizeof *b->objects);
+    b->ntextures = 1;
+    b->textures = calloc(1, sizeof *b->textures);
+    b->textures[0].name = strdup("a.tex.T");
+    b->textures[0].width = 2;
+    b->textures[0].height = 1;
+    b->textures[0].flags = GLS_TEX_ALPHA_HOLES;
+    b->textures[0].rgba = malloc(8);
+    memcpy(b->textures[0].rgba, (uint8_t[]){255, 0, 0, 255, 0, 255, 0, 0}, 8);
+    b->npos = b->ncol = b->ntex = 3;
+    b->pos = malloc(3 * sizeof *b->pos);
+    b->col = malloc(3 * sizeof *b->col);
+    b->tc = malloc(3 * sizeof *b->tc);
+    for (int i = 0; i < 3; i++) {
+        b->pos[i] = (gls_vec4){1e7 + 0.001 * i, -1e7 + 0.0005 * i, 12345.678901 * i, 1};
+        b->col[i] = (gls_rgba){0.25f * i, 0.5f, 1.0f, 1.0f};
+        b->tc[i] = (gls_st){0.5f * i, 1.0f - 0.5f * i};
+    }
+    gls_buf code = {0};
+    gls_insn in = {.op = GLS_OP_PUSH};
+    gls_insn_encode(&code, &in);
+    in = (gls_insn){.op = GLS_OP_TRANS, .nd = 3, .d = {1, 2, 3}};
+    gls_insn_encode(&code, &in);
+    in = (gls_insn){.op = GLS_OP_CALL, .nu = 1, .u = {1}};
+    gls_insn_encode(&code, &in);
+    in = (gls_insn){.op = GLS_OP_POP};
+    gls_insn_encode(&code, &in);
+    in = (gls_insn){.op = GLS_OP_END};
+    gls_insn_encode(&code, &in);
+    b->objects[0] = (gls_object){strdup("a.Top"), code.data, (uint32_t)code.len, 5, NULL};
+    gls_buf code2 = {0};
+    in = (gls_insn){.op = GLS_OP_TEXTURE, .nu = 1, .u = {0}};
+    gls_insn_encode(&code2, &in);
+    in = (gls_insn){.op = GLS_OP_PRIM, .nu = 5, .u = {GLS_PRIM_TFAN, 3, 0, 0, 0}};
+    gls_insn_encode(&code2, &in);
+    in = (gls_insn){.op = GLS_OP_END};
+    gls_insn_encode(&code2, &in);
+    b->objects[1] = (gls_object){strdup("a.Tri"), code2.data, (uint32_t)code2.len, 3, NULL};
+    /* names must be sorted: "a.Top" > "a.Tri"? 'o' < 'r', so Top first */
+    b->top = 0;
+    b->features = gls_bundle_features(b);
+    return b;
+}
+
+static uint8_t *write_it(const gls_bundle *b, size_t *len)
+{
+    uint8_t *out;
+    gls_error err;
+    if (gls_bundle_write(b, &out, len, &err)) {
+        printf("  write failed: %s\n", err.msg);
+        return NULL;
+    }
+    return out;
+}
+
+static void test_round_trip_is_lossless(void)
+{
+    gls_bundle *b = make_bundle();
+    gls_error err;
+    CHECK(gls_bundle_validate(b, &err) == 0);
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    CHECK(data != NULL);
+    gls_bundle *r = gls_bundle_read(data, len, &err);
+    CHECK_MSG(r != NULL, "%s", err.msg);
+    if (r) {
+        CHECK(r->nobjects == 2 && r->ntextures == 1 && r->npos == 3);
+        CHECK(memcmp(r->pos, b->pos, 3 * sizeof *b->pos) == 0);
+        CHECK(memcmp(r->col, b->col, 3 * sizeof *b->col) == 0);
+        CHECK(memcmp(r->tc, b->tc, 3 * sizeof *b->tc) == 0);
+        CHECK(memcmp(r->textures[0].rgba, b->textures[0].rgba, 8) == 0);
+        CHECK(r->objects[0].code_len == b->objects[0].code_len &&
+              memcmp(r->objects[0].code, b->objects[0].code, b->objects[0].code_len) == 0);
+        CHECK(r->features == (GLS_FEAT_TEXTURES | GLS_FEAT_ALPHA_TEST | GLS_FEAT_VERTEX_COLOR | GLS_FEAT_TEXCOORDS));
+        /* writing what was read gives the same bytes */
+        size_t len2;
+        uint8_t *again = write_it(r, &len2);
+        CHECK(again && len2 == len && memcmp(again, data, len) == 0);
+        free(again);
+    }
+    gls_bundle_free(r);
+    gls_bundle_free(b);
+    free(data);
+}
+
+/* 1e7 units from the origin, 1e-3 apart, survive write and read exactly
+ * (the format stores float64, so the bound 1e-3 holds with room). */
+static void test_precision_far_from_origin(void)
+{
+    gls_bundle *b = make_bundle();
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    gls_error err;
+    gls_bundle *r = gls_bundle_read(data, len, &err);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK_NEAR(r->pos[1].x - r->pos[0].x, 0.001, 1e-8);
+        CHECK_NEAR(r->pos[2].y - r->pos[0].y, 0.001, 1e-8);
+        CHECK(r->pos[1].x == 1e7 + 0.001);
+    }
+    gls_bundle_free(r);
+    gls_bundle_free(b);
+    free(data);
+}
+
+static void test_every_truncation_refused(void)
+{
+    gls_bundle *b = make_bundle();
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    unsigned refused = 0;
+    for (size_t n = 0; n < len; n++) {
+        gls_error err;
+        uint8_t *copy = malloc(n ? n : 1);
+        memcpy(copy, data, n);
+        gls_bundle *r = gls_bundle_read(copy, n, &err);
+        if (!r && err.msg[0])
+            refused++;
+        CHECK_MSG(r == NULL, "truncation to %zu bytes accepted", n);
+        if (n >= GLS_HEADER_SIZE)
+            CHECK_MSG(strstr(err.msg, "truncated") != NULL, "len %zu: %s", n, err.msg);
+        gls_bundle_free(r);
+        free(copy);
+    }
+    CHECK(refused == len);
+    gls_bundle_free(b);
+    free(data);
+}
+
+static void test_every_flipped_byte_refused(void)
+{
+    gls_bundle *b = make_bundle();
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    /* every byte of the file, each bit pattern inverted */
+    for (size_t i = 0; i < len; i++) {
+        gls_error err = {{0}, 0};
+        data[i] ^= 0xFF;
+        gls_bundle *r = gls_bundle_read(data, len, &err);
+        CHECK_MSG(r == NULL, "flipping byte %zu was not noticed", i);
+        CHECK(err.msg[0] != 0);
+        gls_bundle_free(r);
+        data[i] ^= 0xFF;
+    }
+    gls_bundle_free(b);
+    free(data);
+}
+
+static void test_version_mismatch_names_both(void)
+{
+    gls_bundle *b = make_bundle();
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    gls_le_put_u32(data + GLS_HDR_VERSION, 7);
+    gls_error err;
+    gls_bundle *r = gls_bundle_read(data, len, &err);
+    CHECK(r == NULL);
+    CHECK_MSG(strstr(err.msg, "version 7") && strstr(err.msg, "version 1"), "%s", err.msg);
+    gls_bundle_free(b);
+    free(data);
+}
+
+/* The validator catches what a hostile writer could put in. */
+static void expect_invalid(gls_bundle *b, const char *needle)
+{
+    gls_error err = {{0}, 0};
+    CHECK_MSG(gls_bundle_validate(b, &err) != 0, "accepted, expected '%s'", needle);
+    CHECK_MSG(strstr(err.msg, needle) != NULL, "message '%s' lacks '%s'", err.msg, needle);
+    gls_bundle_free(b);
+}
+
+static void test_validator_rejects(void)
+{
+    gls_bundle *b = make_bundle();
+    b->objects[1].code[0] = 200; /* unknown opcode */
+    expect_invalid(b, "unknown opcode");
+
+    b = make_bundle();
+    /* PRIM first position beyond the stream: rewrite operand p */
+    size_t pos = 0;
+    gls_insn in;
+    gls_insn_decode(b->objects[1].code, b->objects[1].code_len, &pos, &in);
+    size_t prim_at = pos;
+    gls_le_put_u32(b->objects[1].code + prim_at + 1 + 1 + 4, 2); /* p = 2, n = 3 > npos - 2 */
+    expect_invalid(b, "positions 2+3 beyond 3");
+
+    b = make_bundle();
+    b->objects[0].code[0] = GLS_OP_POP; /* pop before push */
+    expect_invalid(b, "pop without push");
+
+    b = make_bundle();
+    gls_le_put_u32(b->objects[1].code + 1, 0); /* TEXTURE 0 stays valid; make Tri call Top instead */
+    {
+        gls_buf code = {0};
+        gls_insn c = {.op = GLS_OP_CALL, .nu = 1, .u = {0}};
+        gls_insn_encode(&code, &c);
+        c = (gls_insn){.op = GLS_OP_END};
+        gls_insn_encode(&code, &c);
+        free(b->objects[1].code);
+        b->objects[1].code = code.data;
+        b->objects[1].code_len = (uint32_t)code.len;
+        b->objects[1].ninsn = 2;
+    }
+    expect_invalid(b, "call cycle");
+
+    b = make_bundle();
+    b->pos[1].z = 1.0 / 0.0;
+    expect_invalid(b, "not finite");
+
+    b = make_bundle();
+    b->textures[0].rgba[3] = 100;
+    expect_invalid(b, "not binary");
+
+    b = make_bundle();
+    char *t = b->objects[0].name;
+    b->objects[0].name = b->objects[1].name;
+    b->objects[1].name = t;
+    expect_invalid(b, "not sorted");
+}
+
+int main(void)
+{
+    RUN(test_round_trip_is_lossless);
+    RUN(test_precision_far_from_origin);
+    RUN(test_every_truncation_refused);
+    RUN(test_every_flipped_byte_refused);
+    RUN(test_version_mismatch_names_both);
+    RUN(test_validator_rejects);
+    CHECK_EXIT();
+}
