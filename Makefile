@@ -5,7 +5,7 @@ CC      ?= cc
 CSTD    := -std=c11 -D_XOPEN_SOURCE=700
 WARN    := -Wall -Wextra -Werror
 OPT     ?= -O2 -g
-CFLAGS  += $(CSTD) $(WARN) $(OPT) -Iformat -Icompiler -Iruntime -Ibuild/gen
+CFLAGS  += $(CSTD) $(WARN) $(OPT) -Iformat -Icompiler -Iruntime -I$(B)/gen
 LDLIBS  := -lzstd -lz -lstb -lm
 
 ifeq ($(SANITIZE),1)
@@ -13,7 +13,7 @@ CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-re
 LDFLAGS += -fsanitize=address,undefined
 endif
 
-B := build
+B ?= build
 
 FORMAT_SRC   := $(wildcard format/*.c)
 COMPILER_SRC := $(filter-out compiler/glsc_main.c compiler/glsdis_main.c,$(wildcard compiler/*.c))
@@ -75,6 +75,9 @@ $(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
+
+bench-compile: $(B)/glsc
+	@sh bench/compile.sh $(B)
 
 clean:
 	rm -rf $(B) out

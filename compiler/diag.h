@@ -11,6 +11,7 @@ typedef struct {
     const char *path;   /* file name as given                       */
     const char *text;   /* whole source, NUL-terminated              */
     size_t len;
+    size_t mapped;      /* text is an mmap of this length, or 0 if malloc'd */
 } gls_source;
 
 typedef struct {

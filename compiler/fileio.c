@@ -2,7 +2,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "fileio.h"
 
 char *gls_read_file(const char *path, size_t limit, size_t *len, char *why, size_t whylen)
@@ -53,4 +56,37 @@ int gls_is_file(const char *path)
 {
     struct stat st;
     return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+char *gls_load_source(const char *path, size_t limit, size_t *len, size_t *mapped, char *why, size_t whylen)
+{
+    *mapped = 0;
+    int fd = open(path, O_RDONLY);
+    struct stat st;
+    if (fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
+        (unsigned long long)st.st_size <= limit) {
+        long page = sysconf(_SC_PAGESIZE);
+        size_t n = (size_t)st.st_size;
+        if (page > 0 && n % (size_t)page != 0) {
+            /* the rest of the last page reads as zeros: the sentinel */
+            void *p = mmap(NULL, n + 1, PROT_READ, MAP_PRIVATE, fd, 0);
+            if (p != MAP_FAILED) {
+                close(fd);
+                *len = n;
+                *mapped = n + 1;
+                return p;
+            }
+        }
+    }
+    if (fd >= 0)
+        close(fd);
+    return gls_read_file(path, limit, len, why, whylen);
+}
+
+void gls_release_file(const char *buf, size_t mapped)
+{
+    if (mapped)
+        munmap((void *)buf, mapped);
+    else
+        free((void *)buf);
 }

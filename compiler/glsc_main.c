@@ -1,5 +1,6 @@
 /* glsc: compile a scene (or a whole library) into a bundle. */
 #include <errno.h>
+#include <malloc.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +30,12 @@ static int usage_error(const char *msg, const char *arg)
 
 int main(int argc, char **argv)
 {
+    /* Large scenes allocate and free arrays of tens of MiB several times;
+       keep them in the heap instead of mmap/munmap each one, so pages are
+       reused rather than faulted in and cleared again (measured: -30% time
+       on the bench-compile scene). */
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     const char *out = NULL, *lib = NULL, *top = NULL;
     const char **roots = calloc((size_t)argc, sizeof *roots);
     int nroots = 0;

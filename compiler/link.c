@@ -193,8 +193,8 @@ static void list_roots(const gls_compiler *c, char *buf, size_t n)
 static gls_unit *unit_from_file(gls_compiler *c, const char *name, const char *path, gls_loc loc)
 {
     char why[512];
-    size_t len;
-    char *text = gls_read_file(path, GLS_MAX_INPUT_BYTES, &len, why, sizeof why);
+    size_t len, mapped;
+    char *text = gls_load_source(path, GLS_MAX_INPUT_BYTES, &len, &mapped, why, sizeof why);
     if (!text) {
         gls_error_at(&c->diag, loc, "%s", why);
         return NULL;
@@ -202,7 +202,7 @@ static gls_unit *unit_from_file(gls_compiler *c, const char *name, const char *p
     gls_unit *u = calloc(1, sizeof *u);
     uint32_t sf = add_source(c, path);
     if (!u || !(u->name = strdup(name)) || sf == GLS_NONE) {
-        free(text);
+        gls_release_file(text, mapped);
         gls_unit_free(u);
         gls_error_at(&c->diag, loc, "out of memory");
         return NULL;
@@ -210,6 +210,7 @@ static gls_unit *unit_from_file(gls_compiler *c, const char *name, const char *p
     u->src.path = c->sources[sf];
     u->src.text = text;
     u->src.len = len;
+    u->src.mapped = mapped;
     u->src_file = sf;
     gls_compile_source(u, &c->diag);
     return u;

@@ -553,9 +553,49 @@ void sema_syntax_error(gls_parse *ctx, int major, gls_tok tok)
         ERR(ctx, tok.line, tok.col, "syntax error: unexpected '%.*s'", (int)(tok.len > 40 ? 40 : tok.len), tok.p);
 }
 
+/* Clinger's fast path: a decimal with at most 15 significant digits and a
+ * power of ten up to 22 is one correctly rounded IEEE operation on two
+ * exactly representable doubles, so it equals strtod's result.  Anything
+ * else goes to strtod.  Returns 0 if the fast path does not apply. */
+static int fast_decimal(const char *p, size_t len, double *out)
+{
+    static const double pow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                   1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    uint64_t m = 0;
+    int digits = 0, frac = 0, seen_dot = 0;
+    size_t i = 0;
+    for (; i < len; i++) {
+        char ch = p[i];
+        if (ch == '.') {
+            seen_dot = 1;
+            continue;
+        }
+        if (ch < '0' || ch > '9')
+            break;
+        if (m == 0 && ch == '0') {
+            if (seen_dot)
+                frac++;
+            continue; /* leading zeros are not significant */
+        }
+        if (++digits > 15)
+            return 0;
+        m = m * 10 + (uint64_t)(ch - '0');
+        if (seen_dot)
+            frac++;
+    }
+    if (i != len)
+        return 0; /* an exponent: leave it to strtod */
+    if (frac > 22)
+        return 0;
+    *out = frac ? (double)m / pow10[frac] : (double)m;
+    return 1;
+}
+
 gls_val sema_number(gls_parse *ctx, gls_tok t)
 {
     gls_val v = {.kind = VAL_NUM, .line = t.line, .col = t.col};
+    if (fast_decimal(t.p, t.len, &v.num))
+        return v;
     char *end;
     errno = 0;
     v.num = strtod(t.p, &end);

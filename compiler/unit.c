@@ -2,6 +2,7 @@
  * tokens to the lemon parser for one .scene file. */
 #include <stdlib.h>
 #include <string.h>
+#include "fileio.h"
 #include "grammar.h"
 #include "parse.h"
 
@@ -10,7 +11,8 @@ void gls_unit_free(gls_unit *u)
     if (!u)
         return;
     free(u->name);
-    free((char *)u->src.text);
+    if (u->src.text)
+        gls_release_file(u->src.text, u->src.mapped);
     free(u->code.data);
     free(u->lines);
     for (uint32_t i = 0; i < u->nrefs; i++)

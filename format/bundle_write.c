@@ -71,47 +71,34 @@ static int sec_textures(const gls_bundle *bd, gls_buf *b)
     return 0;
 }
 
-/* A stream of count*ncomp numbers, each width bytes, as planes. */
-static int put_planes(gls_buf *b, const void *vals, size_t count, unsigned ncomp, unsigned width)
+/* A stream of count records of stride bytes, whose first ncomp words of
+ * width bytes are written as planes, encoded straight into the buffer. */
+static int put_planes(gls_buf *b, const void *vals, size_t count, size_t stride, unsigned ncomp, unsigned width)
 {
     size_t n = count * ncomp * width;
-    uint8_t *tmp = malloc(n ? n : 1);
-    if (!tmp)
+    if (gls_buf_reserve(b, n))
         return -1;
-    gls_planes_encode(vals, count, ncomp, width, tmp);
-    int r = gls_buf_put(b, tmp, n);
-    free(tmp);
-    return r;
+    gls_planes_encode(vals, count, stride, ncomp, width, b->data + b->len);
+    b->len += n;
+    return 0;
 }
 
 static int sec_positions(const gls_bundle *bd, gls_buf *b)
 {
+    /* w is stored only when some vertex has w != 1 */
     unsigned ncomp = (gls_bundle_features(bd) & GLS_FEAT_HOMOGENEOUS) ? 4 : 3;
-    if (put_u32(b, bd->npos) || put_u32(b, ncomp))
-        return -1;
-    double *v = malloc((size_t)bd->npos * ncomp * sizeof(double) + 1);
-    if (!v)
-        return -1;
-    for (uint32_t i = 0; i < bd->npos; i++) {
-        v[i * ncomp + 0] = bd->pos[i].x;
-        v[i * ncomp + 1] = bd->pos[i].y;
-        v[i * ncomp + 2] = bd->pos[i].z;
-        if (ncomp == 4)
-            v[i * ncomp + 3] = bd->pos[i].w;
-    }
-    int r = put_planes(b, v, bd->npos, ncomp, 8);
-    free(v);
-    return r;
+    return put_u32(b, bd->npos) || put_u32(b, ncomp) ||
+           put_planes(b, bd->pos, bd->npos, sizeof *bd->pos, ncomp, 8);
 }
 
 static int sec_colors(const gls_bundle *bd, gls_buf *b)
 {
-    return put_u32(b, bd->ncol) || put_planes(b, bd->col, bd->ncol, 4, 4);
+    return put_u32(b, bd->ncol) || put_planes(b, bd->col, bd->ncol, sizeof *bd->col, 4, 4);
 }
 
 static int sec_texcoords(const gls_bundle *bd, gls_buf *b)
 {
-    return put_u32(b, bd->ntex) || put_planes(b, bd->tc, bd->ntex, 2, 4);
+    return put_u32(b, bd->ntex) || put_planes(b, bd->tc, bd->ntex, sizeof *bd->tc, 2, 4);
 }
 
 typedef int (*sec_fn)(const gls_bundle *, gls_buf *);

@@ -1,6 +1,10 @@
 #include <string.h>
 #include "planes.h"
 
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "the plane transform stores native words: glscene supports little-endian hosts only"
+#endif
+
 static uint64_t load_word(const uint8_t *p, unsigned width)
 {
     if (width == 8) { uint64_t v; memcpy(&v, p, 8); return v; }
@@ -14,14 +18,14 @@ static void store_word(uint8_t *p, unsigned width, uint64_t v)
 }
 
 /* Plane (c, b) holds byte b (little-endian significance) of component c. */
-void gls_planes_encode(const void *in, size_t count, unsigned ncomp, unsigned width, uint8_t *out)
+void gls_planes_encode(const void *in, size_t count, size_t stride, unsigned ncomp, unsigned width, uint8_t *out)
 {
     const uint8_t *src = in;
     for (unsigned c = 0; c < ncomp; c++) {
         uint64_t prev = 0;
         uint8_t *plane = out + (size_t)c * width * count;
         for (size_t i = 0; i < count; i++) {
-            uint64_t v = load_word(src + (i * ncomp + c) * width, width);
+            uint64_t v = load_word(src + i * stride + c * width, width);
             uint64_t x = v ^ prev;
             prev = v;
             for (unsigned b = 0; b < width; b++)

@@ -8,8 +8,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* in: count*ncomp words of width bytes (4 or 8), native order, interleaved.
- * out: the same number of bytes, planar.  Mirror of gls_planes_decode. */
-void gls_planes_encode(const void *in, size_t count, unsigned ncomp, unsigned width, uint8_t *out);
+/* in: count records, stride bytes apart, each starting with ncomp words of
+ * width bytes (4 or 8), native order.  out: count*ncomp*width bytes,
+ * planar.  Mirror of gls_planes_decode (which reads back a packed array). */
+void gls_planes_encode(const void *in, size_t count, size_t stride, unsigned ncomp, unsigned width, uint8_t *out);
 void gls_planes_decode(const uint8_t *in, size_t count, unsigned ncomp, unsigned width, void *out);
 #endif
