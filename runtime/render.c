@@ -46,6 +46,10 @@ struct gls_renderer {
 #undef GLS_X_FN
     const gls_scene *scene;
     GLuint vbo, fbo, rb_color, rb_depth;
+    GLuint near_vbo;       /* per-pass vertices of re-anchored chunks */
+    uint8_t *near_buf;
+    size_t near_cap;       /* vertices */
+    uint32_t *near_list;   /* chunk indices drawn from near_vbo */
     GLuint *tex;           /* per bundle texture: GL name or 0 if unused */
     uint32_t ntex;
     uint32_t width, height;
@@ -72,6 +76,17 @@ static int has_extension(gls_renderer *r, const char *name)
             return 1;
     }
     return 0;
+}
+
+/* Attribute pointers into the currently bound GL_ARRAY_BUFFER. */
+static void set_pointers(const gls_scene *s)
+{
+    GLsizei stride = (GLsizei)s->stride;
+    glVertexPointer(3, GL_FLOAT, stride, (const void *)0);
+    if (s->has_color)
+        glColorPointer(4, GL_UNSIGNED_BYTE, stride, (const void *)(uintptr_t)s->color_offset);
+    if (s->has_texcoord)
+        glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(uintptr_t)s->texcoord_offset);
 }
 
 static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size_t errlen)
@@ -159,18 +174,20 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
     r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
     r->glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)scene->nverts * scene->stride), scene->verts,
                     GL_STATIC_DRAW);
-    GLsizei stride = (GLsizei)scene->stride;
     glEnableClientState(GL_VERTEX_ARRAY);
-    glVertexPointer(3, GL_FLOAT, stride, (const void *)0);
-    if (scene->has_color) {
+    if (scene->has_color)
         glEnableClientState(GL_COLOR_ARRAY);
-        glColorPointer(4, GL_UNSIGNED_BYTE, stride, (const void *)(uintptr_t)scene->color_offset);
-    }
-    if (scene->has_texcoord) {
+    if (scene->has_texcoord)
         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-        glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(uintptr_t)scene->texcoord_offset);
-    } else {
+    else
         glTexCoord2f(0, 0); /* texcoords absent: (0, 0) */
+    set_pointers(scene);
+    r->glGenBuffers(1, &r->near_vbo);
+    r->near_list = malloc((scene->nchunks ? scene->nchunks : 1) * sizeof *r->near_list);
+    if (!r->near_list) {
+        snprintf(err, errlen, "out of memory");
+        gls_renderer_destroy(r);
+        return NULL;
     }
     if (upload_textures(r, b, err, errlen)) {
         gls_renderer_destroy(r);
@@ -244,9 +261,42 @@ static void apply_key(gls_renderer *r, const gls_drawkey *k)
         glColor4ub(k->rgba[0], k->rgba[1], k->rgba[2], k->rgba[3]);
 }
 
+/* Does chunk ch need re-anchoring at the camera centre C?  Its float
+ * offsets err by up to 2^-24 * maxoff; every visible vertex is at least
+ * max(distance from C to the chunk's box, near) from the camera.  Keep the
+ * static offsets only while that error is within 4 * 2^-24 of the
+ * distance, i.e. no more than twice the float rounding GL adds anyway. */
+static int needs_reanchor(const gls_chunk *ch, const double C[3], double near)
+{
+    double d2 = 0;
+    for (int j = 0; j < 3; j++) {
+        double e = C[j] < ch->lo[j] ? ch->lo[j] - C[j] : C[j] > ch->hi[j] ? C[j] - ch->hi[j] : 0;
+        d2 += e * e;
+    }
+    double dist = sqrt(d2);
+    if (dist < near)
+        dist = near;
+    return ch->maxoff > 4 * dist;
+}
+
+static void draw_chunk(gls_renderer *r, const gls_camera *c, const gls_chunk *ch, const double anchor[3],
+                       uint32_t first, const gls_drawkey **prev)
+{
+    double MV[16];
+    float f[16];
+    if (!*prev || memcmp(*prev, &ch->key, sizeof **prev)) {
+        apply_key(r, &ch->key);
+        *prev = &ch->key;
+    }
+    gls_camera_modelview(c, anchor, MV);
+    gls_mat_to_gl(MV, f);
+    glLoadMatrixf(f);
+    glDrawArrays(GL_TRIANGLES, (GLint)first, (GLsizei)ch->count);
+}
+
 void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
 {
-    double P[16], MV[16];
+    double P[16], C[3];
     float f[16];
     gls_camera_projection(c, du, dv, P);
     gls_mat_to_gl(P, f);
@@ -256,18 +306,52 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
     glLoadMatrixf(f);
     glMatrixMode(GL_MODELVIEW);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gls_camera_centre(c, C);
     const gls_scene *s = r->scene;
     const gls_drawkey *prev = NULL;
+    uint32_t nnear = 0;
+    size_t nv = 0;
+    r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    set_pointers(s);
     for (uint32_t i = 0; i < s->nchunks; i++) {
         const gls_chunk *ch = &s->chunks[i];
-        if (!prev || memcmp(prev, &ch->key, sizeof *prev)) {
-            apply_key(r, &ch->key);
-            prev = &ch->key;
+        if (needs_reanchor(ch, C, c->near)) {
+            r->near_list[nnear++] = i;
+            nv += ch->count;
+            continue;
         }
-        gls_camera_modelview(c, ch->anchor, MV);
-        gls_mat_to_gl(MV, f);
-        glLoadMatrixf(f);
-        glDrawArrays(GL_TRIANGLES, (GLint)ch->first, (GLsizei)ch->count);
+        draw_chunk(r, c, ch, ch->anchor, ch->first, &prev);
+    }
+    if (!nnear)
+        return;
+    /* Chunks near the camera: offsets from the camera centre, formed in
+     * double now, so their float error is relative to their distance. */
+    if (nv > r->near_cap) {
+        uint8_t *nb = realloc(r->near_buf, nv * s->stride);
+        if (!nb)
+            return; /* out of memory: those chunks are not drawn */
+        r->near_buf = nb;
+        r->near_cap = nv;
+    }
+    size_t at = 0;
+    for (uint32_t k = 0; k < nnear; k++) {
+        const gls_chunk *ch = &s->chunks[r->near_list[k]];
+        memcpy(r->near_buf + at * s->stride, s->verts + (size_t)ch->first * s->stride, (size_t)ch->count * s->stride);
+        for (uint32_t v = 0; v < ch->count; v++) {
+            const double *p = s->world + 3 * ((size_t)ch->first + v);
+            float off[3] = {(float)(p[0] - C[0]), (float)(p[1] - C[1]), (float)(p[2] - C[2])};
+            memcpy(r->near_buf + (at + v) * s->stride, off, sizeof off);
+        }
+        at += ch->count;
+    }
+    r->glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
+    r->glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(nv * s->stride), r->near_buf, GL_STREAM_DRAW);
+    set_pointers(s);
+    at = 0;
+    for (uint32_t k = 0; k < nnear; k++) {
+        const gls_chunk *ch = &s->chunks[r->near_list[k]];
+        draw_chunk(r, c, ch, C, (uint32_t)at, &prev);
+        at += ch->count;
     }
 }
 
@@ -308,6 +392,10 @@ void gls_renderer_destroy(gls_renderer *r)
     }
     if (r->vbo)
         r->glDeleteBuffers(1, &r->vbo);
+    if (r->near_vbo)
+        r->glDeleteBuffers(1, &r->near_vbo);
+    free(r->near_buf);
+    free(r->near_list);
     if (r->fbo) {
         r->glBindFramebuffer(GL_FRAMEBUFFER, 0);
         r->glDeleteFramebuffers(1, &r->fbo);

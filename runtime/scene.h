@@ -8,7 +8,11 @@
  * space; its anchor is the cube's centre, so offsets stay below about one
  * cell (float error <= 2^-24 * offset).  Per frame the renderer forms the
  * chunk's modelview in double, camera-relative (camera.h), and only then
- * converts it to float.  Anchors are multiples of the cell size plus half a
+ * converts it to float.  A float offset errs by up to 2^-24 of its size,
+ * which matters only for geometry much closer to the camera than the
+ * chunk's size: the renderer re-anchors such chunks at the camera centre
+ * each frame (render.c), so the error stays ~2^-24 of the distance.
+ * Anchors are multiples of the cell size plus half a
  * cell, so translating a whole scene (and its camera) by a multiple of the
  * cell size changes no float that GL sees: the output is byte-identical.
  */
@@ -32,6 +36,8 @@ typedef struct {
 
 typedef struct {
     double anchor[3];      /* world position the offsets are relative to  */
+    double lo[3], hi[3];   /* bounding box of the chunk's vertices        */
+    double maxoff;         /* largest |vertex - anchor| (any axis)        */
     gls_drawkey key;
     uint32_t first, count; /* vertex range in gls_scene.verts             */
 } gls_chunk;
@@ -43,6 +49,8 @@ typedef struct {
     size_t stride;         /* bytes per vertex: 12 [+4 colour] [+8 st]    */
     size_t color_offset, texcoord_offset;
     uint8_t *verts;        /* nverts * stride bytes, GL_TRIANGLES order   */
+    double *world;         /* nverts * 3: exact world positions, for
+                              re-anchoring chunks near the camera         */
     uint32_t nverts;
     gls_chunk *chunks;     /* sorted by key, then cell                    */
     uint32_t nchunks;

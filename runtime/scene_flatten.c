@@ -380,7 +380,8 @@ int gls_scene_flatten(const gls_bundle *b, gls_scene *s, char *err, size_t errle
     s->dropped = w.dropped;
     s->verts = malloc(w.ntri ? w.ntri * 3 * s->stride : 1);
     s->chunks = malloc((w.ntri ? w.ntri : 1) * sizeof *s->chunks);
-    if (!s->verts || !s->chunks) {
+    s->world = malloc((w.ntri ? w.ntri : 1) * 9 * sizeof *s->world);
+    if (!s->verts || !s->chunks || !s->world) {
         snprintf(err, errlen, "out of memory while flattening the scene");
         goto out;
     }
@@ -397,15 +398,25 @@ int gls_scene_flatten(const gls_bundle *b, gls_scene *s, char *err, size_t errle
             ch->key = t->key;
             ch->first = (uint32_t)(i * 3);
             ch->count = 0;
-            for (int j = 0; j < 3; j++)
+            ch->maxoff = 0;
+            for (int j = 0; j < 3; j++) {
                 ch->anchor[j] = ((double)t->cell[j] + 0.5) * GLS_SCENE_CELL;
+                ch->lo[j] = INFINITY, ch->hi[j] = -INFINITY;
+            }
         }
         for (int k = 0; k < 3; k++) {
             uint8_t *v = s->verts + (i * 3 + (size_t)k) * s->stride;
             const double *p = w.wpos + 9 * (size_t)t->idx + 3 * k;
             float off[3];
+            memcpy(s->world + (i * 3 + (size_t)k) * 3, p, 3 * sizeof *p);
             for (int j = 0; j < 3; j++) {
                 off[j] = (float)(p[j] - ch->anchor[j]);
+                if (fabs(p[j] - ch->anchor[j]) > ch->maxoff)
+                    ch->maxoff = fabs(p[j] - ch->anchor[j]);
+                if (p[j] < ch->lo[j])
+                    ch->lo[j] = p[j];
+                if (p[j] > ch->hi[j])
+                    ch->hi[j] = p[j];
                 if (p[j] < s->lo[j])
                     s->lo[j] = p[j];
                 if (p[j] > s->hi[j])
@@ -434,6 +445,7 @@ out:
 void gls_scene_free(gls_scene *s)
 {
     free(s->verts);
+    free(s->world);
     free(s->chunks);
     memset(s, 0, sizeof *s);
 }
