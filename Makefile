@@ -76,6 +76,23 @@ $(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat
 $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
 
+# Texture generator for the scene library and the examples (no binary
+# textures are committed: they are made here, deterministically).
+$(B)/gen_textures: scenelib/gen/textures.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
+$(B)/textures.stamp: $(B)/gen_textures
+	$(B)/gen_textures $(B)/textures && touch $@
+
+# The README's demo command: install what is missing, build, render the
+# demo scene with a stereo pair of cameras into out/demo/.
+demo:
+	@sh tools/deps.sh
+	@$(MAKE) --no-print-directory all $(B)/textures.stamp
+	$(B)/glsc -I examples/demo -I $(B)/textures -o $(B)/demo.glsb examples/demo/Demo.scene
+	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam -o out/demo
+	@echo "demo: images, depth maps and point clouds are in out/demo/left and out/demo/right"
+
 bench-compile: $(B)/glsc
 	@sh bench/compile.sh $(B)
 
