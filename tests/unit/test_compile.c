@@ -1,0 +1,133 @@
+/* Unit tests of the compiler API: texture decoding orientation and alpha
+ * binarisation, library override order, and the precision of far-away
+ * coordinates through source text, compile, write and read. */
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "compile.h"
+
+static gls_bundle *compile(const char **roots, int nroots, const char *top)
+{
+    FILE *diag = tmpfile();
+    gls_compiler *c = gls_compiler_new(diag);
+    for (int i = 0; i < nroots; i++)
+        gls_compiler_add_root(c, roots[i]);
+    gls_bundle *b = NULL;
+    if (gls_compile_top(c, top, &b) != 0) {
+        rewind(diag);
+        char line[512];
+        while (fgets(line, sizeof line, diag))
+            printf("  diag: %s", line);
+    }
+    gls_compiler_free(c);
+    fclose(diag);
+    return b;
+}
+
+/* The 2x2 TGA in tests/compiler/lang is stored top row first with a red
+ * top-left texel and a transparent top-right one: the bundle keeps row 0 =
+ * top, and alpha is 0 or 255. */
+static void test_texture_orientation_and_alpha(void)
+{
+    const char *roots[] = {"tests/compiler/lang"};
+    gls_bundle *b = compile(roots, 1, "Top");
+    CHECK(b != NULL);
+    if (!b)
+        return;
+    CHECK(b->ntextures == 1);
+    const uint8_t *px = b->textures[0].rgba;
+    CHECK(px[0] == 255 && px[1] == 0 && px[2] == 0 && px[3] == 255);  /* top-left red      */
+    CHECK(px[4 + 3] == 0);                                             /* top-right: a hole */
+    CHECK(px[8] == 0 && px[9] == 0 && px[10] == 255);                  /* bottom-left blue  */
+    CHECK(b->textures[0].flags & GLS_TEX_ALPHA_HOLES);
+    gls_bundle_free(b);
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+}
+
+/* Far from the origin: source text 1e7 + 0.001 reaches the loaded bundle
+ * with the exact double strtod gives, through compile, write and read. */
+static void test_far_coordinates_exact_through_bundle(void)
+{
+    char dir[] = "/tmp/glstestXXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char path[256];
+    snprintf(path, sizeof path, "%s/Far.scene", dir);
+    write_text(path, "poly { vert(10000000.001, -10000000.002, 9999999.999); vert(10000000.002, 0, 0); vert(0, 0, 1e7); }\n");
+    const char *roots[] = {dir};
+    gls_bundle *b = compile(roots, 1, "Far");
+    CHECK(b != NULL);
+    if (!b)
+        return;
+    uint8_t *bytes;
+    size_t len;
+    gls_error err;
+    CHECK(gls_bundle_write(b, &bytes, &len, &err) == 0);
+    gls_bundle *r = gls_bundle_read(bytes, len, &err);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK(r->pos[0].x == strtod("10000000.001", NULL));
+        CHECK(r->pos[0].y == strtod("-10000000.002", NULL));
+        CHECK_NEAR(r->pos[1].x - r->pos[0].x, 0.001, 1e-6);
+    }
+    gls_bundle_free(r);
+    gls_bundle_free(b);
+    free(bytes);
+    remove(path);
+    remove(dir);
+}
+
+/* Roots are searched in order: an object in an earlier directory overrides
+ * the library bundle's object of the same name, also for calls made from
+ * inside the library (names bind at link time, through the search path). */
+static void test_earlier_root_overrides_library(void)
+{
+    char dir[] = "/tmp/glstestXXXXXX", lib[] = "/tmp/glstestXXXXXX";
+    CHECK(mkdtemp(dir) && mkdtemp(lib));
+    char p[256], libfile[300];
+    snprintf(p, sizeof p, "%s/Leaf.scene", lib);
+    write_text(p, "color(1, 0, 0);\n");
+    snprintf(p, sizeof p, "%s/Tree.scene", lib);
+    write_text(p, "call(\"Leaf\");\n");
+    FILE *diag = tmpfile();
+    gls_compiler *c = gls_compiler_new(diag);
+    gls_bundle *lb = NULL;
+    CHECK(gls_compile_lib(c, lib, &lb) == 0);
+    gls_compiler_free(c);
+    fclose(diag);
+    snprintf(libfile, sizeof libfile, "%s/lib.glsb", lib);
+    uint8_t *bytes;
+    size_t len;
+    gls_error err;
+    CHECK(lb && gls_bundle_write(lb, &bytes, &len, &err) == 0);
+    CHECK(gls_write_file_atomic(libfile, bytes, len) == 0);
+    free(bytes);
+    gls_bundle_free(lb);
+    snprintf(p, sizeof p, "%s/Leaf.scene", dir);
+    write_text(p, "color(0, 1, 0);\n");
+    const char *roots[] = {dir, libfile};
+    gls_bundle *b = compile(roots, 2, "Tree");
+    CHECK(b != NULL);
+    if (b) {
+        uint32_t leaf = gls_bundle_find_object(b, "Leaf");
+        CHECK(leaf != GLS_NONE);
+        gls_insn in;
+        size_t pos = 0;
+        CHECK(gls_insn_decode(b->objects[leaf].code, b->objects[leaf].code_len, &pos, &in) == 0);
+        CHECK(in.op == GLS_OP_COLOR && in.d[0] == 0 && in.d[1] == 1); /* the directory's green Leaf */
+    }
+    gls_bundle_free(b);
+}
+
+int main(void)
+{
+    RUN(test_texture_orientation_and_alpha);
+    RUN(test_far_coordinates_exact_through_bundle);
+    RUN(test_earlier_root_overrides_library);
+    CHECK_EXIT();
+}
