@@ -1,0 +1,93 @@
+#!/bin/sh
+# End-to-end tests of build/glsplay: outputs read back with OpenCV,
+# orientation, errors, no partial files.  Scenes come from
+# build/tests/test_player --write (bundles built in C, no compiler needed).
+# Prints "ok NAME" / "FAIL NAME: why".
+B=${GLS_BIN:-build}
+PLAY=$B/glsplay
+PY=/usr/bin/python3
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+# expect NAME STATUS PATTERN -- command...: exit status and one-line stderr
+expect() {
+    name=$1 want=$2 pat=$3
+    shift 4
+    "$@" >"$t/stdout" 2>"$t/stderr"
+    rc=$?
+    lines=$(wc -l <"$t/stderr")
+    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
+    elif [ -n "$pat" ] && ! grep -q -- "$pat" "$t/stderr"; then fail "$name" "stderr lacks '$pat': $(cat "$t/stderr")"
+    elif [ "$want" -ne 0 ] && [ "$lines" -ne 1 ]; then fail "$name" "$lines lines of error output"
+    else ok "$name"; fi
+}
+
+[ -x "$PLAY" ] || { fail player_cli "no $PLAY"; exit 0; }
+$B/tests/test_player --write "$t" >/dev/null || { fail player_cli "cannot write test scenes"; exit 0; }
+
+expect player_renders 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/out"
+for f in image_000000.png depth_000000.pfm points_000000.ply; do
+    [ -s "$t/out/proj/$f" ] && ok "player_writes_$f" || fail "player_writes_$f" "missing"
+done
+if [ -x $PY ] && $PY -c 'import cv2' 2>/dev/null; then
+    $PY tests/py/check_player.py proj "$t" "$t/out"
+    expect player_orient_stereo 0 "" -- $PLAY "$t/orient.glsb" --camera "$t/orient.cam" \
+        --camera "$t/left.cam" --camera "$t/right.cam" -o "$t/out"
+    $PY tests/py/check_player.py orient "$t" "$t/out"
+    $PY tests/py/check_player.py stereo "$t" "$t/out"
+else
+    fail player_opencv "no OpenCV under $PY"
+fi
+
+# determinism: same inputs, same bytes
+$PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/again" 2>/dev/null
+if cmp -s "$t/out/proj/image_000000.png" "$t/again/proj/image_000000.png" &&
+   cmp -s "$t/out/proj/depth_000000.pfm" "$t/again/proj/depth_000000.pfm" &&
+   cmp -s "$t/out/proj/points_000000.ply" "$t/again/proj/points_000000.ply"; then
+    ok player_deterministic
+else fail player_deterministic "outputs differ between runs"; fi
+
+# --outputs: only what is asked for
+expect player_outputs_image 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/img" --outputs image
+[ -f "$t/img/proj/image_000000.png" ] && [ ! -e "$t/img/proj/depth_000000.pfm" ] && [ ! -e "$t/img/proj/points_000000.ply" ] &&
+    ok player_outputs_only_image || fail player_outputs_only_image "$(ls "$t/img/proj")"
+# --size overrides the camera's size
+expect player_size 0 "" -- $PLAY "$t/orient.glsb" --camera "$t/orient.cam" -o "$t/sz" --size 64x40 --outputs depth
+head -c 12 "$t/sz/orient/depth_000000.pfm" | tr '\n' ' ' | grep -q '^Pf 64 40 ' && ok player_size_pfm_header ||
+    fail player_size_pfm_header "$(head -c 12 "$t/sz/orient/depth_000000.pfm")"
+
+# --explain alone: the plan, no rendering, no output directory
+expect player_explain 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" --explain
+grep -q "textures *off" "$t/stdout" && grep -q "reads back: colour" "$t/stdout" && grep -q "reversed-Z" "$t/stdout" &&
+    ok player_explain_plan || fail player_explain_plan "$(cat "$t/stdout")"
+expect player_explain_depth_only 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" --explain --outputs depth
+grep -q "reads back: depth (float32) *$" "$t/stdout" && ok player_explain_no_colour_readback ||
+    fail player_explain_no_colour_readback "$(grep 'reads back' "$t/stdout")"
+
+# errors: one line, status 1 (input) or 2 (usage), no files left behind
+printf 'width 10\nheight 10\nfx 1\nfy 1\ncx 1\ncy 1\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 1\nfar 0.5\n' >"$t/bad.cam"
+printf 'width 10\nheight 10\nfx 1\nfy 1\ncx 1\ncy 1\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 1\nfra 2\n' >"$t/typo.cam"
+expect player_err_camera_missing 1 "nope.cam: error: cannot open" -- $PLAY "$t/proj.glsb" --camera "$t/nope.cam" -o "$t/e1"
+expect player_err_camera_bad 1 "bad.cam:10: error: far" -- $PLAY "$t/proj.glsb" --camera "$t/bad.cam" -o "$t/e2"
+expect player_err_camera_typo 1 "did you mean 'far'" -- $PLAY "$t/proj.glsb" --camera "$t/typo.cam" -o "$t/e3"
+# a bad second camera: nothing is written for the good first one
+expect player_err_second_camera 1 "bad.cam" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" --camera "$t/bad.cam" -o "$t/e4"
+[ ! -e "$t/e4" ] && ok player_err_no_partial_output || fail player_err_no_partial_output "$(find "$t/e4")"
+cp "$t/proj.glsb" "$t/corrupt.glsb"
+printf '\377\377\377\377' | dd of="$t/corrupt.glsb" bs=1 seek=100 conv=notrunc 2>/dev/null
+expect player_err_corrupt_bundle 1 "glsplay: error: .*corrupt.glsb" -- $PLAY "$t/corrupt.glsb" --camera "$t/proj.cam" -o "$t/e5"
+head -c 20 "$t/proj.glsb" >"$t/short.glsb"
+expect player_err_truncated_bundle 1 "glsplay: error:" -- $PLAY "$t/short.glsb" --camera "$t/proj.cam" -o "$t/e6"
+expect player_err_library_bundle 1 "library bundle" -- $PLAY "$t/library.glsb" --camera "$t/proj.cam" -o "$t/e7"
+touch "$t/afile"
+expect player_err_unwritable_output 1 "cannot create output directory" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/afile/out"
+[ -z "$(find "$t" -name '*.tmp*' -o -name '.*.tmp')" ] && ok player_err_no_temp_files || fail player_err_no_temp_files "$(find "$t" -name '*tmp*')"
+for e in e1 e2 e3 e5 e6 e7; do [ -e "$t/$e" ] && { fail player_err_created_$e "output directory created on error"; }; done
+expect player_usage_no_args 2 "no bundle" -- $PLAY
+expect player_usage_no_camera 2 "no camera" -- $PLAY "$t/proj.glsb" -o "$t/u"
+expect player_usage_bad_size 2 "WxH" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --size 0x10
+expect player_usage_bad_outputs 2 "image, depth, points" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --outputs image,colour
+expect player_usage_unknown_option 2 "unknown option" -- $PLAY "$t/proj.glsb" --frobnicate
+expect player_help 0 "" -- $PLAY --help
+grep -q "usage: glsplay" "$t/stdout" && ok player_help_text || fail player_help_text "no usage line"

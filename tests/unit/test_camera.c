@@ -1,0 +1,149 @@
+/* Camera files and the camera's matrices (runtime/camera.c), CPU only. */
+#include <math.h>
+#include <string.h>
+#include "camera.h"
+#include "check.h"
+
+static const char good[] =
+    "# a camera\n"
+    "width 640\nheight 480\n"
+    "fx 700.5   # pixels\nfy 650.25\ncx 301.3\ncy 257.8\nskew 3.7\n"
+    "R 0.36 0.48 -0.8  -0.8 0.6 0  0.48 0.64 0.6\n"
+    "T 0.2 -0.1 0.5\nnear 0.1\nfar 1000\n";
+
+static int parse(const char *text, gls_camera *c, char *err)
+{
+    return gls_camera_parse(text, strlen(text), "x.cam", c, err, 256);
+}
+
+static void test_parse_good(void)
+{
+    gls_camera c;
+    char err[256] = "";
+    CHECK(parse(good, &c, err) == 0);
+    CHECK(c.width == 640 && c.height == 480);
+    CHECK(c.fx == 700.5 && c.fy == 650.25 && c.cx == 301.3 && c.cy == 257.8 && c.skew == 3.7);
+    CHECK(c.R[2] == -0.8 && c.T[1] == -0.1 && c.near == 0.1 && c.far == 1000);
+    /* skew is optional */
+    char text[1024];
+    strcpy(text, good);
+    char *s = strstr(text, "skew 3.7\n");
+    memmove(s, s + 9, strlen(s + 9) + 1);
+    CHECK(parse(text, &c, err) == 0 && c.skew == 0);
+}
+
+/* Replace the first occurrence of `from` in good by `to`, parse, and
+ * expect an error containing `msg`. */
+static void expect_error(const char *from, const char *to, const char *msg)
+{
+    char text[2048], err[256] = "";
+    const char *p = strstr(good, from);
+    CHECK_MSG(p != NULL, "test setup: %s not in the good file", from);
+    if (!p)
+        return;
+    size_t k = (size_t)(p - good);
+    memcpy(text, good, k);
+    strcpy(text + k, to);
+    strcat(text, p + strlen(from));
+    gls_camera c;
+    CHECK_MSG(parse(text, &c, err) == -1, "accepted %s -> %s", from, to);
+    CHECK_MSG(strstr(err, msg) != NULL, "message '%s' lacks '%s'", err, msg);
+    CHECK_MSG(strncmp(err, "x.cam:", 6) == 0 && strstr(err, ": error: ") != NULL, "bad message form '%s'", err);
+    CHECK_MSG(strchr(err, '\n') == NULL, "message is not one line: '%s'", err);
+}
+
+static void test_parse_errors(void)
+{
+    expect_error("fx 700.5", "", "missing key 'fx'");
+    expect_error("fy 650.25", "fy 650.25\nfy 3", "given twice");
+    expect_error("fy 650.25", "fyy 650.25", "did you mean 'fy'");
+    expect_error("near 0.1", "nera 0.1", "did you mean 'near'");
+    expect_error("R 0.36", "r 0.36", "did you mean 'R'");
+    expect_error("fx 700.5", "fx nan", "not a finite number");
+    expect_error("fx 700.5", "fx inf", "not a finite number");
+    expect_error("fx 700.5", "fx 1e999", "not a finite number");
+    expect_error("fx 700.5", "fx 7x", "not a finite number");
+    expect_error("fx 700.5", "fx 0", "fx must be > 0");
+    expect_error("fy 650.25", "fy -1", "fy must be > 0");
+    expect_error("width 640", "width 0", "1..16384");
+    expect_error("width 640", "width 16385", "1..16384");
+    expect_error("height 480", "height 480.5", "whole number");
+    expect_error("near 0.1", "near 0", "near must be > 0");
+    expect_error("far 1000", "far 0.05", "greater than near");
+    expect_error("T 0.2 -0.1 0.5", "T 0.2 -0.1", "takes 3 numbers");
+    expect_error("R 0.36 0.48 -0.8", "R 0.36 0.48 -0.81", "not orthonormal");
+    /* a reflection: orthonormal, determinant -1 */
+    expect_error("R 0.36 0.48 -0.8  -0.8 0.6 0  0.48 0.64 0.6", "R 1 0 0 0 1 0 0 0 -1", "determinant");
+    /* error line numbers point at the key */
+    char err[256];
+    gls_camera c;
+    CHECK(parse("width 10\n\n# c\nbogus 1\n", &c, err) == -1 && strncmp(err, "x.cam:4:", 8) == 0);
+}
+
+static void test_load_missing_file(void)
+{
+    gls_camera c;
+    char err[256];
+    CHECK(gls_camera_load("/nonexistent/dir/a.cam", &c, err, sizeof err) == -1);
+    CHECK(strstr(err, "/nonexistent/dir/a.cam: error: cannot open") == err);
+}
+
+/* P * MV applied to a world point, then GL's viewport transform in double:
+ * window x, y must be u + 0.5, v + 0.5 and depth must invert to Zc. */
+static void test_matrices_map_to_pixels(void)
+{
+    gls_camera c;
+    char err[256];
+    CHECK(parse(good, &c, err) == 0);
+    const double pts[3][3] = {{0.3, -0.2, 6}, {-2, 1, 40}, {5, 3, 900}};
+    for (int k = 0; k < 3; k++) {
+        double anchor[3] = {pts[k][0] - 0.25, pts[k][1] + 0.5, pts[k][2] - 1}; /* any anchor */
+        double off[4] = {pts[k][0] - anchor[0], pts[k][1] - anchor[1], pts[k][2] - anchor[2], 1};
+        double MV[16], P[16], e[4], cl[4];
+        gls_camera_modelview(&c, anchor, MV);
+        gls_camera_projection(&c, 0, 0, P);
+        for (int i = 0; i < 4; i++)
+            e[i] = MV[4 * i] * off[0] + MV[4 * i + 1] * off[1] + MV[4 * i + 2] * off[2] + MV[4 * i + 3] * off[3];
+        for (int i = 0; i < 4; i++)
+            cl[i] = P[4 * i] * e[0] + P[4 * i + 1] * e[1] + P[4 * i + 2] * e[2] + P[4 * i + 3] * e[3];
+        double xw = (cl[0] / cl[3] + 1) * c.width / 2, yw = (cl[1] / cl[3] + 1) * c.height / 2, d = cl[2] / cl[3];
+        /* reference projection, written out here */
+        double X = c.R[0] * pts[k][0] + c.R[1] * pts[k][1] + c.R[2] * pts[k][2] + c.T[0];
+        double Y = c.R[3] * pts[k][0] + c.R[4] * pts[k][1] + c.R[5] * pts[k][2] + c.T[1];
+        double Z = c.R[6] * pts[k][0] + c.R[7] * pts[k][1] + c.R[8] * pts[k][2] + c.T[2];
+        double u = (c.fx * X + c.skew * Y) / Z + c.cx, v = c.fy * Y / Z + c.cy;
+        CHECK_NEAR(xw, u + 0.5, 1e-9);
+        CHECK_NEAR(yw, v + 0.5, 1e-9);
+        CHECK(d > 0 && d < 1);
+        CHECK_NEAR(gls_camera_depth_to_z(&c, d) / Z, 1, 1e-12);
+        /* unproject(project) is the identity */
+        double uu, vv, Pc[3], W[3];
+        double Zc = gls_camera_project(&c, pts[k], &uu, &vv);
+        CHECK_NEAR(uu, u, 1e-9);
+        CHECK_NEAR(vv, v, 1e-9);
+        gls_camera_unproject(&c, uu, vv, Zc, Pc);
+        gls_camera_to_world(&c, Pc, W);
+        for (int j = 0; j < 3; j++)
+            CHECK_NEAR(W[j], pts[k][j], 1e-9 * (1 + fabs(pts[k][j])));
+    }
+    /* near -> depth 1, far -> depth 0 */
+    CHECK_NEAR(gls_camera_depth_to_z(&c, 1.0), c.near, 1e-15);
+    CHECK_NEAR(gls_camera_depth_to_z(&c, 0.0 + 1e-300), c.far, 1e-6);
+    CHECK(isinf(gls_camera_depth_to_z(&c, 0.0)));
+    /* a jitter shifts the principal point: window x grows by du */
+    double P0[16], P1[16];
+    gls_camera_projection(&c, 0, 0, P0);
+    gls_camera_projection(&c, 0.25, -0.5, P1);
+    /* x_ndc = P[0]x + P[1]y + P[2]z over -z: dP[2] = -2 du / W */
+    CHECK_NEAR(P1[2] - P0[2], -2 * 0.25 / c.width, 1e-15);
+    CHECK_NEAR(P1[6] - P0[6], 2 * 0.5 / c.height, 1e-15);
+}
+
+int main(void)
+{
+    RUN(test_parse_good);
+    RUN(test_parse_errors);
+    RUN(test_load_missing_file);
+    RUN(test_matrices_map_to_pixels);
+    CHECK_EXIT();
+}
