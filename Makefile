@@ -100,3 +100,13 @@ clean:
 	rm -rf $(B) out
 
 -include $(shell find $(B) -name '*.d' 2>/dev/null)
+
+# bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
+$(B)/bench/play_floor: bench/play_floor.c bench/play_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+$(B)/bench/play_bench: bench/play_bench.c bench/play_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
+	@sh bench/play.sh $(B)

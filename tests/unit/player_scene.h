@@ -24,13 +24,13 @@ typedef struct {
     uint32_t poscap, colcap, tccap;
 } tb;
 
-static void tb_die(const char *what)
+static inline void tb_die(const char *what)
 {
     printf("FAIL player_scene: %s\n", what);
     exit(1);
 }
 
-static void tb_init(tb *t)
+static inline void tb_init(tb *t)
 {
     memset(t, 0, sizeof *t);
     t->b = calloc(1, sizeof *t->b);
@@ -42,7 +42,7 @@ static void tb_init(tb *t)
 }
 
 /* Start object `name`; top != 0 makes it the top-level object. */
-static uint32_t tb_object(tb *t, const char *name, int top)
+static inline uint32_t tb_object(tb *t, const char *name, int top)
 {
     uint32_t i = t->b->nobjects++;
     if (i >= TB_MAXOBJ)
@@ -54,7 +54,7 @@ static uint32_t tb_object(tb *t, const char *name, int top)
     return i;
 }
 
-static void tb_insn(tb *t, gls_opcode op, const double *d, const uint32_t *u)
+static inline void tb_insn(tb *t, gls_opcode op, const double *d, const uint32_t *u)
 {
     gls_insn in;
     memset(&in, 0, sizeof in);
@@ -70,40 +70,40 @@ static void tb_insn(tb *t, gls_opcode op, const double *d, const uint32_t *u)
     t->ninsn[t->cur]++;
 }
 
-static void tb_op0(tb *t, gls_opcode op) { tb_insn(t, op, NULL, NULL); }
-static void tb_color(tb *t, double r, double g, double b, double a)
+static inline void tb_op0(tb *t, gls_opcode op) { tb_insn(t, op, NULL, NULL); }
+static inline void tb_color(tb *t, double r, double g, double b, double a)
 {
     double d[4] = {r, g, b, a};
     tb_insn(t, GLS_OP_COLOR, d, NULL);
 }
-static void tb_trans(tb *t, double x, double y, double z)
+static inline void tb_trans(tb *t, double x, double y, double z)
 {
     double d[3] = {x, y, z};
     tb_insn(t, GLS_OP_TRANS, d, NULL);
 }
-static void tb_rot(tb *t, double deg, double x, double y, double z)
+static inline void tb_rot(tb *t, double deg, double x, double y, double z)
 {
     double d[4] = {deg, x, y, z};
     tb_insn(t, GLS_OP_ROT, d, NULL);
 }
-static void tb_scale(tb *t, double x, double y, double z)
+static inline void tb_scale(tb *t, double x, double y, double z)
 {
     double d[3] = {x, y, z};
     tb_insn(t, GLS_OP_SCALE, d, NULL);
 }
-static void tb_call(tb *t, uint32_t obj)
+static inline void tb_call(tb *t, uint32_t obj)
 {
     uint32_t u[1] = {obj};
     tb_insn(t, GLS_OP_CALL, NULL, u);
 }
-static void tb_u1(tb *t, gls_opcode op, uint32_t v)
+static inline void tb_u1(tb *t, gls_opcode op, uint32_t v)
 {
     uint32_t u[1] = {v};
     tb_insn(t, op, NULL, u);
 }
 
 /* A primitive of n vertices (x, y, z, w), optional colours and texcoords. */
-static void tb_prim4(tb *t, gls_primkind kind, uint32_t n, const gls_vec4 *p, const gls_rgba *c, const gls_st *st)
+static inline void tb_prim4(tb *t, gls_primkind kind, uint32_t n, const gls_vec4 *p, const gls_rgba *c, const gls_st *st)
 {
     gls_bundle *b = t->b;
     uint32_t u[5] = {(uint32_t)kind, n, b->npos, c ? b->ncol : GLS_NONE, st ? b->ntex : GLS_NONE};
@@ -124,7 +124,7 @@ static void tb_prim4(tb *t, gls_primkind kind, uint32_t n, const gls_vec4 *p, co
 }
 
 /* A polygon from xyz triples (w = 1). */
-static void tb_poly(tb *t, uint32_t n, const double (*xyz)[3])
+static inline void tb_poly(tb *t, uint32_t n, const double (*xyz)[3])
 {
     gls_vec4 p[64];
     if (n > 64)
@@ -135,14 +135,14 @@ static void tb_poly(tb *t, uint32_t n, const double (*xyz)[3])
 }
 
 /* Axis-aligned rectangle in the plane z = const: corners (x0,y0)-(x1,y1). */
-static void tb_rect_z(tb *t, double x0, double y0, double x1, double y1, double z)
+static inline void tb_rect_z(tb *t, double x0, double y0, double x1, double y1, double z)
 {
     double q[4][3] = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}};
     tb_poly(t, 4, q);
 }
 
 /* Add a texture (names must be added in sorted order). */
-static uint32_t tb_texture(tb *t, const char *name, uint32_t w, uint32_t h, const uint8_t *rgba)
+static inline uint32_t tb_texture(tb *t, const char *name, uint32_t w, uint32_t h, const uint8_t *rgba)
 {
     gls_bundle *b = t->b;
     b->textures = realloc(b->textures, (b->ntextures + 1) * sizeof *b->textures);
@@ -159,7 +159,7 @@ static uint32_t tb_texture(tb *t, const char *name, uint32_t w, uint32_t h, cons
 }
 
 /* Close every object with END, compute features, validate. */
-static gls_bundle *tb_finish(tb *t)
+static inline gls_bundle *tb_finish(tb *t)
 {
     gls_bundle *b = t->b;
     for (uint32_t i = 0; i < b->nobjects; i++) {
@@ -179,7 +179,7 @@ static gls_bundle *tb_finish(tb *t)
     return b;
 }
 
-static int tb_write(const gls_bundle *b, const char *path)
+static inline int tb_write(const gls_bundle *b, const char *path)
 {
     uint8_t *data;
     size_t len;
@@ -196,7 +196,7 @@ typedef struct {
     gls_glctx *ctx;
 } tb_gl;
 
-static int tb_render(gls_glctx *ctx, const gls_bundle *b, const gls_camera *c, double du, double dv,
+static inline int tb_render(gls_glctx *ctx, const gls_bundle *b, const gls_camera *c, double du, double dv,
                      uint8_t *rgba, float *z)
 {
     char err[512];
@@ -223,7 +223,7 @@ static int tb_render(gls_glctx *ctx, const gls_bundle *b, const gls_camera *c, d
 }
 
 /* Camera from parts (R row-major). */
-static gls_camera tb_camera(uint32_t w, uint32_t h, double fx, double fy, double cx, double cy, double skew,
+static inline gls_camera tb_camera(uint32_t w, uint32_t h, double fx, double fy, double cx, double cy, double skew,
                             const double R[9], const double T[3], double n, double f)
 {
     gls_camera c;
@@ -236,7 +236,7 @@ static gls_camera tb_camera(uint32_t w, uint32_t h, double fx, double fy, double
 }
 
 /* Write a camera file in the documented format. */
-static int tb_write_camera(const gls_camera *c, const char *path)
+static inline int tb_write_camera(const gls_camera *c, const char *path)
 {
     FILE *f = fopen(path, "w");
     if (!f)

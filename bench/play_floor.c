@@ -1,0 +1,115 @@
+/* The floor for bench-play: the bench scene's triangles in one vertex
+ * buffer, world coordinates as float, one draw call per frame, through the
+ * same OSMesa context, the same FBO (RGBA8 + 32F depth, reversed Z) and
+ * the same read-backs (colour and depth) as the player.  Nothing a real
+ * player could skip.  Prints "floor FPS". */
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include "glctx.h"
+#include "play_scene.h"
+#include "render.h"
+
+#define LOAD(type, name) type name = (type)(uintptr_t)gls_glctx_proc(ctx, #name)
+
+typedef struct {
+    float p[3];
+    uint8_t c[4];
+} vert;
+
+int main(void)
+{
+    char err[256];
+    gls_glctx *ctx = gls_glctx_create(1, 1, err, sizeof err);
+    if (!ctx) {
+        fprintf(stderr, "play_floor: %s\n", err);
+        return 1;
+    }
+    LOAD(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers);
+    LOAD(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer);
+    LOAD(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers);
+    LOAD(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer);
+    LOAD(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage);
+    LOAD(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer);
+    LOAD(PFNGLCLIPCONTROLPROC, glClipControl);
+    LOAD(PFNGLGENBUFFERSPROC, glGenBuffers);
+    LOAD(PFNGLBINDBUFFERPROC, glBindBuffer);
+    LOAD(PFNGLBUFFERDATAPROC, glBufferData);
+    size_t nv = (size_t)PS_N * PS_N * 6, k = 0;
+    vert *v = malloc(nv * sizeof *v);
+    for (int i = 0; i < PS_N; i++)
+        for (int j = 0; j < PS_N; j++) {
+            static const int corner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+            for (int q = 0; q < 6; q++) {
+                double p[3];
+                float c[4];
+                ps_vertex(i + corner[q][0], j + corner[q][1], p, c);
+                for (int a = 0; a < 3; a++) {
+                    v[k].p[a] = (float)p[a];
+                    v[k].c[a] = (uint8_t)lrint(c[a] * 255.0);
+                }
+                v[k].c[3] = 255;
+                k++;
+            }
+        }
+    GLuint fbo, rb[2], vbo;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glGenRenderbuffers(2, rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, PS_W, PS_H);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, PS_W, PS_H);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    glViewport(0, 0, PS_W, PS_H);
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glClearDepth(0);
+    glDepthFunc(GL_GREATER);
+    glEnable(GL_DEPTH_TEST);
+    glClearColor(0, 0, 0, 1);
+    glGenBuffers(1, &vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(nv * sizeof *v), v, GL_STATIC_DRAW);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, sizeof *v, (void *)0);
+    glColorPointer(4, GL_UNSIGNED_BYTE, sizeof *v, (void *)offsetof(vert, c));
+    uint8_t *rgba = malloc((size_t)PS_W * PS_H * 4);
+    float *depth = malloc((size_t)PS_W * PS_H * 4);
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (int f = 0; f < PS_FRAMES; f++) {
+        gls_camera c = ps_camera(f);
+        double P[16], MV[16], zero[3] = {0, 0, 0};
+        float m[16];
+        gls_camera_projection(&c, 0, 0, P);
+        gls_mat_to_gl(P, m);
+        glMatrixMode(GL_PROJECTION);
+        glLoadMatrixf(m);
+        gls_camera_modelview(&c, zero, MV);
+        gls_mat_to_gl(MV, m);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadMatrixf(m);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glDrawArrays(GL_TRIANGLES, 0, (GLsizei)nv);
+        glReadPixels(0, 0, PS_W, PS_H, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+        glReadPixels(0, 0, PS_W, PS_H, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+    }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    if (getenv("BENCH_DUMP")) { /* last frame, raw RGBA, for comparing the two */
+        FILE *df = fopen(getenv("BENCH_DUMP"), "wb");
+        if (df) {
+            fwrite(rgba, 4, (size_t)PS_W * PS_H, df);
+            fclose(df);
+        }
+    }
+    double s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    printf("floor %.2f\n", PS_FRAMES / s);
+    free(v), free(rgba), free(depth);
+    gls_glctx_destroy(ctx);
+    return 0;
+}
