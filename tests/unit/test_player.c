@@ -13,6 +13,7 @@
 #include <string.h>
 #include "check.h"
 #include "outputs.h"
+#include "player.h"
 #include "player_scene.h"
 
 static gls_glctx *ctx;
@@ -644,6 +645,18 @@ static void test_texture_modes(void)
     gls_bundle_free(b);
 }
 
+static void test_output_names(void)
+{
+    char buf[64];
+    CHECK(gls_output_path(buf, sizeof buf, "out", "left", "image", 0, "png") == 0);
+    CHECK_STR(buf, "out/left/image_000000.png");
+    CHECK(gls_output_path(buf, sizeof buf, "o", "c", "depth", 999999, "pfm") == 0);
+    CHECK_STR(buf, "o/c/depth_999999.pfm");
+    CHECK(gls_output_path(buf, sizeof buf, "o", "c", "points", 1234567, "ply") == 0);
+    CHECK_STR(buf, "o/c/points_1234567.ply");
+    CHECK(gls_output_path(buf, 10, "out", "left", "image", 0, "png") == -1);
+}
+
 /* ---- scenes for the end-to-end tests ------------------------------ */
 
 static int write_scenes(const char *dir)
@@ -735,6 +748,7 @@ int main(int argc, char **argv)
     RUN(test_replay_semantics);
     RUN(test_deterministic_png);
     RUN(test_texture_modes);
+    RUN(test_output_names);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
 }
