@@ -8,11 +8,48 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include "bundle.h"
 
+/* Write everything to fd; 0 or -1 with errno set. */
+static int write_all(int fd, const void *data, size_t len)
+{
+    const char *p = data;
+    while (len) {
+        ssize_t w = write(fd, p, len);
+        if (w < 0) {
+            if (errno == EINTR)
+                continue;
+            return -1;
+        }
+        p += w;
+        len -= (size_t)w;
+    }
+    return 0;
+}
+
 int gls_write_file_atomic(const char *path, const void *data, size_t len)
 {
+    /* An existing target that is not a regular file (/dev/null, a FIFO, a
+       terminal) is written in place: renaming over it would replace the
+       device node itself. */
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) {
+            errno = EISDIR;
+            return -1;
+        }
+        int fd = open(path, O_WRONLY);
+        if (fd < 0)
+            return -1;
+        int r = write_all(fd, data, len);
+        int e = errno;
+        if (close(fd) != 0 && r == 0)
+            return -1;
+        errno = e;
+        return r;
+    }
     size_t n = strlen(path);
     char *tmp = malloc(n + 32);
     if (!tmp)
@@ -25,18 +62,8 @@ int gls_write_file_atomic(const char *path, const void *data, size_t len)
         errno = e;
         return -1;
     }
-    const char *p = data;
-    size_t left = len;
-    while (left) {
-        ssize_t w = write(fd, p, left);
-        if (w < 0) {
-            if (errno == EINTR)
-                continue;
-            goto fail;
-        }
-        p += w;
-        left -= (size_t)w;
-    }
+    if (write_all(fd, data, len))
+        goto fail;
     if (fsync(fd) != 0 && errno != EINVAL)
         goto fail;
     if (close(fd) != 0) {
