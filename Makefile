@@ -37,7 +37,7 @@ all: $(TOOLS)
 test:
 	@sh tools/deps.sh
 	@$(MAKE) --no-print-directory all $(UNIT_BIN)
-	@sh tests/run.sh
+	@GLS_BIN=$(B) sh tests/run.sh
 
 $(B)/tests/%: tests/unit/%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)

@@ -5,9 +5,11 @@
 # End-to-end tests: tests/e2e/*.sh, run from the repository root with
 # GLS_BIN=build; they print the same "ok NAME" / "FAIL NAME" lines.
 cd "$(dirname "$0")/.." || exit 2
+B=${GLS_BIN:-build}
+export GLS_BIN=$B
 log=$(mktemp)
 status=0
-for t in build/tests/*; do
+for t in "$B"/tests/*; do
     [ -x "$t" ] || continue
     echo "== $t"
     "$t" >"$log" 2>&1
@@ -16,17 +18,17 @@ for t in build/tests/*; do
     if [ $rc -ne 0 ] && ! grep -q '^FAIL ' "$log"; then
         echo "FAIL $(basename "$t"): exited with status $rc"
     fi
-done >build/test.log
+done >"$B/test.log"
 for t in tests/e2e/*.sh; do
     [ -f "$t" ] || continue
     echo "== $t"
-    GLS_BIN=build sh "$t" 2>&1
-done >>build/test.log
-cat build/test.log
-passed=$(grep -c '^ok ' build/test.log)
-failed=$(grep -c '^FAIL ' build/test.log)
+    sh "$t" 2>&1
+done >>"$B/test.log"
+cat "$B/test.log"
+passed=$(grep -c '^ok ' "$B/test.log")
+failed=$(grep -c '^FAIL ' "$B/test.log")
 rm -f "$log"
 echo
-grep '^FAIL ' build/test.log
+grep '^FAIL ' "$B/test.log"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
