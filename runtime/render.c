@@ -111,9 +111,21 @@ static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size
         const gls_texture *tx = &b->textures[t];
         glGenTextures(1, &r->tex[t]);
         glBindTexture(GL_TEXTURE_2D, r->tex[t]);
-        /* Texel row 0 (the top row of the image) is GL row 0: t = 0. */
+        /* The bundle stores the image top row first; the language puts
+         * t = 0 at the image's bottom edge (OpenGL's convention, which the
+         * original system got by uploading bottom-up TGA files as they
+         * are).  GL's first row is t = 0, so upload bottom row first. */
+        size_t row = (size_t)tx->width * 4;
+        uint8_t *flipped = malloc(row * tx->height);
+        if (!flipped) {
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+        for (uint32_t y = 0; y < tx->height; y++)
+            memcpy(flipped + row * y, tx->rgba + row * (tx->height - 1 - y), row);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, (GLsizei)tx->width, (GLsizei)tx->height, 0, GL_RGBA,
-                     GL_UNSIGNED_BYTE, tx->rgba);
+                     GL_UNSIGNED_BYTE, flipped);
+        free(flipped);
         r->glGenerateMipmap(GL_TEXTURE_2D);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

@@ -627,18 +627,20 @@ static void test_texture_modes(void)
     uint8_t *rgba = malloc((size_t)c.width * c.height * 4);
     CHECK(tb_render(ctx, b, &c, 0, 0, rgba, NULL) == 0);
     /* Sample at texel centres.  World (-0.5, -0.5) is texcoord (0.25,
-     * 0.25): texel row 0 (the top row of the texture image) = red; the
-     * camera's y points down, so it appears at the top of the image. */
+     * 0.25), a quarter up from the texture image's BOTTOM edge (t = 0 is
+     * the bottom row, spec/language.md): the blue quadrant.  The camera's
+     * y points down, so world y = -0.5 is in the upper half of the image:
+     * the texture appears upside down to this camera, as it should. */
     #define PIX(X, Y) (rgba + 4 * ((size_t)(lrint(c.cy + c.fy * (Y) / 5)) * c.width + (size_t)lrint(c.cx + c.fx * ((X) + T[0]) / 5)))
     const uint8_t *q = PIX(-0.5, -0.5);
-    CHECK(q[0] == 255 && q[1] == 0 && q[2] == 0);
-    q = PIX(0.5, -0.5);
-    CHECK(q[0] == 0 && q[1] == 255 && q[2] == 0);
-    q = PIX(-0.5, 0.5);
     CHECK(q[0] == 0 && q[1] == 0 && q[2] == 255);
-    q = PIX(0.5, 0.5); /* the hole: background */
+    q = PIX(0.5, -0.5); /* the hole: background */
     CHECK(q[0] == 0 && q[1] == 0 && q[2] == 0);
-    q = PIX(2.0, -0.5); /* modulated red: 128 or 127 */
+    q = PIX(-0.5, 0.5);
+    CHECK(q[0] == 255 && q[1] == 0 && q[2] == 0);
+    q = PIX(0.5, 0.5);
+    CHECK(q[0] == 0 && q[1] == 255 && q[2] == 0);
+    q = PIX(2.0, 0.5); /* modulated red: 128 or 127 */
     CHECK(q[0] >= 126 && q[0] <= 129 && q[1] == 0 && q[2] == 0);
     #undef PIX
     free(rgba);
