@@ -16,7 +16,7 @@
 %start_symbol file
 
 %stack_overflow {
-    gls_error_at(ctx->d, gls_tok_loc(ctx, 0, 0), "expression nested too deeply");
+    gls_error_at(ctx->d, gls_tok_loc(ctx, ctx->last.line, ctx->last.col), "expression nested too deeply");
     ctx->stop = 1;
 }
 

@@ -40,6 +40,7 @@ int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
             for (;;) {
                 if (lx->cur >= lx->lim) {
                     gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "unterminated comment");
+                    ctx->lex_eof_error = 1;
                     t->len = 0;
                     return 0;
                 }
@@ -60,6 +61,7 @@ int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
         "\"" [^"\n\x00]* "\"" { TOKEN(STRING); }
         "\"" [^"\n\x00]* {
             gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "unterminated string");
+            ctx->lex_eof_error = 1;
             continue;
         }
         "("  { TOKEN(LPAREN); }

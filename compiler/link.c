@@ -139,9 +139,17 @@ int gls_compiler_add_env_roots(gls_compiler *c)
     int rc = 0;
     if (!copy)
         return -1;
-    for (char *tok = strtok_r(copy, ":", &save); tok; tok = strtok_r(NULL, ":", &save))
-        if (*tok && gls_compiler_add_root(c, tok))
+    /* a stale entry in the environment is common and harmless: warn, skip */
+    for (char *tok = strtok_r(copy, ":", &save); tok; tok = strtok_r(NULL, ":", &save)) {
+        if (!*tok)
+            continue;
+        if (!gls_is_dir(tok) && !gls_is_file(tok)) {
+            fprintf(c->diag.out, "glsc: warning: GLSCENE_PATH entry %s does not exist; ignored\n", tok);
+            continue;
+        }
+        if (gls_compiler_add_root(c, tok))
             rc = -1;
+    }
     free(copy);
     return rc;
 }
@@ -424,11 +432,22 @@ static void visit(gls_compiler *c, gls_unit *u)
             continue;
         }
         if (callee->state == 0) {
-            if (c->depth >= GLS_MAX_CALL_DEPTH) {
-                gls_error_at(&c->diag, u->refs[i].loc, "calls nest deeper than %u", GLS_MAX_CALL_DEPTH);
+            /* c->depth units are on the stack: calling one more makes a
+               chain of c->depth calls; the C stack stays bounded */
+            if (c->depth > GLS_MAX_CALL_DEPTH) {
+                gls_error_at(&c->diag, u->refs[i].loc, "calls nest more than %u deep", GLS_MAX_CALL_DEPTH);
                 continue;
             }
             visit(c, callee);
+        }
+        /* the longest chain through an already visited callee counts too
+           (the same rule as the bundle validator: at most
+           GLS_MAX_CALL_DEPTH nested calls) */
+        if (callee->state == 2 && callee->height + 1 > u->height) {
+            u->height = callee->height + 1;
+            /* report where the limit is first crossed, not at every caller */
+            if (u->height > GLS_MAX_CALL_DEPTH && callee->height <= GLS_MAX_CALL_DEPTH)
+                gls_error_at(&c->diag, u->refs[i].loc, "calls nest more than %u deep", GLS_MAX_CALL_DEPTH);
         }
     }
     c->depth--;
@@ -706,7 +725,14 @@ static int scan_dir(gls_compiler *c, const char *dir, const char *prefix, int de
         } else {
             char *dot = strrchr(qual, '.');
             char *base = strrchr(names[i], '.');
-            if (base && dot) {
+            int known = 0;
+            for (size_t k = 0; base && k < sizeof tex_exts / sizeof tex_exts[0]; k++)
+                known |= strcmp(base, tex_exts[k]) == 0;
+            if (base && (known || strcmp(base, ".scene") == 0) && memchr(names[i], '.', (size_t)(base - names[i]))) {
+                /* "a.b.scene" would be named a.b and looked up as a/b.scene */
+                gls_error_at(&c->diag, noloc, "%s: a file name must be an identifier before its extension", path);
+                rc = -1;
+            } else if (base && dot) {
                 *dot = 0;
                 if (strcmp(base, ".scene") == 0 && valid_object_name(qual))
                     get_unit(c, qual, noloc);

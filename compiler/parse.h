@@ -58,6 +58,10 @@ typedef struct {
     unsigned errors_at_block;   /* ... when the open primitive block began */
     int syntax_errors;          /* statements were dropped by recovery     */
     int prev_major;             /* previous token, for "missing ';'" hints */
+    gls_tok last;               /* last token read, for stack overflow     */
+    int lex_eof_error;          /* an unterminated string or comment was
+                                   reported: the parser's end-of-file error
+                                   would only repeat it                    */
 } gls_parse;
 
 static inline gls_loc gls_tok_loc(const gls_parse *ctx, unsigned line, unsigned col)

@@ -2,6 +2,7 @@
  * it reduces, they check each statement and emit bytecode into the unit.
  * Numbers are folded here, in double precision. */
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -148,8 +149,7 @@ void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
             ERR(ctx, name.line, name.col, "'%s' takes %u argument%s, got %u", ins->name, ins->min,
                 ins->min == 1 ? "" : "s", n);
         else
-            ERR(ctx, name.line, name.col, "'%s' takes %u to %u arguments, got %s%u", ins->name, ins->min, ins->max,
-                too_many ? "more than " : "", n);
+            ERR(ctx, name.line, name.col, "'%s' takes %u to %u arguments, got %u", ins->name, ins->min, ins->max, n);
         return;
     }
     const gls_val *a = ctx->args;
@@ -249,6 +249,11 @@ static void h_col(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 static void h_tex(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     (void)n;
+    for (int i = 0; i < 2; i++)
+        if (fabs(a[i].num) > FLT_MAX) {
+            ERR(ctx, a[i].line, a[i].col, "texture coordinate %g is outside the range of a float", a[i].num);
+            return;
+        }
     if (!ctx->prim_has_tc && ctx->prim_nvert > 0) {
         ERR(ctx, name.line, name.col,
             "'tex' after the first 'vert' of this primitive: put a 'tex' before the first vertex so every vertex has coordinates");
@@ -488,6 +493,11 @@ void sema_const(gls_parse *ctx, gls_tok name, gls_val v)
             ERR(ctx, name.line, name.col, "'%s' is an instruction name and cannot be a constant", all_words[i]);
             return;
         }
+    for (unsigned m = 0; m < GLS_MODE_COUNT; m++)
+        if (tok_is(name, gls_texmode_name[m])) {
+            ERR(ctx, name.line, name.col, "'%s' is a texture mode and cannot be a constant", gls_texmode_name[m]);
+            return;
+        }
     if (find_const(ctx, name.p, name.len)) {
         ERR(ctx, name.line, name.col, "constant '%.*s' is already defined", (int)name.len, name.p);
         return;
@@ -504,11 +514,12 @@ void sema_const(gls_parse *ctx, gls_tok name, gls_val v)
 
 void sema_arg(gls_parse *ctx, gls_val v)
 {
-    if (ctx->nargs >= GLS_MAX_ARGS) {
+    /* keep counting past the last slot, so the message says how many */
+    if (ctx->nargs >= GLS_MAX_ARGS)
         ctx->too_many_args = 1;
-        return;
-    }
-    ctx->args[ctx->nargs++] = v;
+    else
+        ctx->args[ctx->nargs] = v;
+    ctx->nargs++;
 }
 
 void sema_recover(gls_parse *ctx)
@@ -537,9 +548,9 @@ void sema_syntax_error(gls_parse *ctx, int major, gls_tok tok)
     ctx->nargs = 0;
     ctx->syntax_errors++;
     const char *d = token_desc(major);
-    /* an unexpected end of file after a lexical error (unterminated string
-       or comment) is explained by that error already */
-    if (major == 0 && ctx->d->errors != ctx->errors_at_start)
+    /* an unexpected end of file after an unterminated string or comment
+       is explained by that error already */
+    if (major == 0 && ctx->lex_eof_error)
         return;
     if (ctx->prev_major == TK_RPAREN && major == TK_IDENT)
         ERR(ctx, tok.line, tok.col, "syntax error: unexpected '%.*s' (missing ';' after the previous statement?)",

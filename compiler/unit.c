@@ -87,6 +87,7 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
     int code;
     do {
         code = gls_lex(&lx, &t, ctx);
+        ctx->last = t;
         glsParse(parser, code, t);
         ctx->prev_major = code;
     } while (code != 0 && !ctx->stop && !d->stopped);

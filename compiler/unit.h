@@ -36,6 +36,7 @@ typedef struct gls_unit {
     gls_st *tc;    uint32_t ntc, tc_cap;
     /* linker state */
     int state;               /* 0 unvisited, 1 on the DFS stack, 2 done   */
+    uint32_t height;         /* call edges in the longest chain below it  */
     uint32_t final_index;
 } gls_unit;
 

@@ -100,3 +100,45 @@ if [ $r1 -eq 2 ] && [ $r2 -eq 2 ] && [ $r3 -eq 2 ] && [ $r4 -eq 0 ]; then ok usa
 # An unwritable output leaves nothing behind and exits 1.
 "$BIN/glsc" -I tests/compiler/lang -o /nonexistent-dir/x.glsb pkg.Leaf 2>"$tmp/err"; rc=$?
 if [ $rc -eq 1 ] && grep -q 'cannot write' "$tmp/err"; then ok unwritable_output; else fail unwritable_output "rc=$rc"; fi
+
+# Call depth: 256 nested calls compile; 257 do not, also when the long
+# chain runs through an object that an earlier, shorter chain already reached.
+mkdir -p "$tmp/deep"
+i=0
+while [ $i -lt 257 ]; do echo "call(\"C$((i + 1))\");" >"$tmp/deep/C$i.scene"; i=$((i + 1)); done
+echo 'color(1, 0, 0);' >"$tmp/deep/C257.scene"
+if "$BIN/glsc" -I "$tmp/deep" -o "$tmp/deep.glsb" C1 2>"$tmp/err"; then ok call_depth_256_allowed; else fail call_depth_256_allowed "$(head -1 "$tmp/err")"; fi
+"$BIN/glsc" -I "$tmp/deep" -o "$tmp/deep0.glsb" C0 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && grep -q 'calls nest more than 256 deep' "$tmp/err" && [ ! -e "$tmp/deep0.glsb" ]; then
+    ok call_depth_257_refused
+else
+    fail call_depth_257_refused "rc=$rc $(head -1 "$tmp/err")"
+fi
+printf 'call("C100");\ncall("Via");\n' >"$tmp/deep/Top.scene"
+i=0; prev=C100
+while [ $i -lt 100 ]; do echo "call(\"$prev\");" >"$tmp/deep/V$i.scene"; prev=V$i; i=$((i + 1)); done
+echo "call(\"$prev\");" >"$tmp/deep/Via.scene"
+"$BIN/glsc" -I "$tmp/deep" -o "$tmp/top.glsb" Top 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && grep -q 'calls nest more than 256 deep' "$tmp/err" && [ "$(grep -c error: "$tmp/err")" -eq 1 ]; then
+    ok call_depth_through_visited_object
+else
+    fail call_depth_through_visited_object "rc=$rc $(head -3 "$tmp/err")"
+fi
+
+# A library file whose name is not an identifier is refused, not misnamed.
+mkdir -p "$tmp/dotlib"
+echo 'color(1, 0, 0);' >"$tmp/dotlib/a.b.scene"
+"$BIN/glsc" --lib "$tmp/dotlib" -o "$tmp/dot.glsb" 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && grep -q 'a.b.scene: a file name must be an identifier before its extension' "$tmp/err"; then
+    ok library_refuses_dotted_file_name
+else
+    fail library_refuses_dotted_file_name "rc=$rc $(cat "$tmp/err")"
+fi
+
+# A stale GLSCENE_PATH entry is a warning, not an error.
+GLSCENE_PATH="/no/such/dir:$ROOT/tests/compiler/paper" "$BIN/glsc" -o "$tmp/w.glsb" road.tex.roads.Curve400m 2>"$tmp/err"; rc=$?
+if [ $rc -eq 0 ] && grep -q 'warning: GLSCENE_PATH entry /no/such/dir does not exist; ignored' "$tmp/err"; then
+    ok stale_GLSCENE_PATH_entry_ignored
+else
+    fail stale_GLSCENE_PATH_entry_ignored "rc=$rc $(cat "$tmp/err")"
+fi
