@@ -19,14 +19,14 @@
 /* Feature flags: which effects a bundle's content uses.  Computed from the
  * content by gls_bundle_features(), never set by hand, so they cannot lie. */
 #define GLS_FEATURES(X)                                                     \
-    X(TEXTURES,     0, "textures",      "some primitive is drawn with a texture") \
-    X(ALPHA_TEST,   1, "alpha-test",    "a used texture has transparent texels")  \
+    X(TEXTURES,     0, "textures",      "the scene selects a texture")              \
+    X(ALPHA_TEST,   1, "alpha-test",    "a selected texture has transparent texels") \
     X(VERTEX_COLOR, 2, "vertex-color",  "some primitive has per-vertex colours")  \
     X(TEXCOORDS,    3, "texcoords",     "some primitive has texture coordinates") \
     X(HOMOGENEOUS,  4, "homogeneous-w", "some vertex has w != 1")                 \
     X(MODULATE,     5, "modulate",      "texture mode modulate is used")          \
     X(REPLACE,      6, "replace",       "texture mode replace is used")           \
-    X(TRANSLUCENT,  7, "translucent",   "some colour has alpha < 1")
+    X(TRANSLUCENT,  7, "translucent",   "some colour has alpha < 1 (recorded; drawn opaque)")
 
 enum {
 #define GLS_X_FEAT(e, bit, name, why) GLS_FEAT_##e = 1u << (bit),

@@ -195,13 +195,18 @@ static int read_positions(gls_bundle *b, cursor *c, gls_error *err)
         FAIL("out of memory");
     }
     gls_planes_decode(c->p + c->pos, n, ncomp, 8, v);
+    int some_w = 0;
     for (uint32_t i = 0; i < n; i++) {
         b->pos[i].x = v[i * ncomp];
         b->pos[i].y = v[i * ncomp + 1];
         b->pos[i].z = v[i * ncomp + 2];
         b->pos[i].w = ncomp == 4 ? v[i * ncomp + 3] : 1.0;
+        some_w |= b->pos[i].w != 1.0;
     }
     free(v);
+    /* the writer stores w only when some w != 1: one encoding per content */
+    if (ncomp == 4 && !some_w)
+        FAIL("position stream: w stored although every w is 1");
     b->npos = n;
     return 0;
 fail:
