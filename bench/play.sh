@@ -14,6 +14,6 @@ echo "renderer: $(echo "$p" | sed 's/.*renderer //')"
 echo "scene: $(echo "$p" | awk '{print $4}') triangles, 640x480, 200 frames, colour + depth read-back each frame"
 ff=$(echo "$f" | awk '{print $2}')
 pf=$(echo "$p" | awk '{print $2}')
-echo "floor  (one VBO, one draw): $ff fps"
+echo "floor  (one VBO, one draw, 32x32-quad blocks): $ff fps"
 echo "player (glsplay renderer):  $pf fps ($(echo "$p" | awk '{print $6}') chunks)"
 awk -v f="$ff" -v p="$pf" 'BEGIN { printf "ratio floor/player: %.3f (aim: <= 1.2)\n", f / p }'

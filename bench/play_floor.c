@@ -2,7 +2,7 @@
  * buffer, world coordinates as float, one draw call per frame, through the
  * same OSMesa context, the same FBO (RGBA8 + 32F depth, reversed Z) and
  * the same read-backs (colour and depth) as the player.  Nothing a real
- * player could skip.  Prints "floor FPS". */
+ * player could skip, in the order that draws fastest.  Prints "floor FPS". */
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <stdint.h>
@@ -40,8 +40,16 @@ int main(void)
     LOAD(PFNGLBUFFERDATAPROC, glBufferData);
     size_t nv = (size_t)PS_N * PS_N * 6, k = 0;
     vert *v = malloc(nv * sizeof *v);
-    for (int i = 0; i < PS_N; i++)
-        for (int j = 0; j < PS_N; j++) {
+    /* Quads in 32 x 32 blocks rather than row by row: llvmpipe bins
+     * spatially coherent triangles faster (measured on this bench: row
+     * order 52 fps, 32-blocks 63 fps), and a floor must be the fastest
+     * plain way to draw these triangles, or the player could beat it by
+     * ordering alone (its chunks are spatial cells). */
+    const int blk = 32;
+    for (int bi = 0; bi < PS_N; bi += blk)
+    for (int bj = 0; bj < PS_N; bj += blk)
+    for (int i = bi; i < bi + blk && i < PS_N; i++)
+        for (int j = bj; j < bj + blk && j < PS_N; j++) {
             static const int corner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
             for (int q = 0; q < 6; q++) {
                 double p[3];
