@@ -663,6 +663,14 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
     gls_bundle *b = assemble(c, u, 0);
     if (!b)
         return -1;
+    uint64_t nv = gls_bundle_expanded_vertices(b, b->top);
+    if (nv > GLS_MAX_EXPANDED_VERTICES) {
+        gls_error_at(&c->diag, noloc,
+                     "%s draws more than %llu vertices once its calls are unrolled: too large to render",
+                     u->name, (unsigned long long)GLS_MAX_EXPANDED_VERTICES);
+        gls_bundle_free(b);
+        return -1;
+    }
     gls_error err;
     if (gls_bundle_validate(b, &err)) {
         gls_error_at(&c->diag, noloc, "internal error: built bundle fails validation: %s (format check line %d)",

@@ -48,6 +48,11 @@ extern const char *const gls_feature_why[32];
 #define GLS_MAX_PUSH_DEPTH        64u            /* per object            */
 #define GLS_MAX_CALL_DEPTH        256u           /* nested calls          */
 #define GLS_MAX_NAME_BYTES        1024u
+/* Vertices the top-level object draws once every call is unrolled: calls
+ * share objects, so a small bundle can describe an exponentially large
+ * scene (A calls B twice, B calls C twice, ...).  2^26 vertices is about
+ * 1.5 GiB in the player. */
+#define GLS_MAX_EXPANDED_VERTICES (1ull << 26)
 
 typedef struct {
     double x, y, z, w;
@@ -142,6 +147,10 @@ int gls_bundle_validate(const gls_bundle *b, gls_error *err);
 
 /* Serialise to bytes (malloc'd).  Deterministic. Returns 0 or -1. */
 int gls_bundle_write(const gls_bundle *b, uint8_t **out, size_t *outlen, gls_error *err);
+
+/* Vertices object oi draws with its calls unrolled, saturated at
+ * GLS_MAX_EXPANDED_VERTICES + 1.  The bundle must be validated (acyclic). */
+uint64_t gls_bundle_expanded_vertices(const gls_bundle *b, uint32_t oi);
 
 /* Compute the feature flags from the content (used by the writer). */
 uint32_t gls_bundle_features(const gls_bundle *b);

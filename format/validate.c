@@ -238,6 +238,38 @@ fail:
     return -1;
 }
 
+/* Memoised over the DAG; recursion depth is bounded by the call depth
+ * limit, which check_calls has enforced before this runs. */
+static uint64_t expanded(const gls_bundle *b, uint32_t oi, uint64_t *memo)
+{
+    const uint64_t cap = GLS_MAX_EXPANDED_VERTICES + 1;
+    if (memo[oi] != UINT64_MAX)
+        return memo[oi];
+    const gls_object *o = &b->objects[oi];
+    uint64_t n = 0;
+    size_t pos = 0;
+    gls_insn in;
+    while (n < cap && pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
+        if (in.op == GLS_OP_PRIM)
+            n += in.u[1];
+        else if (in.op == GLS_OP_CALL)
+            n += expanded(b, in.u[0], memo);
+    }
+    memo[oi] = n < cap ? n : cap;
+    return memo[oi];
+}
+
+uint64_t gls_bundle_expanded_vertices(const gls_bundle *b, uint32_t oi)
+{
+    uint64_t *memo = malloc((size_t)b->nobjects * sizeof *memo);
+    if (!memo)
+        return GLS_MAX_EXPANDED_VERTICES + 1;
+    memset(memo, 0xFF, (size_t)b->nobjects * sizeof *memo);
+    uint64_t n = expanded(b, oi, memo);
+    free(memo);
+    return n;
+}
+
 int gls_bundle_validate(const gls_bundle *b, gls_error *err)
 {
     if (b->nobjects > GLS_MAX_OBJECTS || b->ntextures > GLS_MAX_TEXTURES)
@@ -249,7 +281,12 @@ int gls_bundle_validate(const gls_bundle *b, gls_error *err)
     for (uint32_t i = 0; i < b->nobjects; i++)
         if (check_code(b, i, err))
             return -1;
-    return check_calls(b, err);
+    if (check_calls(b, err))
+        return -1;
+    if (b->top != GLS_NONE && gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES)
+        FAIL("top-level object %s draws more than %llu vertices once its calls are unrolled", b->objects[b->top].name,
+             (unsigned long long)GLS_MAX_EXPANDED_VERTICES);
+    return 0;
 fail:
     return -1;
 }

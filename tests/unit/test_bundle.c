@@ -235,6 +235,43 @@ static void test_validator_rejects(void)
     expect_invalid(b, "not sorted");
 }
 
+/* A valid-looking bundle whose calls unroll to 3 * 2^30 vertices: the
+ * validator refuses it, so no player ever tries to flatten it. */
+static void test_expansion_bomb_refused(void)
+{
+    enum { LEVELS = 31 };
+    gls_bundle *b = calloc(1, sizeof *b);
+    b->version = GLS_FORMAT_VERSION;
+    b->nobjects = LEVELS;
+    b->objects = calloc(LEVELS, sizeof *b->objects);
+    b->npos = 3;
+    b->pos = calloc(3, sizeof *b->pos);
+    for (int i = 0; i < 3; i++)
+        b->pos[i] = (gls_vec4){i, i * i, 0, 1};
+    for (int i = 0; i < LEVELS; i++) {
+        gls_buf code = {0};
+        gls_insn in;
+        if (i < LEVELS - 1) {
+            in = (gls_insn){.op = GLS_OP_CALL, .nu = 1, .u = {(uint32_t)i + 1}};
+            gls_insn_encode(&code, &in);
+            gls_insn_encode(&code, &in);
+        } else {
+            in = (gls_insn){.op = GLS_OP_PRIM, .nu = 5, .u = {GLS_PRIM_TFAN, 3, 0, GLS_NONE, GLS_NONE}};
+            gls_insn_encode(&code, &in);
+        }
+        in = (gls_insn){.op = GLS_OP_END};
+        gls_insn_encode(&code, &in);
+        char name[16];
+        snprintf(name, sizeof name, "b.L%02d", i); /* sorted by name = by level */
+        b->objects[i] = (gls_object){strdup(name), code.data, (uint32_t)code.len, i < LEVELS - 1 ? 3u : 2u, NULL};
+    }
+    b->top = 0;
+    CHECK(gls_bundle_expanded_vertices(b, LEVELS - 1) == 3);
+    CHECK(gls_bundle_expanded_vertices(b, LEVELS - 10) == 3u << 9);
+    CHECK(gls_bundle_expanded_vertices(b, 0) == GLS_MAX_EXPANDED_VERTICES + 1);
+    expect_invalid(b, "once its calls are unrolled");
+}
+
 int main(void)
 {
     RUN(test_round_trip_is_lossless);
@@ -243,5 +280,6 @@ int main(void)
     RUN(test_every_flipped_byte_refused);
     RUN(test_version_mismatch_names_both);
     RUN(test_validator_rejects);
+    RUN(test_expansion_bomb_refused);
     CHECK_EXIT();
 }
