@@ -15,6 +15,12 @@ endif
 
 B ?= build
 
+# FUZZ=1: libFuzzer coverage instrumentation plus ASan and UBSan (clang).
+ifeq ($(FUZZ),1)
+CFLAGS  += -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+LDFLAGS += -fsanitize=address,undefined
+endif
+
 FORMAT_SRC   := $(wildcard format/*.c)
 COMPILER_SRC := $(filter-out compiler/glsc_main.c compiler/glsdis_main.c,$(wildcard compiler/*.c))
 RUNTIME_SRC  := $(filter-out runtime/glsplay_main.c,$(wildcard runtime/*.c))
@@ -32,7 +38,7 @@ GL_LIBS := -lOSMesa -lGL -lspng
 UNIT_SRC := $(wildcard tests/unit/*.c)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 
-.PHONY: all deps test check demo gallery clean bench-compile bench-play
+.PHONY: all deps test check demo gallery clean bench-compile bench-play fuzz-build
 all: $(TOOLS) $(SCENELIB)
 
 # The README's test command: install what is missing, build, run everything.
@@ -77,6 +83,15 @@ $(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
+
+# Fuzz targets (tests/fuzz/README.md): `make fuzz-build`, then
+# `sh tests/fuzz/run.sh SECONDS` fuzzes every target.
+FUZZ_TARGETS := compile bundle texture camera
+$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fsanitize=fuzzer $< -o $@ $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+fuzz-build:
+	@$(MAKE) --no-print-directory B=build-fuzz CC=clang FUZZ=1 $(FUZZ_TARGETS:%=build-fuzz/fuzz/fuzz_%)
 
 # Texture generator for the scene library and the examples (no binary
 # textures are committed: they are made here, deterministically).

@@ -32,4 +32,7 @@ unsigned gls_compiler_errors(const gls_compiler *c);
 /* Decode an image file into a binary-alpha RGBA texture.  On failure returns
  * -1 with a message in why. */
 int gls_texture_decode(const char *path, gls_texture *out, char *why, size_t whylen);
+/* The same from memory; is_tga demands 4 channels; path is for messages. */
+int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga, const char *path, gls_texture *out,
+                              char *why, size_t whylen);
 #endif

@@ -8,37 +8,26 @@
 #include "compile.h"
 #include "fileio.h"
 
-int gls_texture_decode(const char *path, gls_texture *out, char *why, size_t whylen)
+int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga, const char *path, gls_texture *out,
+                              char *why, size_t whylen)
 {
-    size_t len;
-    char ioerr[256];
-    unsigned char *data = (unsigned char *)gls_read_file(path, GLS_MAX_INPUT_BYTES, &len, ioerr, sizeof ioerr);
-    if (!data) {
-        snprintf(why, whylen, "%s", ioerr);
-        return -1;
-    }
     int w, h, comp;
     if (len > INT32_MAX || !stbi_info_from_memory(data, (int)len, &w, &h, &comp)) {
         snprintf(why, whylen, "cannot decode %s: %s", path, stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
-        free(data);
         return -1;
     }
     /* check the size from the header before decoding anything */
     if (w <= 0 || h <= 0 || (unsigned)w > GLS_MAX_TEXTURE_DIM || (unsigned)h > GLS_MAX_TEXTURE_DIM) {
         snprintf(why, whylen, "%s is %dx%d, larger than the GL limit of %ux%u", path, w, h, GLS_MAX_TEXTURE_DIM,
                  GLS_MAX_TEXTURE_DIM);
-        free(data);
         return -1;
     }
-    size_t n = strlen(path);
-    if (n >= 4 && strcmp(path + n - 4, ".tga") == 0 && comp != 4) {
+    if (is_tga && comp != 4) {
         snprintf(why, whylen, "%s has %d channel%s; a TGA texture must be RGBA (4 channels)", path, comp,
                  comp == 1 ? "" : "s");
-        free(data);
         return -1;
     }
     unsigned char *px = stbi_load_from_memory(data, (int)len, &w, &h, &comp, 4);
-    free(data);
     if (!px) {
         snprintf(why, whylen, "cannot decode %s: %s", path, stbi_failure_reason() ? stbi_failure_reason() : "corrupt");
         return -1;
@@ -62,4 +51,20 @@ int gls_texture_decode(const char *path, gls_texture *out, char *why, size_t why
             out->flags |= GLS_TEX_ALPHA_HOLES;
     }
     return 0;
+}
+
+int gls_texture_decode(const char *path, gls_texture *out, char *why, size_t whylen)
+{
+    size_t len;
+    char ioerr[256];
+    unsigned char *data = (unsigned char *)gls_read_file(path, GLS_MAX_INPUT_BYTES, &len, ioerr, sizeof ioerr);
+    if (!data) {
+        snprintf(why, whylen, "%s", ioerr);
+        return -1;
+    }
+    size_t n = strlen(path);
+    int is_tga = n >= 4 && strcmp(path + n - 4, ".tga") == 0;
+    int r = gls_texture_decode_memory(data, len, is_tga, path, out, why, whylen);
+    free(data);
+    return r;
 }

@@ -152,6 +152,10 @@ int gls_bundle_write(const gls_bundle *b, uint8_t **out, size_t *outlen, gls_err
  * GLS_MAX_EXPANDED_VERTICES + 1.  The bundle must be validated (acyclic). */
 uint64_t gls_bundle_expanded_vertices(const gls_bundle *b, uint32_t oi);
 
+/* The same with a chosen section codec (layout.h GLS_CODEC_*): uncompressed
+ * bundles are for fuzzing seeds and for looking at with a hex editor. */
+int gls_bundle_write_codec(const gls_bundle *b, int codec, uint8_t **out, size_t *outlen, gls_error *err);
+
 /* Compute the feature flags from the content (used by the writer). */
 uint32_t gls_bundle_features(const gls_bundle *b);
 

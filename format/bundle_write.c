@@ -105,6 +105,11 @@ typedef int (*sec_fn)(const gls_bundle *, gls_buf *);
 
 int gls_bundle_write(const gls_bundle *bd, uint8_t **out, size_t *outlen, gls_error *err)
 {
+    return gls_bundle_write_codec(bd, GLS_CODEC_ZSTD, out, outlen, err);
+}
+
+int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_t *outlen, gls_error *err)
+{
     static const sec_fn fns[GLS_SEC_COUNT] = {sec_objects, sec_sources, sec_textures,
                                               sec_positions, sec_colors, sec_texcoords};
     gls_buf file = {0};
@@ -123,7 +128,11 @@ int gls_bundle_write(const gls_bundle *bd, uint8_t **out, size_t *outlen, gls_er
         size_t off = file.len;
         if (gls_buf_reserve(&file, bound))
             goto oom;
-        size_t z = ZSTD_compressCCtx(cctx, file.data + off, bound, raw.data, raw.len, GLS_ZSTD_LEVEL);
+        size_t z = raw.len;
+        if (codec == GLS_CODEC_RAW)
+            memcpy(file.data + off, raw.data, raw.len);
+        else
+            z = ZSTD_compressCCtx(cctx, file.data + off, bound, raw.data, raw.len, GLS_ZSTD_LEVEL);
         if (ZSTD_isError(z)) {
             snprintf(err->msg, sizeof err->msg, "zstd: %s", ZSTD_getErrorName(z));
             err->check_line = __LINE__;
@@ -132,7 +141,7 @@ int gls_bundle_write(const gls_bundle *bd, uint8_t **out, size_t *outlen, gls_er
         file.len = off + z;
         uint8_t *e = hdr + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
         gls_le_put_u32(e + 0, GLS_SEC_OBJECTS + s);
-        gls_le_put_u32(e + 4, GLS_CODEC_ZSTD);
+        gls_le_put_u32(e + 4, (uint32_t)codec);
         gls_le_put_u64(e + 8, off);
         gls_le_put_u64(e + 16, z);
         gls_le_put_u64(e + 24, raw.len);

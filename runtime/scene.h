@@ -27,6 +27,11 @@
  * cell indices are exact in binary floating point. */
 #define GLS_SCENE_CELL 64.0
 
+/* Farthest a vertex may be from the world origin, after its transforms
+ * (2^50, about 1e15 units; the double spacing there is 1/8 unit).
+ * Vertices beyond it are dropped with their triangles. */
+#define GLS_SCENE_MAX_COORD 1125899906842624.0
+
 /* Drawing state shared by all triangles of a batch. */
 typedef struct {
     uint32_t texture;      /* texture index, or GLS_NONE (texturing off)  */

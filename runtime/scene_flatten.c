@@ -152,10 +152,15 @@ static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t
         h[i] = M[4 * i] * q->x + M[4 * i + 1] * q->y + M[4 * i + 2] * q->z + M[4 * i + 3] * q->w;
     /* homogeneous: divide through in double; 1/w is skipped when w == 1 so
      * ordinary coordinates stay bit-exact */
+    /* A vertex must be finite and within GLS_SCENE_MAX_COORD of the
+     * origin: beyond that a double no longer resolves a millimetre-sized
+     * scene unit, and cell indices (coordinate / cell) would overflow the
+     * integers they are stored in.  Such a vertex (from a huge scale, say)
+     * drops its triangles, counted and shown by --explain. */
     v->ok = 1;
     for (int i = 0; i < 3; i++) {
         v->p[i] = h[3] == 1.0 ? h[i] : h[i] / h[3];
-        if (!isfinite(v->p[i]))
+        if (!(fabs(v->p[i]) <= GLS_SCENE_MAX_COORD))
             v->ok = 0;
     }
     if (in->u[3] != GLS_NONE) {
@@ -365,7 +370,8 @@ int gls_scene_flatten(const gls_bundle *b, gls_scene *s, char *err, size_t errle
         snprintf(err, errlen, "scene has %zu triangles: too many to draw", w.ntri);
         goto out;
     }
-    qsort(w.tris, w.ntri, sizeof *w.tris, tri_cmp);
+    if (w.ntri) /* qsort(NULL, 0) is undefined */
+        qsort(w.tris, w.ntri, sizeof *w.tris, tri_cmp);
 
     s->features = b->features;
     s->has_color = w.has_color;
