@@ -1,5 +1,6 @@
 /* glsplay --explain: the rendering plan, derived from the bundle's
  * feature bits (which the reader has checked against the content). */
+#include "aa_render.h"
 #include "player.h"
 
 /* The GL effect each feature switches on, by feature bit; the asserts keep
@@ -21,14 +22,25 @@ static const char *const effect[32] = {
 };
 
 void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
-                 const gls_camera *cams, const char *const *names, size_t n, unsigned outputs)
+                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o)
 {
+    unsigned outputs = o->outputs;
+    gls_aa_opts ao = o->aa;
+    if (ao.n == 0)
+        ao.n = 1;
+    gls_aa_plan p;
+    char err[128];
+    if (gls_aa_plan_init(&p, &ao, err, sizeof err))
+        p.count = 1, p.o = ao, p.o.n = 1;
+    int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
+    int centre = !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS));
+    static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
             b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
     fprintf(out, "geometry: %u triangles in %u chunks (cells of %g units, double anchors), %u state batches",
             s->nverts / 3, s->nchunks, GLS_SCENE_CELL, s->nbatches);
     if (s->dropped)
-        fprintf(out, ", %llu triangles dropped (vertex at infinity)", (unsigned long long)s->dropped);
+        fprintf(out, ", %llu triangles dropped (a vertex beyond 2^50 units from the origin, or at infinity)", (unsigned long long)s->dropped);
     fprintf(out, "\n");
     fprintf(out, "always on: reversed-Z depth test (GL_DEPTH_COMPONENT32F, cleared to 0, GL_GREATER, "
                  "glClipControl GL_ZERO_TO_ONE); FBO with RGBA8 colour; clear colour black\n");
@@ -42,7 +54,24 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         if (on && effect[bit])
             fprintf(out, "  %-14s     GL: %s\n", "", effect[bit]);
     }
-    fprintf(out, "passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0)\n");
+    if (!aa) {
+        fprintf(out, "passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0); no accumulator\n");
+    } else {
+        fprintf(out, "anti-aliasing: %ux%u = %llu samples per pixel, %s filter", p.o.n, p.o.n,
+                (unsigned long long)p.count, p.o.filter == GLS_AA_BOX ? "box" : "Gaussian");
+        if (p.o.filter == GLS_AA_GAUSS)
+            fprintf(out, " (sigma %g px, window +-%g sigma)", p.o.sigma, GLS_AA_GAUSS_SPAN);
+        fprintf(out, ", %s offsets", p.o.pattern == GLS_AA_GRID ? "grid" : "stratified");
+        if (p.o.pattern == GLS_AA_STRATIFIED)
+            fprintf(out, " (seed %llu)", (unsigned long long)p.o.seed);
+        fprintf(out, ", step %.6g px\n", p.span / p.o.n);
+        fprintf(out, "  accumulator: %s, exact (no rounding until the one final division)\n",
+                gls_aa_weighted(&p) ? "uint64 per channel, integer weights summing to ~2^52"
+                                    : "uint32 per channel, unit weights");
+        fprintf(out, "  passes: samples drawn %s per GL pass (a mosaic of jittered viewports, one clear, "
+                     "one read-back of colour only)%s\n",
+                o->aa_tiles ? "a fixed number" : "several", centre ? "; plus 1 unjittered pass for depth/points" : "");
+    }
     if (!n) {
         fprintf(out, "cameras: none given\n");
         return;
@@ -51,12 +80,25 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         const gls_camera *c = &cams[i];
         fprintf(out, "camera %s: %ux%u fx %g fy %g cx %g cy %g skew %g near %g far %g\n", names[i], c->width,
                 c->height, c->fx, c->fy, c->cx, c->cy, c->skew, c->near, c->far);
-        fprintf(out, "  reads back: %s%s%s\n",
-                outputs & (GLS_OUT_IMAGE | GLS_OUT_POINTS) ? "colour (RGBA8) " : "",
-                outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS) ? "depth (float32) " : "",
-                outputs ? "" : "nothing");
-        fprintf(out, "  writes:%s%s%s\n", outputs & GLS_OUT_IMAGE ? " image (PNG)" : "",
+        if (aa) {
+            uint32_t kx, ky;
+            gls_aa_mosaic_shape(NULL, c->width, c->height, p.count, o->aa_tiles, &kx, &ky);
+            fprintf(out, "  anti-aliasing: %llu samples in %llu passes of %ux%u tiles (%ux%u framebuffer)\n",
+                    (unsigned long long)p.count, (unsigned long long)((p.count + kx * ky - 1) / (kx * ky)), kx, ky,
+                    kx * c->width, ky * c->height);
+            fprintf(out, "  reads back: colour (RGBA8) per anti-aliasing pass\n");
+        }
+        if (centre)
+            fprintf(out, "  reads back%s: %s%s%s\n", aa ? " (unjittered centre pass)" : "",
+                    (!aa && (outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (outputs & GLS_OUT_POINTS)
+                        ? "colour (RGBA8) " : "",
+                    outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS) ? "depth (float32) " : "",
+                    outputs ? "" : "nothing");
+        fprintf(out, "  writes:%s%s%s%s%s\n", outputs & GLS_OUT_IMAGE ? " image (" : "",
+                outputs & GLS_OUT_IMAGE ? fmt_name[o->image_format] : "", outputs & GLS_OUT_IMAGE ? ")" : "",
                 outputs & GLS_OUT_DEPTH ? " depth (PFM, Zc)" : "",
                 outputs & GLS_OUT_POINTS ? " points (PLY, world, double)" : "");
+        if (outputs & GLS_OUT_MASK)
+            fprintf(out, "  writes: mask (8-bit PNG, 255 where the samples of a pixel differ)\n");
     }
 }

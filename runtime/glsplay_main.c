@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "player.h"
 
 static const char usage_text[] =
@@ -15,9 +16,25 @@ static const char usage_text[] =
     "options:\n"
     "  --camera CAM, -c CAM   camera file (repeatable)\n"
     "  -o OUTDIR              output directory (created if missing)\n"
-    "  --outputs LIST         comma-separated subset of image,depth,points (default all)\n"
+    "  --outputs LIST         comma-separated subset of image,depth,points,mask\n"
+    "                         (default image,depth,points; mask: 255 where a pixel's\n"
+    "                         anti-aliasing samples differ, i.e. it straddles an edge)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
+    "anti-aliasing (spec/antialiasing.md):\n"
+    "  --aa N                 NxN samples per pixel, N in 1..4096 (default 1: one pass)\n"
+    "  --subpixel A           the N whose sample step is at most A pixels (A as 1/256 or\n"
+    "                         0.004): N = ceil(1/A) box, ceil(6 sigma/A) Gaussian\n"
+    "  --filter box|gauss[:SIGMA]  box: plain average over the pixel (default);\n"
+    "                         gauss: Gaussian weights, SIGMA px (default 0.5), window\n"
+    "                         +-3 SIGMA\n"
+    "  --pattern grid|stratified   sample offsets on a regular grid (default) or one\n"
+    "                         per grid cell with deterministic jitter\n"
+    "  --seed S               jitter seed for stratified (default 0)\n"
+    "  --image-format F       png8 (default), png16 (16-bit PNG) or pfm (float32 RGB,\n"
+    "                         image_F.pfm); 8 bits limit edges to ~1/256 px\n"
+    "  --aa-tiles K           samples per GL pass (default: automatic)\n"
+    "  progress (samples done, time left) goes to stderr when it is a terminal\n"
     "  --help                 this text\n"
     "exit status: 0 success, 1 input error, 2 usage error\n";
 
@@ -43,6 +60,8 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_DEPTH;
         else if (strcmp(t, "points") == 0)
             *bits |= GLS_OUT_POINTS;
+        else if (strcmp(t, "mask") == 0)
+            *bits |= GLS_OUT_MASK;
         else
             return -1;
     }
@@ -67,11 +86,62 @@ static int parse_size(const char *s, uint32_t *w, uint32_t *h)
     return 0;
 }
 
+/* Whole unsigned decimal number in lo..hi. */
+static int parse_uint(const char *s, unsigned long long lo, unsigned long long hi, unsigned long long *v)
+{
+    char *e;
+    errno = 0;
+    if (!s[0] || s[0] == '-' || s[0] == '+')
+        return -1;
+    unsigned long long x = strtoull(s, &e, 10);
+    if (*e || errno || x < lo || x > hi)
+        return -1;
+    *v = x;
+    return 0;
+}
+
+/* Positive finite number; "1/256" is accepted as a fraction. */
+static int parse_pos(const char *s, double *v)
+{
+    char *e;
+    double a = strtod(s, &e);
+    if (e == s)
+        return -1;
+    if (*e == '/') {
+        const char *s2 = e + 1;
+        double b = strtod(s2, &e);
+        if (e == s2 || !(b > 0))
+            return -1;
+        a /= b;
+    }
+    if (*e || !(a > 0) || a > 1e9)
+        return -1;
+    *v = a;
+    return 0;
+}
+
+static int parse_filter(const char *s, gls_aa_opts *o)
+{
+    if (strcmp(s, "box") == 0) {
+        o->filter = GLS_AA_BOX;
+        return 0;
+    }
+    if (strncmp(s, "gauss", 5) == 0 && (s[5] == 0 || s[5] == ':')) {
+        o->filter = GLS_AA_GAUSS;
+        return s[5] == ':' ? parse_pos(s + 6, &o->sigma) : 0;
+    }
+    return -1;
+}
+
 int main(int argc, char **argv)
 {
     gls_play_opts o;
     memset(&o, 0, sizeof o);
     o.outputs = GLS_OUT_IMAGE | GLS_OUT_DEPTH | GLS_OUT_POINTS;
+    o.aa = gls_aa_defaults();
+    o.progress = isatty(2);
+    double subpixel = 0;
+    int have_aa = 0;
     const char **cams = calloc((size_t)argc, sizeof *cams);
     if (!cams)
         return 1;
@@ -113,6 +183,67 @@ int main(int argc, char **argv)
                 goto done;
             }
             i++;
+        } else if (strcmp(a, "--aa") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 1, GLS_AA_MAX_N, &v)) {
+                rc = usage_error("--aa needs N in 1..4096, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.aa.n = (uint32_t)v;
+            have_aa = 1;
+            i++;
+        } else if (strcmp(a, "--subpixel") == 0) {
+            if (!has_val || parse_pos(argv[i + 1], &subpixel) || subpixel > 1) {
+                rc = usage_error("--subpixel needs an accuracy in pixels, 0 < A <= 1 (e.g. 1/256), got '%s'",
+                                 has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            i++;
+        } else if (strcmp(a, "--filter") == 0) {
+            if (!has_val || parse_filter(argv[i + 1], &o.aa)) {
+                rc = usage_error("--filter needs box, gauss or gauss:SIGMA, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            i++;
+        } else if (strcmp(a, "--pattern") == 0) {
+            if (has_val && strcmp(argv[i + 1], "grid") == 0)
+                o.aa.pattern = GLS_AA_GRID;
+            else if (has_val && strcmp(argv[i + 1], "stratified") == 0)
+                o.aa.pattern = GLS_AA_STRATIFIED;
+            else {
+                rc = usage_error("--pattern needs grid or stratified, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            i++;
+        } else if (strcmp(a, "--seed") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 0, UINT64_MAX, &v)) {
+                rc = usage_error("--seed needs an unsigned integer, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.aa.seed = v;
+            i++;
+        } else if (strcmp(a, "--aa-tiles") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 1, 256, &v)) {
+                rc = usage_error("--aa-tiles needs K in 1..256, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.aa_tiles = (uint32_t)v;
+            i++;
+        } else if (strcmp(a, "--image-format") == 0) {
+            const char *f = has_val ? argv[i + 1] : "";
+            if (strcmp(f, "png8") == 0 || strcmp(f, "png") == 0)
+                o.image_format = GLS_IMG_PNG8;
+            else if (strcmp(f, "png16") == 0)
+                o.image_format = GLS_IMG_PNG16;
+            else if (strcmp(f, "pfm") == 0)
+                o.image_format = GLS_IMG_PFM;
+            else {
+                rc = usage_error("--image-format needs png8, png16 or pfm, got '%s'", f);
+                goto done;
+            }
+            i++;
         } else if (strcmp(a, "--explain") == 0) {
             o.explain = 1;
         } else if (a[0] == '-' && a[1]) {
@@ -122,6 +253,17 @@ int main(int argc, char **argv)
             o.bundle = a;
         } else {
             rc = usage_error("more than one bundle given ('%s')", a);
+            goto done;
+        }
+    }
+    if (subpixel > 0) {
+        if (have_aa) {
+            rc = usage_error("%s--aa and --subpixel both choose the window; give one", "");
+            goto done;
+        }
+        o.aa.n = gls_aa_n_for_accuracy(o.aa.filter, o.aa.sigma, subpixel);
+        if (!o.aa.n) {
+            rc = usage_error("--subpixel %s needs a window larger than 4096x4096", "given");
             goto done;
         }
     }

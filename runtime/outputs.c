@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "outputs.h"
+#include <spng.h>
 #include <stb/stb_image_write.h>
 
 typedef struct {
@@ -30,6 +31,49 @@ int gls_encode_png(const uint8_t *rgba, uint32_t w, uint32_t h, gls_buf *out)
     int ok = stbi_write_png_to_func(to_buf, &s, (int)w, (int)h, 3, rgb, (int)(w * 3));
     free(rgb);
     return ok && !s.failed ? 0 : -1;
+}
+
+int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out)
+{
+    sink s = {out, 0};
+    int ok = stbi_write_png_to_func(to_buf, &s, (int)w, (int)h, 1, g, (int)w);
+    return ok && !s.failed ? 0 : -1;
+}
+
+int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out)
+{
+    /* PNG stores 16-bit samples big-endian; libspng takes the image as
+     * the file stores it (SPNG_FMT_PNG) */
+    size_t n = (size_t)w * h * 3;
+    uint8_t *be = malloc(n ? n * 2 : 1);
+    spng_ctx *ctx = spng_ctx_new(SPNG_CTX_ENCODER);
+    int rc = -1;
+    if (!be || !ctx)
+        goto out;
+    for (size_t i = 0; i < n; i++) {
+        be[2 * i] = (uint8_t)(rgb[i] >> 8);
+        be[2 * i + 1] = (uint8_t)rgb[i];
+    }
+    struct spng_ihdr ih;
+    memset(&ih, 0, sizeof ih);
+    ih.width = w;
+    ih.height = h;
+    ih.bit_depth = 16;
+    ih.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
+    if (spng_set_option(ctx, SPNG_ENCODE_TO_BUFFER, 1) || spng_set_ihdr(ctx, &ih) ||
+        spng_encode_image(ctx, be, n * 2, SPNG_FMT_PNG, SPNG_ENCODE_FINALIZE))
+        goto out;
+    size_t len;
+    int e = 0;
+    void *png = spng_get_png_buffer(ctx, &len, &e);
+    if (!png || e)
+        goto out;
+    rc = gls_buf_put(out, png, len) ? -1 : 0;
+    free(png);
+out:
+    spng_ctx_free(ctx);
+    free(be);
+    return rc;
 }
 
 static void put_f32le(uint8_t *p, float f)
@@ -59,6 +103,21 @@ int gls_encode_pfm(const float *z, uint32_t w, uint32_t h, gls_buf *out)
         for (uint32_t x = 0; x < w; x++)
             put_f32le(out->data + out->len + 4 * (size_t)x, row[x]);
         out->len += (size_t)w * 4;
+    }
+    return 0;
+}
+
+int gls_encode_pfm_rgb(const float *rgb, uint32_t w, uint32_t h, gls_buf *out)
+{
+    char hdr[64];
+    int k = snprintf(hdr, sizeof hdr, "PF\n%u %u\n-1.0\n", w, h);
+    if (gls_buf_put(out, hdr, (size_t)k) || gls_buf_reserve(out, (size_t)w * h * 12))
+        return -1;
+    for (uint32_t r = h; r-- > 0;) {
+        const float *row = rgb + (size_t)r * w * 3;
+        for (size_t x = 0; x < (size_t)w * 3; x++)
+            put_f32le(out->data + out->len + 4 * x, row[x]);
+        out->len += (size_t)w * 12;
     }
     return 0;
 }

@@ -12,6 +12,16 @@
 /* 8-bit RGB PNG of an RGBA image (alpha dropped), top row first. */
 int gls_encode_png(const uint8_t *rgba, uint32_t w, uint32_t h, gls_buf *out);
 
+/* 16-bit RGB PNG (libspng), rgb top row first, 3 samples per pixel. */
+int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out);
+
+/* 8-bit greyscale PNG of one byte per pixel. */
+int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out);
+
+/* Colour PFM ("PF", 3 channels float32, scale -1.0 = little-endian),
+ * rows bottom to top; rgb is top row first. */
+int gls_encode_pfm_rgb(const float *rgb, uint32_t w, uint32_t h, gls_buf *out);
+
 /* PFM ("Pf", one channel float32, scale -1.0 = little-endian), rows
  * bottom to top as the format (Middlebury) requires; z is top row first. */
 int gls_encode_pfm(const float *z, uint32_t w, uint32_t h, gls_buf *out);

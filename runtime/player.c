@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "aa_render.h"
 #include "glctx.h"
 #include "outputs.h"
 #include "player.h"
@@ -73,48 +74,121 @@ static int write_buf(FILE *errs, const char *path, gls_buf *b)
     return 0;
 }
 
-/* Render one camera and write what was asked for. */
-static int play_camera(const gls_play_opts *o, gls_renderer *r, const gls_camera *c, const char *name, FILE *errs)
+/* Render one camera and write what was asked for.
+ *
+ * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
+ * Anti-aliased (N > 1): the image (and mask) come from the accumulated
+ * jittered samples; depth and points come from one extra unjittered pass
+ * (the geometry at each pixel centre, never averaged across an edge),
+ * drawn only when they are asked for; the points' colours come from that
+ * pass too, so each point has the colour of the surface it lies on. */
+static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_renderer *r, const gls_camera *c,
+                       const char *name, FILE *errs)
 {
     char err[512], path[MAXPATH];
     size_t n = (size_t)c->width * c->height;
-    uint8_t *rgba = NULL;
+    int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
+    int centre = !aa || (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS));
+    uint8_t *rgba = NULL, *mask = NULL;
     float *z = NULL;
+    void *img = NULL; /* image in its output format when not rgba */
+    gls_accum acc;
+    memset(&acc, 0, sizeof acc);
     gls_buf buf = {0};
     int rc = -1;
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
         fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
         return -1;
     }
-    gls_render_pass(r, c, 0.0, 0.0);
-    if (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_POINTS)) {
-        rgba = malloc(n * 4);
-        if (!rgba)
-            goto oom;
-        gls_render_read_rgba(r, rgba);
+    if (centre) {
+        gls_render_pass(r, c, 0.0, 0.0);
+        if ((!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (o->outputs & GLS_OUT_POINTS)) {
+            rgba = malloc(n * 4);
+            if (!rgba)
+                goto oom;
+            gls_render_read_rgba(r, rgba);
+        }
+        if (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) {
+            z = malloc(n * sizeof *z);
+            if (!z)
+                goto oom;
+            gls_render_read_z(r, z);
+        }
     }
-    if (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) {
-        z = malloc(n * sizeof *z);
-        if (!z)
+    if (aa) {
+        if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_MASK) != 0))
             goto oom;
-        gls_render_read_z(r, z);
+        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name};
+        if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
+            fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
+            goto out;
+        }
+    }
+    if (o->outputs & GLS_OUT_IMAGE) {
+        if (o->image_format == GLS_IMG_PNG16) {
+            img = malloc(n * 3 * sizeof(uint16_t));
+            if (!img)
+                goto oom;
+            if (aa)
+                gls_accum_rgb16(&acc, img);
+            else
+                gls_rgba8_to_rgb16(rgba, n, img);
+        } else if (o->image_format == GLS_IMG_PFM) {
+            img = malloc(n * 3 * sizeof(float));
+            if (!img)
+                goto oom;
+            if (aa)
+                gls_accum_rgbf(&acc, img);
+            else
+                gls_rgba8_to_rgbf(rgba, n, img);
+        } else if (aa) {
+            img = malloc(n * 4);
+            if (!img)
+                goto oom;
+            gls_accum_rgba8(&acc, img);
+        }
+    }
+    if (o->outputs & GLS_OUT_MASK) {
+        /* one sample per pixel cannot straddle anything: all zero */
+        mask = calloc(n ? n : 1, 1);
+        if (!mask)
+            goto oom;
+        for (size_t i = 0; aa && i < n; i++)
+            mask[i] = acc.mixed[i] ? 255 : 0;
     }
     static const struct {
         unsigned bit;
-        const char *kind, *ext;
-    } outs[] = {{GLS_OUT_IMAGE, "image", "png"}, {GLS_OUT_DEPTH, "depth", "pfm"}, {GLS_OUT_POINTS, "points", "ply"}};
+        const char *kind;
+    } outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"}};
     for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
         if (!(o->outputs & outs[k].bit))
             continue;
-        if (gls_output_path(path, sizeof path, o->outdir, name, outs[k].kind, o->frame, outs[k].ext)) {
+        const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
+        if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
+            ext = "pfm";
+        if (gls_output_path(path, sizeof path, o->outdir, name, outs[k].kind, o->frame, ext)) {
             fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
             goto out;
         }
         buf.len = 0;
         uint64_t np;
-        int e = outs[k].bit == GLS_OUT_IMAGE   ? gls_encode_png(rgba, c->width, c->height, &buf)
-                : outs[k].bit == GLS_OUT_DEPTH ? gls_encode_pfm(z, c->width, c->height, &buf)
-                                               : gls_encode_ply(c, z, rgba, &buf, &np);
+        int e;
+        switch (outs[k].bit) {
+        case GLS_OUT_IMAGE:
+            e = o->image_format == GLS_IMG_PNG16 ? gls_encode_png16(img, c->width, c->height, &buf)
+                : o->image_format == GLS_IMG_PFM ? gls_encode_pfm_rgb(img, c->width, c->height, &buf)
+                                                 : gls_encode_png(aa ? img : rgba, c->width, c->height, &buf);
+            break;
+        case GLS_OUT_DEPTH:
+            e = gls_encode_pfm(z, c->width, c->height, &buf);
+            break;
+        case GLS_OUT_POINTS:
+            e = gls_encode_ply(c, z, rgba, &buf, &np);
+            break;
+        default:
+            e = gls_encode_png_gray(mask, c->width, c->height, &buf);
+            break;
+        }
         if (e)
             goto oom;
         if (write_buf(errs, path, &buf))
@@ -125,8 +199,11 @@ static int play_camera(const gls_play_opts *o, gls_renderer *r, const gls_camera
 oom:
     fprintf(errs, "glsplay: error: camera %s: out of memory\n", name);
 out:
+    gls_accum_free(&acc);
     free(rgba);
     free(z);
+    free(img);
+    free(mask);
     free(buf.data);
     return rc;
 }
@@ -143,6 +220,14 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_camera *cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *cams);
     char **names = calloc(o->ncameras ? o->ncameras : 1, sizeof *names);
     gls_bundle *b = NULL;
+    gls_aa_plan plan;
+    gls_aa_opts aao = o->aa;
+    if (aao.n == 0)
+        aao.n = 1;
+    if (gls_aa_plan_init(&plan, &aao, err, sizeof err)) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        goto out;
+    }
     if (!cams || !names) {
         fprintf(errs, "glsplay: error: out of memory\n");
         goto out;
@@ -186,7 +271,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     if (o->explain)
-        gls_explain(out, o->bundle, b, &scene, cams, (const char *const *)names, o->ncameras, o->outputs);
+        gls_explain(out, o->bundle, b, &scene, cams, (const char *const *)names, o->ncameras, o);
     if (!o->outdir) {
         rc = 0;
         goto out;
@@ -217,7 +302,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_bundle_free(b);
     b = NULL;
     for (size_t i = 0; i < o->ncameras; i++)
-        if (play_camera(o, r, &cams[i], names[i], errs))
+        if (play_camera(o, &plan, r, &cams[i], names[i], errs))
             goto out;
     rc = 0;
 out:

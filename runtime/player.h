@@ -5,11 +5,16 @@
 
 #include <stdint.h>
 #include <stdio.h>
+#include "aa.h"
 #include "bundle.h"
 #include "camera.h"
 #include "scene.h"
 
-enum { GLS_OUT_IMAGE = 1, GLS_OUT_DEPTH = 2, GLS_OUT_POINTS = 4 };
+/* mask: the mixed-pixel mask of an anti-aliased image (spec/antialiasing.md) */
+enum { GLS_OUT_IMAGE = 1, GLS_OUT_DEPTH = 2, GLS_OUT_POINTS = 4, GLS_OUT_MASK = 8 };
+
+/* Image file format: 8-bit PNG, 16-bit PNG, float32 PFM ("PF", RGB). */
+typedef enum { GLS_IMG_PNG8 = 0, GLS_IMG_PNG16 = 1, GLS_IMG_PFM = 2 } gls_image_format;
 
 typedef struct {
     const char *bundle;          /* path of the .glsb                    */
@@ -20,6 +25,10 @@ typedef struct {
     uint32_t width, height;      /* --size override, 0 = the camera's    */
     int explain;                 /* print the plan first                 */
     uint32_t frame;              /* frame number in the file names       */
+    gls_aa_opts aa;              /* anti-aliasing; n = 0 is taken as 1   */
+    gls_image_format image_format;
+    uint32_t aa_tiles;           /* samples per GL pass, 0 = automatic   */
+    int progress;                /* progress lines on errs               */
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,
@@ -27,9 +36,10 @@ typedef struct {
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs);
 
 /* Print the plan (explain.c): which GL effects are on and why, passes,
- * read-backs.  cams/names may be empty (n = 0). */
+ * anti-aliasing, read-backs.  cams/names may be empty (n = 0); o gives
+ * the outputs, the anti-aliasing and the image format. */
 void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
-                 const gls_camera *cams, const char *const *names, size_t n, unsigned outputs);
+                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o);
 
 /* Output file name: OUTDIR/NAME/KIND_%06u.EXT (frame numbers grow past
  * six digits without breaking).  Returns 0, -1 if it does not fit. */

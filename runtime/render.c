@@ -52,7 +52,8 @@ struct gls_renderer {
     uint32_t *near_list;   /* chunk indices drawn from near_vbo */
     GLuint *tex;           /* per bundle texture: GL name or 0 if unused */
     uint32_t ntex;
-    uint32_t width, height;
+    uint32_t width, height; /* one image (tile) */
+    uint32_t kx, ky;        /* mosaic: kx x ky tiles in the framebuffer */
     int aniso;
     float zc_a, zc_b;      /* projection [2][2], [2][3] as GL got them */
     float *dbuf;           /* depth read-back scratch */
@@ -216,12 +217,25 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
 
 int gls_renderer_set_size(gls_renderer *r, uint32_t w, uint32_t h, char *err, size_t errlen)
 {
-    if (r->fbo && r->width == w && r->height == h)
-        return 0;
+    return gls_renderer_set_mosaic(r, w, h, 1, 1, err, errlen);
+}
+
+uint32_t gls_renderer_max_dim(const gls_renderer *r)
+{
+    (void)r;
     GLint maxrb = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxrb);
-    if ((GLint)w > maxrb || (GLint)h > maxrb) {
-        snprintf(err, errlen, "image size %ux%u exceeds the GL limit %d", w, h, maxrb);
+    return maxrb > 0 ? (uint32_t)maxrb : 0;
+}
+
+int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx, uint32_t ky, char *err,
+                            size_t errlen)
+{
+    if (r->fbo && r->width == w && r->height == h && r->kx == kx && r->ky == ky)
+        return 0;
+    uint32_t maxrb = gls_renderer_max_dim(r);
+    if (kx < 1 || ky < 1 || w > maxrb / kx || h > maxrb / ky) {
+        snprintf(err, errlen, "image size %ux%u (mosaic %ux%u) exceeds the GL limit %u", w, h, kx, ky, maxrb);
         return -1;
     }
     float *d = realloc(r->dbuf, (size_t)w * h * sizeof *d);
@@ -235,26 +249,36 @@ int gls_renderer_set_size(gls_renderer *r, uint32_t w, uint32_t h, char *err, si
         r->glGenRenderbuffers(1, &r->rb_color);
         r->glGenRenderbuffers(1, &r->rb_depth);
     }
+    GLsizei fw = (GLsizei)(w * kx), fh = (GLsizei)(h * ky);
     r->glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
     r->glBindRenderbuffer(GL_RENDERBUFFER, r->rb_color);
-    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, (GLsizei)w, (GLsizei)h);
+    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, fw, fh);
     r->glBindRenderbuffer(GL_RENDERBUFFER, r->rb_depth);
-    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, (GLsizei)w, (GLsizei)h);
+    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, fw, fh);
     r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->rb_color);
     r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->rb_depth);
     GLenum st = r->glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (st != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(err, errlen, "framebuffer %ux%u incomplete (status %#x)", w, h, st);
+        snprintf(err, errlen, "framebuffer %ux%u incomplete (status %#x)", fw, fh, st);
         return -1;
     }
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glViewport(0, 0, (GLsizei)w, (GLsizei)h);
+    /* Tiles of a mosaic must not draw into each other: the clip volume
+     * keeps triangles inside their viewport in theory, but rasterisers
+     * with a guard band (llvmpipe) rely on a scissor for that. */
+    if (kx * ky > 1)
+        glEnable(GL_SCISSOR_TEST);
+    else
+        glDisable(GL_SCISSOR_TEST);
     r->width = w;
     r->height = h;
+    r->kx = kx;
+    r->ky = ky;
     GLenum e = glGetError();
     if (e != GL_NO_ERROR) {
-        snprintf(err, errlen, "GL error %#x while creating a %ux%u framebuffer", e, w, h);
+        snprintf(err, errlen, "GL error %#x while creating a %ux%u framebuffer", e, fw, fh);
         return -1;
     }
     return 0;
@@ -306,9 +330,10 @@ static void draw_chunk(gls_renderer *r, const gls_camera *c, const gls_chunk *ch
     glDrawArrays(GL_TRIANGLES, (GLint)first, (GLsizei)ch->count);
 }
 
-void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
+/* Load the projection of jitter (du, dv) and remember its depth terms. */
+static void load_projection(gls_renderer *r, const gls_camera *c, double du, double dv)
 {
-    double P[16], C[3];
+    double P[16];
     float f[16];
     gls_camera_projection(c, du, dv, P);
     gls_mat_to_gl(P, f);
@@ -317,31 +342,27 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
     glMatrixMode(GL_PROJECTION);
     glLoadMatrixf(f);
     glMatrixMode(GL_MODELVIEW);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gls_camera_centre(c, C);
+}
+
+/* Chunks near the camera: offsets from the camera centre, formed in
+ * double, so their float error is relative to their distance.  Uploaded
+ * once per camera position; returns how many chunks are in the list. */
+static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double C[3])
+{
     const gls_scene *s = r->scene;
-    const gls_drawkey *prev = NULL;
     uint32_t nnear = 0;
     size_t nv = 0;
-    r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
-    set_pointers(s);
-    for (uint32_t i = 0; i < s->nchunks; i++) {
-        const gls_chunk *ch = &s->chunks[i];
-        if (needs_reanchor(ch, C, c->near)) {
+    for (uint32_t i = 0; i < s->nchunks; i++)
+        if (needs_reanchor(&s->chunks[i], C, c->near)) {
             r->near_list[nnear++] = i;
-            nv += ch->count;
-            continue;
+            nv += s->chunks[i].count;
         }
-        draw_chunk(r, c, ch, ch->anchor, ch->first, &prev);
-    }
     if (!nnear)
-        return;
-    /* Chunks near the camera: offsets from the camera centre, formed in
-     * double now, so their float error is relative to their distance. */
+        return 0;
     if (nv > r->near_cap) {
         uint8_t *nb = realloc(r->near_buf, nv * s->stride);
         if (!nb)
-            return; /* out of memory: those chunks are not drawn */
+            return 0; /* out of memory: those chunks are not drawn */
         r->near_buf = nb;
         r->near_cap = nv;
     }
@@ -358,13 +379,82 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
     }
     r->glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
     r->glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(nv * s->stride), r->near_buf, GL_STREAM_DRAW);
+    return nnear;
+}
+
+/* Draw every chunk with the current projection and viewport. */
+static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear)
+{
+    const gls_scene *s = r->scene;
+    const gls_drawkey *prev = NULL;
+    uint32_t k = 0;
+    r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
     set_pointers(s);
-    at = 0;
-    for (uint32_t k = 0; k < nnear; k++) {
+    for (uint32_t i = 0; i < s->nchunks; i++) {
+        const gls_chunk *ch = &s->chunks[i];
+        if (k < nnear && r->near_list[k] == i) {
+            k++;
+            continue;
+        }
+        draw_chunk(r, c, ch, ch->anchor, ch->first, &prev);
+    }
+    if (!nnear)
+        return;
+    r->glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
+    set_pointers(s);
+    size_t at = 0;
+    for (k = 0; k < nnear; k++) {
         const gls_chunk *ch = &s->chunks[r->near_list[k]];
         draw_chunk(r, c, ch, C, (uint32_t)at, &prev);
         at += ch->count;
     }
+}
+
+void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
+{
+    gls_render_tiles(r, c, 1, &du, &dv);
+}
+
+void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv)
+{
+    double C[3];
+    gls_camera_centre(c, C);
+    if (r->kx * r->ky > 1) {
+        /* one clear for the whole mosaic */
+        glViewport(0, 0, (GLsizei)(r->width * r->kx), (GLsizei)(r->height * r->ky));
+        glScissor(0, 0, (GLsizei)(r->width * r->kx), (GLsizei)(r->height * r->ky));
+    }
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    uint32_t nnear = prepare_near(r, c, C);
+    for (uint32_t t = 0; t < n && t < r->kx * r->ky; t++) {
+        if (r->kx * r->ky > 1) {
+            GLint x = (GLint)(r->width * (t % r->kx)), y = (GLint)(r->height * (t / r->kx));
+            glViewport(x, y, (GLsizei)r->width, (GLsizei)r->height);
+            glScissor(x, y, (GLsizei)r->width, (GLsizei)r->height);
+        }
+        load_projection(r, c, du[t], dv[t]);
+        draw_all(r, c, C, nnear);
+    }
+}
+
+void gls_render_flush(gls_renderer *r)
+{
+    (void)r;
+    glFlush();
+}
+
+void gls_render_finish(gls_renderer *r)
+{
+    (void)r;
+    glFinish();
+}
+
+void gls_render_read_mosaic(gls_renderer *r, uint32_t rows, uint8_t *rgba)
+{
+    if (rows > r->ky)
+        rows = r->ky;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, (GLsizei)(r->width * r->kx), (GLsizei)(r->height * rows), GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
 
 void gls_render_read_rgba(gls_renderer *r, uint8_t *rgba)

@@ -29,13 +29,37 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
 /* (Re)allocate the framebuffer for width x height images. */
 int gls_renderer_set_size(gls_renderer *r, uint32_t width, uint32_t height, char *err, size_t errlen);
 
+/* A framebuffer holding a mosaic of kx x ky images of width x height, so
+ * that several jittered passes are drawn with one clear and read back
+ * with one glReadPixels (anti-aliasing, spec/antialiasing.md).  Tile t
+ * is at column t % kx, row t / kx; tile 0 is where a plain pass goes. */
+int gls_renderer_set_mosaic(gls_renderer *r, uint32_t width, uint32_t height, uint32_t kx, uint32_t ky, char *err,
+                            size_t errlen);
+/* Largest framebuffer side GL allows (GL_MAX_RENDERBUFFER_SIZE). */
+uint32_t gls_renderer_max_dim(const gls_renderer *r);
+
 /* Render one pass: clear, draw every chunk.  (du, dv) shifts the principal
  * point by a sub-pixel amount (0, 0 for a plain image): the hook for
  * anti-aliasing by jittered multi-pass accumulation.  The camera's
  * width/height must equal the framebuffer size. */
 void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv);
 
-/* Read back the last pass: RGBA8 top row first (width*height*4 bytes);
+/* Render n <= kx * ky passes into the mosaic's tiles 0..n-1, pass t with
+ * jitter (du[t], dv[t]); one clear for all.  gls_render_pass() is this
+ * with n = 1. */
+void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv);
+
+/* Start the rasteriser on what was drawn (glFlush) without waiting, so
+ * the CPU can accumulate the previous read-back meanwhile. */
+void gls_render_flush(gls_renderer *r);
+/* Wait until drawing is done (glFinish): for timing the parts apart. */
+void gls_render_finish(gls_renderer *r);
+
+/* Read back the first `rows` rows of tiles of the mosaic: RGBA8, rows of
+ * kx * width pixels, framebuffer row 0 first. */
+void gls_render_read_mosaic(gls_renderer *r, uint32_t rows, uint8_t *rgba);
+
+/* Read back the last pass (tile 0 of a mosaic): RGBA8 top row first (width*height*4 bytes);
  * depth as camera Zc (float, +inf where nothing was drawn), top row first.
  * Zc is recovered from the depth buffer with the projection coefficients
  * exactly as they were handed to GL (as float), in double. */

@@ -1,0 +1,241 @@
+/* The anti-aliasing test scene and its exact answer, shared by make
+ * bench-aa (bench/aa_bench.c) and the unit tests (tests/unit/test_aa.c).
+ *
+ * Scene: white squares on black, rotated by small angles (no edge is
+ * pixel-aligned, several are within a degree of it: the hard case for a
+ * grid of samples), centred at sub-pixel positions, in a fronto-parallel
+ * plane, so their projections are exactly known squares in the image.
+ *
+ * Exact answer, computed here in double independently of the renderer:
+ *  box filter:      the area of each pixel square covered by the square
+ *                   (polygon clipping, shoelace formula);
+ *  Gaussian filter: the integral of the truncated, normalised Gaussian
+ *                   window (+-3 sigma per axis, as the renderer's) over
+ *                   the covered part of the plane, for pixels near one
+ *                   edge only (the half-plane of that edge): an outer
+ *                   Simpson integral, split at its kinks, of erf.
+ *
+ * Edge-localisation error: along every pixel row crossing a near-vertical
+ * edge (every column crossing a near-horizontal one), away from the
+ * corners, the intensities of the pixels within reach of the edge are
+ * summed, minus the exact values: moving a straight edge by d pixels
+ * changes that sum by exactly d (contrast 1), so the difference is the
+ * edge's local displacement in pixels, as a sub-pixel edge detector
+ * integrating across the edge would see it.  RMS and max over all rows
+ * and columns of all edges. */
+#ifndef GLS_AA_SCENE_H
+#define GLS_AA_SCENE_H
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include "../tests/unit/player_scene.h"
+
+#define AS_PI 3.14159265358979323846
+#define AS_MAXSQ 16
+
+typedef struct {
+    uint32_t w, h;
+    int nsq;
+    double c[AS_MAXSQ][4][2];   /* projected corners, image pixels */
+    double origin[3];           /* world offset of everything (far tests) */
+    double depth;               /* Zc of the plane */
+} as_scene;
+
+/* nx x ny squares of side `side` px on a w x h image, angles 0.3..9.8
+ * degrees, centres off the pixel grid by irrational-ish fractions. */
+static inline void as_layout(as_scene *s, uint32_t w, uint32_t h, int nx, int ny, double side)
+{
+    memset(s, 0, sizeof *s);
+    s->w = w, s->h = h;
+    s->depth = 10;
+    int k = 0;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx && k < AS_MAXSQ; i++, k++) {
+            double a = (0.3 + 9.5 * k / (nx * ny > 1 ? nx * ny - 1 : 1)) * AS_PI / 180;
+            double cx = w * (i + 0.5) / nx + fmod(0.137 * (k + 1) * 7.31, 1.0);
+            double cy = h * (j + 0.5) / ny + fmod(0.291 * (k + 1) * 3.17, 1.0);
+            for (int q = 0; q < 4; q++) {
+                double x = (q == 1 || q == 2) ? side / 2 : -side / 2, y = q >= 2 ? side / 2 : -side / 2;
+                s->c[k][q][0] = cx + cos(a) * x - sin(a) * y;
+                s->c[k][q][1] = cy + sin(a) * x + cos(a) * y;
+            }
+        }
+    s->nsq = k;
+}
+
+/* Camera: identity rotation at `origin` looking along +Z (world = camera
+ * frame shifted by origin), f = 500 px, principal point centred. */
+static inline gls_camera as_camera(const as_scene *s, double near, double far)
+{
+    double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    double T[3] = {-s->origin[0], -s->origin[1], -s->origin[2]};
+    return tb_camera(s->w, s->h, 500, 500, (s->w - 1) / 2.0, (s->h - 1) / 2.0, 0, R, T, near, far);
+}
+
+/* The bundle: each projected square lifted back onto the plane Zc =
+ * depth through the camera (the exact inverse of the projection). */
+static inline gls_bundle *as_bundle(const as_scene *s, const gls_camera *c)
+{
+    tb t;
+    tb_init(&t);
+    tb_object(&t, "squares", 1);
+    tb_color(&t, 1, 1, 1, 1);
+    for (int k = 0; k < s->nsq; k++) {
+        double q[4][3];
+        for (int i = 0; i < 4; i++) {
+            double Z = s->depth;
+            q[i][0] = (s->c[k][i][0] - c->cx) * Z / c->fx + s->origin[0];
+            q[i][1] = (s->c[k][i][1] - c->cy) * Z / c->fy + s->origin[1];
+            q[i][2] = Z + s->origin[2];
+        }
+        tb_poly(&t, 4, (const double(*)[3])q);
+    }
+    return tb_finish(&t);
+}
+
+/* ---- exact coverage ------------------------------------------------- */
+
+/* Clip convex polygon p (n corners) to the half-plane sgn * (coord[axis]
+ * - lim) <= 0; returns the new corner count. */
+static inline int as_clip(double (*p)[2], int n, int axis, double lim, double sgn, double (*out)[2])
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        const double *a = p[i], *b = p[(i + 1) % n];
+        double da = sgn * (a[axis] - lim), db = sgn * (b[axis] - lim);
+        if (da <= 0)
+            out[m][0] = a[0], out[m][1] = a[1], m++;
+        if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
+            double t = da / (da - db);
+            out[m][0] = a[0] + t * (b[0] - a[0]);
+            out[m][1] = a[1] + t * (b[1] - a[1]);
+            m++;
+        }
+    }
+    return m;
+}
+
+/* Area of square k inside the pixel square centred at (u, v). */
+static inline double as_box_cover(const as_scene *s, int k, double u, double v)
+{
+    double a[12][2], b[12][2];
+    int n = 4;
+    memcpy(a, s->c[k], sizeof s->c[k]);
+    n = as_clip(a, n, 0, u - 0.5, -1, b);
+    n = as_clip(b, n, 0, u + 0.5, 1, a);
+    n = as_clip(a, n, 1, v - 0.5, -1, b);
+    n = as_clip(b, n, 1, v + 0.5, 1, a);
+    double area = 0;
+    for (int i = 0; i < n; i++)
+        area += a[i][0] * a[(i + 1) % n][1] - a[(i + 1) % n][0] * a[i][1];
+    return fabs(area) / 2;
+}
+
+/* Truncated Gaussian: G(x) = integral of exp(-t^2 / 2 s^2) from -A to x,
+ * clamped to [-A, A]. */
+static inline double as_gcdf(double x, double s, double A)
+{
+    if (x < -A)
+        x = -A;
+    if (x > A)
+        x = A;
+    return s * sqrt(AS_PI / 2) * (erf(x / (s * sqrt(2))) + erf(A / (s * sqrt(2))));
+}
+
+/* Gaussian-filtered coverage at pixel (u, v) of the half-plane
+ * n . p <= d (n unit), window +-A = +-3 sigma per axis. */
+static inline double as_gauss_halfplane(double nx, double ny, double d, double u, double v, double s)
+{
+    double A = 3 * s;
+    if (fabs(ny) > fabs(nx)) { /* integrate the inner integral over the larger component */
+        double t = nx;
+        nx = ny, ny = t;
+        t = u;
+        u = v, v = t;
+    }
+    /* inside iff nx x <= r(y) = d - nx u - ny (v + y) */
+    double br[4] = {-A, A, 0, 0};
+    int nb = 2;
+    if (ny != 0)
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double y = (d - nx * (u + sgn * A)) / ny - v; /* kink: r(y) / nx = sgn A */
+            if (y > -A && y < A)
+                br[nb++] = y;
+        }
+    for (int i = 0; i < nb; i++) /* sort the few breakpoints */
+        for (int j = i + 1; j < nb; j++)
+            if (br[j] < br[i]) {
+                double t = br[i];
+                br[i] = br[j], br[j] = t;
+            }
+    double total = 0;
+    for (int p = 0; p + 1 < nb; p++) {
+        double a = br[p], b = br[p + 1], h = (b - a) / 64, acc = 0;
+        for (int i = 0; i <= 64; i++) {
+            double y = a + h * i;
+            double r = d - nx * u - ny * (v + y), x = r / nx;
+            double inner = nx > 0 ? as_gcdf(x, s, A) : as_gcdf(A, s, A) - as_gcdf(x, s, A);
+            double f = exp(-y * y / (2 * s * s)) * inner;
+            acc += f * (i == 0 || i == 64 ? 1 : i % 2 ? 4 : 2);
+        }
+        total += acc * h / 3;
+    }
+    double Z = as_gcdf(A, s, A);
+    return total / (Z * Z);
+}
+
+typedef struct {
+    double rms, max;
+    long rows;
+} as_err;
+
+/* Edge error of image img (intensity in [0, 1], w x h, row 0 = top) for
+ * filter gauss (0: box) with sigma s. */
+static inline as_err as_edge_error(const as_scene *s, const double *img, int gauss, double sig)
+{
+    as_err e = {0, 0, 0};
+    double sum2 = 0;
+    double reach = gauss ? 3 * sig + 1.5 : 1.5; /* pixels an edge affects, each side */
+    for (int k = 0; k < s->nsq; k++) {
+        /* centre of the square, for the outward normal */
+        double mx = 0, my = 0;
+        for (int q = 0; q < 4; q++)
+            mx += s->c[k][q][0] / 4, my += s->c[k][q][1] / 4;
+        for (int q = 0; q < 4; q++) {
+            const double *a = s->c[k][q], *b = s->c[k][(q + 1) % 4];
+            double ex = b[0] - a[0], ey = b[1] - a[1], len = hypot(ex, ey);
+            double nx = ey / len, ny = -ex / len;
+            double d = nx * a[0] + ny * a[1];
+            if (nx * mx + ny * my > d) /* make n point outward: inside is n.p <= d */
+                nx = -nx, ny = -ny, d = -d;
+            int vertical = fabs(ex) < fabs(ey); /* walk rows, else columns */
+            double lo = vertical ? fmin(a[1], b[1]) : fmin(a[0], b[0]);
+            double hi = vertical ? fmax(a[1], b[1]) : fmax(a[0], b[0]);
+            double margin = reach + 2; /* keep the corners' influence out */
+            for (long t = (long)ceil(lo + margin); t <= (long)floor(hi - margin); t++) {
+                /* position of the edge on this row (column) */
+                double pos = vertical ? (d - ny * t) / nx : (d - nx * t) / ny;
+                long p0 = (long)floor(pos - reach - 1), p1 = (long)ceil(pos + reach + 1);
+                double dev = 0;
+                for (long p = p0; p <= p1; p++) {
+                    long u = vertical ? p : t, v = vertical ? t : p;
+                    if (u < 0 || v < 0 || u >= (long)s->w || v >= (long)s->h)
+                        continue;
+                    double ref = gauss ? as_gauss_halfplane(nx, ny, d, (double)u, (double)v, sig)
+                                       : as_box_cover(s, k, (double)u, (double)v);
+                    dev += img[(size_t)v * s->w + (size_t)u] - ref;
+                }
+                sum2 += dev * dev;
+                if (fabs(dev) > e.max)
+                    e.max = fabs(dev);
+                e.rows++;
+            }
+        }
+    }
+    e.rms = e.rows ? sqrt(sum2 / (double)e.rows) : 0;
+    return e;
+}
+
+#endif
