@@ -74,7 +74,7 @@ static int table(bench *b, int argc, char **argv)
     float *rgbf = malloc(n * 12);
     if (!img || !rgba || !rgb16 || !rgbf)
         return 1;
-    printf("# N filter output seconds_per_frame rms_px max_px samples_per_s\n");
+    printf("# N filter output seconds_per_frame edge_rms_px edge_max_px row_rms_px row_max_px samples_per_s\n");
     for (int a = 0; a < argc; a++) {
         uint32_t N = (uint32_t)atoi(argv[a]);
         for (int f = 0; f < 2; f++) {
@@ -99,8 +99,8 @@ static int table(bench *b, int argc, char **argv)
                 for (size_t i = 0; i < n; i++)
                     img[i] = out == 0 ? rgba[4 * i] / 255.0 : out == 1 ? rgb16[3 * i] / 65535.0 : rgbf[3 * i];
                 as_err e = as_edge_error(&b->s, img, f, o.sigma);
-                printf("%u %s %s %.4f %.6f %.6f %.0f\n", N, f ? "gauss" : "box",
-                       out == 0 ? "png8" : out == 1 ? "png16" : "pfm", t + tc, e.rms, e.max,
+                printf("%u %s %s %.4f %.6f %.6f %.6f %.6f %.0f\n", N, f ? "gauss" : "box",
+                       out == 0 ? "png8" : out == 1 ? "png16" : "pfm", t + tc, e.rms, e.max, e.row_rms, e.row_max,
                        (double)st.samples / st.total_s);
                 fflush(stdout);
             }
