@@ -29,7 +29,7 @@ FORMAT_OBJ   := $(FORMAT_SRC:%.c=$(B)/%.o)
 COMPILER_OBJ := $(COMPILER_SRC:%.c=$(B)/%.o) $(B)/gen/lexer.o $(B)/gen/grammar.o
 RUNTIME_OBJ  := $(RUNTIME_SRC:%.c=$(B)/%.o)
 
-TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay
+TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay $(B)/glsroad
 # the scene library: textures, object generator, precompiled library bundle
 SCENELIB := $(B)/textures.stamp $(B)/gen_objects $(B)/scenelib.glsb
 
@@ -165,3 +165,28 @@ bench-aa: $(B)/bench/aa_bench
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
 # -O3 vectorises them (gcc 12's -O2 leaves loops with remainders scalar).
 $(B)/runtime/aa.o: CFLAGS += -O3
+
+# glsroad (roads/, spec/road.md): road descriptions -> scene, trajectory,
+# ground truth.  Library libglsroad.a (tests link it) and the tool.
+ROAD_SRC := $(filter-out roads/glsroad_main.c,$(wildcard roads/*.c))
+ROAD_OBJ := $(ROAD_SRC:%.c=$(B)/%.o)
+$(B)/libglsroad.a: $(ROAD_OBJ)
+	$(AR) rcs $@ $^
+$(B)/glsroad: $(B)/roads/glsroad_main.o $(B)/libglsroad.a $(B)/libglsformat.a
+	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+$(B)/tests/test_road%: tests/unit/test_road%.c $(B)/libglsroad.a $(B)/libglsformat.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -Itests -Iroads $(LDFLAGS) $< -o $@ $(B)/libglsroad.a $(B)/libglsformat.a $(LDLIBS)
+$(B)/road_montage: examples/road/montage.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
+
+# demo-road: the example road (examples/road/demo.road) rendered as a short
+# stereo sequence into out/road/, and a strip of frames, docs/road_strip.png.
+# STOPGAP until glsplay reads trajectories (--trajectory, --frames):
+# examples/road/render.sh writes each frame's camera files with
+# `glsroad --camera-at` and runs glsplay once per frame.
+demo-road:
+	@sh tools/deps.sh
+	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/road_montage
+	sh examples/road/render.sh $(B) out/road docs/road_strip.png

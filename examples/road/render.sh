@@ -1,0 +1,61 @@
+#!/bin/sh
+# Render the demo road (examples/road/demo.road) as a short stereo sequence.
+# usage: render.sh BIN OUTDIR [STRIP.png]
+#
+# STOPGAP until glsplay reads trajectories itself (--trajectory, --frames):
+# for each selected frame, `glsroad --camera-at` composes each rig camera
+# (examples/road/rig/*.cam, poses relative to the rig) with the rig's pose
+# from trajectory.txt into an ordinary camera file, and glsplay renders that
+# frame; its outputs are renamed to the frame number.  The other vehicles
+# move, so each frame gets a small top-level scene placing them
+# (vehicles.txt) around the static road.
+set -e
+B=$1
+OUT=$2
+STRIP=$3
+[ -n "$B" ] && [ -n "$OUT" ] || { echo "usage: render.sh BIN OUTDIR [STRIP.png]" >&2; exit 2; }
+HERE=$(dirname "$0")
+FRAMES=${ROAD_FRAMES:-"0 50 100 150 200 250 300 350"}
+mkdir -p "$OUT"
+"$B/glsroad" "$HERE/demo.road" -o "$OUT/road"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# the library bundle: road, its objects, the textures; each frame's scene
+# is linked against it
+"$B/glsc" -I "$OUT/road" -I "$B/textures" --lib "$OUT/road" -o "$tmp/road.glsb"
+for f in $FRAMES; do
+    # a top scene for this frame: the road and the vehicles where they are
+    {
+        echo 'call("road");'
+        awk -v f="$f" '$1 !~ /^#/ && $1 == f {
+            printf "push; transform(%s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, 0, 0, 0, 1); call(\"roadobj.Car\"); pop;\n",
+                $4, $5, $6, $13, $7, $8, $9, $14, $10, $11, $12, $15 }' "$OUT/road/vehicles.txt"
+    } >"$tmp/Frame.scene"
+    "$B/glsc" -I "$tmp" -I "$tmp/road.glsb" -o "$tmp/frame.glsb" "$tmp/Frame.scene"
+    for cam in "$HERE"/rig/*.cam; do
+        name=$(basename "$cam" .cam)
+        mkdir -p "$tmp/cams"
+        "$B/glsroad" --camera-at "$f" "$OUT/road/trajectory.txt" "$cam" >"$tmp/cams/$name.cam"
+    done
+    set --
+    for c in "$tmp"/cams/*.cam; do set -- "$@" --camera "$c"; done
+    "$B/glsplay" "$tmp/frame.glsb" "$@" -o "$tmp/play" >/dev/null
+    for c in "$tmp"/cams/*.cam; do
+        name=$(basename "$c" .cam)
+        mkdir -p "$OUT/$name"
+        n=$(printf '%06d' "$f")
+        for kind in image:png depth:pfm points:ply; do
+            k=${kind%%:*} ext=${kind##*:}
+            mv "$tmp/play/$name/${k}_000000.$ext" "$OUT/$name/${k}_$n.$ext"
+        done
+    done
+    echo "frame $f"
+done
+if [ -n "$STRIP" ]; then
+    set --
+    for f in $FRAMES; do set -- "$@" "$OUT/left/image_$(printf '%06d' "$f").png"; done
+    mkdir -p "$(dirname "$STRIP")"
+    "$B/road_montage" "$STRIP" 4 320 "$@"
+    echo "strip: $STRIP"
+fi
+echo "demo-road: frames in $OUT/left and $OUT/right (images, depth, points); road outputs in $OUT/road"

@@ -1,0 +1,318 @@
+/* glsroad: road description -> scene, trajectory and ground truth
+ * (spec/road.md).
+ *
+ *   glsroad ROAD.road -o DIR
+ *   glsroad --camera-at FRAME TRAJECTORY CAMERA   (camera file on stdout)
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "bundle.h"
+#include "road.h"
+#include "trajectory.h"
+
+static const char USAGE[] =
+    "usage: glsroad ROAD.road -o DIR\n"
+    "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"
+    "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n"
+    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt.\n"
+    "The second prints CAMERA (a camera file relative to the rig) with R and T\n"
+    "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"
+    "See spec/road.md.\n";
+
+static int usage_error(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "glsroad: error: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\n%s", USAGE);
+    return 2;
+}
+
+static char *read_all(const char *path, size_t *len, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
+        return NULL;
+    }
+    size_t cap = 65536, n = 0;
+    char *b = malloc(cap + 1);
+    while (b) {
+        size_t r = fread(b + n, 1, cap - n, f);
+        n += r;
+        if (n < cap)
+            break;
+        if (cap >= (1u << 30)) {
+            snprintf(err, errlen, "%s: error: larger than 1 GiB", path);
+            free(b);
+            fclose(f);
+            return NULL;
+        }
+        char *nb = realloc(b, 2 * cap + 1);
+        if (!nb) {
+            free(b);
+            b = NULL;
+            break;
+        }
+        b = nb;
+        cap *= 2;
+    }
+    if (!b || ferror(f)) {
+        snprintf(err, errlen, "%s: error: cannot read: %s", path, b ? strerror(errno) : "out of memory");
+        free(b);
+        fclose(f);
+        return NULL;
+    }
+    fclose(f);
+    b[n] = 0;
+    *len = n;
+    return b;
+}
+
+static int mkdir_p(const char *path)
+{
+    if (mkdir(path, 0777) == 0 || errno == EEXIST) {
+        struct stat st;
+        return stat(path, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
+    }
+    return -1;
+}
+
+static int put(const char *dir, const char *name, const road_buf *b)
+{
+    size_t n = strlen(dir) + strlen(name) + 2;
+    char *p = malloc(n);
+    if (!p)
+        return -1;
+    snprintf(p, n, "%s/%s", dir, name);
+    int r = gls_write_file_atomic(p, b->text, b->len);
+    if (r)
+        fprintf(stderr, "glsroad: error: cannot write %s: %s\n", p, strerror(errno));
+    free(p);
+    return r;
+}
+
+static int make_road(const char *in, const char *dir)
+{
+    char err[1024];
+    size_t len;
+    char *text = read_all(in, &len, err, sizeof err);
+    if (!text) {
+        fprintf(stderr, "%s\n", err);
+        return 1;
+    }
+    road_desc d;
+    road_geo g;
+    int rc = 1;
+    if (road_parse(text, len, in, &d, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        free(text);
+        return 1;
+    }
+    free(text);
+    if (road_geo_init(&g, &d, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        road_desc_free(&d);
+        return 1;
+    }
+    road_buf scene = {0}, tree = {0}, car = {0}, lanes = {0}, traj = {0}, kitti = {0}, tum = {0}, veh = {0};
+    /* everything is computed before anything is written: an error leaves
+       DIR as it was */
+    if (road_emit_scene(&g, &scene, &tree, &car, err, sizeof err) || road_emit_lanes(&g, &lanes, err, sizeof err) ||
+        road_emit_motion(&g, &traj, &kitti, &tum, &veh, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        goto out;
+    }
+    size_t n = strlen(dir) + 16;
+    char *sub = malloc(n);
+    if (!sub)
+        goto out;
+    snprintf(sub, n, "%s/roadobj", dir);
+    if (mkdir_p(dir) || mkdir_p(sub)) {
+        fprintf(stderr, "glsroad: error: cannot create directory %s: %s\n", sub, strerror(errno));
+        free(sub);
+        goto out;
+    }
+    free(sub);
+    if (put(dir, "road.scene", &scene) || put(dir, "roadobj/Tree.scene", &tree) ||
+        put(dir, "roadobj/Car.scene", &car) || put(dir, "lanes.txt", &lanes) || put(dir, "trajectory.txt", &traj) ||
+        put(dir, "poses_kitti.txt", &kitti) || put(dir, "poses_tum.txt", &tum) || put(dir, "vehicles.txt", &veh))
+        goto out;
+    long frames = 0;
+    for (size_t i = 0; i < traj.len; i++)
+        frames += traj.text[i] == '\n' && i + 1 < traj.len && traj.text[i + 1] != '#';
+    printf("glsroad: %s: road %.3f m, %ld frames at %g fps -> %s\n", in, g.c.length, frames, d.fps, dir);
+    rc = 0;
+out:
+    free(scene.text);
+    free(tree.text);
+    free(car.text);
+    free(lanes.text);
+    free(traj.text);
+    free(kitti.text);
+    free(tum.text);
+    free(veh.text);
+    road_geo_free(&g);
+    road_desc_free(&d);
+    return rc;
+}
+
+/* Parse the numbers of a camera-file line after its key. */
+static int line_numbers(char *rest, double *v, int want)
+{
+    int n = 0;
+    char *save;
+    for (char *q = strtok_r(rest, " \t\r\f\v", &save); q; q = strtok_r(NULL, " \t\r\f\v", &save)) {
+        char *end;
+        if (n == want)
+            return -1;
+        v[n] = strtod(q, &end);
+        if (end == q || *end)
+            return -1;
+        n++;
+    }
+    return n == want ? 0 : -1;
+}
+
+static int camera_at(const char *frame_s, const char *traj_path, const char *cam_path)
+{
+    char err[1024];
+    uint64_t first, end;
+    if (gls_traj_range(frame_s, &first, &end, err, sizeof err) || end != first + 1)
+        return usage_error("--camera-at: '%s' is not a frame number", frame_s);
+    size_t len;
+    char *text = read_all(cam_path, &len, err, sizeof err);
+    if (!text) {
+        fprintf(stderr, "%s\n", err);
+        return 1;
+    }
+    /* R and T of the camera relative to the rig */
+    double Rc[9], Tc[3];
+    int haveR = 0, haveT = 0;
+    unsigned line = 0, last = 0;
+    for (char *p = text; *p;) {
+        char *nl = strchr(p, '\n');
+        size_t full = nl ? (size_t)(nl - p) : strlen(p);
+        size_t n = full < 4096 ? full : 4095;
+        char buf[4096];
+        line++;
+        memcpy(buf, p, n);
+        buf[n] = 0;
+        char *hash = strchr(buf, '#');
+        if (hash)
+            *hash = 0;
+        char *k = buf + strspn(buf, " \t\r");
+        size_t kl = strcspn(k, " \t\r");
+        if (kl)
+            last = line;
+        if (kl == 1 && (*k == 'R' || *k == 'T')) {
+            int isR = *k == 'R';
+            if (isR ? haveR : haveT) {
+                fprintf(stderr, "%s:%u: error: '%c' appears twice\n", cam_path, line, *k);
+                free(text);
+                return 1;
+            }
+            if (line_numbers(k + 1, isR ? Rc : Tc, isR ? 9 : 3)) {
+                fprintf(stderr, "%s:%u: error: '%c' takes %d numbers\n", cam_path, line, *k, isR ? 9 : 3);
+                free(text);
+                return 1;
+            }
+            const char *why = isR ? gls_traj_check_rotation(Rc) : NULL;
+            if (why) {
+                fprintf(stderr, "%s:%u: error: %s\n", cam_path, line, why);
+                free(text);
+                return 1;
+            }
+            *(isR ? &haveR : &haveT) = 1;
+        }
+        p += full + (nl ? 1 : 0);
+    }
+    if (!haveR || !haveT) {
+        fprintf(stderr, "%s:%u: error: missing '%c'\n", cam_path, last ? last : 1, haveR ? 'T' : 'R');
+        free(text);
+        return 1;
+    }
+    gls_traj *t = gls_traj_open(traj_path, err, sizeof err);
+    if (!t) {
+        fprintf(stderr, "%s\n", err);
+        free(text);
+        return 1;
+    }
+    gls_traj_pose pose;
+    int r;
+    while ((r = gls_traj_next(t, &pose, err, sizeof err)) == 1 && pose.frame < first) {
+    }
+    gls_traj_close(t);
+    if (r < 0 || r == 0 || pose.frame != first) {
+        if (r >= 0)
+            fprintf(stderr, "%s: error: no frame %llu in the trajectory\n", traj_path, (unsigned long long)first);
+        else
+            fprintf(stderr, "%s\n", err);
+        free(text);
+        return 1;
+    }
+    double R[9], T[3];
+    gls_traj_compose(Rc, Tc, pose.R, pose.T, R, T);
+    /* the camera file again, with R and T replaced */
+    printf("# %s at frame %llu (t = %.17g s) of %s\n", cam_path, (unsigned long long)first, pose.time, traj_path);
+    for (char *p = text; *p;) {
+        char *nl = strchr(p, '\n');
+        size_t n = nl ? (size_t)(nl - p) : strlen(p);
+        size_t skip = strspn(p, " \t\r");
+        int key = skip < n && (p[skip] == 'R' || p[skip] == 'T') &&
+                  (skip + 1 == n || strchr(" \t\r#", p[skip + 1]));
+        if (key) {
+            double *v = p[skip] == 'R' ? R : T;
+            int m = p[skip] == 'R' ? 9 : 3;
+            printf("%c", p[skip]);
+            for (int i = 0; i < m; i++) {
+                printf(" ");
+                road_num(stdout, v[i]);
+            }
+            printf("\n");
+        } else {
+            fwrite(p, 1, n, stdout);
+            printf("\n");
+        }
+        p += n + (nl ? 1 : 0);
+    }
+    free(text);
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "glsroad: error: cannot write the camera: %s\n", strerror(errno));
+        return 1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    if (argc >= 2 && !strcmp(argv[1], "--camera-at")) {
+        if (argc != 5)
+            return usage_error("%s takes FRAME TRAJECTORY CAMERA", "--camera-at");
+        return camera_at(argv[2], argv[3], argv[4]);
+    }
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
+            fputs(USAGE, stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "-o")) {
+            if (i + 1 >= argc)
+                return usage_error("%s needs a directory", "-o");
+            out = argv[++i];
+        } else if (argv[i][0] == '-' && argv[i][1]) {
+            return usage_error("unknown option '%s'", argv[i]);
+        } else if (in) {
+            return usage_error("more than one road description ('%s')", argv[i]);
+        } else {
+            in = argv[i];
+        }
+    }
+    if (!in)
+        return usage_error("%s", "no road description given");
+    if (!out)
+        return usage_error("%s", "no output directory: give -o DIR");
+    return make_road(in, out);
+}

@@ -1,0 +1,165 @@
+/* glsroad: a road description (spec/road.md), its geometry, the scene it
+ * becomes, and the motion of a camera rig and other vehicles along it.
+ *
+ * World frame (the original system's, as in examples/demo): x LEFT, y UP,
+ * z FORWARD, metres.  Lateral offsets are positive to the LEFT of the
+ * road's centre line (the NURBS curve), looking along increasing distance.
+ */
+#ifndef GLS_ROAD_H
+#define GLS_ROAD_H
+#include <stddef.h>
+#include <stdio.h>
+#include "nurbs.h"
+
+#define ROAD_MAX_LANES 16
+#define ROAD_NAME_MAX 256
+
+enum { MARK_NONE, MARK_SOLID, MARK_DASHED, MARK_DOUBLE };
+
+/* A piecewise-linear profile: values v[i] at abscissae x[i] (increasing),
+ * constant beyond the last point. */
+typedef struct {
+    int by_time;       /* speed profiles: 1 = x is time (s), 0 = distance (m) */
+    int n, cap;
+    double *x, *v;
+    int line;          /* first line that defined it, for messages */
+} road_profile;
+
+typedef struct {
+    char name[64];
+    double lateral;    /* m, positive left of the centre line             */
+    double start;      /* distance along the road at t = 0                */
+    int oncoming;      /* drives towards decreasing distance              */
+    char object[ROAD_NAME_MAX]; /* scene object drawn for it (info only)  */
+    road_profile speed;
+    int line;
+} road_vehicle;
+
+typedef struct {
+    double every, offset, start;
+    int sides;         /* 1 left, 2 right, 3 both */
+    char object[ROAD_NAME_MAX]; /* empty: glsroad's own tree object */
+    int line;
+} road_trees;
+
+typedef struct {
+    const char *file;  /* for messages */
+    /* curve */
+    int degree, npts, ncap;
+    double *pts, *w;   /* 3 per point; 1 per point */
+    int nknots;
+    double *knots;     /* NULL: clamped uniform */
+    int line_points, line_knots;
+    /* cross-section */
+    int lanes;
+    road_profile lane_width; /* by distance; one point = constant */
+    double lane_width_const;
+    int line_lane_width;
+    double shoulder, verge;
+    int marking[ROAD_MAX_LANES + 1];
+    int marking_set[ROAD_MAX_LANES + 1];
+    double marking_width, dash, gap, double_gap, marking_height;
+    double bank_max, bank_speed;
+    double tolerance, max_segment;
+    double road_color[3], marking_color[3], verge_color[3];
+    char road_texture[ROAD_NAME_MAX], verge_texture[ROAD_NAME_MAX];
+    double road_tile, verge_tile;
+    road_trees trees[16];
+    int ntrees;
+    /* motion */
+    double fps;
+    long frames;       /* -1: until the end of the road */
+    double duration;
+    int line_frames;
+    double start;
+    road_profile speed;
+    double vehicle_lateral;
+    double rig_height, rig_lateral, rig_forward, rig_pitch, rig_yaw, rig_roll; /* m, degrees */
+    double body_freq, body_damping, accel_pitch, roughness, wheelbase;
+    unsigned long seed;
+    road_vehicle *veh;
+    int nveh, vcap;
+} road_desc;
+
+/* Parse a description.  On error: -1 and "file:line: error: message" in
+ * err.  road_desc_free releases what it allocated. */
+int road_parse(const char *text, size_t len, const char *fname, road_desc *d, char *err, size_t errlen);
+void road_desc_free(road_desc *d);
+
+/* ---- geometry ----------------------------------------------------------- */
+
+typedef struct {
+    const road_desc *d;
+    nurbs c;
+} road_geo;
+
+/* The road's local frame at parameter u. */
+typedef struct {
+    double u, s;       /* parameter, distance along the centre line */
+    rv3 C;             /* centre-line point                          */
+    rv3 t;             /* unit tangent                               */
+    rv3 lh, nh;        /* horizontal left, and t x ... up (unbanked) */
+    rv3 l, n;          /* banked left (across the surface), normal   */
+    double kappa;      /* signed horizontal curvature, > 0 curving left */
+    double e;          /* cross slope (tan of the bank angle), > 0 left side low */
+    double lw;         /* lane width here                            */
+} road_frame;
+
+int road_geo_init(road_geo *g, const road_desc *d, char *err, size_t errlen);
+void road_geo_free(road_geo *g);
+void road_frame_at(const road_geo *g, double u, road_frame *f);
+void road_frame_at_s(const road_geo *g, double s, road_frame *f);
+/* Lateral offset of lane boundary i (0 = leftmost) and of the road edges. */
+double road_boundary_offset(const road_desc *d, const road_frame *f, int i);
+double road_edge_offset(const road_desc *d, const road_frame *f); /* left edge; right is minus */
+
+/* An edge of a band: P = C + (a * lane_width + b) * l + h * n + x * lh. */
+typedef struct {
+    double a, b, h, x;
+} road_edge;
+rv3 road_edge_point(const road_frame *f, const road_edge *e);
+
+/* Stations (parameters) u0 = st[0] < ... < st[n-1] = u1 such that every
+ * edge's polyline through the stations stays within the tolerance of the
+ * true edge curve and no segment is longer than max_segment.  Returns the
+ * count, or -1 on out of memory; *st is malloc'd. */
+long road_stations(const road_geo *g, double u0, double u1, const road_edge *edges, int nedges, double **st);
+
+/* Write the scene: DIR/road.scene and DIR/roadobj/ (Tree, Car).  Scene text
+ * goes into the buffers given (the caller writes them atomically). */
+typedef struct {
+    char *text;
+    size_t len;
+} road_buf;
+int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf *car, char *err, size_t errlen);
+int road_emit_lanes(const road_geo *g, road_buf *out, char *err, size_t errlen);
+
+/* ---- motion ------------------------------------------------------------- */
+
+/* Distance travelled x, speed v and acceleration a at time t. */
+void road_profile_motion(const road_profile *p, double t, double *x, double *v, double *a);
+
+typedef struct {
+    long frame;
+    double time;
+    double s;          /* the vehicle's distance along the road */
+    double R[9], T[3]; /* rig pose, camera-file convention: Pc = R P + T */
+    double pitch, heave; /* body oscillation (rad, m) */
+} road_pose;
+
+/* Frames of the rig: count (or -1 with err), and a callback per frame. */
+typedef int (*road_pose_fn)(void *ctx, const road_pose *p);
+long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *err, size_t errlen);
+
+/* Rotation matrix (camera-to-world or any proper rotation) to the unit
+ * quaternion (x, y, z, w), w >= 0. */
+void road_quat_from_R(const double R[9], double q[4]);
+
+/* Write all motion outputs (trajectory.txt, poses_kitti.txt, poses_tum.txt,
+ * vehicles.txt) into the buffers. */
+int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_buf *tum, road_buf *veh, char *err,
+                     size_t errlen);
+
+/* Shortest round-trip number text. */
+void road_num(FILE *f, double v);
+#endif

@@ -1,0 +1,197 @@
+/* Streaming reader of glsroad trajectory files; see trajectory.h. */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "trajectory.h"
+
+struct gls_traj {
+    FILE *f;
+    char *path;
+    char *buf;
+    size_t cap;
+    unsigned line;
+    int have_prev;
+    uint64_t prev_frame;
+    double prev_time;
+};
+
+static int fail(const gls_traj *t, char *err, size_t errlen, const char *fmt, ...)
+{
+    char msg[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(err, errlen, "%s:%u: error: %s", t->path, t->line, msg);
+    return -1;
+}
+
+gls_traj *gls_traj_open(const char *path, char *err, size_t errlen)
+{
+    gls_traj *t = calloc(1, sizeof *t);
+    if (!t || !(t->path = strdup(path))) {
+        free(t);
+        snprintf(err, errlen, "%s: error: out of memory", path);
+        return NULL;
+    }
+    t->f = fopen(path, "r");
+    if (!t->f) {
+        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
+        free(t->path);
+        free(t);
+        return NULL;
+    }
+    return t;
+}
+
+void gls_traj_close(gls_traj *t)
+{
+    if (!t)
+        return;
+    if (t->f)
+        fclose(t->f);
+    free(t->buf);
+    free(t->path);
+    free(t);
+}
+
+const char *gls_traj_check_rotation(const double R[9])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double d = R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2];
+            if (!(fabs(d - (i == j)) <= 1e-6))
+                return "R is not orthonormal (R R^T differs from the identity by more than 1e-6)";
+        }
+    double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+                 R[2] * (R[3] * R[7] - R[4] * R[6]);
+    if (!(fabs(det - 1) <= 1e-6))
+        return "R has determinant -1: a reflection, not a rotation";
+    return NULL;
+}
+
+/* A whole number token: digits only, no sign, fits in 64 bits. */
+static int parse_u64(const char *s, uint64_t *out)
+{
+    if (!*s)
+        return -1;
+    uint64_t v = 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9')
+            return -1;
+        unsigned d = (unsigned)(*s - '0');
+        if (v > (UINT64_MAX - d) / 10)
+            return -1;
+        v = v * 10 + d;
+    }
+    *out = v;
+    return 0;
+}
+
+int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
+{
+    for (;;) {
+        errno = 0;
+        ssize_t n = getline(&t->buf, &t->cap, t->f);
+        if (n < 0) {
+            if (ferror(t->f))
+                return fail(t, err, errlen, "read error: %s", strerror(errno ? errno : EIO));
+            if (!t->have_prev) {
+                t->line = t->line ? t->line : 1;
+                return fail(t, err, errlen, "no frames in the trajectory");
+            }
+            return 0;
+        }
+        t->line++;
+        if ((size_t)n != strlen(t->buf))
+            return fail(t, err, errlen, "NUL byte in the line");
+        char *hash = strchr(t->buf, '#');
+        if (hash)
+            *hash = 0;
+        char *tok[15];
+        int nt = 0;
+        char *save;
+        for (char *q = strtok_r(t->buf, " \t\r\n\f\v", &save); q; q = strtok_r(NULL, " \t\r\n\f\v", &save)) {
+            if (nt == 15)
+                break;
+            tok[nt++] = q;
+        }
+        if (nt == 0)
+            continue;
+        if (nt != 14)
+            return fail(t, err, errlen, "expected 14 values (frame time R[9] T[3]), got %s%d", nt == 15 ? "more than " : "",
+                        nt == 15 ? 14 : nt);
+        if (parse_u64(tok[0], &p->frame))
+            return fail(t, err, errlen, "frame '%s' is not a whole number", tok[0]);
+        double v[13];
+        for (int i = 0; i < 13; i++) {
+            char *end;
+            v[i] = strtod(tok[i + 1], &end);
+            if (end == tok[i + 1] || *end || !isfinite(v[i]))
+                return fail(t, err, errlen, "value %d ('%s') is not a finite number", i + 2, tok[i + 1]);
+        }
+        p->time = v[0];
+        memcpy(p->R, v + 1, sizeof p->R);
+        memcpy(p->T, v + 10, sizeof p->T);
+        p->line = t->line;
+        if (t->have_prev && !(p->frame > t->prev_frame))
+            return fail(t, err, errlen, "frame %llu does not follow frame %llu: frames must increase",
+                        (unsigned long long)p->frame, (unsigned long long)t->prev_frame);
+        if (t->have_prev && !(p->time > t->prev_time))
+            return fail(t, err, errlen, "time %.17g is not after the previous frame's %.17g", p->time, t->prev_time);
+        const char *why = gls_traj_check_rotation(p->R);
+        if (why)
+            return fail(t, err, errlen, "%s", why);
+        t->have_prev = 1;
+        t->prev_frame = p->frame;
+        t->prev_time = p->time;
+        return 1;
+    }
+}
+
+void gls_traj_compose(const double Rc[9], const double Tc[3], const double Rr[9], const double Tr[3], double R[9],
+                      double T[3])
+{
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++)
+            R[3 * i + j] = Rc[3 * i] * Rr[j] + Rc[3 * i + 1] * Rr[3 + j] + Rc[3 * i + 2] * Rr[6 + j];
+        T[i] = Rc[3 * i] * Tr[0] + Rc[3 * i + 1] * Tr[1] + Rc[3 * i + 2] * Tr[2] + Tc[i];
+    }
+}
+
+int gls_traj_range(const char *s, uint64_t *first, uint64_t *end, char *err, size_t errlen)
+{
+    const char *colon = strchr(s, ':');
+    char a[32] = "", b[32] = "";
+    size_t la = colon ? (size_t)(colon - s) : strlen(s);
+    size_t lb = colon ? strlen(colon + 1) : 0;
+    if (la >= sizeof a || lb >= sizeof b)
+        goto bad;
+    memcpy(a, s, la);
+    memcpy(b, colon ? colon + 1 : "", lb + 1);
+    *first = 0;
+    *end = UINT64_MAX;
+    if (!colon) {
+        if (parse_u64(a, first) || *first == UINT64_MAX)
+            goto bad;
+        *end = *first + 1;
+        return 0;
+    }
+    if (!la && !lb)
+        goto bad;
+    if (la && parse_u64(a, first))
+        goto bad;
+    if (lb && parse_u64(b, end))
+        goto bad;
+    if (*end <= *first) {
+        snprintf(err, errlen, "--frames: '%s' is empty (A:B means frames A to B-1)", s);
+        return -1;
+    }
+    return 0;
+bad:
+    snprintf(err, errlen, "--frames: '%s' is not a frame range (A:B for frames A to B-1, A:, :B, or A)", s);
+    return -1;
+}

@@ -1,0 +1,66 @@
+/* Reading a glsroad trajectory file (spec/road.md, "Trajectory file"),
+ * frame by frame, and composing a camera's rig-relative pose with the
+ * rig's pose of a frame.  Self-contained (libc and libm only) so that the
+ * player can use it as it is.
+ *
+ * A trajectory line:  FRAME TIME R00 R01 R02 R10 R11 R12 R20 R21 R22 T0 T1 T2
+ * with P_rig = R * P_world + T (the camera-file convention).  A camera file
+ * used with a trajectory gives that camera's pose relative to the rig:
+ * P_cam = R_cam * P_rig + T_cam.  So in each frame
+ *     R_cam_world = R_cam * R,   T_cam_world = R_cam * T + T_cam.
+ *
+ * Typical use (memory stays flat: one line at a time):
+ *
+ *     gls_traj *t = gls_traj_open(path, err, sizeof err);
+ *     gls_traj_pose p;
+ *     int r;
+ *     while ((r = gls_traj_next(t, &p, err, sizeof err)) == 1) {
+ *         if (p.frame < first) continue;
+ *         if (p.frame >= end) break;
+ *         gls_traj_compose(cam.R, cam.T, p.R, p.T, R, T);  // per camera
+ *         ... render frame p.frame with R, T ...
+ *     }
+ *     gls_traj_close(t);
+ *     if (r < 0) { fprintf(stderr, "%s\n", err); exit 1; }
+ */
+#ifndef GLS_TRAJECTORY_H
+#define GLS_TRAJECTORY_H
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    uint64_t frame;    /* frame index: strictly increasing through the file */
+    double time;       /* seconds, strictly increasing                      */
+    double R[9];       /* world -> rig rotation, row-major, proper, orthonormal */
+    double T[3];       /* world -> rig translation                         */
+    unsigned line;     /* line of the file it came from                    */
+} gls_traj_pose;
+
+typedef struct gls_traj gls_traj;
+
+/* Open a trajectory file.  NULL on error, with "path: error: why" in err. */
+gls_traj *gls_traj_open(const char *path, char *err, size_t errlen);
+
+/* The next frame: 1 (pose filled), 0 (end of file; an empty file -- no
+ * frame at all -- is an error), or -1 with "path:line: error: message" in
+ * err.  Checks every line: 14 finite numbers, FRAME a whole number,
+ * frame and time strictly increasing, R orthonormal with determinant +1
+ * (each entry of R R^T within 1e-6 of I, det within 1e-6 of 1). */
+int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen);
+
+void gls_traj_close(gls_traj *t);
+
+/* Camera in the world for one frame: R = Rc * Rr, T = Rc * Tr + Tc, from
+ * the camera's pose relative to the rig (Rc, Tc) and the rig's pose (Rr,
+ * Tr).  The outputs may alias no input. */
+void gls_traj_compose(const double Rc[9], const double Tc[3], const double Rr[9], const double Tr[3], double R[9],
+                      double T[3]);
+
+/* A frame range "A:B" (frames A..B-1), "A:" (A to the end), ":B", or "A"
+ * (just A).  end = UINT64_MAX means no end.  0, or -1 with a message
+ * ("--frames: ...") in err. */
+int gls_traj_range(const char *s, uint64_t *first, uint64_t *end, char *err, size_t errlen);
+
+/* The check gls_traj_next applies to R: NULL if proper orthonormal, else why. */
+const char *gls_traj_check_rotation(const double R[9]);
+#endif
