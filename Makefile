@@ -38,7 +38,7 @@ GL_LIBS := -lOSMesa -lGL -lspng
 UNIT_SRC := $(wildcard tests/unit/*.c)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 
-.PHONY: all deps test check demo gallery clean bench-compile bench-play fuzz-build
+.PHONY: all deps test check demo gallery clean bench-compile bench-play fuzz-build bench-aa
 all: $(TOOLS) $(SCENELIB)
 
 # The README's test command: install what is missing, build, run everything.

@@ -1,0 +1,70 @@
+#!/bin/sh
+# End-to-end tests of glsplay's anti-aliasing flags: formats read back
+# with OpenCV, determinism of stratified jitter, --explain plan, --aa 1 is
+# the plain image, depth unchanged by anti-aliasing, usage errors.
+# Prints "ok NAME" / "FAIL NAME: why".
+B=${GLS_BIN:-build}
+PLAY=$B/glsplay
+PY=/usr/bin/python3
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+run() { name=$1; shift; if "$@" >"$t/stdout" 2>"$t/stderr"; then ok "$name"; else fail "$name" "exit $?: $(cat "$t/stderr")"; fi; }
+usage() { name=$1; shift; "$@" >/dev/null 2>"$t/stderr"; rc=$?
+    [ $rc -eq 2 ] && [ "$(wc -l <"$t/stderr")" -eq 1 ] && ok "$name" || fail "$name" "exit $rc: $(cat "$t/stderr")"; }
+
+[ -x "$PLAY" ] || { fail player_aa "no $PLAY"; exit 0; }
+$B/tests/test_player --write "$t" >/dev/null || { fail player_aa "cannot write test scenes"; exit 0; }
+S="$t/proj.glsb --camera $t/proj.cam"
+
+run aa_plain $PLAY $S -o "$t/plain"
+run aa_one $PLAY $S -o "$t/one" --aa 1
+cmp -s "$t/plain/proj/image_000000.png" "$t/one/proj/image_000000.png" && ok aa_one_is_plain || fail aa_one_is_plain "images differ"
+run aa_16 $PLAY $S -o "$t/a16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,mask
+run aa_16_again $PLAY $S -o "$t/b16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,mask
+cmp -s "$t/a16/proj/image_000000.png" "$t/b16/proj/image_000000.png" && ok aa_deterministic || fail aa_deterministic "stratified runs differ"
+run aa_seed6 $PLAY $S -o "$t/c16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 6 --image-format png16 --outputs image
+cmp -s "$t/a16/proj/image_000000.png" "$t/c16/proj/image_000000.png" && fail aa_seed_matters "seeds 5 and 6 give the same image" || ok aa_seed_matters
+cmp -s "$t/plain/proj/depth_000000.pfm" "$t/a16/proj/depth_000000.pfm" && ok aa_depth_unjittered || fail aa_depth_unjittered "depth changed"
+run aa_pfm $PLAY $S -o "$t/pf" --subpixel 1/8 --image-format pfm --outputs image
+[ -s "$t/pf/proj/image_000000.pfm" ] && head -c 3 "$t/pf/proj/image_000000.pfm" | grep -q '^PF' && ok aa_pfm_header || fail aa_pfm_header "no PF file"
+if [ -x $PY ] && $PY -c 'import cv2' 2>/dev/null; then
+    $PY - "$t" <<'PYEOF'
+import sys, cv2, numpy as np
+t = sys.argv[1]
+plain = cv2.imread(t + '/plain/proj/image_000000.png', cv2.IMREAD_UNCHANGED).astype(float) / 255
+a16 = cv2.imread(t + '/a16/proj/image_000000.png', cv2.IMREAD_UNCHANGED)
+pf = cv2.imread(t + '/pf/proj/image_000000.pfm', cv2.IMREAD_UNCHANGED)
+mask = cv2.imread(t + '/a16/proj/mask_000000.png', cv2.IMREAD_UNCHANGED)
+def res(name, cond, why=''):
+    print(('ok ' if cond else 'FAIL ') + name + ('' if cond else ': ' + why))
+res('aa_png16_depth', a16.dtype == np.uint16 and a16.shape == plain.shape, str(a16.dtype))
+# anti-aliased values between 0 and 1 that 8 bits cannot hold
+res('aa_png16_fine', np.any(a16 % 257 != 0), 'all values multiples of 257')
+res('aa_pfm_float', pf.dtype == np.float32 and pf.shape == plain.shape and np.isfinite(pf).all(), str(pf.dtype))
+# same picture: far from edges the anti-aliased image equals the plain one
+flat = mask == 0
+res('aa_pfm_matches_plain', np.abs(pf - plain)[flat].max() < 1e-6 if flat.any() else False, 'differs away from edges')
+res('aa_mask_edges', 0 < (mask > 0).sum() < mask.size // 4, '%d mixed' % (mask > 0).sum())
+# the mask marks exactly the pixels whose anti-aliased value is not a plain colour
+inner = (a16.astype(float) / 65535)
+res('aa_mask_where_blended', np.abs(inner - plain)[~flat].max() > 0.01, 'mask marks nothing blended')
+PYEOF
+else
+    fail player_aa_opencv "no OpenCV under $PY"
+fi
+run aa_explain $PLAY $S --explain --aa 8 --filter gauss --outputs image
+grep -q "anti-aliasing: 8x8 = 64 samples per pixel, Gaussian" "$t/stdout" && grep -q "accumulator: uint64" "$t/stdout" &&
+    ok aa_explain_plan || fail aa_explain_plan "$(cat "$t/stdout")"
+run aa_explain_one $PLAY $S --explain --aa 1
+grep -q "no accumulator" "$t/stdout" && ok aa_explain_one_pass || fail aa_explain_one_pass "$(grep passes "$t/stdout")"
+usage aa_usage_zero $PLAY $S -o "$t/x" --aa 0
+usage aa_usage_big $PLAY $S -o "$t/x" --aa 4097
+usage aa_usage_both $PLAY $S -o "$t/x" --aa 4 --subpixel 1/4
+usage aa_usage_filter $PLAY $S -o "$t/x" --filter tent
+usage aa_usage_format $PLAY $S -o "$t/x" --image-format jpg
+usage aa_usage_subpixel $PLAY $S -o "$t/x" --subpixel 1/5000
+# progress only on a terminal: stderr to a file stays empty
+$PLAY $S -o "$t/q" --aa 16 --outputs image 2>"$t/err"
+[ ! -s "$t/err" ] && ok aa_no_progress_when_not_tty || fail aa_no_progress_when_not_tty "$(cat "$t/err")"
