@@ -661,7 +661,6 @@ static void inset_quad(vec a, vec b, vec c, vec d, double in_u, double in_v, dou
     vec q[4] = {add(add(add(a, mul(u, in_u)), mul(v, in_v)), s), add(add(sub(b, mul(u, in_u)), mul(v, in_v)), s),
                 add(sub(sub(c, mul(u, in_u)), mul(v, in_v)), s), add(sub(add(d, mul(u, in_u)), mul(v, in_v)), s)};
     face(q, 4, colr, sub(inside, mul(n, 1e6)));
-    (void)q0;
 }
 
 static void car(const car_spec *s)

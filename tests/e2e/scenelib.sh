@@ -13,6 +13,7 @@
 #   - calibration targets: OpenCV finds the corners / circle centres where
 #     the object comments say they are; the square colours and markers are
 #     where stated;
+#   - sign faces show their texture upright and unmirrored from the front;
 #   - vegetation textures have real alpha holes;
 #   - the library bundle holds every object and is up to date, and a scene
 #     linked against it renders byte-identically to the same scene linked
@@ -401,6 +402,47 @@ check_checker("calib.Checker11x8_100mm", 11, 8, 0.1)
 check_checker("calib.MarkerChecker9x6_25mm", 9, 6, 0.025, marker=[(0.1125, 0.0625, 0), (0.1375, 0.0625, 0)])
 check_circles("calib.CircleGrid4x11", 4, 11, 0.02, True)
 check_circles("calib.CircleGrid7x6", 7, 6, 0.03, False)
+
+# ---- sign faces: upright and unmirrored from the front -----------------------------
+def tga(path):
+    """RGBA TGA (uncompressed, as gen_textures writes) -> RGB, top row first."""
+    b = open(path, "rb").read()
+    w, h, desc = b[12] | b[13] << 8, b[14] | b[15] << 8, b[17]
+    a = np.frombuffer(b, np.uint8, w * h * 4, 18 + b[0]).reshape(h, w, 4)
+    a = a if desc & 0x20 else a[::-1]
+    return a[..., 2::-1].astype(np.float64)  # BGRA -> RGB
+
+
+for sign, w, h in (("Stop", 0.9, 0.9), ("SpeedLimit50", 0.6, 0.6), ("Yield", 0.9, 0.9 * 3 ** 0.5 / 2),
+                   ("PedestrianCrossing", 0.6, 0.6)):
+    test, name = "scenelib_sign_face_upright_" + sign, "road.signs." + sign
+    if name not in dumps:
+        fail(test, "object did not compile")
+        continue
+    # straight on from the front: the plate's bounding box fills a known,
+    # axis-aligned pixel rectangle (+x, the viewer's left, on the left)
+    f, cy = 1000.0, 2.0 + h / 2
+    cam = os.path.join(TMP, "sign_%s.cam" % sign)
+    K, R, T = look_camera(cam, [0, cy, -2.0], [0, cy, 0], 600, 600, f, 0.5, 5)
+    rc, e, sub = render(os.path.join(TMP, "b", name + ".glsb"), cam, os.path.join(TMP, "signs"), "image")
+    if rc != 0:
+        fail(test, "glsplay: " + e.strip())
+        continue
+    img = cv2.imread(os.path.join(sub, "image_000000.png"))[..., ::-1].astype(np.float64)
+    (u0, v0), (u1, v1) = project(K, R, T, [(w / 2, cy + h / 2, 0), (-w / 2, cy - h / 2, 0)])
+    crop = img[int(round(v0)) + 3:int(round(v1)) - 3, int(round(u0)) + 3:int(round(u1)) - 3]
+    tex = tga(os.path.join(TEX, "road", "signs", "tex", sign + ".tga"))
+    ch, cw = crop.shape[:2]
+    tex = cv2.resize(tex, (cw + 6, ch + 6), interpolation=cv2.INTER_AREA)[3:-3, 3:-3]
+    inside = crop.sum(2) > 0  # the plate's outline; the background is black
+    diff = {k: np.abs(crop - t)[inside].mean() for k, t in
+            (("as drawn", tex), ("upside down", tex[::-1]), ("mirrored", tex[:, ::-1]))}
+    best = min(diff, key=diff.get)
+    if best == "as drawn" and diff["as drawn"] < 20:
+        ok(test)
+    else:
+        fail(test, "the face matches its texture best %s (mean differences %s)" % (
+            best, ", ".join("%s %.1f" % kv for kv in diff.items())))
 
 # ---- vegetation uses binary alpha for real -------------------------------------
 veg = [n for n in names if n.startswith("road.vegetation.")]
