@@ -8,10 +8,69 @@
 #include "compile.h"
 #include "fileio.h"
 
+/* Debian's stb_image (2022-09) writes past a 257-entry table when a JPEG
+ * Huffman table (DHT segment) declares more than 256 codes; the texture
+ * fuzzer found it.  Walk all of the JPEG's marker segments (DHT may also
+ * come between the scans of a progressive JPEG) and refuse such a table,
+ * or a segment that runs past the end of the file (stb_image would read
+ * zeros there), before stb_image sees the file.  Returns 1 to refuse. */
+static int jpeg_bad_huffman(const unsigned char *d, size_t len)
+{
+    /* stb_image, like the JPEG standard, lets any number of 0xFF fill
+       bytes precede a marker code, the first (SOI) included */
+    size_t p = 0;
+    while (p < len && d[p] == 0xFF)
+        p++;
+    if (p == 0 || p >= len || d[p] != 0xD8)
+        return 0;
+    p++;
+    while (p + 2 <= len) {
+        if (d[p] != 0xFF) {
+            p++; /* entropy-coded data of a scan: skip to the next marker */
+            continue;
+        }
+        unsigned marker = d[p + 1];
+        if (marker == 0xFF) {
+            p++; /* fill byte */
+            continue;
+        }
+        if (marker == 0x00 || marker == 0xD8 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
+            p += 2; /* stuffed 0xFF in scan data, SOI, TEM, restart markers */
+            continue;
+        }
+        if (marker == 0xD9)
+            return 0; /* end of image */
+        if (p + 4 > len)
+            return 1;
+        size_t seglen = ((size_t)d[p + 2] << 8) | d[p + 3];
+        if (seglen < 2 || p + 2 + seglen > len)
+            return 1;
+        if (marker == 0xC4) {
+            size_t q = p + 4, end = p + 2 + seglen;
+            while (q < end) {
+                if (q + 17 > end)
+                    return 1;
+                size_t codes = 0;
+                for (int i = 0; i < 16; i++)
+                    codes += d[q + 1 + i];
+                if (codes > 256 || q + 17 + codes > end)
+                    return 1;
+                q += 17 + codes;
+            }
+        }
+        p += 2 + seglen;
+    }
+    return 0;
+}
+
 int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga, const char *path, gls_texture *out,
                               char *why, size_t whylen)
 {
     int w, h, comp;
+    if (jpeg_bad_huffman(data, len)) {
+        snprintf(why, whylen, "cannot decode %s: corrupt JPEG (a Huffman table has more than 256 codes)", path);
+        return -1;
+    }
     if (len > INT32_MAX || !stbi_info_from_memory(data, (int)len, &w, &h, &comp)) {
         snprintf(why, whylen, "cannot decode %s: %s", path, stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
         return -1;
