@@ -70,6 +70,8 @@ void gls_compiler_free(gls_compiler *c)
     for (uint32_t i = 0; i < c->nsources; i++)
         free(c->sources[i]);
     gls_strmap_free(&c->units);
+    for (size_t i = 0; i < c->missing.cap; i++)
+        free(c->missing.vals[i]); /* the key is the value: one strdup each */
     gls_strmap_free(&c->missing);
     gls_strmap_free(&c->textures);
     free(c->roots);
@@ -527,9 +529,13 @@ static gls_bundle *assemble(gls_compiler *c, const gls_unit *top, int all_textur
         gls_unit *u = units[i];
         gls_object *o = &b->objects[i];
         uint32_t p0 = b->npos, c0 = b->ncol, t0 = b->ntex;
-        memcpy(b->pos + p0, u->pos, u->npos * sizeof *u->pos);
-        memcpy(b->col + c0, u->col, u->ncol * sizeof *u->col);
-        memcpy(b->tc + t0, u->tc, u->ntc * sizeof *u->tc);
+        /* a unit without colours has u->col == NULL: memcpy(NULL, 0) is undefined */
+        if (u->npos)
+            memcpy(b->pos + p0, u->pos, u->npos * sizeof *u->pos);
+        if (u->ncol)
+            memcpy(b->col + c0, u->col, u->ncol * sizeof *u->col);
+        if (u->ntc)
+            memcpy(b->tc + t0, u->tc, u->ntc * sizeof *u->tc);
         b->npos += u->npos;
         b->ncol += u->ncol;
         b->ntex += u->ntc;

@@ -1,34 +1,75 @@
 #!/bin/sh
-# Run every test program and script; count "ok"/"FAIL" lines; print the
-# closing line the CI reads: "N passed, N failed".
-# Unit tests: build/tests/* (compiled from tests/unit/*.c).
-# End-to-end tests: tests/e2e/*.sh, run from the repository root with
-# GLS_BIN=build; they print the same "ok NAME" / "FAIL NAME" lines.
+# Run the test suite; count "ok NAME" / "FAIL NAME" lines; print the closing
+# line the CI reads: "N passed, N failed".
+#
+# Always: the unit tests ($B/tests/*, from tests/unit/*.c) and the
+# end-to-end scripts (tests/e2e/*.sh, run from the repository root with
+# GLS_BIN=$B), against the normal build in $B (GLS_BIN, default build).
+#
+# With CI=true (or GLS_FULL=1), also:
+#   - the same suite against a clang ASan+UBSan build (build-asan), lines
+#     prefixed "asan:";
+#   - every fuzz target replays its corpus and regressions, then fuzzes for
+#     GLS_FUZZ_SECONDS (default 60) under ASan+UBSan (tests/fuzz/run.sh);
+#   - glsplay renders the demo once under valgrind: no errors, no leaks
+#     outside Mesa (tests/valgrind.supp).
 cd "$(dirname "$0")/.." || exit 2
 B=${GLS_BIN:-build}
-export GLS_BIN=$B
-log=$(mktemp)
-status=0
-for t in "$B"/tests/*; do
-    [ -x "$t" ] || continue
-    echo "== $t"
-    "$t" >"$log" 2>&1
-    rc=$?
-    cat "$log"
-    if [ $rc -ne 0 ] && ! grep -q '^FAIL ' "$log"; then
-        echo "FAIL $(basename "$t"): exited with status $rc"
+log=$B/test.log
+: >"$log"
+
+# suite BUILD PREFIX: unit tests and e2e scripts against BUILD
+suite() {
+    out=$(mktemp)
+    for t in "$1"/tests/*; do
+        [ -x "$t" ] || continue
+        echo "== $t"
+        "$t" >"$out" 2>&1
+        rc=$?
+        cat "$out"
+        if [ $rc -ne 0 ] && ! grep -q '^FAIL ' "$out"; then
+            echo "FAIL $(basename "$t"): exited with status $rc"
+        fi
+    done
+    for t in tests/e2e/*.sh; do
+        [ -f "$t" ] || continue
+        echo "== $t"
+        GLS_BIN=$1 sh "$t" 2>&1
+    done
+    rm -f "$out"
+}
+
+suite "$B" | tee -a "$log"
+
+if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
+    echo "== sanitizer build (clang, ASan + UBSan) in build-asan" | tee -a "$log"
+    export ASAN_OPTIONS=abort_on_error=0:detect_leaks=1
+    export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+    export LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
+    units=$(for f in tests/unit/*.c; do printf 'build-asan/tests/%s ' "$(basename "$f" .c)"; done)
+    if make --no-print-directory -s -j2 B=build-asan SANITIZE=1 CC=clang all $units >build-asan.log 2>&1; then
+        suite build-asan | sed 's/^ok /ok asan:/; s/^FAIL /FAIL asan:/' | tee -a "$log"
+    else
+        tail -20 build-asan.log
+        echo "FAIL asan_build: see build-asan.log" | tee -a "$log"
     fi
-done >"$B/test.log"
-for t in tests/e2e/*.sh; do
-    [ -f "$t" ] || continue
-    echo "== $t"
-    sh "$t" 2>&1
-done >>"$B/test.log"
-cat "$B/test.log"
-passed=$(grep -c '^ok ' "$B/test.log")
-failed=$(grep -c '^FAIL ' "$B/test.log")
-rm -f "$log"
+
+    echo "== fuzzing (libFuzzer, ASan + UBSan)" | tee -a "$log"
+    if make --no-print-directory -s -j2 fuzz-build >build-fuzz.log 2>&1; then
+        sh tests/fuzz/run.sh 0 2>&1 | sed 's/^ok fuzz_/ok fuzz_replay_/; s/^FAIL fuzz_/FAIL fuzz_replay_/' | tee -a "$log"
+        sh tests/fuzz/run.sh "${GLS_FUZZ_SECONDS:-60}" 2>&1 | tee -a "$log"
+    else
+        tail -20 build-fuzz.log
+        echo "FAIL fuzz_build: see build-fuzz.log" | tee -a "$log"
+    fi
+
+    echo "== valgrind: glsplay renders the demo" | tee -a "$log"
+    sh tests/valgrind.sh "$B" 2>&1 | tee -a "$log"
+fi
+
+passed=$(grep -c '^ok ' "$log")
+failed=$(grep -c '^FAIL ' "$log")
 echo
-grep '^FAIL ' "$B/test.log"
+grep '^FAIL ' "$log"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]

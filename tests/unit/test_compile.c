@@ -64,8 +64,8 @@ static void test_far_coordinates_exact_through_bundle(void)
     CHECK(b != NULL);
     if (!b)
         return;
-    uint8_t *bytes;
-    size_t len;
+    uint8_t *bytes = NULL;
+    size_t len = 0;
     gls_error err;
     CHECK(gls_bundle_write(b, &bytes, &len, &err) == 0);
     gls_bundle *r = gls_bundle_read(bytes, len, &err);
@@ -101,8 +101,8 @@ static void test_earlier_root_overrides_library(void)
     gls_compiler_free(c);
     fclose(diag);
     snprintf(libfile, sizeof libfile, "%s/lib.glsb", lib);
-    uint8_t *bytes;
-    size_t len;
+    uint8_t *bytes = NULL;
+    size_t len = 0;
     gls_error err;
     CHECK(lb && gls_bundle_write(lb, &bytes, &len, &err) == 0);
     CHECK(gls_write_file_atomic(libfile, bytes, len) == 0);
