@@ -291,21 +291,25 @@ static int tab_push(table *t, double u, double s)
 }
 
 /* Split [a, b] until the 12-point rule on it agrees with the sum over its
-   halves to 1e-14 relative; then both halves go into the table (the
-   halves are at least as accurate as the whole that was verified). */
-static int build(const nurbs *c, table *t, double a, double b, double whole, int depth)
+   halves to 1e-13 relative, or to 1e-15 of the whole span (floor): with
+   weights far from 1 the speed |C'| itself carries rounding noise well
+   above 1e-16 (A4.2 subtracts nearly equal terms), and a purely relative
+   test would split forever.  Both halves then go into the table (they are
+   at least as accurate as the whole that was verified). */
+static int build(const nurbs *c, table *t, double a, double b, double whole, double span, int depth)
 {
     double m = 0.5 * (a + b);
     double l = gl_arc(c, a, m), r = gl_arc(c, m, b);
-    if (depth >= 48 || fabs(l + r - whole) <= 1e-14 * (l + r) || m <= a || m >= b) {
+    double d = fabs(l + r - whole);
+    if (depth >= 40 || d <= 1e-13 * (l + r) || d <= 1e-15 * span || m <= a || m >= b) {
         double s0 = t->s[t->n - 1];
         if (tab_push(t, m, s0 + l) || tab_push(t, b, s0 + l + r))
             return -1;
         return 0;
     }
-    if (build(c, t, a, m, l, depth + 1))
+    if (build(c, t, a, m, l, span, depth + 1))
         return -1;
-    return build(c, t, m, b, r, depth + 1);
+    return build(c, t, m, b, r, span, depth + 1);
 }
 
 int nurbs_init(nurbs *c, int p, int npts, const double *pts, const double *w, const double *U, char *err,
@@ -355,7 +359,8 @@ int nurbs_init(nurbs *c, int p, int npts, const double *pts, const double *w, co
                 return -1;
             }
         }
-        if (build(c, &t, a, b, gl_arc(c, a, b), 0))
+        double whole = gl_arc(c, a, b);
+        if (build(c, &t, a, b, whole, whole, 0))
             goto oom;
     }
     c->tu = t.u;

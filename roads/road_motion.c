@@ -249,6 +249,9 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         double t = k / d->fps, x, v, a;
         road_profile_motion(&d->speed, t, &x, &v, &a);
         double s = d->start + x;
+        /* the length is a sum of quadratures: allow its rounding */
+        if (s > L && s <= L * (1 + 1e-12))
+            s = L;
         if (s > L) {
             if (d->frames < 0)
                 break;

@@ -1,0 +1,174 @@
+/* The trajectory reader and pose composition (roads/trajectory.c). */
+#include <stdlib.h>
+#include <sys/resource.h>
+#include <unistd.h>
+#include "check.h"
+#include "trajectory.h"
+
+static char dir[64];
+
+static const char *write_file(const char *name, const char *text)
+{
+    static char path[128];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+/* Read all frames; returns the count, or -1 with err filled. */
+static long read_all(const char *path, gls_traj_pose *last, char *err, size_t errlen)
+{
+    gls_traj *t = gls_traj_open(path, err, errlen);
+    if (!t)
+        return -1;
+    long n = 0;
+    int r;
+    while ((r = gls_traj_next(t, last, err, errlen)) == 1)
+        n++;
+    gls_traj_close(t);
+    return r < 0 ? -1 : n;
+}
+
+static void test_read(void)
+{
+    const char *p = write_file("ok.txt", "# glsroad trajectory 1\n\n"
+                                         "0 0 1 0 0 0 1 0 0 0 1 0 0 0\n"
+                                         "  5 0.2 0 -1 0  1 0 0  0 0 1  1.5 -2 3e3  # a comment\n"
+                                         "7\t0.28\t1 0 0 0 1 0 0 0 1 0.1 0.2 0.30000000000000004\r\n");
+    gls_traj *t;
+    char err[512];
+    CHECK((t = gls_traj_open(p, err, sizeof err)) != NULL);
+    gls_traj_pose q;
+    CHECK(gls_traj_next(t, &q, err, sizeof err) == 1);
+    CHECK(q.frame == 0 && q.time == 0 && q.R[0] == 1 && q.line == 3);
+    CHECK(gls_traj_next(t, &q, err, sizeof err) == 1);
+    CHECK(q.frame == 5 && q.time == 0.2 && q.R[1] == -1 && q.R[3] == 1 && q.T[2] == 3000 && q.line == 4);
+    CHECK(gls_traj_next(t, &q, err, sizeof err) == 1);
+    CHECK(q.frame == 7 && q.T[2] == 0.30000000000000004);
+    CHECK(gls_traj_next(t, &q, err, sizeof err) == 0);
+    gls_traj_close(t);
+}
+
+static void expect_error(const char *name, const char *text, const char *want)
+{
+    const char *p = write_file(name, text);
+    char err[512] = "", full[512];
+    gls_traj_pose q;
+    long n = read_all(p, &q, err, sizeof err);
+    snprintf(full, sizeof full, "%s/%s", dir, want);
+    CHECK_MSG(n == -1 && strcmp(err, full) == 0, "%s: got '%s'\n    wanted '%s'", name, err, full);
+}
+
+static void test_errors(void)
+{
+    const char *I = "1 0 0 0 1 0 0 0 1";
+    char t[512];
+    snprintf(t, sizeof t, "0 0 %s 0 0 0\n1 0.04 %s 0 0\n", I, I);
+    expect_error("count.txt", t, "count.txt:2: error: expected 14 values (frame time R[9] T[3]), got 13");
+    snprintf(t, sizeof t, "0 0 %s 0 0 0 9\n", I);
+    expect_error("count2.txt", t, "count2.txt:1: error: expected 14 values (frame time R[9] T[3]), got more than 14");
+    snprintf(t, sizeof t, "-1 0 %s 0 0 0\n", I);
+    expect_error("neg.txt", t, "neg.txt:1: error: frame '-1' is not a whole number");
+    snprintf(t, sizeof t, "1.5 0 %s 0 0 0\n", I);
+    expect_error("frac.txt", t, "frac.txt:1: error: frame '1.5' is not a whole number");
+    snprintf(t, sizeof t, "0 0 %s 0 nan 0\n", I);
+    expect_error("nan.txt", t, "nan.txt:1: error: value 13 ('nan') is not a finite number");
+    snprintf(t, sizeof t, "0 0 %s 0 0 1e999\n", I);
+    expect_error("inf.txt", t, "inf.txt:1: error: value 14 ('1e999') is not a finite number");
+    snprintf(t, sizeof t, "3 0 %s 0 0 0\n# c\n3 1 %s 0 0 0\n", I, I);
+    expect_error("order.txt", t, "order.txt:3: error: frame 3 does not follow frame 3: frames must increase");
+    snprintf(t, sizeof t, "3 1 %s 0 0 0\n4 1 %s 0 0 0\n", I, I);
+    expect_error("time.txt", t, "time.txt:2: error: time 1 is not after the previous frame's 1");
+    expect_error("scaled.txt", "0 0 1.001 0 0 0 1 0 0 0 1 0 0 0\n",
+                 "scaled.txt:1: error: R is not orthonormal (R R^T differs from the identity by more than 1e-6)");
+    expect_error("mirror.txt", "0 0 -1 0 0 0 1 0 0 0 1 0 0 0\n",
+                 "mirror.txt:1: error: R has determinant -1: a reflection, not a rotation");
+    expect_error("empty.txt", "# nothing\n", "empty.txt:1: error: no frames in the trajectory");
+    char err[512];
+    snprintf(t, sizeof t, "%s/none.txt", dir);
+    CHECK(gls_traj_open(t, err, sizeof err) == NULL);
+    CHECK_MSG(strstr(err, "none.txt: error: cannot open: No such file") != NULL, "%s", err);
+}
+
+/* Compose against transforming a point in two steps. */
+static void test_compose(void)
+{
+    double a = 0.3, b = -1.1;
+    double Rc[9] = {cos(a), 0, sin(a), 0, 1, 0, -sin(a), 0, cos(a)}, Tc[3] = {0.15, -0.02, 0.4};
+    double Rr[9] = {1, 0, 0, 0, cos(b), -sin(b), 0, sin(b), cos(b)}, Tr[3] = {-1e4, 3.5, 2e4};
+    double R[9], T[3];
+    gls_traj_compose(Rc, Tc, Rr, Tr, R, T);
+    double P[3] = {1e4 + 3, 12, -2e4 + 7}, Pr[3], Pc[3], Pd[3];
+    for (int i = 0; i < 3; i++)
+        Pr[i] = Rr[3 * i] * P[0] + Rr[3 * i + 1] * P[1] + Rr[3 * i + 2] * P[2] + Tr[i];
+    for (int i = 0; i < 3; i++)
+        Pc[i] = Rc[3 * i] * Pr[0] + Rc[3 * i + 1] * Pr[1] + Rc[3 * i + 2] * Pr[2] + Tc[i];
+    for (int i = 0; i < 3; i++)
+        Pd[i] = R[3 * i] * P[0] + R[3 * i + 1] * P[1] + R[3 * i + 2] * P[2] + T[i];
+    for (int i = 0; i < 3; i++)
+        CHECK_NEAR(Pd[i], Pc[i], 1e-9);
+    CHECK(gls_traj_check_rotation(R) == NULL);
+    /* identity camera: the rig's pose itself */
+    double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, Z[3] = {0, 0, 0};
+    gls_traj_compose(I, Z, Rr, Tr, R, T);
+    CHECK(memcmp(R, Rr, sizeof R) == 0 && memcmp(T, Tr, sizeof T) == 0);
+}
+
+static void test_range(void)
+{
+    uint64_t a, b;
+    char err[256];
+    CHECK(gls_traj_range("100:200", &a, &b, err, sizeof err) == 0 && a == 100 && b == 200);
+    CHECK(gls_traj_range("100:", &a, &b, err, sizeof err) == 0 && a == 100 && b == UINT64_MAX);
+    CHECK(gls_traj_range(":50", &a, &b, err, sizeof err) == 0 && a == 0 && b == 50);
+    CHECK(gls_traj_range("7", &a, &b, err, sizeof err) == 0 && a == 7 && b == 8);
+    CHECK(gls_traj_range("5:5", &a, &b, err, sizeof err) == -1);
+    CHECK_STR(err, "--frames: '5:5' is empty (A:B means frames A to B-1)");
+    CHECK(gls_traj_range(":", &a, &b, err, sizeof err) == -1);
+    CHECK(gls_traj_range("1:2:3", &a, &b, err, sizeof err) == -1);
+    CHECK(gls_traj_range("-1:3", &a, &b, err, sizeof err) == -1);
+    CHECK(gls_traj_range("x", &a, &b, err, sizeof err) == -1);
+    CHECK_STR(err, "--frames: 'x' is not a frame range (A:B for frames A to B-1, A:, :B, or A)");
+}
+
+/* 20000 frames streamed: the reader holds one line, so the peak resident
+   size does not grow with the file (the file itself is ~3 MB). */
+static void test_streaming(void)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/long.txt", dir);
+    FILE *f = fopen(path, "w");
+    for (long k = 0; k < 20000; k++) {
+        double a = k * 1e-3;
+        fprintf(f, "%ld %.17g %.17g %.17g 0 %.17g %.17g 0 0 0 1 %.17g 1.5 %.17g\n", k, k / 25.0, cos(a), -sin(a),
+                sin(a), cos(a), k * 0.1, k * 0.8);
+    }
+    fclose(f);
+    struct rusage r0, r1;
+    getrusage(RUSAGE_SELF, &r0);
+    gls_traj_pose q;
+    char err[256];
+    long n = read_all(path, &q, err, sizeof err);
+    getrusage(RUSAGE_SELF, &r1);
+    CHECK(n == 20000 && q.frame == 19999);
+    CHECK_MSG(r1.ru_maxrss - r0.ru_maxrss < 1024, "peak RSS grew by %ld kB", r1.ru_maxrss - r0.ru_maxrss);
+}
+
+int main(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/test_road_traj.XXXXXX");
+    if (!mkdtemp(dir))
+        return 1;
+    RUN(test_read);
+    RUN(test_errors);
+    RUN(test_compose);
+    RUN(test_range);
+    RUN(test_streaming);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    if (system(cmd) != 0)
+        return 1;
+    CHECK_EXIT();
+}
