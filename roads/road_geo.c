@@ -276,20 +276,27 @@ static double across(const road_frame *fr, const road_edge *e, double tile)
 static int emit_band(FILE *f, const road_geo *g, const double *st, long n, const road_edge *e, double tile,
                      ectx *x)
 {
-    road_frame fr, prev;
+    road_frame fr, prev = {0};
     rv3 L = {0, 0, 0}, R = {0, 0, 0}, Lp = {0, 0, 0}, Rp = {0, 0, 0};
     for (long k = 0; k < n; k++) {
         road_frame_at(g, st[k], &fr);
         L = road_edge_point(&fr, &e[0]);
         R = road_edge_point(&fr, &e[1]);
-        if (k > 0 && (rv_dot(rv_sub(L, Lp), prev.t) <= 0 || rv_dot(rv_sub(R, Rp), prev.t) <= 0)) {
-            double rad = fabs(prev.kappa) > 0 ? 1 / fabs(prev.kappa) : INFINITY;
-            snprintf(x->err, x->errlen,
-                     "%s: error: the road folds over itself near distance %.3f m: the curve radius there (%.3f m) "
-                     "is smaller than the lateral offset of an edge (%.3f m); widen the curve or narrow the road",
-                     x->file, prev.s, rad,
-                     fmax(fabs(e[0].a * prev.lw + e[0].b + e[0].x), fabs(e[1].a * prev.lw + e[1].b + e[1].x)));
-            return -1;
+        /* An offset curve at lateral distance d runs backwards where the
+           curvature towards it exceeds 1/d: the band would fold over
+           itself.  Checked at every station, and as a backstop each edge
+           must advance along the road from the previous station. */
+        for (int i = 0; i < 2; i++) {
+            double dlat = e[i].a * fr.lw + e[i].b + e[i].x;
+            if (fr.kappa * dlat >= 1 ||
+                (k > 0 && rv_dot(rv_sub(i ? R : L, i ? Rp : Lp), prev.t) <= 0)) {
+                snprintf(x->err, x->errlen,
+                         "%s: error: the road folds over itself near distance %.3f m: the curve radius there "
+                         "(%.3f m) is smaller than the lateral offset of an edge (%.3f m); widen the curve or "
+                         "narrow the road",
+                         x->file, fr.s, fabs(fr.kappa) > 0 ? 1 / fabs(fr.kappa) : INFINITY, fabs(dlat));
+                return -1;
+            }
         }
         if (k % STRIP_MAX == 0) {
             if (k)

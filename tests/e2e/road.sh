@@ -1,0 +1,143 @@
+#!/bin/sh
+# End-to-end tests of glsroad: the CLI, description errors, outputs that
+# glsc compiles, poses checked with OpenCV, --camera-at composition.
+# Prints "ok NAME" / "FAIL NAME: why".
+B=${GLS_BIN:-build}
+R=$B/glsroad
+PY=/usr/bin/python3
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+[ -x "$R" ] || { fail road_cli "no $R"; exit 0; }
+
+# expect NAME STATUS EXACT-STDERR-LINE -- command...
+expect() {
+    name=$1 want=$2 msg=$3
+    shift 4
+    "$@" >"$t/stdout" 2>"$t/stderr"
+    rc=$?
+    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
+    elif [ -n "$msg" ] && [ "$(head -1 "$t/stderr")" != "$msg" ]; then fail "$name" "stderr '$(head -1 "$t/stderr")', wanted '$msg'"
+    else ok "$name"; fi
+}
+
+expect road_usage_no_args 2 "glsroad: error: no road description given" -- "$R"
+expect road_usage_no_output 2 "glsroad: error: no output directory: give -o DIR" -- "$R" examples/road/demo.road
+expect road_usage_unknown_option 2 "glsroad: error: unknown option '--frobnicate'" -- "$R" --frobnicate
+expect road_help 0 "" -- "$R" --help
+expect road_missing_file 1 "$t/none.road: error: cannot open: No such file or directory" -- "$R" "$t/none.road" -o "$t/o"
+
+# description errors: one line, FILE:LINE: error: message, exit 1
+err_case() {
+    name=$1 text=$2 msg=$3
+    printf '%b' "$text" >"$t/$name.road"
+    expect "road_error_$name" 1 "$t/$name.road:$msg" -- "$R" "$t/$name.road" -o "$t/o_$name"
+    [ -e "$t/o_$name" ] && fail "road_error_${name}_writes_nothing" "output directory created"
+}
+P='point 0 0 0\npoint 0 0 50\npoint -10 0 100\npoint -10 0 150\n'
+S='speed_at distance 0 10\n'
+err_case unknown_key "${P}${S}lane_widht 3\n" "6: error: unknown key 'lane_widht'; did you mean 'lane_width'?"
+err_case bad_number "${P}${S}tolerance 1mm\n" "6: error: tolerance: '1mm' is not a finite number"
+err_case few_points "point 0 0 0\npoint 0 0 1\n${S}" "1: error: a curve of degree 3 needs at least 4 control points; there are 2"
+err_case knots_count "${P}knots 0 0 0 0 1 1 1\n${S}" "5: error: 7 knots given; 4 points of degree 3 need 8"
+err_case knots_unclamped "${P}knots 0 0 0 0.5 1 1 1 1\n${S}" "5: error: the knot vector must be clamped: its first and last degree + 1 knots equal"
+err_case weight_zero "point 0 0 0 0\n" "1: error: weight must be positive, got 0"
+err_case no_speed "${P}" "4: error: no speed profile: give at least one 'speed_at distance 0 SPEED' (m/s)"
+err_case speed_mixed "${P}${S}speed_at time 5 10\n" "6: error: a speed profile is given either by distance or by time, not both"
+err_case speed_order "${P}${S}speed_at distance 50 10\nspeed_at distance 20 12\n" "7: error: profile points must have increasing distances (20 after 50)"
+err_case boundary "${P}${S}marking 3 solid\n" "6: error: boundary 3 does not exist: 2 lanes have boundaries 0..2 (0 is the leftmost)"
+err_case style "${P}${S}marking 1 dotted\n" "6: error: unknown marking 'dotted' (the styles are solid, dashed, double, none)"
+err_case too_far "${P}${S}frames 1000\n" "6: error: the vehicle passes the end of the road (150.399 m) at frame 376 (t = 15.04 s); give fewer frames, a lower speed or a longer road"
+err_case vehicle_unknown "${P}${S}vehicle_speed bus distance 0 10\n" "6: error: unknown vehicle 'bus' (define it with a 'vehicle' line first)"
+err_case fold "degree 2\npoint 0 0 0\npoint 0 0 10\npoint -8 0 10 0.7071067811865476\npoint -8 0 0\nknots 0 0 0 0.5 1 1 1\nverge 0\n${S}" " error: the road folds over itself near distance 8.981 m: the curve radius there (3.921 m) is smaller than the lateral offset of an edge (4.000 m); widen the curve or narrow the road"
+
+# the demo road: all outputs, compiled by glsc
+if "$R" examples/road/demo.road -o "$t/demo" >/dev/null 2>"$t/err"; then
+    missing=""
+    for f in road.scene roadobj/Tree.scene roadobj/Car.scene trajectory.txt poses_kitti.txt poses_tum.txt lanes.txt vehicles.txt; do
+        [ -s "$t/demo/$f" ] || missing="$missing $f"
+    done
+    [ -z "$missing" ] && ok road_outputs || fail road_outputs "missing:$missing"
+    ls "$t/demo" | grep -q '\.tmp' && fail road_no_temporaries "temporary files left" || ok road_no_temporaries
+else
+    fail road_outputs "$(cat "$t/err")"
+fi
+if [ -x "$B/glsc" ] && [ -d "$B/textures" ]; then
+    if "$B/glsc" -I "$t/demo" -I "$B/textures" -o "$t/demo.glsb" "$t/demo/road.scene" 2>"$t/err"; then
+        ok road_scene_compiles
+    else
+        fail road_scene_compiles "$(head -3 "$t/err")"
+    fi
+fi
+# deterministic
+"$R" examples/road/demo.road -o "$t/demo2" >/dev/null 2>&1
+if diff -r "$t/demo" "$t/demo2" >/dev/null; then ok road_deterministic; else fail road_deterministic "outputs differ"; fi
+# one frame per line, 500 frames (20 s at 25 fps)
+n=$(grep -vc '^#' "$t/demo/trajectory.txt")
+[ "$n" = 500 ] && [ "$(wc -l <"$t/demo/poses_kitti.txt")" = 500 ] && ok road_frame_count || fail road_frame_count "$n frames"
+
+# --camera-at: the camera file with R, T composed; the rest kept
+if "$R" --camera-at 120 "$t/demo/trajectory.txt" examples/road/rig/left.cam >"$t/l120.cam" 2>"$t/err"; then
+    grep -q '^fx 600$' "$t/l120.cam" && grep -q '^far 800$' "$t/l120.cam" && [ "$(grep -c '^R ' "$t/l120.cam")" = 1 ] &&
+        ok road_camera_at || fail road_camera_at "$(cat "$t/l120.cam")"
+else
+    fail road_camera_at "$(cat "$t/err")"
+fi
+expect road_camera_at_missing_frame 1 "$t/demo/trajectory.txt: error: no frame 99999 in the trajectory" -- \
+    "$R" --camera-at 99999 "$t/demo/trajectory.txt" examples/road/rig/left.cam
+printf 'width 10\nR 1 0 0 0 1 0 0 0 2\nT 0 0 0\n' >"$t/bad.cam"
+expect road_camera_at_bad_R 1 "$t/bad.cam:2: error: R is not orthonormal (R R^T differs from the identity by more than 1e-6)" -- \
+    "$R" --camera-at 0 "$t/demo/trajectory.txt" "$t/bad.cam"
+expect road_camera_at_usage 2 "glsroad: error: --camera-at: 'x' is not a frame number" -- \
+    "$R" --camera-at x "$t/demo/trajectory.txt" examples/road/rig/left.cam
+
+# OpenCV: the composed camera, the TUM quaternions (via cv2.Rodrigues) and
+# the KITTI relative poses agree with trajectory.txt
+if [ -x $PY ] && $PY -c 'import cv2' 2>/dev/null; then
+    $PY - "$t/demo" "$t/l120.cam" <<'PYEOF'
+import sys, math
+import numpy as np, cv2
+d, cam = sys.argv[1], sys.argv[2]
+tr = np.loadtxt(d + "/trajectory.txt")
+tum = np.loadtxt(d + "/poses_tum.txt")
+ki = np.loadtxt(d + "/poses_kitti.txt")
+def ok(n, c, why=""):
+    print(("ok " if c else "FAIL ") + n + ("" if c else ": " + why))
+worst_q = worst_t = worst_k = 0.0
+R0, T0 = tr[0, 2:11].reshape(3, 3), tr[0, 11:14]
+for i in range(len(tr)):
+    R, T = tr[i, 2:11].reshape(3, 3), tr[i, 11:14]
+    Rw = R.T                       # camera -> world
+    c = -R.T @ T                   # camera centre
+    rvec, _ = cv2.Rodrigues(Rw)
+    ang = np.linalg.norm(rvec)
+    ax = rvec.ravel() / ang if ang > 0 else np.zeros(3)
+    q = np.r_[ax * math.sin(ang / 2), math.cos(ang / 2)]
+    if q[3] < 0: q = -q
+    worst_q = max(worst_q, np.abs(q - tum[i, 4:8]).max())
+    worst_t = max(worst_t, np.abs(c - tum[i, 1:4]).max())
+    K = np.c_[R0 @ Rw, R0 @ c + T0]
+    worst_k = max(worst_k, np.abs(K - ki[i].reshape(3, 4)).max())
+ok("road_tum_quaternion_opencv", worst_q < 1e-9, "quaternion error %g" % worst_q)
+ok("road_tum_position", worst_t < 1e-9, "position error %g" % worst_t)
+ok("road_kitti_relative", worst_k < 1e-9 and np.allclose(ki[0], [1,0,0,0,0,1,0,0,0,0,1,0]), "error %g" % worst_k)
+# the composed camera: left camera 0.15 m left of the rig (rig x is right)
+vals = {}
+for line in open(cam):
+    line = line.split("#")[0].split()
+    if line: vals[line[0]] = [float(v) for v in line[1:]]
+Rc, Tc = np.array(vals["R"]).reshape(3, 3), np.array(vals["T"])
+i = int(np.where(tr[:, 0] == 120)[0][0])
+R, T = tr[i, 2:11].reshape(3, 3), tr[i, 11:14]
+ok("road_camera_at_composition", np.allclose(Rc, R, atol=1e-12) and np.allclose(Tc, T + [0.15, 0, 0], atol=1e-9))
+# speeds: 10 m/s at the start, 20 m/s after 100 m, via the rig's positions
+# (the profile holds on the centre line; the rig, 1.75 m off it and 1.5 m
+# up, moves a little slower on the inside of a curve)
+p = tum[:, 1:4]
+v = np.linalg.norm(np.diff(p, axis=0), axis=1) * 25
+ok("road_speed_profile", abs(v[0] - 10) < 0.1 and abs(v[-1] - 20) < 1, "speeds %g %g" % (v[0], v[-1]))
+PYEOF
+else
+    fail road_opencv "no OpenCV under $PY"
+fi
