@@ -22,16 +22,17 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # the library bundle: road, its objects, the textures; each frame's scene
 # is linked against it
-"$B/glsc" -I "$OUT/road" -I "$B/textures" --lib "$OUT/road" -o "$tmp/road.glsb"
+"$B/glsc" -I "$B/scenelib.glsb" --lib "$OUT/road" -o "$tmp/road.glsb"
 for f in $FRAMES; do
     # a top scene for this frame: the road and the vehicles where they are
     {
         echo 'call("road");'
-        awk -v f="$f" '$1 !~ /^#/ && $1 == f {
-            printf "push; transform(%s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, 0, 0, 0, 1); call(\"roadobj.Car\"); pop;\n",
-                $4, $5, $6, $13, $7, $8, $9, $14, $10, $11, $12, $15 }' "$OUT/road/vehicles.txt"
+        awk -v f="$f" '$1 == "#" && $2 == "vehicle" { obj[$3] = $5 }
+            $1 !~ /^#/ && $1 == f {
+            printf "push; transform(%s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, 0, 0, 0, 1); call(\"%s\"); pop;\n",
+                $4, $5, $6, $13, $7, $8, $9, $14, $10, $11, $12, $15, obj[$3] }' "$OUT/road/vehicles.txt"
     } >"$tmp/Frame.scene"
-    "$B/glsc" -I "$tmp" -I "$tmp/road.glsb" -o "$tmp/frame.glsb" "$tmp/Frame.scene"
+    "$B/glsc" -I "$tmp" -I "$tmp/road.glsb" -I "$B/scenelib.glsb" -o "$tmp/frame.glsb" "$tmp/Frame.scene"
     for cam in "$HERE"/rig/*.cam; do
         name=$(basename "$cam" .cam)
         mkdir -p "$tmp/cams"
@@ -52,10 +53,16 @@ for f in $FRAMES; do
     echo "frame $f"
 done
 if [ -n "$STRIP" ]; then
+    # four frames of the left camera, 300 px wide each (the PNG stays under
+    # 300 KB: asphalt and grass textures compress poorly)
     set --
-    for f in $FRAMES; do set -- "$@" "$OUT/left/image_$(printf '%06d' "$f").png"; done
+    i=0
+    for f in $FRAMES; do
+        [ $((i % 2)) -eq 0 ] && set -- "$@" "$OUT/left/image_$(printf '%06d' "$f").png"
+        i=$((i + 1))
+    done
     mkdir -p "$(dirname "$STRIP")"
-    "$B/road_montage" "$STRIP" 4 320 "$@"
+    "$B/road_montage" "$STRIP" 4 300 "$@"
     echo "strip: $STRIP"
 fi
 echo "demo-road: frames in $OUT/left and $OUT/right (images, depth, points); road outputs in $OUT/road"
