@@ -512,7 +512,6 @@ int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf
         color3(f, d->marking_color);
         r = emit_markings(f, g, &x);
     }
-    int own_tree = 0;
     for (int k = 0; !r && k < d->ntrees; k++) {
         const road_trees *t = &d->trees[k];
         fprintf(f, "// trees every %g m, %g m from the edge\n", t->every, t->offset);
@@ -528,7 +527,6 @@ int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf
                 fputs("push; ", f);
                 place(f, &fr, P, 0);
                 fprintf(f, " call(\"%s\"); pop;\n", t->object[0] ? t->object : "roadobj.Tree");
-                own_tree |= !t->object[0];
             }
         }
     }
