@@ -172,20 +172,20 @@ ROAD_SRC := $(filter-out roads/glsroad_main.c,$(wildcard roads/*.c))
 ROAD_OBJ := $(ROAD_SRC:%.c=$(B)/%.o)
 $(B)/libglsroad.a: $(ROAD_OBJ)
 	$(AR) rcs $@ $^
-$(B)/glsroad: $(B)/roads/glsroad_main.o $(B)/libglsroad.a $(B)/libglsformat.a
+$(B)/glsroad: $(B)/roads/glsroad_main.o $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/tests/test_road%: tests/unit/test_road%.c $(B)/libglsroad.a $(B)/libglsformat.a
+$(B)/tests/test_road%: tests/unit/test_road%.c $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Itests -Iroads $(LDFLAGS) $< -o $@ $(B)/libglsroad.a $(B)/libglsformat.a $(LDLIBS)
+	$(CC) $(CFLAGS) -Itests -Iroads $(LDFLAGS) $< -o $@ $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS)
 $(B)/road_montage: examples/road/montage.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
 
 # demo-road: the example road (examples/road/demo.road) rendered as a short
 # stereo sequence into out/road/, and a strip of frames, docs/road_strip.png.
-# STOPGAP until glsplay reads trajectories (--trajectory, --frames):
-# examples/road/render.sh writes each frame's camera files with
-# `glsroad --camera-at` and runs glsplay once per frame.
+# examples/road/render.sh renders each selected frame with glsplay
+# --trajectory --frames F:F+1, after compiling that frame's placement of the
+# moving vehicles.
 demo-road:
 	@sh tools/deps.sh
 	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/road_montage

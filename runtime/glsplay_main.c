@@ -6,6 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "player.h"
+#include "trajectory.h"
 
 static const char usage_text[] =
     "usage: glsplay BUNDLE.glsb --camera CAM [--camera CAM ...] -o OUTDIR [options]\n"
@@ -21,6 +22,16 @@ static const char usage_text[] =
     "                         anti-aliasing samples differ, i.e. it straddles an edge)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
+    "  --background R,G,B     colour where no surface is, components 0..1 (default 0,0,0)\n"
+    "sequences (spec/road.md, \"Trajectory file\"):\n"
+    "  --trajectory FILE      render every frame of FILE (e.g. from glsroad); each camera\n"
+    "                         file then gives that camera's pose relative to the rig\n"
+    "  --frames A:B           only frames A..B-1 of the trajectory (also A:, :B, A), so\n"
+    "                         consecutive ranges split a sequence across processes\n"
+    "  --frame N              the frame number in the file names of a single render\n"
+    "                         (default 0)\n"
+    "  --resume               skip frames whose outputs all exist (outputs are written\n"
+    "                         atomically, so an existing file is complete)\n"
     "anti-aliasing (spec/antialiasing.md):\n"
     "  --aa N                 NxN samples per pixel, N in 1..4096 (default 1: one pass)\n"
     "  --subpixel A           the N whose sample step is at most A pixels (A as 1/256 or\n"
@@ -137,6 +148,8 @@ int main(int argc, char **argv)
 {
     gls_play_opts o;
     memset(&o, 0, sizeof o);
+    o.frame_end = UINT64_MAX;
+    const char *frames = NULL;
     o.outputs = GLS_OUT_IMAGE | GLS_OUT_DEPTH | GLS_OUT_POINTS;
     o.aa = gls_aa_defaults();
     o.progress = isatty(2);
@@ -246,6 +259,39 @@ int main(int argc, char **argv)
             i++;
         } else if (strcmp(a, "--explain") == 0) {
             o.explain = 1;
+        } else if (strcmp(a, "--resume") == 0) {
+            o.resume = 1;
+        } else if (strcmp(a, "--trajectory") == 0) {
+            if (!has_val) {
+                rc = usage_error("%s--trajectory needs a trajectory file", "");
+                goto done;
+            }
+            o.trajectory = argv[++i];
+        } else if (strcmp(a, "--frames") == 0) {
+            char msg[256];
+            if (!has_val || gls_traj_range(argv[i + 1], &o.frame_first, &o.frame_end, msg, sizeof msg)) {
+                rc = usage_error("--frames needs A:B, A:, :B or A (frames A..B-1), got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            frames = argv[++i];
+        } else if (strcmp(a, "--frame") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 0, UINT32_MAX, &v)) {
+                rc = usage_error("--frame needs a frame number 0..4294967295, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.frame = (uint32_t)v;
+            i++;
+        } else if (strcmp(a, "--background") == 0) {
+            float c[3];
+            char tail;
+            if (!has_val || sscanf(argv[i + 1], "%f,%f,%f%c", &c[0], &c[1], &c[2], &tail) != 3 ||
+                !(c[0] >= 0 && c[0] <= 1 && c[1] >= 0 && c[1] <= 1 && c[2] >= 0 && c[2] <= 1)) {
+                rc = usage_error("--background needs R,G,B with components in 0..1, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            memcpy(o.background, c, sizeof c);
+            i++;
         } else if (a[0] == '-' && a[1]) {
             rc = usage_error("unknown option '%s'", a);
             goto done;
@@ -269,6 +315,10 @@ int main(int argc, char **argv)
     }
     if (!o.bundle) {
         rc = usage_error("%sno bundle given", "");
+        goto done;
+    }
+    if (frames && !o.trajectory) {
+        rc = usage_error("%s--frames selects frames of a --trajectory; for a single render use --frame N", "");
         goto done;
     }
     if (!o.explain && !o.outdir) {

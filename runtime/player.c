@@ -9,6 +9,7 @@
 #include "glctx.h"
 #include "outputs.h"
 #include "player.h"
+#include "trajectory.h"
 #include "render.h"
 
 #define MAXPATH 4096
@@ -83,7 +84,7 @@ static int write_buf(FILE *errs, const char *path, gls_buf *b)
  * drawn only when they are asked for; the points' colours come from that
  * pass too, so each point has the colour of the surface it lies on. */
 static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_renderer *r, const gls_camera *c,
-                       const char *name, FILE *errs)
+                       const char *name, uint32_t frame, FILE *errs)
 {
     char err[512], path[MAXPATH];
     size_t n = (size_t)c->width * c->height;
@@ -166,7 +167,7 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
         const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
         if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
             ext = "pfm";
-        if (gls_output_path(path, sizeof path, o->outdir, name, outs[k].kind, o->frame, ext)) {
+        if (gls_output_path(path, sizeof path, o->outdir, name, outs[k].kind, frame, ext)) {
             fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
             goto out;
         }
@@ -205,6 +206,80 @@ out:
     free(img);
     free(mask);
     free(buf.data);
+    return rc;
+}
+
+/* Are all the requested outputs of this frame there, for every camera?
+ * Outputs are written atomically, so a file that exists is complete. */
+static int frame_done(const gls_play_opts *o, const char *const *names, uint32_t frame)
+{
+    static const struct {
+        unsigned bit;
+        const char *kind;
+    } outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"}};
+    char path[MAXPATH];
+    for (size_t i = 0; i < o->ncameras; i++)
+        for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
+            if (!(o->outputs & outs[k].bit))
+                continue;
+            const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
+            if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
+                ext = "pfm";
+            struct stat st;
+            if (gls_output_path(path, sizeof path, o->outdir, names[i], outs[k].kind, frame, ext) ||
+                stat(path, &st) != 0 || !S_ISREG(st.st_mode))
+                return 0;
+        }
+    return 1;
+}
+
+/* Every frame of the trajectory in [frame_first, frame_end), read one line
+ * at a time (memory stays flat however long the sequence).  Each camera
+ * file gives that camera's pose relative to the rig. */
+static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_renderer *r, const gls_camera *rel,
+                           const char *const *names, FILE *errs)
+{
+    char err[1024];
+    gls_traj *t = gls_traj_open(o->trajectory, err, sizeof err);
+    if (!t) {
+        fprintf(errs, "%s\n", err);
+        return 1;
+    }
+    gls_traj_pose p;
+    int got, rc = 0;
+    uint64_t rendered = 0;
+    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
+        if (p.frame < o->frame_first)
+            continue;
+        if (p.frame >= o->frame_end)
+            break;
+        if (p.frame > UINT32_MAX) {
+            fprintf(errs, "%s:%u: error: frame %llu: frame numbers above %u are not supported\n", o->trajectory,
+                    p.line, (unsigned long long)p.frame, UINT32_MAX);
+            rc = 1;
+            break;
+        }
+        rendered++;
+        if (o->resume && frame_done(o, names, (uint32_t)p.frame))
+            continue;
+        for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
+            gls_camera c = rel[i];
+            gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
+            if (play_camera(o, plan, r, &c, names[i], (uint32_t)p.frame, errs))
+                rc = 1;
+        }
+        if (rc)
+            break;
+    }
+    if (got < 0) {
+        fprintf(errs, "%s\n", err);
+        rc = 1;
+    }
+    gls_traj_close(t);
+    if (rc == 0 && rendered == 0) {
+        fprintf(errs, "glsplay: error: %s: no frame in the range given by --frames\n", o->trajectory);
+        rc = 1;
+    }
     return rc;
 }
 
@@ -301,10 +376,16 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
      * now: free them before the per-camera buffers are allocated. */
     gls_bundle_free(b);
     b = NULL;
-    for (size_t i = 0; i < o->ncameras; i++)
-        if (play_camera(o, &plan, r, &cams[i], names[i], errs))
-            goto out;
-    rc = 0;
+    gls_renderer_set_background(r, o->background);
+    if (!o->trajectory) {
+        if (!(o->resume && frame_done(o, (const char *const *)names, o->frame)))
+            for (size_t i = 0; i < o->ncameras; i++)
+                if (play_camera(o, &plan, r, &cams[i], names[i], o->frame, errs))
+                    goto out;
+        rc = 0;
+        goto out;
+    }
+    rc = play_trajectory(o, &plan, r, cams, (const char *const *)names, errs);
 out:
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);

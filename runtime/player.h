@@ -24,7 +24,14 @@ typedef struct {
     unsigned outputs;            /* GLS_OUT_* bits                       */
     uint32_t width, height;      /* --size override, 0 = the camera's    */
     int explain;                 /* print the plan first                 */
-    uint32_t frame;              /* frame number in the file names       */
+    uint32_t frame;              /* frame number in the file names, when
+                                    there is no trajectory              */
+    const char *trajectory;      /* NULL, or a trajectory file: render
+                                    each of its frames (spec/road.md)   */
+    uint64_t frame_first, frame_end; /* --frames A:B: frames A..B-1 of the
+                                    trajectory; end UINT64_MAX = all    */
+    int resume;                  /* skip frames whose outputs all exist  */
+    float background[3];         /* clear colour, 0..1 (default black)   */
     gls_aa_opts aa;              /* anti-aliasing; n = 0 is taken as 1   */
     gls_image_format image_format;
     uint32_t aa_tiles;           /* samples per GL pass, 0 = automatic   */

@@ -410,6 +410,12 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
     }
 }
 
+void gls_renderer_set_background(gls_renderer *r, const float rgb[3])
+{
+    (void)r; /* state of the current context, which r owns */
+    glClearColor(rgb[0], rgb[1], rgb[2], 1);
+}
+
 void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
 {
     gls_render_tiles(r, c, 1, &du, &dv);

@@ -29,6 +29,10 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
 /* (Re)allocate the framebuffer for width x height images. */
 int gls_renderer_set_size(gls_renderer *r, uint32_t width, uint32_t height, char *err, size_t errlen);
 
+/* Colour of pixels no surface covers (default black), components 0..1.
+ * Depth and points are unaffected: they stay +inf / absent there. */
+void gls_renderer_set_background(gls_renderer *r, const float rgb[3]);
+
 /* A framebuffer holding a mosaic of kx x ky images of width x height, so
  * that several jittered passes are drawn with one clear and read back
  * with one glReadPixels (anti-aliasing, spec/antialiasing.md).  Tile t

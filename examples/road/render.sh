@@ -2,13 +2,13 @@
 # Render the demo road (examples/road/demo.road) as a short stereo sequence.
 # usage: render.sh BIN OUTDIR [STRIP.png]
 #
-# STOPGAP until glsplay reads trajectories itself (--trajectory, --frames):
-# for each selected frame, `glsroad --camera-at` composes each rig camera
-# (examples/road/rig/*.cam, poses relative to the rig) with the rig's pose
-# from trajectory.txt into an ordinary camera file, and glsplay renders that
-# frame; its outputs are renamed to the frame number.  The other vehicles
-# move, so each frame gets a small top-level scene placing them
-# (vehicles.txt) around the static road.
+# glsplay follows the rig along trajectory.txt itself (--trajectory, with
+# the rig cameras examples/road/rig/*.cam giving poses relative to the
+# rig).  The other vehicles move, and a bundle is static, so each selected
+# frame gets a small top-level scene placing them (vehicles.txt) around the
+# road, compiled against the road precompiled once as a library, and
+# glsplay renders just that frame (--frames F:F+1).  A sequence without
+# moving vehicles needs no loop: one glsplay call renders every frame.
 set -e
 B=$1
 OUT=$2
@@ -33,23 +33,8 @@ for f in $FRAMES; do
                 $4, $5, $6, $13, $7, $8, $9, $14, $10, $11, $12, $15, obj[$3] }' "$OUT/road/vehicles.txt"
     } >"$tmp/Frame.scene"
     "$B/glsc" -I "$tmp" -I "$tmp/road.glsb" -I "$B/scenelib.glsb" -o "$tmp/frame.glsb" "$tmp/Frame.scene"
-    for cam in "$HERE"/rig/*.cam; do
-        name=$(basename "$cam" .cam)
-        mkdir -p "$tmp/cams"
-        "$B/glsroad" --camera-at "$f" "$OUT/road/trajectory.txt" "$cam" >"$tmp/cams/$name.cam"
-    done
-    set --
-    for c in "$tmp"/cams/*.cam; do set -- "$@" --camera "$c"; done
-    "$B/glsplay" "$tmp/frame.glsb" "$@" -o "$tmp/play" >/dev/null
-    for c in "$tmp"/cams/*.cam; do
-        name=$(basename "$c" .cam)
-        mkdir -p "$OUT/$name"
-        n=$(printf '%06d' "$f")
-        for kind in image:png depth:pfm points:ply; do
-            k=${kind%%:*} ext=${kind##*:}
-            mv "$tmp/play/$name/${k}_000000.$ext" "$OUT/$name/${k}_$n.$ext"
-        done
-    done
+    "$B/glsplay" "$tmp/frame.glsb" --camera "$HERE/rig/left.cam" --camera "$HERE/rig/right.cam" \
+        --trajectory "$OUT/road/trajectory.txt" --frames "$f:$((f + 1))" --background 0.55,0.7,0.9 -o "$OUT"
     echo "frame $f"
 done
 if [ -n "$STRIP" ]; then

@@ -1,4 +1,4 @@
-/* The trajectory reader and pose composition (roads/trajectory.c). */
+/* The trajectory reader and pose composition (runtime/trajectory.c). */
 #include <stdlib.h>
 #include <sys/resource.h>
 #include <unistd.h>

@@ -1,4 +1,5 @@
-/* Streaming reader of glsroad trajectory files; see trajectory.h. */
+/* Streaming reader of trajectory files (spec/road.md), used by glsplay
+ * --trajectory and by glsroad --camera-at; see trajectory.h. */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
