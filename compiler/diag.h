@@ -28,8 +28,5 @@ typedef struct {
 void gls_error_at(gls_diag *d, gls_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 void gls_note_at(gls_diag *d, gls_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
-/* Edit distance between a and b (for "did you mean"). */
-unsigned gls_edit_distance(const char *a, size_t alen, const char *b);
-/* The candidate closest to word, or NULL if none is close enough. */
-const char *gls_suggest(const char *word, size_t len, const char *const *cands, size_t n);
+#include "suggest.h" /* gls_suggest for "did you mean" */
 #endif

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "road.h"
+#include "suggest.h"
 
 #define MAXTOK 64
 
@@ -166,30 +167,6 @@ static const char *const KEYS[] = {
     "frames", "duration", "start", "speed_at", "vehicle_lateral", "rig_height", "rig_lateral", "rig_forward",
     "rig_pitch", "rig_yaw", "rig_roll", "body_freq", "body_damping", "accel_pitch", "roughness", "wheelbase", "seed",
     "vehicle", "vehicle_speed", NULL};
-
-static size_t edit_distance(const char *a, const char *b)
-{
-    size_t la = strlen(a), lb = strlen(b);
-    if (la > 40 || lb > 40)
-        return 99;
-    size_t d[41][41];
-    for (size_t i = 0; i <= la; i++)
-        d[i][0] = i;
-    for (size_t j = 0; j <= lb; j++)
-        d[0][j] = j;
-    for (size_t i = 1; i <= la; i++)
-        for (size_t j = 1; j <= lb; j++) {
-            size_t best = d[i - 1][j - 1] + (tolower((unsigned char)a[i - 1]) != tolower((unsigned char)b[j - 1]));
-            if (d[i - 1][j] + 1 < best)
-                best = d[i - 1][j] + 1;
-            if (d[i][j - 1] + 1 < best)
-                best = d[i][j - 1] + 1;
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < best)
-                best = d[i - 2][j - 2] + 1;
-            d[i][j] = best;
-        }
-    return d[la][lb];
-}
 
 static road_vehicle *find_vehicle(road_desc *d, const char *name)
 {
@@ -452,15 +429,7 @@ static int parse_line(pctx *c, road_desc *d, char **tok, int ntok, int *seen_deg
             return fail(c, "unknown vehicle '%s' (define it with a 'vehicle' line first)", a[0]);
         return speed_point(c, &v->speed, a + 1, na - 1);
     } else {
-        const char *best = NULL;
-        size_t bd = 3;
-        for (int i = 0; KEYS[i]; i++) {
-            size_t e = edit_distance(k, KEYS[i]);
-            if (e < bd) {
-                bd = e;
-                best = KEYS[i];
-            }
-        }
+        const char *best = gls_suggest(k, strlen(k), KEYS, (size_t)-1);
         if (best)
             return fail(c, "unknown key '%s'; did you mean '%s'?", k, best);
         return fail(c, "unknown key '%s'", k);

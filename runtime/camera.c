@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "camera.h"
+#include "suggest.h"
 
 enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_COUNT };
 static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
@@ -25,47 +26,9 @@ static void errf(char *err, size_t errlen, const char *fname, unsigned line, con
     va_end(ap);
 }
 
-/* Edit distance with adjacent transpositions (optimal string alignment),
- * case-insensitive, for "did you mean": "fra" is one edit from "far", "r"
- * matches "R".  Keys are short; longer words never match. */
-static size_t edit_distance(const char *a, const char *b)
-{
-    size_t la = strlen(a), lb = strlen(b);
-    if (la > 32 || lb > 32)
-        return 99;
-    size_t d[33][33];
-    for (size_t i = 0; i <= la; i++)
-        d[i][0] = i;
-    for (size_t j = 0; j <= lb; j++)
-        d[0][j] = j;
-    for (size_t i = 1; i <= la; i++)
-        for (size_t j = 1; j <= lb; j++) {
-            int ai = tolower((unsigned char)a[i - 1]), bj = tolower((unsigned char)b[j - 1]);
-            size_t best = d[i - 1][j - 1] + (ai != bj);
-            if (d[i - 1][j] + 1 < best)
-                best = d[i - 1][j] + 1;
-            if (d[i][j - 1] + 1 < best)
-                best = d[i][j - 1] + 1;
-            if (i > 1 && j > 1 && ai == tolower((unsigned char)b[j - 2]) &&
-                tolower((unsigned char)a[i - 2]) == bj && d[i - 2][j - 2] + 1 < best)
-                best = d[i - 2][j - 2] + 1;
-            d[i][j] = best;
-        }
-    return d[la][lb];
-}
-
 static const char *suggest(const char *word)
 {
-    const char *best = NULL;
-    size_t bd = strlen(word) <= 2 ? 2 : 3; /* within distance 1 for tiny words, else 2 */
-    for (int k = 0; k < K_COUNT; k++) {
-        size_t d = edit_distance(word, key_name[k]);
-        if (d < bd) {
-            bd = d;
-            best = key_name[k];
-        }
-    }
-    return best;
+    return gls_suggest(word, strlen(word), key_name, K_COUNT);
 }
 
 /* One number token: the whole token must be a finite decimal number. */
