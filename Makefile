@@ -38,7 +38,7 @@ GL_LIBS := -lOSMesa -lGL -lspng
 UNIT_SRC := $(wildcard tests/unit/*.c)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 
-.PHONY: all deps test check demo gallery clean bench-compile bench-play fuzz-build bench-aa
+.PHONY: all deps test check demo demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa
 all: $(TOOLS) $(SCENELIB)
 
 # The README's test command: install what is missing, build, run everything.
@@ -126,17 +126,29 @@ $(B)/depth2png: tools/depth2png.c
 # demo scene with a stereo pair of cameras into out/demo/.
 demo:
 	@sh tools/deps.sh
-	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/depth2png
+	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/depth2png $(B)/pnghalf
 	$(B)/glsc -I examples/demo -I $(B)/textures -o $(B)/demo.glsb examples/demo/Demo.scene
 	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam -o out/demo
 	$(B)/depth2png out/demo/left/depth_000000.pfm out/demo/left/depth_000000_view.png
 	@echo "demo: images, depth maps and point clouds are in out/demo/left and out/demo/right"
+	@$(MAKE) --no-print-directory demo-examples
+
+# The paper's figures (examples/*/README.md): calibration, stereo, dense
+# stereo, grouping, lane, signs, rendered into out/<example>/, and their
+# 320x240 gallery images into out/gallery/.
+demo-examples: all $(B)/depth2png $(B)/pnghalf
+	@mkdir -p out/gallery
+	sh examples/render.sh $(B) out out/gallery
+$(B)/pnghalf: tools/pnghalf.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
 
 # Regenerate the README's gallery images from the demo (committed copies).
 gallery: demo
 	cp out/demo/left/image_000000.png docs/demo_left.png
 	cp out/demo/right/image_000000.png docs/demo_right.png
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
+	cp out/gallery/ex_*.png docs/
 
 bench-compile: $(B)/glsc
 	@sh bench/compile.sh $(B)
