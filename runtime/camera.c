@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "camera.h"
+#include "numfmt.h"
 #include "suggest.h"
 
 enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_COUNT };
@@ -15,15 +16,39 @@ static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx
                                               "skew", "R", "T", "near", "far"};
 static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1};
 
-static void errf(char *err, size_t errlen, const char *fname, unsigned line, const char *fmt, ...)
+/* "FILE:LINE:COL: error: message", then the source line and a caret under
+ * the column (as the scene compiler reports), into err. */
+static void errf(char *err, size_t errlen, const char *text, size_t len, const char *fname, unsigned line,
+                 unsigned col, const char *fmt, ...)
 {
-    int k = snprintf(err, errlen, "%s:%u: error: ", fname, line);
+    int k = snprintf(err, errlen, "%s:%u:%u: error: ", fname, line, col);
     if (k < 0 || (size_t)k >= errlen)
         return;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(err + k, errlen - (size_t)k, fmt, ap);
     va_end(ap);
+    /* the source line */
+    size_t p = 0;
+    for (unsigned l = 1; l < line && p < len; p++)
+        if (text[p] == '\n')
+            l++;
+    size_t e = p;
+    while (e < len && text[e] != '\n' && text[e] != '\r' && text[e] != 0)
+        e++;
+    if (e - p > 200)
+        return; /* a very long line: the message alone says enough */
+    size_t used = strlen(err);
+    if (used + (e - p) + col + 4 >= errlen)
+        return;
+    err[used++] = '\n';
+    memcpy(err + used, text + p, e - p);
+    used += e - p;
+    err[used++] = '\n';
+    for (unsigned c = 1; c < col && p + c - 1 < e; c++)
+        err[used++] = text[p + c - 1] == '\t' ? '\t' : ' ';
+    err[used++] = '^';
+    err[used] = 0;
 }
 
 static const char *suggest(const char *word)
@@ -73,6 +98,8 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
 {
     double val[K_COUNT][9];
     unsigned seen[K_COUNT] = {0}; /* line where each key was given, 0 = absent */
+    unsigned vcol[K_COUNT] = {0}; /* column of its first value              */
+    unsigned last = 0;            /* last line holding a key               */
     unsigned line = 0;
     size_t p = 0;
     char buf[4096];
@@ -83,7 +110,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
         line++;
         size_t n = e - p;
         if (n >= sizeof buf) {
-            errf(err, errlen, fname, line, "line longer than %zu bytes", sizeof buf - 1);
+            errf(err, errlen, text, len, fname, line, 1, "line longer than %zu bytes", sizeof buf - 1);
             return -1;
         }
         memcpy(buf, text + p, n);
@@ -93,9 +120,10 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
             if (buf[i] == '#' || buf[i] == '\r')
                 buf[i] = 0;
             else if (buf[i] == 0) {
-                errf(err, errlen, fname, line, "NUL byte in camera file (is it a text file?)");
+                errf(err, errlen, text, len, fname, line, (unsigned)i + 1, "NUL byte in camera file (is it a text file?)");
                 return -1;
             }
+#define COL(t) ((unsigned)((t) - buf) + 1)
         char *tok[MAX_TOKENS + 1];
         int nt = 0;
         for (char *s = strtok(buf, " \t\f\v"); s; s = strtok(NULL, " \t\f\v")) {
@@ -112,63 +140,72 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
         if (k == K_COUNT) {
             const char *s = suggest(tok[0]);
             if (s)
-                errf(err, errlen, fname, line, "unknown key '%s' (did you mean '%s'?)", tok[0], s);
+                errf(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
             else
-                errf(err, errlen, fname, line,
+                errf(err, errlen, text, len, fname, line, COL(tok[0]),
                      "unknown key '%s' (keys: width height fx fy cx cy skew R T near far)", tok[0]);
             return -1;
         }
         if (seen[k]) {
-            errf(err, errlen, fname, line, "key '%s' given twice (first on line %u)", key_name[k], seen[k]);
+            errf(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' given twice (first on line %u)", key_name[k],
+                 seen[k]);
             return -1;
         }
         if (nt - 1 != key_arity[k]) {
-            errf(err, errlen, fname, line, "key '%s' takes %d number%s, got %s%d", key_name[k], key_arity[k],
-                 key_arity[k] == 1 ? "" : "s", nt > MAX_TOKENS ? "more than " : "", nt - 1);
+            errf(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' takes %d number%s, got %s%d", key_name[k],
+                 key_arity[k], key_arity[k] == 1 ? "" : "s", nt > MAX_TOKENS ? "more than " : "", nt - 1);
             return -1;
         }
         for (int j = 0; j < key_arity[k]; j++)
             if (parse_number(tok[1 + j], &val[k][j])) {
-                errf(err, errlen, fname, line, "key '%s': '%s' is not a finite number", key_name[k], tok[1 + j]);
+                errf(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' is not a finite number",
+                     key_name[k], tok[1 + j]);
                 return -1;
             }
         seen[k] = line;
+        vcol[k] = COL(tok[1]);
+        last = line;
+#undef COL
     }
     for (int k = 0; k < K_COUNT; k++)
         if (!seen[k] && k != K_SKEW) {
-            errf(err, errlen, fname, line, "missing key '%s' (required: width height fx fy cx cy R T near far)",
-                 key_name[k]);
+            errf(err, errlen, text, len, fname, last ? last : 1, 1,
+                 "missing key '%s' (required: width height fx fy cx cy R T near far)", key_name[k]);
             return -1;
         }
     static const int dims[2] = {K_WIDTH, K_HEIGHT};
     for (int i = 0; i < 2; i++) {
         double v = val[dims[i]][0];
         if (v != floor(v) || v < 1 || v > GLS_CAMERA_MAX_DIM) {
-            errf(err, errlen, fname, seen[dims[i]], "%s %.17g must be a whole number in 1..%u", key_name[dims[i]],
-                 v, GLS_CAMERA_MAX_DIM);
+            char num[40];
+            gls_fmt_double(num, sizeof num, v);
+            errf(err, errlen, text, len, fname, seen[dims[i]], vcol[dims[i]], "%s %s must be a whole number in 1..%u",
+                 key_name[dims[i]], num, GLS_CAMERA_MAX_DIM);
             return -1;
         }
     }
     if (!(val[K_FX][0] > 0)) {
-        errf(err, errlen, fname, seen[K_FX], "fx must be > 0 (focal length in pixels)");
+        errf(err, errlen, text, len, fname, seen[K_FX], vcol[K_FX], "fx must be > 0 (focal length in pixels)");
         return -1;
     }
     if (!(val[K_FY][0] > 0)) {
-        errf(err, errlen, fname, seen[K_FY], "fy must be > 0 (focal length in pixels)");
+        errf(err, errlen, text, len, fname, seen[K_FY], vcol[K_FY], "fy must be > 0 (focal length in pixels)");
         return -1;
     }
     if (!(val[K_NEAR][0] > 0)) {
-        errf(err, errlen, fname, seen[K_NEAR], "near must be > 0");
+        errf(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR], "near must be > 0");
         return -1;
     }
     if (!(val[K_FAR][0] > val[K_NEAR][0])) {
-        errf(err, errlen, fname, seen[K_FAR], "far (%.17g) must be greater than near (%.17g)", val[K_FAR][0],
-             val[K_NEAR][0]);
+        char f[40], n[40];
+        gls_fmt_double(f, sizeof f, val[K_FAR][0]);
+        gls_fmt_double(n, sizeof n, val[K_NEAR][0]);
+        errf(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "far (%s) must be greater than near (%s)", f, n);
         return -1;
     }
     char why[200];
     if (check_rotation(val[K_R], why, sizeof why)) {
-        errf(err, errlen, fname, seen[K_R], "%s", why);
+        errf(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
         return -1;
     }
     memset(cam, 0, sizeof *cam);

@@ -13,7 +13,7 @@ static const char good[] =
 
 static int parse(const char *text, gls_camera *c, char *err)
 {
-    return gls_camera_parse(text, strlen(text), "x.cam", c, err, 256);
+    return gls_camera_parse(text, strlen(text), "x.cam", c, err, 512);
 }
 
 static void test_parse_good(void)
@@ -36,7 +36,7 @@ static void test_parse_good(void)
  * expect an error containing `msg`. */
 static void expect_error(const char *from, const char *to, const char *msg)
 {
-    char text[2048], err[256] = "";
+    char text[2048], err[512] = "";
     const char *p = strstr(good, from);
     CHECK_MSG(p != NULL, "test setup: %s not in the good file", from);
     if (!p)
@@ -49,7 +49,16 @@ static void expect_error(const char *from, const char *to, const char *msg)
     CHECK_MSG(parse(text, &c, err) == -1, "accepted %s -> %s", from, to);
     CHECK_MSG(strstr(err, msg) != NULL, "message '%s' lacks '%s'", err, msg);
     CHECK_MSG(strncmp(err, "x.cam:", 6) == 0 && strstr(err, ": error: ") != NULL, "bad message form '%s'", err);
-    CHECK_MSG(strchr(err, '\n') == NULL, "message is not one line: '%s'", err);
+    /* three lines: the message, the offending source line, a caret under
+       the column the message names */
+    const char *nl1 = strchr(err, '\n'), *nl2 = nl1 ? strchr(nl1 + 1, '\n') : NULL;
+    CHECK_MSG(nl1 && nl2 && !strchr(nl2 + 1, '\n'), "not message + source line + caret: '%s'", err);
+    if (nl1 && nl2) {
+        unsigned line = 0, col = 0;
+        CHECK(sscanf(err, "x.cam:%u:%u:", &line, &col) == 2);
+        const char *caret = strchr(nl2 + 1, '^');
+        CHECK_MSG(caret && (unsigned)(caret - nl2) == col && caret[1] == 0, "caret not under column %u: '%s'", col, err);
+    }
 }
 
 static void test_parse_errors(void)
