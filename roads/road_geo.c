@@ -30,7 +30,7 @@ int road_geo_init(road_geo *g, const road_desc *d, char *err, size_t errlen)
     int r = nurbs_init(&g->c, d->degree, d->npts, d->pts, d->w, U, why, sizeof why);
     free(own);
     if (r) {
-        snprintf(err, errlen, "%s:%d: error: %s", d->file, d->line_points, why);
+        snprintf(err, errlen, "%s:%d:1: error: %s", d->file, d->line_points, why);
         return -1;
     }
     return 0;

@@ -234,7 +234,7 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         road_profile_motion(&d->speed, tl, &x, &v, &a);
         if (v <= 0 && d->start + x < L) {
             snprintf(err, errlen,
-                     "%s:%d: error: the vehicle stops before the end of the road; give 'frames' or 'duration'",
+                     "%s:%d:1: error: the vehicle stops before the end of the road; give 'frames' or 'duration'",
                      d->file, d->speed.line);
             return -1;
         }
@@ -256,7 +256,7 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
             if (d->frames < 0)
                 break;
             snprintf(err, errlen,
-                     "%s:%d: error: the vehicle passes the end of the road (%.3f m) at frame %ld (t = %.6g s); "
+                     "%s:%d:1: error: the vehicle passes the end of the road (%.3f m) at frame %ld (t = %.6g s); "
                      "give fewer frames, a lower speed or a longer road",
                      d->file, d->line_frames, L, k, t);
             return -1;

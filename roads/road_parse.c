@@ -1,5 +1,6 @@
 /* Parser of the road description (spec/road.md): one `key value...` per
- * line, `#` comments.  Every error is "file:line: error: message". */
+ * line, `#` comments.  Every error is "file:line:col: error: message", then
+ * the offending line and a caret under the column. */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -8,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "road.h"
+#include "srcline.h"
 #include "suggest.h"
 
 #define MAXTOK 64
@@ -17,7 +19,18 @@ typedef struct {
     int line;
     char *err;
     size_t errlen;
+    const char *text;    /* the whole description, for the source excerpt */
+    size_t len;
+    const char *linebuf; /* the current line's copy, which tokens point into */
+    int col;             /* column of the key of the current line           */
 } pctx;
+
+/* Point the next error at token tok of the current line. */
+static void at(pctx *c, const char *tok)
+{
+    if (c->linebuf && tok >= c->linebuf && tok < c->linebuf + 4096)
+        c->col = (int)(tok - c->linebuf) + 1;
+}
 
 static int fail(pctx *c, const char *fmt, ...)
 {
@@ -26,7 +39,8 @@ static int fail(pctx *c, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(c->err, c->errlen, "%s:%d: error: %s", c->file, c->line, msg);
+    snprintf(c->err, c->errlen, "%s:%d:%d: error: %s", c->file, c->line, c->col > 0 ? c->col : 1, msg);
+    gls_append_source_line(c->err, c->errlen, c->text, c->len, (unsigned)c->line, (unsigned)(c->col > 0 ? c->col : 1));
     return -1;
 }
 
@@ -35,8 +49,10 @@ static int num(pctx *c, const char *tok, const char *what, double *out)
     char *end;
     errno = 0;
     double v = strtod(tok, &end);
-    if (end == tok || *end || !isfinite(v)) /* underflow to 0 is harmless */
+    if (end == tok || *end || !isfinite(v)) { /* underflow to 0 is harmless */
+        at(c, tok);
         return fail(c, "%s: '%s' is not a finite number", what, tok);
+    }
     *out = v;
     return 0;
 }
@@ -470,7 +486,7 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
     memset(d, 0, sizeof *d);
     d->file = fname;
     defaults(d);
-    pctx c = {fname, 0, err, errlen};
+    pctx c = {fname, 0, err, errlen, text, len, NULL, 1};
     int seen_degree = 0;
     size_t i = 0;
     char line[4096];
@@ -479,6 +495,8 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
         while (j < len && text[j] != '\n')
             j++;
         c.line++;
+        c.col = 1;
+        c.linebuf = NULL;
         size_t n = j - i;
         if (n >= sizeof line) {
             fail(&c, "line longer than %zu bytes", sizeof line - 1);
@@ -505,12 +523,16 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
         }
         if (ntok == 0)
             continue;
+        c.linebuf = line;
+        at(&c, tok[0]);
         if (parse_line(&c, d, tok, ntok, &seen_degree))
             goto bad;
     }
     /* checks across lines; reported at the line that can be fixed, or at
        the last line when something is missing */
     int last = c.line ? c.line : 1;
+    c.linebuf = NULL;
+    c.col = 1;
     if (d->npts == 0) {
         c.line = last;
         fail(&c, "no control points: give the centre line as 'point X Y Z [WEIGHT]' lines");

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "camera.h"
 #include "numfmt.h"
+#include "srcline.h"
 #include "suggest.h"
 
 enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_COUNT };
@@ -28,27 +29,7 @@ static void errf(char *err, size_t errlen, const char *text, size_t len, const c
     va_start(ap, fmt);
     vsnprintf(err + k, errlen - (size_t)k, fmt, ap);
     va_end(ap);
-    /* the source line */
-    size_t p = 0;
-    for (unsigned l = 1; l < line && p < len; p++)
-        if (text[p] == '\n')
-            l++;
-    size_t e = p;
-    while (e < len && text[e] != '\n' && text[e] != '\r' && text[e] != 0)
-        e++;
-    if (e - p > 200)
-        return; /* a very long line: the message alone says enough */
-    size_t used = strlen(err);
-    if (used + (e - p) + col + 4 >= errlen)
-        return;
-    err[used++] = '\n';
-    memcpy(err + used, text + p, e - p);
-    used += e - p;
-    err[used++] = '\n';
-    for (unsigned c = 1; c < col && p + c - 1 < e; c++)
-        err[used++] = text[p + c - 1] == '\t' ? '\t' : ' ';
-    err[used++] = '^';
-    err[used] = 0;
+    gls_append_source_line(err, errlen, text, len, line, col);
 }
 
 static const char *suggest(const char *word)

@@ -28,7 +28,8 @@ expect road_usage_unknown_option 2 "glsroad: error: unknown option '--frobnicate
 expect road_help 0 "" -- "$R" --help
 expect road_missing_file 1 "$t/none.road: error: cannot open: No such file or directory" -- "$R" "$t/none.road" -o "$t/o"
 
-# description errors: one line, FILE:LINE: error: message, exit 1
+# description errors: FILE:LINE:COL: error: message (then the source line
+# and a caret, checked once below), exit 1
 err_case() {
     name=$1 text=$2 msg=$3
     printf '%b' "$text" >"$t/$name.road"
@@ -37,20 +38,29 @@ err_case() {
 }
 P='point 0 0 0\npoint 0 0 50\npoint -10 0 100\npoint -10 0 150\n'
 S='speed_at distance 0 10\n'
-err_case unknown_key "${P}${S}lane_widht 3\n" "6: error: unknown key 'lane_widht'; did you mean 'lane_width'?"
-err_case bad_number "${P}${S}tolerance 1mm\n" "6: error: tolerance: '1mm' is not a finite number"
-err_case few_points "point 0 0 0\npoint 0 0 1\n${S}" "1: error: a curve of degree 3 needs at least 4 control points; there are 2"
-err_case knots_count "${P}knots 0 0 0 0 1 1 1\n${S}" "5: error: 7 knots given; 4 points of degree 3 need 8"
-err_case knots_unclamped "${P}knots 0 0 0 0.5 1 1 1 1\n${S}" "5: error: the knot vector must be clamped: its first and last degree + 1 knots equal"
-err_case weight_zero "point 0 0 0 0\n" "1: error: weight must be positive, got 0"
-err_case no_speed "${P}" "4: error: no speed profile: give at least one 'speed_at distance 0 SPEED' (m/s)"
-err_case speed_mixed "${P}${S}speed_at time 5 10\n" "6: error: a speed profile is given either by distance or by time, not both"
-err_case speed_order "${P}${S}speed_at distance 50 10\nspeed_at distance 20 12\n" "7: error: profile points must have increasing distances (20 after 50)"
-err_case boundary "${P}${S}marking 3 solid\n" "6: error: boundary 3 does not exist: 2 lanes have boundaries 0..2 (0 is the leftmost)"
-err_case style "${P}${S}marking 1 dotted\n" "6: error: unknown marking 'dotted' (the styles are solid, dashed, double, none)"
-err_case too_far "${P}${S}frames 1000\n" "6: error: the vehicle passes the end of the road (150.399 m) at frame 376 (t = 15.04 s); give fewer frames, a lower speed or a longer road"
-err_case vehicle_unknown "${P}${S}vehicle_speed bus distance 0 10\n" "6: error: unknown vehicle 'bus' (define it with a 'vehicle' line first)"
+err_case unknown_key "${P}${S}lane_widht 3\n" "6:1: error: unknown key 'lane_widht'; did you mean 'lane_width'?"
+err_case bad_number "${P}${S}tolerance 1mm\n" "6:11: error: tolerance: '1mm' is not a finite number"
+err_case few_points "point 0 0 0\npoint 0 0 1\n${S}" "1:1: error: a curve of degree 3 needs at least 4 control points; there are 2"
+err_case knots_count "${P}knots 0 0 0 0 1 1 1\n${S}" "5:1: error: 7 knots given; 4 points of degree 3 need 8"
+err_case knots_unclamped "${P}knots 0 0 0 0.5 1 1 1 1\n${S}" "5:1: error: the knot vector must be clamped: its first and last degree + 1 knots equal"
+err_case weight_zero "point 0 0 0 0\n" "1:1: error: weight must be positive, got 0"
+err_case no_speed "${P}" "4:1: error: no speed profile: give at least one 'speed_at distance 0 SPEED' (m/s)"
+err_case speed_mixed "${P}${S}speed_at time 5 10\n" "6:1: error: a speed profile is given either by distance or by time, not both"
+err_case speed_order "${P}${S}speed_at distance 50 10\nspeed_at distance 20 12\n" "7:1: error: profile points must have increasing distances (20 after 50)"
+err_case boundary "${P}${S}marking 3 solid\n" "6:1: error: boundary 3 does not exist: 2 lanes have boundaries 0..2 (0 is the leftmost)"
+err_case style "${P}${S}marking 1 dotted\n" "6:1: error: unknown marking 'dotted' (the styles are solid, dashed, double, none)"
+err_case too_far "${P}${S}frames 1000\n" "6:1: error: the vehicle passes the end of the road (150.399 m) at frame 376 (t = 15.04 s); give fewer frames, a lower speed or a longer road"
+err_case vehicle_unknown "${P}${S}vehicle_speed bus distance 0 10\n" "6:1: error: unknown vehicle 'bus' (define it with a 'vehicle' line first)"
 err_case fold "degree 2\npoint 0 0 0\npoint 0 0 10\npoint -8 0 10 0.7071067811865476\npoint -8 0 0\nknots 0 0 0 0.5 1 1 1\nverge 0\n${S}" " error: the road folds over itself near distance 8.981 m: the curve radius there (3.921 m) is smaller than the lateral offset of an edge (4.000 m); widen the curve or narrow the road"
+
+# the excerpt under the message: the offending line, a caret under the column
+printf '%b' "${P}${S}tolerance 1mm\n" >"$t/excerpt.road"
+"$R" "$t/excerpt.road" -o "$t/o_excerpt" 2>"$t/stderr"
+if [ "$(sed -n 2p "$t/stderr")" = "tolerance 1mm" ] && [ "$(sed -n 3p "$t/stderr")" = "          ^" ] && [ "$(wc -l <"$t/stderr")" = 3 ]; then
+    ok road_error_source_excerpt
+else
+    fail road_error_source_excerpt "$(cat "$t/stderr")"
+fi
 
 # the demo road: all outputs, compiled by glsc
 if "$R" examples/road/demo.road -o "$t/demo" >/dev/null 2>"$t/err"; then
