@@ -86,10 +86,10 @@ $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat
 
 # Fuzz targets (tests/fuzz/README.md): `make fuzz-build`, then
 # `sh tests/fuzz/run.sh SECONDS` fuzzes every target.
-FUZZ_TARGETS := compile bundle texture camera
-$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a
+FUZZ_TARGETS := compile bundle texture camera road writers
+$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsroad.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -fsanitize=fuzzer $< -o $@ $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+	$(CC) $(CFLAGS) -Iroads -fsanitize=fuzzer $< -o $@ $(B)/libglscompiler.a $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
 fuzz-build:
 	@$(MAKE) --no-print-directory B=build-fuzz CC=clang FUZZ=1 $(FUZZ_TARGETS:%=build-fuzz/fuzz/fuzz_%)
 

@@ -9,7 +9,7 @@
 # fuzz_T" and one statistics line per target.
 secs=${1:-60}
 shift
-targets=${*:-"compile bundle texture camera"}
+targets=${*:-"compile bundle texture camera road writers"}
 F=build-fuzz/fuzz
 status=0
 for t in $targets; do
