@@ -48,7 +48,8 @@ if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
     export LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
     units=$(for f in tests/unit/*.c; do printf 'build-asan/tests/%s ' "$(basename "$f" .c)"; done)
     if make --no-print-directory -s -j2 B=build-asan SANITIZE=1 CC=clang all $units >build-asan.log 2>&1; then
-        GLS_SANITIZED=1 suite build-asan | sed 's/^ok /ok asan:/; s/^FAIL /FAIL asan:/' | tee -a "$log"
+        export GLS_SANITIZED=1
+        suite build-asan | sed 's/^ok /ok asan:/; s/^FAIL /FAIL asan:/' | tee -a "$log"
     else
         tail -20 build-asan.log
         echo "FAIL asan_build: see build-asan.log" | tee -a "$log"
