@@ -63,22 +63,28 @@ static int jpeg_bad_huffman(const unsigned char *d, size_t len)
     return 0;
 }
 
-int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga, const char *path, gls_texture *out,
-                              char *why, size_t whylen)
+int gls_texture_probe(const unsigned char *data, size_t len, int is_tga, const char *path, int *w, int *h,
+                      char *why, size_t whylen)
 {
-    int w, h, comp;
+    int comp;
     if (jpeg_bad_huffman(data, len)) {
         snprintf(why, whylen, "cannot decode %s: corrupt JPEG (a Huffman table has more than 256 codes)", path);
         return -1;
     }
-    if (len > INT32_MAX || !stbi_info_from_memory(data, (int)len, &w, &h, &comp)) {
+    if (len > INT32_MAX || !stbi_info_from_memory(data, (int)len, w, h, &comp)) {
         snprintf(why, whylen, "cannot decode %s: %s", path, stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
         return -1;
     }
-    /* check the size from the header before decoding anything */
-    if (w <= 0 || h <= 0 || (unsigned)w > GLS_MAX_TEXTURE_DIM || (unsigned)h > GLS_MAX_TEXTURE_DIM) {
-        snprintf(why, whylen, "%s is %dx%d, larger than the GL limit of %ux%u", path, w, h, GLS_MAX_TEXTURE_DIM,
+    /* check the size from the header before decoding anything: a 20-byte
+       file can declare a gigabyte of texels (found by the texture fuzzer) */
+    if (*w <= 0 || *h <= 0 || (unsigned)*w > GLS_MAX_TEXTURE_DIM || (unsigned)*h > GLS_MAX_TEXTURE_DIM) {
+        snprintf(why, whylen, "%s is %dx%d, larger than the GL limit of %ux%u", path, *w, *h, GLS_MAX_TEXTURE_DIM,
                  GLS_MAX_TEXTURE_DIM);
+        return -1;
+    }
+    if ((uint64_t)*w * (uint64_t)*h > GLS_MAX_TEXELS) {
+        snprintf(why, whylen, "%s is %dx%d = %llu texels, more than the limit of %llu (256 MiB of RGBA)", path, *w, *h,
+                 (unsigned long long)*w * (unsigned long long)*h, (unsigned long long)GLS_MAX_TEXELS);
         return -1;
     }
     if (is_tga && comp != 4) {
@@ -86,6 +92,15 @@ int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga,
                  comp == 1 ? "" : "s");
         return -1;
     }
+    return 0;
+}
+
+int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga, const char *path, gls_texture *out,
+                              char *why, size_t whylen)
+{
+    int w, h, comp;
+    if (gls_texture_probe(data, len, is_tga, path, &w, &h, why, whylen))
+        return -1;
     unsigned char *px = stbi_load_from_memory(data, (int)len, &w, &h, &comp, 4);
     if (!px) {
         snprintf(why, whylen, "cannot decode %s: %s", path, stbi_failure_reason() ? stbi_failure_reason() : "corrupt");

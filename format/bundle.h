@@ -45,6 +45,7 @@ extern const char *const gls_feature_why[32];
 #define GLS_MAX_VERTICES          (1u << 28)     /* per bundle            */
 #define GLS_MAX_PRIM_VERTICES     (1u << 24)     /* per primitive         */
 #define GLS_MAX_TEXTURE_DIM       16384u         /* llvmpipe's GL limit   */
+#define GLS_MAX_TEXELS            (1ull << 26)   /* per texture: 256 MiB  */
 #define GLS_MAX_PUSH_DEPTH        64u            /* per object            */
 #define GLS_MAX_CALL_DEPTH        256u           /* nested calls          */
 #define GLS_MAX_NAME_BYTES        1024u

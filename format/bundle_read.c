@@ -162,6 +162,9 @@ static int read_textures(gls_bundle *b, cursor *c, gls_error *err)
             FAIL("texture table: entry %u is truncated or malformed", i);
         if (t->width == 0 || t->height == 0 || t->width > GLS_MAX_TEXTURE_DIM || t->height > GLS_MAX_TEXTURE_DIM)
             FAIL("texture %s: size %ux%u is outside 1..%u", t->name, t->width, t->height, GLS_MAX_TEXTURE_DIM);
+        if ((uint64_t)t->width * t->height > GLS_MAX_TEXELS)
+            FAIL("texture %s: %ux%u texels, more than %llu", t->name, t->width, t->height,
+                 (unsigned long long)GLS_MAX_TEXELS);
     }
     for (uint32_t i = 0; i < n; i++) {
         gls_texture *t = &b->textures[i];

@@ -62,6 +62,9 @@ static int check_textures(const gls_bundle *b, gls_error *err)
         const gls_texture *t = &b->textures[i];
         if (t->width == 0 || t->height == 0 || t->width > GLS_MAX_TEXTURE_DIM || t->height > GLS_MAX_TEXTURE_DIM)
             FAIL("texture %s: size %ux%u is outside 1..%u", t->name, t->width, t->height, GLS_MAX_TEXTURE_DIM);
+        if ((uint64_t)t->width * t->height > GLS_MAX_TEXELS)
+            FAIL("texture %s: %ux%u texels, more than %llu", t->name, t->width, t->height,
+                 (unsigned long long)GLS_MAX_TEXELS);
         if (t->flags & ~GLS_TEX_ALPHA_HOLES)
             FAIL("texture %s: unknown flags %#x", t->name, t->flags);
         uint32_t holes = 0;

@@ -22,11 +22,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     gls_texture t = {0};
     char why[256];
     /* large images are slow to decode, not interesting: the size checks
-       before decoding are covered by the small ones.  Not for JPEG (first
-       byte 0xFF): stbi_info would parse its tables before glscene's own
-       guard against stb_image's Huffman table overflow runs. */
-    int w, h, comp;
-    if (size > 1 && data[1] != 0xFF && stbi_info_from_memory(data + 1, (int)(size - 1), &w, &h, &comp) &&
+       before decoding are covered by the small ones (the probe is the
+       product's own header check) */
+    int w, h;
+    if (gls_texture_probe(data + 1, size - 1, data[0] & 1, "fuzz", &w, &h, why, sizeof why) == 0 &&
         (long long)w * h > (1 << 20))
         return 0;
     if (gls_texture_decode_memory(data + 1, size - 1, data[0] & 1, "fuzz", &t, why, sizeof why) == 0)
