@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include "bundle.h"
 #include "road.h"
+#include "camera.h"
 #include "trajectory.h"
 
 static const char USAGE[] =
@@ -159,22 +160,6 @@ out:
     return rc;
 }
 
-/* Parse the numbers of a camera-file line after its key. */
-static int line_numbers(char *rest, double *v, int want)
-{
-    int n = 0;
-    char *save;
-    for (char *q = strtok_r(rest, " \t\r\f\v", &save); q; q = strtok_r(NULL, " \t\r\f\v", &save)) {
-        char *end;
-        if (n == want)
-            return -1;
-        v[n] = strtod(q, &end);
-        if (end == q || *end)
-            return -1;
-        n++;
-    }
-    return n == want ? 0 : -1;
-}
 
 static int camera_at(const char *frame_s, const char *traj_path, const char *cam_path)
 {
@@ -188,52 +173,15 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
         fprintf(stderr, "%s\n", err);
         return 1;
     }
-    /* R and T of the camera relative to the rig */
-    double Rc[9], Tc[3];
-    int haveR = 0, haveT = 0;
-    unsigned line = 0, last = 0;
-    for (char *p = text; *p;) {
-        char *nl = strchr(p, '\n');
-        size_t full = nl ? (size_t)(nl - p) : strlen(p);
-        size_t n = full < 4096 ? full : 4095;
-        char buf[4096];
-        line++;
-        memcpy(buf, p, n);
-        buf[n] = 0;
-        char *hash = strchr(buf, '#');
-        if (hash)
-            *hash = 0;
-        char *k = buf + strspn(buf, " \t\r");
-        size_t kl = strcspn(k, " \t\r");
-        if (kl)
-            last = line;
-        if (kl == 1 && (*k == 'R' || *k == 'T')) {
-            int isR = *k == 'R';
-            if (isR ? haveR : haveT) {
-                fprintf(stderr, "%s:%u: error: '%c' appears twice\n", cam_path, line, *k);
-                free(text);
-                return 1;
-            }
-            if (line_numbers(k + 1, isR ? Rc : Tc, isR ? 9 : 3)) {
-                fprintf(stderr, "%s:%u: error: '%c' takes %d numbers\n", cam_path, line, *k, isR ? 9 : 3);
-                free(text);
-                return 1;
-            }
-            const char *why = isR ? gls_traj_check_rotation(Rc) : NULL;
-            if (why) {
-                fprintf(stderr, "%s:%u: error: %s\n", cam_path, line, why);
-                free(text);
-                return 1;
-            }
-            *(isR ? &haveR : &haveT) = 1;
-        }
-        p += full + (nl ? 1 : 0);
-    }
-    if (!haveR || !haveT) {
-        fprintf(stderr, "%s:%u: error: missing '%c'\n", cam_path, last ? last : 1, haveR ? 'T' : 'R');
+    /* the camera relative to the rig: parsed and checked by the player's
+       own camera-file parser, so both tools accept the same files */
+    gls_camera cam;
+    if (gls_camera_parse(text, len, cam_path, &cam, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
         free(text);
         return 1;
     }
+    const double *Rc = cam.R, *Tc = cam.T;
     gls_traj *t = gls_traj_open(traj_path, err, sizeof err);
     if (!t) {
         fprintf(stderr, "%s\n", err);
