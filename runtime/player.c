@@ -75,6 +75,22 @@ static int write_buf(FILE *errs, const char *path, gls_buf *b)
     return 0;
 }
 
+/* The output kinds, in the order they are written. */
+static const struct {
+    unsigned bit;
+    const char *kind;
+} outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"}};
+#define NOUTS (sizeof outs / sizeof outs[0])
+
+/* The file an output kind of one camera and frame goes to; -1 if too long. */
+static int output_file(char *path, size_t len, const gls_play_opts *o, const char *name, size_t k, uint32_t frame)
+{
+    const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
+    if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
+        ext = "pfm";
+    return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -157,17 +173,10 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
-    static const struct {
-        unsigned bit;
-        const char *kind;
-    } outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"}};
-    for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
+    for (size_t k = 0; k < NOUTS; k++) {
         if (!(o->outputs & outs[k].bit))
             continue;
-        const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
-        if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
-            ext = "pfm";
-        if (gls_output_path(path, sizeof path, o->outdir, name, outs[k].kind, frame, ext)) {
+        if (output_file(path, sizeof path, o, name, k, frame)) {
             fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
             goto out;
         }
@@ -213,20 +222,13 @@ out:
  * Outputs are written atomically, so a file that exists is complete. */
 static int frame_done(const gls_play_opts *o, const char *const *names, uint32_t frame)
 {
-    static const struct {
-        unsigned bit;
-        const char *kind;
-    } outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"}};
     char path[MAXPATH];
     for (size_t i = 0; i < o->ncameras; i++)
-        for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
+        for (size_t k = 0; k < NOUTS; k++) {
             if (!(o->outputs & outs[k].bit))
                 continue;
-            const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
-            if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
-                ext = "pfm";
             struct stat st;
-            if (gls_output_path(path, sizeof path, o->outdir, names[i], outs[k].kind, frame, ext) ||
+            if (output_file(path, sizeof path, o, names[i], k, frame) ||
                 stat(path, &st) != 0 || !S_ISREG(st.st_mode))
                 return 0;
         }
