@@ -349,7 +349,7 @@ static void test_end_of_road(void)
     if (load(t, &d, &g))
         return check_failed_++, (void)0;
     CHECK(road_run_trajectory(&g, NULL, NULL, err, sizeof err) == -1);
-    CHECK_MSG(strstr(err, "test.road:4: error: the vehicle passes the end of the road") != NULL, "%s", err);
+    CHECK_MSG(strstr(err, "test.road:4:1: error: the vehicle passes the end of the road") != NULL, "%s", err);
     road_geo_free(&g);
     road_desc_free(&d);
     /* without frames: up to the end, 100 m at 10 m/s and 25 fps */
