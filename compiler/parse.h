@@ -50,6 +50,7 @@ typedef struct {
     /* push nesting, to point at an unbalanced push */
     gls_tok push_tok[GLS_MAX_PUSH_DEPTH + 1];
     unsigned depth;
+    unsigned depth_overflow; /* pushes refused as too deep, not yet popped */
     /* named constants */
     gls_const *consts[GLS_MAX_CONSTS_BUCKETS];
     /* parser health */

@@ -357,6 +357,7 @@ static void h_push(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     (void)a, (void)n;
     if (ctx->depth >= GLS_MAX_PUSH_DEPTH) {
         ERR(ctx, name.line, name.col, "'push' nested deeper than %u", GLS_MAX_PUSH_DEPTH);
+        ctx->depth_overflow++; /* its pop must not complain as well */
         return;
     }
     ctx->push_tok[ctx->depth++] = name;
@@ -367,6 +368,10 @@ static void h_push(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     (void)a, (void)n;
+    if (ctx->depth_overflow) {
+        ctx->depth_overflow--; /* the pop of a push refused as too deep */
+        return;
+    }
     if (ctx->depth == 0) {
         /* after a syntax error the matching push may be what was dropped */
         if (!ctx->syntax_errors)

@@ -156,3 +156,14 @@ if [ $rc -eq 1 ] && grep -q 'B0 draws more than 67108864 vertices once its calls
 else
     fail call_expansion_bomb_refused "rc=$rc $(head -2 "$tmp/err")"
 fi
+
+# An input over the size limit (1 GiB) is refused from its size, before any
+# of it is read: a sparse file costs no disk.
+truncate -s 1100M "$tmp/Huge.scene"
+"$BIN/glsc" -I "$tmp" -o "$tmp/huge.glsb" Huge 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && grep -q 'Huge.scene is 1153433600 bytes, more than the limit of 1073741824' "$tmp/err"; then
+    ok source_size_limit
+else
+    fail source_size_limit "rc=$rc $(head -2 "$tmp/err")"
+fi
+rm -f "$tmp/Huge.scene"

@@ -7,6 +7,7 @@
 #include "check.h"
 #include "layout.h"
 #include "le.h"
+#include <zlib.h>
 
 /* A small bundle: object "a.Top" calls "a.Tri", which draws one coloured,
  * textured triangle 1e7 units from the origin. */
@@ -177,6 +178,33 @@ static void test_version_mismatch_names_both(void)
     free(data);
 }
 
+/* A directory entry declaring a huge decoded size is refused before
+ * anything is allocated or decompressed (a decompression bomb), even with
+ * a valid checksum; so is one that disagrees with its zstd frame. */
+static void test_declared_size_checked_before_allocating(void)
+{
+    gls_bundle *b = make_bundle();
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    uint8_t *e = data + GLS_HEADER_SIZE + 3 * GLS_DIRENT_SIZE; /* POSITIONS */
+    gls_le_put_u64(e + 24, 1ull << 40);
+    gls_le_put_u32(data + GLS_HDR_CRC, 0);
+    gls_le_put_u32(data + GLS_HDR_CRC, (uint32_t)crc32_z(crc32(0L, Z_NULL, 0), data, len));
+    gls_error err;
+    gls_bundle *r = gls_bundle_read(data, len, &err);
+    CHECK(r == NULL);
+    CHECK_MSG(strstr(err.msg, "declares 1099511627776 decoded bytes, over the limit") != NULL, "%s", err.msg);
+    gls_le_put_u64(e + 24, 1000); /* within the limit, but not what the frame says */
+    gls_le_put_u32(data + GLS_HDR_CRC, 0);
+    gls_le_put_u32(data + GLS_HDR_CRC, (uint32_t)crc32_z(crc32(0L, Z_NULL, 0), data, len));
+    r = gls_bundle_read(data, len, &err);
+    CHECK(r == NULL);
+    CHECK_MSG(strstr(err.msg, "zstd frame header does not declare") != NULL, "%s", err.msg);
+    gls_bundle_free(r);
+    gls_bundle_free(b);
+    free(data);
+}
+
 /* The validator catches what a hostile writer could put in. */
 static void expect_invalid(gls_bundle *b, const char *needle)
 {
@@ -279,6 +307,7 @@ int main(void)
     RUN(test_every_truncation_refused);
     RUN(test_every_flipped_byte_refused);
     RUN(test_version_mismatch_names_both);
+    RUN(test_declared_size_checked_before_allocating);
     RUN(test_validator_rejects);
     RUN(test_expansion_bomb_refused);
     CHECK_EXIT();
