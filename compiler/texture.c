@@ -63,12 +63,37 @@ static int jpeg_bad_huffman(const unsigned char *d, size_t len)
     return 0;
 }
 
+/* stb_image trusts a PNG chunk's declared length and grows its buffer to
+ * it before reading (the texture fuzzer found a 100-byte PNG making it
+ * reallocate 2 GiB).  A chunk longer than what is left of the file is
+ * corrupt anyway: refuse it first.  Returns 1 to refuse. */
+static int png_chunk_overrun(const unsigned char *d, size_t len)
+{
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (len < 8 || memcmp(d, sig, 8) != 0)
+        return 0;
+    size_t p = 8;
+    while (p + 8 <= len) {
+        uint32_t n = (uint32_t)d[p] << 24 | (uint32_t)d[p + 1] << 16 | (uint32_t)d[p + 2] << 8 | d[p + 3];
+        if ((uint64_t)n + 12 > len - p)
+            return 1;
+        if (memcmp(d + p + 4, "IEND", 4) == 0)
+            return 0;
+        p += (size_t)n + 12;
+    }
+    return 0;
+}
+
 int gls_texture_probe(const unsigned char *data, size_t len, int is_tga, const char *path, int *w, int *h,
                       char *why, size_t whylen)
 {
     int comp;
     if (jpeg_bad_huffman(data, len)) {
         snprintf(why, whylen, "cannot decode %s: corrupt JPEG (a Huffman table has more than 256 codes)", path);
+        return -1;
+    }
+    if (png_chunk_overrun(data, len)) {
+        snprintf(why, whylen, "cannot decode %s: corrupt PNG (a chunk runs past the end of the file)", path);
         return -1;
     }
     if (len > INT32_MAX || !stbi_info_from_memory(data, (int)len, w, h, &comp)) {
