@@ -128,7 +128,7 @@ demo:
 	@sh tools/deps.sh
 	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/depth2png $(B)/pnghalf
 	$(B)/glsc -I examples/demo -I $(B)/textures -o $(B)/demo.glsb examples/demo/Demo.scene
-	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam -o out/demo
+	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
 	$(B)/depth2png out/demo/left/depth_000000.pfm out/demo/left/depth_000000_view.png
 	@echo "demo: images, depth maps and point clouds are in out/demo/left and out/demo/right"
 	@$(MAKE) --no-print-directory demo-examples
