@@ -4,21 +4,8 @@
 #include <stdlib.h>
 #include "check.h"
 #include "road.h"
+#include "road_load.h"
 
-static int load(const char *text, road_desc *d, road_geo *g)
-{
-    char err[1024];
-    if (road_parse(text, strlen(text), "test.road", d, err, sizeof err)) {
-        printf("  %s\n", err);
-        return -1;
-    }
-    if (road_geo_init(g, d, err, sizeof err)) {
-        printf("  %s\n", err);
-        road_desc_free(d);
-        return -1;
-    }
-    return 0;
-}
 
 static const char *CURVY = "degree 3\n"
                            "point 0 0 0\npoint 0 0 60\npoint -10 0 110\npoint -45 2 160\npoint -60 3 220\n"

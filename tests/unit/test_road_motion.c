@@ -4,22 +4,9 @@
 #include <stdlib.h>
 #include "check.h"
 #include "road.h"
+#include "road_load.h"
 #include "trajectory.h"
 
-static int load(const char *text, road_desc *d, road_geo *g)
-{
-    char err[1024];
-    if (road_parse(text, strlen(text), "test.road", d, err, sizeof err)) {
-        printf("  %s\n", err);
-        return -1;
-    }
-    if (road_geo_init(g, d, err, sizeof err)) {
-        printf("  %s\n", err);
-        road_desc_free(d);
-        return -1;
-    }
-    return 0;
-}
 
 static void test_profiles(void)
 {
