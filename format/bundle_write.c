@@ -23,8 +23,9 @@ static int put_str(gls_buf *b, const char *s)
     return put_u32(b, (uint32_t)n) || gls_buf_put(b, s, n);
 }
 
-static int sec_objects(const gls_bundle *bd, gls_buf *b)
+static int sec_objects(const gls_bundle *bd, uint32_t feat, gls_buf *b)
 {
+    (void)feat;
     if (put_u32(b, bd->nobjects))
         return -1;
     for (uint32_t i = 0; i < bd->nobjects; i++) {
@@ -36,8 +37,9 @@ static int sec_objects(const gls_bundle *bd, gls_buf *b)
     return 0;
 }
 
-static int sec_sources(const gls_bundle *bd, gls_buf *b)
+static int sec_sources(const gls_bundle *bd, uint32_t feat, gls_buf *b)
 {
+    (void)feat;
     if (put_u32(b, bd->nsources))
         return -1;
     for (uint32_t i = 0; i < bd->nsources; i++)
@@ -54,8 +56,9 @@ static int sec_sources(const gls_bundle *bd, gls_buf *b)
     return 0;
 }
 
-static int sec_textures(const gls_bundle *bd, gls_buf *b)
+static int sec_textures(const gls_bundle *bd, uint32_t feat, gls_buf *b)
 {
+    (void)feat;
     if (put_u32(b, bd->ntextures))
         return -1;
     for (uint32_t i = 0; i < bd->ntextures; i++) {
@@ -83,25 +86,28 @@ static int put_planes(gls_buf *b, const void *vals, size_t count, size_t stride,
     return 0;
 }
 
-static int sec_positions(const gls_bundle *bd, gls_buf *b)
+static int sec_positions(const gls_bundle *bd, uint32_t feat, gls_buf *b)
 {
     /* w is stored only when some vertex has w != 1 */
-    unsigned ncomp = (gls_bundle_features(bd) & GLS_FEAT_HOMOGENEOUS) ? 4 : 3;
+    unsigned ncomp = (feat & GLS_FEAT_HOMOGENEOUS) ? 4 : 3;
     return put_u32(b, bd->npos) || put_u32(b, ncomp) ||
            put_planes(b, bd->pos, bd->npos, sizeof *bd->pos, ncomp, 8);
 }
 
-static int sec_colors(const gls_bundle *bd, gls_buf *b)
+static int sec_colors(const gls_bundle *bd, uint32_t feat, gls_buf *b)
 {
+    (void)feat;
     return put_u32(b, bd->ncol) || put_planes(b, bd->col, bd->ncol, sizeof *bd->col, 4, 4);
 }
 
-static int sec_texcoords(const gls_bundle *bd, gls_buf *b)
+static int sec_texcoords(const gls_bundle *bd, uint32_t feat, gls_buf *b)
 {
+    (void)feat;
     return put_u32(b, bd->ntex) || put_planes(b, bd->tc, bd->ntex, sizeof *bd->tc, 2, 4);
 }
 
-typedef int (*sec_fn)(const gls_bundle *, gls_buf *);
+/* feat: the content's feature flags, computed once per write */
+typedef int (*sec_fn)(const gls_bundle *, uint32_t feat, gls_buf *);
 
 int gls_bundle_write(const gls_bundle *bd, uint8_t **out, size_t *outlen, gls_error *err)
 {
@@ -115,6 +121,7 @@ int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_
     gls_buf file = {0};
     gls_buf raw = {0};
     ZSTD_CCtx *cctx = ZSTD_createCCtx();
+    const uint32_t feat = gls_bundle_features(bd);
     uint8_t hdr[GLS_HEADER_SIZE + GLS_SEC_COUNT * GLS_DIRENT_SIZE];
     memset(hdr, 0, sizeof hdr);
     if (!cctx || gls_buf_put(&file, hdr, sizeof hdr))
@@ -122,7 +129,7 @@ int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_
 
     for (unsigned s = 0; s < GLS_SEC_COUNT; s++) {
         raw.len = 0;
-        if (fns[s](bd, &raw))
+        if (fns[s](bd, feat, &raw))
             goto oom;
         size_t bound = ZSTD_compressBound(raw.len);
         size_t off = file.len;
@@ -149,7 +156,7 @@ int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_
     memcpy(hdr, GLS_MAGIC, GLS_MAGIC_LEN);
     gls_le_put_u32(hdr + GLS_HDR_VERSION, GLS_FORMAT_VERSION);
     gls_le_put_u32(hdr + GLS_HDR_HSIZE, GLS_HEADER_SIZE);
-    gls_le_put_u32(hdr + GLS_HDR_FEATURES, gls_bundle_features(bd));
+    gls_le_put_u32(hdr + GLS_HDR_FEATURES, feat);
     gls_le_put_u32(hdr + GLS_HDR_TOP, bd->top);
     gls_le_put_u32(hdr + GLS_HDR_NSECT, GLS_SEC_COUNT);
     gls_le_put_u64(hdr + GLS_HDR_FSIZE, file.len);
