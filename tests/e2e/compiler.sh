@@ -45,6 +45,15 @@ else
     fail bundle_holds_only_reachable_objects "pkg.Leaf bundle has other objects"
 fi
 
+# A 24-bit TGA (BGR, no alpha) is a texture: opaque, channels in RGB order
+# (four red texels: the CRC of ff0000ff x 4).
+if "$BIN/glsc" -I tests/compiler/tga_rgb -o "$tmp/rgb.glsb" tests/compiler/tga_rgb/Top.scene 2>"$tmp/err" &&
+    "$BIN/glsdis" "$tmp/rgb.glsb" | grep -qx 'texture tex.Rgb 2x2 rgba8 crc32=bc5aab1c'; then
+    ok tga_rgb_texture
+else
+    fail tga_rgb_texture "$(head -1 "$tmp/err")"
+fi
+
 # Determinism: same sources twice; and a library tree whose files were
 # created in the opposite order (different directory listing order).
 "$BIN/glsc" -I tests/compiler/lang -o "$tmp/lang2.glsb" tests/compiler/lang/Top.scene
