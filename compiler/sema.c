@@ -60,6 +60,32 @@ static const char *const all_words[] = {"vert", "col", "tex", "color", "texmode"
                                         "trans", "rot", "scale", "transform", "push", "pop", "call",
                                         "poly", "qstrip", "tstrip", "tfan", "const"};
 
+/* Names people bring from OpenGL and other scene languages, for "did you
+ * mean" (gls_suggest_alias also takes their OpenGL spellings: glRotatef,
+ * glVertex3f, glPushMatrix, glTexCoord2f, glColor3ub, glMultMatrixd, ...).
+ * The real names are the keys of instrs[] and gls_prim_name. */
+static const gls_alias aliases[] = {
+    {"rotate", "rot"},          {"rotation", "rot"},
+    {"translate", "trans"},     {"translation", "trans"},   {"move", "trans"},
+    {"scaling", "scale"},       {"scl", "scale"},
+    {"vertex", "vert"},         {"point", "vert"},
+    {"colour", "color"},        {"rgb", "color"},           {"rgba", "color"},
+    {"texcoord", "tex"},        {"texcoords", "tex"},       {"uv", "tex"},
+    {"bindtexture", "texture"}, {"settexture", "texture"},
+    {"texenv", "texmode"},      {"texturemode", "texmode"}, {"texture_mode", "texmode"},
+    {"notex", "notexture"},     {"untexture", "notexture"}, {"disabletexture", "notexture"},
+    {"pushmatrix", "push"},     {"save", "push"},           {"popmatrix", "pop"},          {"restore", "pop"},
+    {"multmatrix", "transform"}, {"matrix", "transform"},
+    {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},
+    {"define", "const"},        {"let", "const"},           {"var", "const"},
+    {"begin", "poly"},          {"polygon", "poly"},        {"triangle", "poly"},          {"triangles", "poly"},
+    {"quad", "poly"},           {"quads", "poly"},
+    {"quadstrip", "qstrip"},    {"quad_strip", "qstrip"},
+    {"trianglestrip", "tstrip"}, {"triangle_strip", "tstrip"}, {"tristrip", "tstrip"},
+    {"trianglefan", "tfan"},    {"triangle_fan", "tfan"},   {"trifan", "tfan"},
+};
+#define NALIASES (sizeof aliases / sizeof aliases[0])
+
 static int tok_is(gls_tok t, const char *s)
 {
     size_t n = strlen(s);
@@ -126,7 +152,8 @@ void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
                 (int)name.len, name.p, (int)name.len, name.p);
             return;
         }
-        const char *s = gls_suggest(name.p, name.len, all_words, sizeof all_words / sizeof all_words[0]);
+        const char *s =
+            gls_suggest_alias(name.p, name.len, all_words, sizeof all_words / sizeof all_words[0], aliases, NALIASES);
         if (s)
             ERR(ctx, name.line, name.col, "unknown instruction '%.*s'; did you mean '%s'?", (int)name.len, name.p, s);
         else
@@ -413,7 +440,8 @@ void sema_block_open(gls_parse *ctx, gls_tok name)
         int is_instr = 0;
         for (size_t i = 0; i < NINSTRS; i++)
             is_instr |= tok_is(name, instrs[i].name);
-        const char *s = is_instr ? NULL : gls_suggest(name.p, name.len, gls_prim_name, GLS_PRIM_COUNT);
+        const char *s =
+            is_instr ? NULL : gls_suggest_alias(name.p, name.len, gls_prim_name, GLS_PRIM_COUNT, aliases, NALIASES);
         if (s)
             ERR(ctx, name.line, name.col, "unknown primitive '%.*s'; did you mean '%s'?", (int)name.len, name.p, s);
         else
