@@ -67,7 +67,7 @@ $(B)/gen/grammar.c $(B)/gen/grammar.h: compiler/grammar.y
 	cp compiler/grammar.y $(B)/gen/grammar.y
 	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y
 $(B)/gen/%.o: $(B)/gen/%.c
-	$(CC) $(CFLAGS) -Wno-unused-parameter -Wno-unused-variable -Icompiler -c $< -o $@
+	$(CC) $(CFLAGS) -Wno-unused-parameter -Wno-unused-variable -Icompiler -MMD -MP -c $< -o $@
 $(COMPILER_OBJ): | $(B)/gen/grammar.h
 
 $(B)/libglsformat.a: $(FORMAT_OBJ)

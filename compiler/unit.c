@@ -87,9 +87,10 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
     int code;
     do {
         code = gls_lex(&lx, &t, ctx);
+        ctx->prev = ctx->last;
         ctx->last = t;
+        ctx->cur_major = code;
         glsParse(parser, code, t);
-        ctx->prev_major = code;
     } while (code != 0 && !ctx->stop && !d->stopped);
     glsParseFree(parser, free);
 
