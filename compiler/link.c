@@ -38,6 +38,7 @@ struct gls_compiler {
     uint32_t nsources, sourcescap;
     gls_unit **stack;        /* DFS path, for cycle messages                */
     size_t depth, stackcap;
+    const char *top_name;    /* the top object's name while it is loaded    */
 };
 
 static const gls_loc noloc = {NULL, 0, 0};
@@ -222,6 +223,7 @@ static gls_unit *unit_from_file(gls_compiler *c, const char *name, const char *p
     u->src.len = len;
     u->src.mapped = mapped;
     u->src_file = sf;
+    u->is_top = c->top_name && strcmp(name, c->top_name) == 0;
     gls_compile_source(u, &c->diag);
     return u;
 }
@@ -650,7 +652,9 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
             free(name);
             return -1;
         }
+        c->top_name = name;
         u = unit_from_file(c, name, top, noloc);
+        c->top_name = NULL;
         free(name);
         if (!u || register_unit(c, u))
             return -1;
@@ -659,7 +663,9 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
             gls_error_at(&c->diag, noloc, "'%s' is neither a .scene file nor a dotted object name", top);
             return -1;
         }
+        c->top_name = top;
         u = get_unit(c, top, noloc);
+        c->top_name = NULL;
         if (!u)
             return -1;
     }

@@ -2,6 +2,7 @@
  * semantic actions (sema.c) while one .scene file is compiled. */
 #ifndef GLS_PARSE_H
 #define GLS_PARSE_H
+#include "texuse.h"
 #include "unit.h"
 
 #define GLS_MAX_ARGS 16
@@ -51,6 +52,8 @@ typedef struct {
     gls_tok push_tok[GLS_MAX_PUSH_DEPTH + 1];
     unsigned depth;
     unsigned depth_overflow; /* pushes refused as too deep, not yet popped */
+    /* which texture(...) statements texture anything (texuse.h) */
+    gls_texuse texuse;
     /* named constants */
     gls_const *consts[GLS_MAX_CONSTS_BUCKETS];
     /* parser health */

@@ -305,6 +305,7 @@ static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
         size_t l = strlen(gls_texmode_name[m]);
         if (a[0].len == l && memcmp(a[0].s, gls_texmode_name[m], l) == 0) {
             emit_u(ctx, GLS_OP_TEXMODE, m, name.line);
+            gls_texuse_mode(&ctx->texuse, m != GLS_MODE_COLOR, name.line);
             return;
         }
     }
@@ -337,6 +338,8 @@ static void h_texture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
         return;
     }
     emit_u(ctx, GLS_OP_TEXTURE, r, name.line);
+    if (gls_texuse_select(&ctx->texuse, gls_tok_loc(ctx, name.line, name.col), a->s + 1, a->len - 2))
+        ERR(ctx, name.line, name.col, "out of memory");
 }
 
 static void h_notexture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
@@ -344,6 +347,7 @@ static void h_notexture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned
     (void)a, (void)n;
     gls_insn in = {.op = GLS_OP_NOTEXTURE};
     emit(ctx, &in, name.line);
+    gls_texuse_deselect(&ctx->texuse);
 }
 
 static void h_trans(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
@@ -387,6 +391,7 @@ static void h_push(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         ctx->depth_overflow++; /* its pop must not complain as well */
         return;
     }
+    gls_texuse_push(&ctx->texuse, ctx->depth);
     ctx->push_tok[ctx->depth++] = name;
     gls_insn in = {.op = GLS_OP_PUSH};
     emit(ctx, &in, name.line);
@@ -406,6 +411,7 @@ static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         return;
     }
     ctx->depth--;
+    gls_texuse_pop(&ctx->texuse, ctx->depth);
     gls_insn in = {.op = GLS_OP_POP};
     emit(ctx, &in, name.line);
 }
@@ -423,6 +429,7 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         return;
     }
     emit_u(ctx, GLS_OP_CALL, r, name.line);
+    gls_texuse_call(&ctx->texuse);
 }
 
 /* ---- primitive blocks ------------------------------------------------------ */
@@ -489,6 +496,7 @@ void sema_block_close(gls_parse *ctx, gls_tok rbrace)
     in.u[3] = ctx->prim_has_col ? ctx->prim_col0 : GLS_NONE;
     in.u[4] = ctx->prim_has_tc ? ctx->prim_tc0 : GLS_NONE;
     emit(ctx, &in, t.line);
+    gls_texuse_draw(&ctx->texuse);
 }
 
 /* ---- constants and expressions -------------------------------------------- */

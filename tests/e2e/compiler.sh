@@ -38,8 +38,10 @@ else
     fail top_by_dotted_name_via_GLSCENE_PATH "$(cat "$tmp/err")"
 fi
 
-# Only what the top reaches goes into the bundle.
-if "$BIN/glsc" -I tests/compiler/lang -o "$tmp/leaf.glsb" pkg.Leaf && "$BIN/glsdis" "$tmp/leaf.glsb" | grep -q '^objects: 1, textures: 1,'; then
+# Only what the top reaches goes into the bundle.  (pkg.Leaf, a callee
+# that leaves the texture mode to its caller, gets the "never applied"
+# warning when it is compiled as the top.)
+if "$BIN/glsc" -I tests/compiler/lang -o "$tmp/leaf.glsb" pkg.Leaf 2>"$tmp/err" && "$BIN/glsdis" "$tmp/leaf.glsb" | grep -q '^objects: 1, textures: 1,'; then
     ok bundle_holds_only_reachable_objects
 else
     fail bundle_holds_only_reachable_objects "pkg.Leaf bundle has other objects"
