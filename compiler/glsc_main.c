@@ -114,7 +114,7 @@ int main(int argc, char **argv)
             rc = -1;
         } else {
             if (gls_write_file_atomic(out, bytes, len)) {
-                fprintf(stderr, "glsc: error: cannot write %s: %s\n", out, strerror(errno));
+                fprintf(stderr, "glsc: error: cannot write %s: %s\n", out, gls_write_error(out, errno));
                 rc = -1;
             }
             free(bytes);

@@ -90,7 +90,7 @@ static int put(const char *dir, const char *name, const road_buf *b)
     snprintf(p, n, "%s/%s", dir, name);
     int r = gls_write_file_atomic(p, b->text, b->len);
     if (r)
-        fprintf(stderr, "glsroad: error: cannot write %s: %s\n", p, strerror(errno));
+        fprintf(stderr, "glsroad: error: cannot write %s: %s\n", p, gls_write_error(p, errno));
     free(p);
     return r;
 }

@@ -69,7 +69,7 @@ static char *camera_name(const char *path)
 static int write_buf(FILE *errs, const char *path, gls_buf *b)
 {
     if (gls_write_file_atomic(path, b->data, b->len)) {
-        fprintf(errs, "glsplay: error: cannot write %s: %s\n", path, strerror(errno));
+        fprintf(errs, "glsplay: error: cannot write %s: %s\n", path, gls_write_error(path, errno));
         return -1;
     }
     return 0;

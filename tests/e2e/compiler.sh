@@ -112,6 +112,27 @@ if [ $r1 -eq 2 ] && [ $r2 -eq 2 ] && [ $r3 -eq 2 ] && [ $r4 -eq 0 ]; then ok usa
 "$BIN/glsc" -I tests/compiler/lang -o /nonexistent-dir/x.glsb pkg.Leaf 2>"$tmp/err"; rc=$?
 if [ $rc -eq 1 ] && grep -q 'cannot write' "$tmp/err"; then ok unwritable_output; else fail unwritable_output "rc=$rc"; fi
 
+# An existing output that is not a regular file is refused, never opened:
+# writing into a FIFO nobody reads would block (timeout: a regression must
+# not hang the suite), renaming over it would replace it.
+mkfifo "$tmp/fifo.glsb"
+timeout 20 "$BIN/glsc" -I tests/compiler/paper -o "$tmp/fifo.glsb" road.tex.roads.Curve400m 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && [ -p "$tmp/fifo.glsb" ] &&
+    [ "$(cat "$tmp/err")" = "glsc: error: cannot write $tmp/fifo.glsb: it is a FIFO (named pipe), not a regular file" ] &&
+    ! ls "$tmp"/fifo.glsb.tmp* >/dev/null 2>&1; then
+    ok output_fifo_refused
+else
+    fail output_fifo_refused "rc=$rc $(head -1 "$tmp/err")"
+fi
+rm -f "$tmp/fifo.glsb"
+mkdir "$tmp/outdir.glsb"
+timeout 20 "$BIN/glsc" -I tests/compiler/paper -o "$tmp/outdir.glsb" road.tex.roads.Curve400m 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && [ "$(cat "$tmp/err")" = "glsc: error: cannot write $tmp/outdir.glsb: it is a directory" ]; then
+    ok output_directory_refused
+else
+    fail output_directory_refused "rc=$rc $(head -1 "$tmp/err")"
+fi
+
 # Call depth: 256 nested calls compile; 257 do not, also when the long
 # chain runs through an object that an earlier, shorter chain already reached.
 mkdir -p "$tmp/deep"
