@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "compile.h"
+#include "mkdirs.h"
 
 static const char usage[] =
     "usage: glsc [-I ROOT]... [-o OUT.glsb] TOP\n"
@@ -112,6 +113,11 @@ int main(int argc, char **argv)
         if (gls_bundle_write(b, &bytes, &len, &err)) {
             fprintf(stderr, "glsc: error: %s\n", err.msg);
             rc = -1;
+        } else if (gls_mkdir_parents(out)) {
+            /* like glsplay -o, glsc -o creates the directories it needs */
+            fprintf(stderr, "glsc: error: cannot create the directory of %s: %s\n", out, strerror(errno));
+            rc = -1;
+            free(bytes);
         } else {
             if (gls_write_file_atomic(out, bytes, len)) {
                 fprintf(stderr, "glsc: error: cannot write %s: %s\n", out, gls_write_error(out, errno));

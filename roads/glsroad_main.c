@@ -8,10 +8,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "bundle.h"
 #include "road.h"
 #include "camera.h"
+#include "mkdirs.h"
 #include "trajectory.h"
 
 static const char USAGE[] =
@@ -72,15 +72,6 @@ static char *read_all(const char *path, size_t *len, char *err, size_t errlen)
     return b;
 }
 
-static int mkdir_p(const char *path)
-{
-    if (mkdir(path, 0777) == 0 || errno == EEXIST) {
-        struct stat st;
-        return stat(path, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
-    }
-    return -1;
-}
-
 static int put(const char *dir, const char *name, const road_buf *b)
 {
     size_t n = strlen(dir) + strlen(name) + 2;
@@ -131,7 +122,7 @@ static int make_road(const char *in, const char *dir)
     if (!sub)
         goto out;
     snprintf(sub, n, "%s/roadobj", dir);
-    if (mkdir_p(dir) || mkdir_p(sub)) {
+    if (gls_mkdir_p(sub)) {
         fprintf(stderr, "glsroad: error: cannot create directory %s: %s\n", sub, strerror(errno));
         free(sub);
         goto out;

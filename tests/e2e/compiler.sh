@@ -108,9 +108,23 @@ if [ $rc -eq 1 ] && grep -q 'corrupted' "$tmp/err"; then ok corrupted_bundle_ref
 "$BIN/glsc" --help >/dev/null 2>&1; r4=$?
 if [ $r1 -eq 2 ] && [ $r2 -eq 2 ] && [ $r3 -eq 2 ] && [ $r4 -eq 0 ]; then ok usage_exit_status; else fail usage_exit_status "$r1 $r2 $r3 $r4"; fi
 
-# An unwritable output leaves nothing behind and exits 1.
-"$BIN/glsc" -I tests/compiler/lang -o /nonexistent-dir/x.glsb pkg.Leaf 2>"$tmp/err"; rc=$?
-if [ $rc -eq 1 ] && grep -q 'cannot write' "$tmp/err"; then ok unwritable_output; else fail unwritable_output "rc=$rc"; fi
+# -o creates the directories it needs, as glsplay -o does.
+if "$BIN/glsc" -I tests/compiler/paper -o "$tmp/new/sub/x.glsb" road.tex.roads.Curve400m 2>"$tmp/err" &&
+    [ -s "$tmp/new/sub/x.glsb" ]; then
+    ok output_directories_created
+else
+    fail output_directories_created "$(head -1 "$tmp/err")"
+fi
+
+# An unwritable output (a parent is a file) leaves nothing behind and exits 1.
+: >"$tmp/afile"
+"$BIN/glsc" -I tests/compiler/paper -o "$tmp/afile/x.glsb" road.tex.roads.Curve400m 2>"$tmp/err"; rc=$?
+if [ $rc -eq 1 ] && [ "$(cat "$tmp/err")" = "glsc: error: cannot create the directory of $tmp/afile/x.glsb: Not a directory" ] &&
+    [ -f "$tmp/afile" ] && [ ! -s "$tmp/afile" ]; then
+    ok unwritable_output
+else
+    fail unwritable_output "rc=$rc $(head -1 "$tmp/err")"
+fi
 
 # An existing output that is not a regular file is refused, never opened:
 # writing into a FIFO nobody reads would block (timeout: a regression must
