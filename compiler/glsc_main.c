@@ -6,6 +6,7 @@
 #include <string.h>
 #include "compile.h"
 #include "mkdirs.h"
+#include "stdout_check.h"
 
 static const char usage[] =
     "usage: glsc [-I ROOT]... [-o OUT.glsb] TOP\n"
@@ -31,6 +32,7 @@ static int usage_error(const char *msg, const char *arg)
 
 int main(int argc, char **argv)
 {
+    gls_check_stdout_at_exit("glsc");
     /* Large scenes allocate and free arrays of tens of MiB several times;
        keep them in the heap instead of mmap/munmap each one, so pages are
        reused rather than faulted in and cleared again (measured: -30% time

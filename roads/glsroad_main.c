@@ -12,6 +12,7 @@
 #include "road.h"
 #include "camera.h"
 #include "mkdirs.h"
+#include "stdout_check.h"
 #include "trajectory.h"
 
 static const char USAGE[] =
@@ -218,15 +219,12 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
         p += n + (nl ? 1 : 0);
     }
     free(text);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "glsroad: error: cannot write the camera: %s\n", strerror(errno));
-        return 1;
-    }
-    return 0;
+    return 0; /* main's exit check reports a failed write */
 }
 
 int main(int argc, char **argv)
 {
+    gls_check_stdout_at_exit("glsroad");
     const char *in = NULL, *out = NULL;
     if (argc >= 2 && !strcmp(argv[1], "--camera-at")) {
         if (argc != 5)
