@@ -67,7 +67,7 @@ $(B)/gen/grammar.c $(B)/gen/grammar.h: compiler/grammar.y
 	cp compiler/grammar.y $(B)/gen/grammar.y
 	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y
 $(B)/gen/%.o: $(B)/gen/%.c
-	$(CC) $(CFLAGS) -Wno-unused-parameter -Wno-unused-variable -Icompiler -c $< -o $@
+	$(CC) $(CFLAGS) -Wno-unused-parameter -Wno-unused-variable -Icompiler -MMD -MP -c $< -o $@
 $(COMPILER_OBJ): | $(B)/gen/grammar.h
 
 $(B)/libglsformat.a: $(FORMAT_OBJ)
@@ -95,9 +95,9 @@ fuzz-build:
 
 # Texture generator for the scene library and the examples (no binary
 # textures are committed: they are made here, deterministically).
-$(B)/gen_textures: scenelib/gen/textures.c
+$(B)/gen_textures: scenelib/gen/textures.c $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
+	$(CC) $(CFLAGS) $^ -o $@ -lstb -lm
 $(B)/textures.stamp: $(B)/gen_textures
 	$(B)/gen_textures $(B)/textures && touch $@
 
@@ -108,9 +108,9 @@ $(B)/textures.stamp: $(B)/gen_textures
 # the whole library precompiled: -I $(B)/scenelib.glsb stands for
 # -I scenelib -I $(B)/textures.
 SCENELIB_SRC := $(shell find scenelib -name '*.scene' 2>/dev/null)
-$(B)/gen_objects: scenelib/gen/objects.c
+$(B)/gen_objects: scenelib/gen/objects.c $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $< -o $@ -lm
+	$(CC) $(CFLAGS) $^ -o $@ -lm
 $(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC)
 	$(B)/glsc -I $(B)/textures --lib scenelib -o $@
 .PHONY: gen-scenelib

@@ -33,10 +33,10 @@ unsigned gls_compiler_errors(const gls_compiler *c);
  * -1 with a message in why. */
 int gls_texture_decode(const char *path, gls_texture *out, char *why, size_t whylen);
 /* Check an image's header without decoding it: known format, size within
- * the GL limit and GLS_MAX_TEXELS, 4 channels for TGA; *w, *h set. */
-int gls_texture_probe(const unsigned char *data, size_t len, int is_tga, const char *path, int *w, int *h,
-                      char *why, size_t whylen);
-/* The same from memory; is_tga demands 4 channels; path is for messages. */
-int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga, const char *path, gls_texture *out,
-                              char *why, size_t whylen);
+ * the GL limit and GLS_MAX_TEXELS; *w, *h set. */
+int gls_texture_probe(const unsigned char *data, size_t len, const char *path, int *w, int *h, char *why,
+                      size_t whylen);
+/* The same from memory; path is for messages. */
+int gls_texture_decode_memory(const unsigned char *data, size_t len, const char *path, gls_texture *out, char *why,
+                              size_t whylen);
 #endif

@@ -50,6 +50,17 @@ void gls_error_at(gls_diag *d, gls_loc loc, const char *fmt, ...)
     }
 }
 
+void gls_warning_at(gls_diag *d, gls_loc loc, const char *fmt, ...)
+{
+    if (d->stopped)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    report(d, loc, "warning", fmt, ap);
+    va_end(ap);
+    d->warnings++;
+}
+
 void gls_note_at(gls_diag *d, gls_loc loc, const char *fmt, ...)
 {
     if (d->stopped)

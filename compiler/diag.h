@@ -22,11 +22,14 @@ typedef struct {
 typedef struct {
     FILE *out;
     unsigned errors;
+    unsigned warnings; /* they do not stop the compile or change its status */
     int stopped;   /* the error limit was reached: callers stop */
 } gls_diag;
 
 void gls_error_at(gls_diag *d, gls_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 void gls_note_at(gls_diag *d, gls_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+/* "file:line:col: warning: message", source line and caret */
+void gls_warning_at(gls_diag *d, gls_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 #include "suggest.h" /* gls_suggest for "did you mean" */
 #endif

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "disasm.h"
+#include "stdout_check.h"
 
 static const char usage[] =
     "usage: glsdis [--source] BUNDLE.glsb\n"
@@ -13,6 +14,7 @@ static const char usage[] =
 
 int main(int argc, char **argv)
 {
+    gls_check_stdout_at_exit("glsdis");
     int with_source = 0;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
@@ -42,9 +44,5 @@ int main(int argc, char **argv)
     }
     gls_disassemble(b, stdout, with_source);
     gls_bundle_free(b);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "glsdis: error: writing the dump failed\n");
-        return 1;
-    }
-    return 0;
+    return 0; /* a failed write is reported at exit (stdout_check.h) */
 }

@@ -43,6 +43,15 @@ stmt ::= bopen stmts RBRACE(R).                 { sema_block_close(ctx, R); }
 stmt ::= CONST IDENT(N) ASSIGN expr(E) SEMI.    { sema_const(ctx, N, E); }
 stmt ::= error SEMI.                            { sema_recover(ctx); }
 
+/* A statement without its ';'.  Only the start of the next statement, '}'
+ * or the end of the file can follow a statement, so these rules add no
+ * conflict; lemon may still reduce them on any other token (a default
+ * reduction), and the action then leaves that token's syntax error to be
+ * reported as before (sema.c). */
+stmt ::= IDENT(N).                              { sema_stmt_without_semi(ctx, N, 0); }
+stmt ::= IDENT(N) LPAREN args RPAREN.           { sema_stmt_without_semi(ctx, N, 1); }
+stmt ::= CONST IDENT(N) ASSIGN expr(E).         { sema_const_without_semi(ctx, N, E); }
+
 bopen ::= IDENT(N) LBRACE.                      { sema_block_open(ctx, N); }
 
 args ::= .

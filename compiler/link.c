@@ -38,6 +38,7 @@ struct gls_compiler {
     uint32_t nsources, sourcescap;
     gls_unit **stack;        /* DFS path, for cycle messages                */
     size_t depth, stackcap;
+    const char *top_name;    /* the top object's name while it is loaded    */
 };
 
 static const gls_loc noloc = {NULL, 0, 0};
@@ -102,11 +103,48 @@ static int ends_with(const char *s, const char *suffix)
     return n >= m && strcmp(s + n - m, suffix) == 0;
 }
 
+/* A copy of path with empty and "." components dropped: "scenelib/",
+ * "./scenelib" and "scenelib//" are all "scenelib"; "./" is ".", "//" is
+ * "/".  Source paths are recorded in the bundle as the compiler spells them
+ * (spec/bundle.md, section 14), so one library spelled differently on the
+ * command line still gives the same bytes.  ".." is kept: removing it
+ * would be wrong across symbolic links. */
+static char *normalise_path(const char *path)
+{
+    size_t n = strlen(path);
+    char *out = malloc(n + 2);
+    if (!out)
+        return NULL;
+    size_t k = 0;
+    if (path[0] == '/')
+        out[k++] = '/';
+    for (const char *p = path; *p;) {
+        while (*p == '/')
+            p++;
+        const char *e = p;
+        while (*e && *e != '/')
+            e++;
+        size_t len = (size_t)(e - p);
+        if (len && !(len == 1 && p[0] == '.')) {
+            if (k && out[k - 1] != '/')
+                out[k++] = '/';
+            memcpy(out + k, p, len);
+            k += len;
+        }
+        p = e;
+    }
+    if (k == 0 && n)
+        out[k++] = '.';
+    out[k] = 0;
+    return out;
+}
+
 int gls_compiler_add_root(gls_compiler *c, const char *path)
 {
-    gls_root r = {strdup(path), NULL};
+    gls_root r = {normalise_path(path), NULL};
     if (!r.path)
         return -1;
+    path = r.path;
     if (!gls_is_dir(path)) {
         if (!gls_is_file(path)) {
             gls_error_at(&c->diag, noloc, "search root %s: no such directory or bundle", path);
@@ -222,6 +260,7 @@ static gls_unit *unit_from_file(gls_compiler *c, const char *name, const char *p
     u->src.len = len;
     u->src.mapped = mapped;
     u->src_file = sf;
+    u->is_top = c->top_name && strcmp(name, c->top_name) == 0;
     gls_compile_source(u, &c->diag);
     return u;
 }
@@ -650,7 +689,11 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
             free(name);
             return -1;
         }
-        u = unit_from_file(c, name, top, noloc);
+        char *spelt = normalise_path(top);
+        c->top_name = name;
+        u = spelt ? unit_from_file(c, name, spelt, noloc) : NULL;
+        c->top_name = NULL;
+        free(spelt);
         free(name);
         if (!u || register_unit(c, u))
             return -1;
@@ -659,7 +702,9 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
             gls_error_at(&c->diag, noloc, "'%s' is neither a .scene file nor a dotted object name", top);
             return -1;
         }
+        c->top_name = top;
         u = get_unit(c, top, noloc);
+        c->top_name = NULL;
         if (!u)
             return -1;
     }
@@ -773,7 +818,7 @@ int gls_compile_lib(gls_compiler *c, const char *root, gls_bundle **out)
         return -1;
     }
     /* the library root is searched first, then the other roots */
-    gls_root r = {strdup(root), NULL};
+    gls_root r = {normalise_path(root), NULL};
     gls_root *nr = realloc(c->roots, (c->nroots + 1) * sizeof *nr);
     if (!r.path || !nr) {
         free(r.path);
@@ -783,7 +828,7 @@ int gls_compile_lib(gls_compiler *c, const char *root, gls_bundle **out)
     memmove(c->roots + 1, c->roots, c->nroots * sizeof *c->roots);
     c->roots[0] = r;
     c->nroots++;
-    scan_dir(c, root, "", 0);
+    scan_dir(c, r.path, "", 0);
     for (size_t i = 0; i < c->nall && !c->diag.stopped; i++)
         visit(c, c->all[i]);
     if (c->diag.errors)

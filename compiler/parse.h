@@ -2,6 +2,7 @@
  * semantic actions (sema.c) while one .scene file is compiled. */
 #ifndef GLS_PARSE_H
 #define GLS_PARSE_H
+#include "texuse.h"
 #include "unit.h"
 
 #define GLS_MAX_ARGS 16
@@ -51,6 +52,8 @@ typedef struct {
     gls_tok push_tok[GLS_MAX_PUSH_DEPTH + 1];
     unsigned depth;
     unsigned depth_overflow; /* pushes refused as too deep, not yet popped */
+    /* which texture(...) statements texture anything (texuse.h) */
+    gls_texuse texuse;
     /* named constants */
     gls_const *consts[GLS_MAX_CONSTS_BUCKETS];
     /* parser health */
@@ -58,8 +61,10 @@ typedef struct {
     unsigned errors_at_start;   /* diag error count when this file began   */
     unsigned errors_at_block;   /* ... when the open primitive block began */
     int syntax_errors;          /* statements were dropped by recovery     */
-    int prev_major;             /* previous token, for "missing ';'" hints */
+    int cur_major;              /* code of the token being parsed           */
     gls_tok last;               /* last token read, for stack overflow     */
+    gls_tok prev;               /* the token before it: where a missing ';'
+                                   belongs                                  */
     int lex_eof_error;          /* an unterminated string or comment was
                                    reported: the parser's end-of-file error
                                    would only repeat it                    */
@@ -83,6 +88,8 @@ void sema_stmt(gls_parse *ctx, gls_tok name, int parens);
 void sema_block_open(gls_parse *ctx, gls_tok name);
 void sema_block_close(gls_parse *ctx, gls_tok rbrace);
 void sema_const(gls_parse *ctx, gls_tok name, gls_val v);
+void sema_stmt_without_semi(gls_parse *ctx, gls_tok name, int parens);
+void sema_const_without_semi(gls_parse *ctx, gls_tok name, gls_val v);
 void sema_arg(gls_parse *ctx, gls_val v);
 void sema_recover(gls_parse *ctx);
 void sema_syntax_error(gls_parse *ctx, int major, gls_tok tok);

@@ -60,6 +60,32 @@ static const char *const all_words[] = {"vert", "col", "tex", "color", "texmode"
                                         "trans", "rot", "scale", "transform", "push", "pop", "call",
                                         "poly", "qstrip", "tstrip", "tfan", "const"};
 
+/* Names people bring from OpenGL and other scene languages, for "did you
+ * mean" (gls_suggest_alias also takes their OpenGL spellings: glRotatef,
+ * glVertex3f, glPushMatrix, glTexCoord2f, glColor3ub, glMultMatrixd, ...).
+ * The real names are the keys of instrs[] and gls_prim_name. */
+static const gls_alias aliases[] = {
+    {"rotate", "rot"},          {"rotation", "rot"},
+    {"translate", "trans"},     {"translation", "trans"},   {"move", "trans"},
+    {"scaling", "scale"},       {"scl", "scale"},
+    {"vertex", "vert"},         {"point", "vert"},
+    {"colour", "color"},        {"rgb", "color"},           {"rgba", "color"},
+    {"texcoord", "tex"},        {"texcoords", "tex"},       {"uv", "tex"},
+    {"bindtexture", "texture"}, {"settexture", "texture"},
+    {"texenv", "texmode"},      {"texturemode", "texmode"}, {"texture_mode", "texmode"},
+    {"notex", "notexture"},     {"untexture", "notexture"}, {"disabletexture", "notexture"},
+    {"pushmatrix", "push"},     {"save", "push"},           {"popmatrix", "pop"},          {"restore", "pop"},
+    {"multmatrix", "transform"}, {"matrix", "transform"},
+    {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},
+    {"define", "const"},        {"let", "const"},           {"var", "const"},
+    {"begin", "poly"},          {"polygon", "poly"},        {"triangle", "poly"},          {"triangles", "poly"},
+    {"quad", "poly"},           {"quads", "poly"},
+    {"quadstrip", "qstrip"},    {"quad_strip", "qstrip"},
+    {"trianglestrip", "tstrip"}, {"triangle_strip", "tstrip"}, {"tristrip", "tstrip"},
+    {"trianglefan", "tfan"},    {"triangle_fan", "tfan"},   {"trifan", "tfan"},
+};
+#define NALIASES (sizeof aliases / sizeof aliases[0])
+
 static int tok_is(gls_tok t, const char *s)
 {
     size_t n = strlen(s);
@@ -126,7 +152,8 @@ void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
                 (int)name.len, name.p, (int)name.len, name.p);
             return;
         }
-        const char *s = gls_suggest(name.p, name.len, all_words, sizeof all_words / sizeof all_words[0]);
+        const char *s =
+            gls_suggest_alias(name.p, name.len, all_words, sizeof all_words / sizeof all_words[0], aliases, NALIASES);
         if (s)
             ERR(ctx, name.line, name.col, "unknown instruction '%.*s'; did you mean '%s'?", (int)name.len, name.p, s);
         else
@@ -278,6 +305,7 @@ static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
         size_t l = strlen(gls_texmode_name[m]);
         if (a[0].len == l && memcmp(a[0].s, gls_texmode_name[m], l) == 0) {
             emit_u(ctx, GLS_OP_TEXMODE, m, name.line);
+            gls_texuse_mode(&ctx->texuse, m != GLS_MODE_COLOR, name.line);
             return;
         }
     }
@@ -310,6 +338,8 @@ static void h_texture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
         return;
     }
     emit_u(ctx, GLS_OP_TEXTURE, r, name.line);
+    if (gls_texuse_select(&ctx->texuse, gls_tok_loc(ctx, name.line, name.col), a->s + 1, a->len - 2))
+        ERR(ctx, name.line, name.col, "out of memory");
 }
 
 static void h_notexture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
@@ -317,6 +347,7 @@ static void h_notexture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned
     (void)a, (void)n;
     gls_insn in = {.op = GLS_OP_NOTEXTURE};
     emit(ctx, &in, name.line);
+    gls_texuse_deselect(&ctx->texuse);
 }
 
 static void h_trans(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
@@ -360,6 +391,7 @@ static void h_push(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         ctx->depth_overflow++; /* its pop must not complain as well */
         return;
     }
+    gls_texuse_push(&ctx->texuse, ctx->depth);
     ctx->push_tok[ctx->depth++] = name;
     gls_insn in = {.op = GLS_OP_PUSH};
     emit(ctx, &in, name.line);
@@ -379,6 +411,7 @@ static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         return;
     }
     ctx->depth--;
+    gls_texuse_pop(&ctx->texuse, ctx->depth);
     gls_insn in = {.op = GLS_OP_POP};
     emit(ctx, &in, name.line);
 }
@@ -396,6 +429,7 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         return;
     }
     emit_u(ctx, GLS_OP_CALL, r, name.line);
+    gls_texuse_call(&ctx->texuse);
 }
 
 /* ---- primitive blocks ------------------------------------------------------ */
@@ -413,7 +447,8 @@ void sema_block_open(gls_parse *ctx, gls_tok name)
         int is_instr = 0;
         for (size_t i = 0; i < NINSTRS; i++)
             is_instr |= tok_is(name, instrs[i].name);
-        const char *s = is_instr ? NULL : gls_suggest(name.p, name.len, gls_prim_name, GLS_PRIM_COUNT);
+        const char *s =
+            is_instr ? NULL : gls_suggest_alias(name.p, name.len, gls_prim_name, GLS_PRIM_COUNT, aliases, NALIASES);
         if (s)
             ERR(ctx, name.line, name.col, "unknown primitive '%.*s'; did you mean '%s'?", (int)name.len, name.p, s);
         else
@@ -461,6 +496,7 @@ void sema_block_close(gls_parse *ctx, gls_tok rbrace)
     in.u[3] = ctx->prim_has_col ? ctx->prim_col0 : GLS_NONE;
     in.u[4] = ctx->prim_has_tc ? ctx->prim_tc0 : GLS_NONE;
     emit(ctx, &in, t.line);
+    gls_texuse_draw(&ctx->texuse);
 }
 
 /* ---- constants and expressions -------------------------------------------- */
@@ -517,6 +553,53 @@ void sema_const(gls_parse *ctx, gls_tok name, gls_val v)
     ctx->consts[h] = c;
 }
 
+/* ---- a missing ';' --------------------------------------------------------- */
+
+/* A statement's grammar rule without ';' was reduced.  If the token that
+ * made the parser reduce it can follow a statement (the next statement's
+ * first token, '}' or the end of the file), only the ';' is missing: the
+ * statement is compiled as usual and one error points just after its last
+ * token.  Otherwise the token is a syntax error of its own, reported next
+ * by the parser, and the statement is dropped as error recovery would. */
+static int only_semi_missing(gls_parse *ctx)
+{
+    int m = ctx->cur_major;
+    if (m == TK_IDENT || m == TK_CONST || m == TK_RBRACE || m == 0)
+        return 1;
+    ctx->nargs = 0;
+    ctx->too_many_args = 0;
+    return 0;
+}
+
+enum { FORM_WORD, FORM_PARENS, FORM_CONST };
+
+/* "expected ';' after 'push'", "... 'trans(...)'", "... 'const a = ...'",
+ * just after the statement's last token (the one before the lookahead). */
+static void missing_semi(gls_parse *ctx, int form, gls_tok name)
+{
+    gls_tok end = ctx->prev;
+    int n = (int)(name.len > 40 ? 40 : name.len);
+    ERR(ctx, end.line, end.col + end.len, "syntax error: expected ';' after '%s%.*s%s'",
+        form == FORM_CONST ? "const " : "", n, name.p,
+        form == FORM_CONST ? " = ..." : form == FORM_PARENS ? "(...)" : "");
+}
+
+void sema_stmt_without_semi(gls_parse *ctx, gls_tok name, int parens)
+{
+    if (!only_semi_missing(ctx))
+        return;
+    sema_stmt(ctx, name, parens);
+    missing_semi(ctx, parens ? FORM_PARENS : FORM_WORD, name);
+}
+
+void sema_const_without_semi(gls_parse *ctx, gls_tok name, gls_val v)
+{
+    if (!only_semi_missing(ctx))
+        return;
+    sema_const(ctx, name, v);
+    missing_semi(ctx, FORM_CONST, name);
+}
+
 void sema_arg(gls_parse *ctx, gls_val v)
 {
     /* keep counting past the last slot, so the message says how many */
@@ -557,10 +640,7 @@ void sema_syntax_error(gls_parse *ctx, int major, gls_tok tok)
        is explained by that error already */
     if (major == 0 && ctx->lex_eof_error)
         return;
-    if (ctx->prev_major == TK_RPAREN && major == TK_IDENT)
-        ERR(ctx, tok.line, tok.col, "syntax error: unexpected '%.*s' (missing ';' after the previous statement?)",
-            (int)(tok.len > 40 ? 40 : tok.len), tok.p);
-    else if (major == 0 && ctx->in_prim)
+    if (major == 0 && ctx->in_prim)
         ERR(ctx, ctx->prim_tok.line, ctx->prim_tok.col, "syntax error: '%.*s' block is not closed with '}'",
             (int)ctx->prim_tok.len, ctx->prim_tok.p);
     else if (d)

@@ -1,5 +1,7 @@
-/* Texture decoding through stb_image.  TGA must have 4 channels (RGBA), as
- * the original system required; PNG, JPEG and BMP are converted to RGBA.
+/* Texture decoding through stb_image.  Every format is converted to RGBA:
+ * TGA, PNG, JPEG and BMP with 1 (grey), 2 (grey + alpha), 3 (RGB) or 4
+ * channels; a missing alpha channel means opaque.  stb_image swaps TGA's
+ * BGR(A) byte order to RGB(A) and honours its origin bit.
  * Alpha is made binary here (transparent below 0.5), once, at compile time,
  * so the bundle holds exactly what the player alpha-tests. */
 #include <stdlib.h>
@@ -84,8 +86,8 @@ static int png_chunk_overrun(const unsigned char *d, size_t len)
     return 0;
 }
 
-int gls_texture_probe(const unsigned char *data, size_t len, int is_tga, const char *path, int *w, int *h,
-                      char *why, size_t whylen)
+int gls_texture_probe(const unsigned char *data, size_t len, const char *path, int *w, int *h, char *why,
+                      size_t whylen)
 {
     int comp;
     if (jpeg_bad_huffman(data, len)) {
@@ -112,19 +114,14 @@ int gls_texture_probe(const unsigned char *data, size_t len, int is_tga, const c
                  (unsigned long long)*w * (unsigned long long)*h, (unsigned long long)GLS_MAX_TEXELS);
         return -1;
     }
-    if (is_tga && comp != 4) {
-        snprintf(why, whylen, "%s has %d channel%s; a TGA texture must be RGBA (4 channels)", path, comp,
-                 comp == 1 ? "" : "s");
-        return -1;
-    }
     return 0;
 }
 
-int gls_texture_decode_memory(const unsigned char *data, size_t len, int is_tga, const char *path, gls_texture *out,
-                              char *why, size_t whylen)
+int gls_texture_decode_memory(const unsigned char *data, size_t len, const char *path, gls_texture *out, char *why,
+                              size_t whylen)
 {
     int w, h, comp;
-    if (gls_texture_probe(data, len, is_tga, path, &w, &h, why, whylen))
+    if (gls_texture_probe(data, len, path, &w, &h, why, whylen))
         return -1;
     unsigned char *px = stbi_load_from_memory(data, (int)len, &w, &h, &comp, 4);
     if (!px) {
@@ -161,9 +158,7 @@ int gls_texture_decode(const char *path, gls_texture *out, char *why, size_t why
         snprintf(why, whylen, "%s", ioerr);
         return -1;
     }
-    size_t n = strlen(path);
-    int is_tga = n >= 4 && strcmp(path + n - 4, ".tga") == 0;
-    int r = gls_texture_decode_memory(data, len, is_tga, path, out, why, whylen);
+    int r = gls_texture_decode_memory(data, len, path, out, why, whylen);
     free(data);
     return r;
 }

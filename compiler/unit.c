@@ -75,6 +75,7 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
     ctx->u = u;
     ctx->d = d;
     ctx->errors_at_start = d->errors;
+    gls_texuse_init(&ctx->texuse, u->is_top);
     unsigned errors0 = d->errors;
     void *parser = glsParseAlloc(malloc, ctx);
     if (!parser) {
@@ -87,9 +88,10 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
     int code;
     do {
         code = gls_lex(&lx, &t, ctx);
+        ctx->prev = ctx->last;
         ctx->last = t;
+        ctx->cur_major = code;
         glsParse(parser, code, t);
-        ctx->prev_major = code;
     } while (code != 0 && !ctx->stop && !d->stopped);
     glsParseFree(parser, free);
 
@@ -99,6 +101,7 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
         gls_tok p = ctx->push_tok[i];
         gls_error_at(d, gls_tok_loc(ctx, p.line, p.col), "'push' without a matching 'pop' before the end of the object");
     }
+    gls_texuse_finish(&ctx->texuse, d);
     gls_insn end = {.op = GLS_OP_END};
     if (gls_unit_emit(u, &end, lx.line))
         gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");

@@ -34,6 +34,8 @@ typedef struct gls_unit {
     gls_vec4 *pos; uint32_t npos, pos_cap;
     gls_rgba *col; uint32_t ncol, col_cap;
     gls_st *tc;    uint32_t ntc, tc_cap;
+    int is_top;              /* compiled as the top object: its initial
+                                texture mode is known to be color          */
     /* linker state */
     int state;               /* 0 unvisited, 1 on the DFS stack, 2 done   */
     uint32_t height;         /* call edges in the longest chain below it  */

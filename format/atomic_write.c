@@ -29,26 +29,41 @@ static int write_all(int fd, const void *data, size_t len)
     return 0;
 }
 
+/* What an existing non-regular file is, for messages; NULL for a regular
+ * file or none. */
+static const char *special_kind(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || S_ISREG(st.st_mode))
+        return NULL;
+    if (S_ISDIR(st.st_mode))
+        return "it is a directory";
+    if (S_ISFIFO(st.st_mode))
+        return "it is a FIFO (named pipe), not a regular file";
+    if (S_ISCHR(st.st_mode))
+        return "it is a character device, not a regular file";
+    if (S_ISBLK(st.st_mode))
+        return "it is a block device, not a regular file";
+    if (S_ISSOCK(st.st_mode))
+        return "it is a socket, not a regular file";
+    return "it is not a regular file";
+}
+
+const char *gls_write_error(const char *path, int err)
+{
+    const char *kind = special_kind(path);
+    return kind ? kind : strerror(err);
+}
+
 int gls_write_file_atomic(const char *path, const void *data, size_t len)
 {
-    /* An existing target that is not a regular file (/dev/null, a FIFO, a
-       terminal) is written in place: renaming over it would replace the
-       device node itself. */
-    struct stat st;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        if (S_ISDIR(st.st_mode)) {
-            errno = EISDIR;
-            return -1;
-        }
-        int fd = open(path, O_WRONLY);
-        if (fd < 0)
-            return -1;
-        int r = write_all(fd, data, len);
-        int e = errno;
-        if (close(fd) != 0 && r == 0)
-            return -1;
-        errno = e;
-        return r;
+    /* An existing target that is not a regular file is refused without
+       being opened: renaming over it would replace a FIFO or a device node
+       with a plain file, and writing into it could block for ever (a FIFO
+       nobody reads) or send the bytes nowhere. */
+    if (special_kind(path)) {
+        errno = EEXIST;
+        return -1;
     }
     size_t n = strlen(path);
     char *tmp = malloc(n + 32);

@@ -8,10 +8,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "bundle.h"
 #include "road.h"
 #include "camera.h"
+#include "mkdirs.h"
+#include "stdout_check.h"
 #include "trajectory.h"
 
 static const char USAGE[] =
@@ -72,15 +73,6 @@ static char *read_all(const char *path, size_t *len, char *err, size_t errlen)
     return b;
 }
 
-static int mkdir_p(const char *path)
-{
-    if (mkdir(path, 0777) == 0 || errno == EEXIST) {
-        struct stat st;
-        return stat(path, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
-    }
-    return -1;
-}
-
 static int put(const char *dir, const char *name, const road_buf *b)
 {
     size_t n = strlen(dir) + strlen(name) + 2;
@@ -90,7 +82,7 @@ static int put(const char *dir, const char *name, const road_buf *b)
     snprintf(p, n, "%s/%s", dir, name);
     int r = gls_write_file_atomic(p, b->text, b->len);
     if (r)
-        fprintf(stderr, "glsroad: error: cannot write %s: %s\n", p, strerror(errno));
+        fprintf(stderr, "glsroad: error: cannot write %s: %s\n", p, gls_write_error(p, errno));
     free(p);
     return r;
 }
@@ -131,7 +123,7 @@ static int make_road(const char *in, const char *dir)
     if (!sub)
         goto out;
     snprintf(sub, n, "%s/roadobj", dir);
-    if (mkdir_p(dir) || mkdir_p(sub)) {
+    if (gls_mkdir_p(sub)) {
         fprintf(stderr, "glsroad: error: cannot create directory %s: %s\n", sub, strerror(errno));
         free(sub);
         goto out;
@@ -227,15 +219,12 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
         p += n + (nl ? 1 : 0);
     }
     free(text);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "glsroad: error: cannot write the camera: %s\n", strerror(errno));
-        return 1;
-    }
-    return 0;
+    return 0; /* main's exit check reports a failed write */
 }
 
 int main(int argc, char **argv)
 {
+    gls_check_stdout_at_exit("glsroad");
     const char *in = NULL, *out = NULL;
     if (argc >= 2 && !strcmp(argv[1], "--camera-at")) {
         if (argc != 5)

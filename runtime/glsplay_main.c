@@ -6,6 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "player.h"
+#include "stdout_check.h"
 #include "trajectory.h"
 
 static const char usage_text[] =
@@ -146,6 +147,7 @@ static int parse_filter(const char *s, gls_aa_opts *o)
 
 int main(int argc, char **argv)
 {
+    gls_check_stdout_at_exit("glsplay");
     gls_play_opts o;
     memset(&o, 0, sizeof o);
     o.frame_end = UINT64_MAX;

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include "aa_render.h"
 #include "glctx.h"
+#include "mkdirs.h"
 #include "outputs.h"
 #include "player.h"
 #include "trajectory.h"
@@ -19,35 +20,6 @@ int gls_output_path(char *buf, size_t len, const char *outdir, const char *name,
 {
     int k = snprintf(buf, len, "%s/%s/%s_%06u.%s", outdir, name, kind, frame, ext);
     return k < 0 || (size_t)k >= len ? -1 : 0;
-}
-
-/* mkdir -p: create path and its missing parents. */
-static int make_dirs(const char *path)
-{
-    char tmp[MAXPATH];
-    size_t n = strlen(path);
-    if (n == 0 || n >= sizeof tmp) {
-        errno = ENAMETOOLONG;
-        return -1;
-    }
-    memcpy(tmp, path, n + 1);
-    for (size_t i = 1; i <= n; i++) {
-        if (tmp[i] != '/' && tmp[i] != 0)
-            continue;
-        char save = tmp[i];
-        tmp[i] = 0;
-        if (mkdir(tmp, 0777) && errno != EEXIST)
-            return -1;
-        tmp[i] = save;
-    }
-    struct stat st;
-    if (stat(path, &st))
-        return -1;
-    if (!S_ISDIR(st.st_mode)) {
-        errno = ENOTDIR;
-        return -1;
-    }
-    return 0;
 }
 
 /* Camera name: the file name without directory and without ".cam". */
@@ -69,7 +41,7 @@ static char *camera_name(const char *path)
 static int write_buf(FILE *errs, const char *path, gls_buf *b)
 {
     if (gls_write_file_atomic(path, b->data, b->len)) {
-        fprintf(errs, "glsplay: error: cannot write %s: %s\n", path, strerror(errno));
+        fprintf(errs, "glsplay: error: cannot write %s: %s\n", path, gls_write_error(path, errno));
         return -1;
     }
     return 0;
@@ -358,7 +330,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     for (size_t i = 0; i < o->ncameras; i++) {
         char dir[MAXPATH];
         int k = snprintf(dir, sizeof dir, "%s/%s", o->outdir, names[i]);
-        if (k < 0 || (size_t)k >= sizeof dir || make_dirs(dir)) {
+        if (k < 0 || (size_t)k >= sizeof dir || gls_mkdir_p(dir)) {
             fprintf(errs, "glsplay: error: cannot create output directory %s: %s\n", dir,
                     k < 0 || (size_t)k >= sizeof dir ? "path too long" : strerror(errno));
             goto out;

@@ -24,7 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
+#include "mkdirs.h"
 
 #define PI 3.14159265358979323846
 
@@ -177,15 +177,10 @@ static void finish(const char *name, const char *what, const char *origin)
     for (const char *p = name; *p && n < (int)sizeof path - 8; p++)
         path[n++] = *p == '.' ? '/' : *p;
     snprintf(path + n, sizeof path - (size_t)n, ".scene");
-    for (char *p = path + strlen(outroot) + 1; *p; p++)
-        if (*p == '/') {
-            *p = 0;
-            if (mkdir(path, 0755) && errno != EEXIST) {
-                fprintf(stderr, "gen_objects: cannot create %s: %s\n", path, strerror(errno));
-                exit(1);
-            }
-            *p = '/';
-        }
+    if (gls_mkdir_parents(path)) {
+        fprintf(stderr, "gen_objects: cannot create the directory of %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
     FILE *f = fopen(path, "w");
     if (!f) {
         fprintf(stderr, "gen_objects: cannot write %s: %s\n", path, strerror(errno));
@@ -1228,7 +1223,7 @@ int main(int argc, char **argv)
         return 2;
     }
     outroot = argv[1];
-    if (mkdir(outroot, 0755) && errno != EEXIST) {
+    if (gls_mkdir_p(outroot)) {
         fprintf(stderr, "gen_objects: cannot create %s: %s\n", outroot, strerror(errno));
         return 1;
     }

@@ -19,8 +19,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <stb/stb_image_write.h>
+#include "mkdirs.h"
 
 #define PI 3.14159265358979323846
 
@@ -722,20 +722,6 @@ static const entry textures[] = {
     {"objects/tex/Speckle.tga", objects_speckle},
 };
 
-static int mkdirs(char *path)
-{
-    for (char *p = path + 1; *p; p++) {
-        if (*p != '/')
-            continue;
-        *p = 0;
-        int r = mkdir(path, 0755);
-        *p = '/';
-        if (r != 0 && errno != EEXIST)
-            return -1;
-    }
-    return 0;
-}
-
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -747,7 +733,7 @@ int main(int argc, char **argv)
         char path[4096];
         snprintf(path, sizeof path, "%s/%s", argv[1], textures[i].path);
         image im = textures[i].make();
-        if (mkdirs(path) || !stbi_write_tga(path, im.w, im.h, 4, im.px)) {
+        if (gls_mkdir_parents(path) || !stbi_write_tga(path, im.w, im.h, 4, im.px)) {
             fprintf(stderr, "gen_textures: cannot write %s\n", path);
             return 1;
         }

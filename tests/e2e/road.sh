@@ -27,6 +27,9 @@ expect road_usage_no_output 2 "glsroad: error: no output directory: give -o DIR"
 expect road_usage_unknown_option 2 "glsroad: error: unknown option '--frobnicate'" -- "$R" --frobnicate
 expect road_help 0 "" -- "$R" --help
 expect road_missing_file 1 "$t/none.road: error: cannot open: No such file or directory" -- "$R" "$t/none.road" -o "$t/o"
+# -o creates missing parent directories, like glsc -o and glsplay -o
+expect road_output_parents_created 0 "" -- "$R" examples/road/demo.road -o "$t/new/sub/road"
+[ -s "$t/new/sub/road/road.scene" ] || fail road_output_parents_created "no $t/new/sub/road/road.scene"
 
 # description errors: FILE:LINE:COL: error: message (then the source line
 # and a caret, checked once below), exit 1

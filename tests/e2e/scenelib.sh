@@ -15,8 +15,10 @@
 #     where stated;
 #   - sign faces show their texture upright and unmirrored from the front;
 #   - vegetation textures have real alpha holes;
-#   - the library bundle holds every object and is up to date, and a scene
-#     linked against it renders byte-identically to the same scene linked
+#   - the library bundle holds every object and is up to date, is the same
+#     bytes whatever the order the files were created in and the order and
+#     spelling of the roots, and a scene linked against it is the same
+#     bundle (bytes) and renders byte-identically to the same scene linked
 #     against the directory tree;
 #   - README.md lists exactly the objects and textures that exist.
 # SCENELIB_KEEP=DIR keeps the renders (DIR/<object>/...) and the work files
@@ -70,6 +72,31 @@ for f in $(cd "$t/tex" && find . -name '*.tga' | sort); do
 done
 if [ -z "$bad" ] && [ -n "$(ls "$t/tex")" ]; then ok scenelib_textures_deterministic
 else fail scenelib_textures_deterministic "differ from $B/textures:$bad $(head -1 "$t/err")"; fi
+
+# ---- the library bundle is the same bytes however it is built ---------------
+# Two copies of the library and of the textures, their files created in
+# opposite orders (so directories list them in different orders), compiled
+# with the roots given in different orders, from a directory where they are
+# spelled scenelib/ and textures/ as in the Makefile's build: every bundle
+# is byte-identical to $B/scenelib.glsb.  Also the root spelled scenelib/
+# or ./scenelib (normalised: source paths do not depend on it).
+copy_tree() { # SRC DST sort-flag
+    (cd "$1" && find . -type d | sort $3) | while read -r d; do mkdir -p "$2/$d"; done
+    (cd "$1" && find . -type f | sort $3) | while read -r f; do cp "$1/$f" "$2/$f"; done
+}
+copy_tree scenelib "$t/a/scenelib" "" && copy_tree "$BIN/textures" "$t/a/textures" ""
+copy_tree scenelib "$t/b/scenelib" -r && copy_tree "$BIN/textures" "$t/b/textures" -r
+bad=""
+(cd "$t/a" && "$BIN/glsc" -I textures --lib scenelib -o lib1.glsb) 2>"$t/err" || bad="$bad build1"
+(cd "$t/b" && "$BIN/glsc" --lib scenelib -I textures -o lib2.glsb) 2>>"$t/err" || bad="$bad build2"
+(cd "$t/b" && "$BIN/glsc" --lib scenelib/ -I ./textures/ -o lib3.glsb) 2>>"$t/err" || bad="$bad build3"
+(cd "$t/a" && "$BIN/glsc" -I ./textures --lib ./scenelib -o lib4.glsb) 2>>"$t/err" || bad="$bad build4"
+for f in "$t/a/lib1.glsb" "$t/b/lib2.glsb" "$t/b/lib3.glsb" "$t/a/lib4.glsb"; do
+    [ -f "$f" ] && ! cmp -s "$f" "$BIN/scenelib.glsb" && bad="$bad $(basename "$f")"
+done
+if [ -z "$bad" ]; then ok scenelib_bundle_deterministic
+else fail scenelib_bundle_deterministic "differ from $B/scenelib.glsb:$bad $(head -1 "$t/err")"; fi
+rm -rf "$t/a" "$t/b"
 
 # ---- per object, calibration, library bundle, README (Python) --------------
 [ -x $PY ] && $PY -c 'import numpy, cv2' 2>/dev/null || { fail scenelib_python "no numpy/cv2 under $PY"; exit 0; }
@@ -489,10 +516,22 @@ for how, roots in (("dir", ["-I", LIB, "-I", TEX]), ("lib", ["-I", libb])):
     rc3, e3, sub = render(b, cam, os.path.join(TMP, how), "image,depth")
     res[how] = (rc, o + e, dis, rc3, e3, sub)
 d, l = res["dir"], res["lib"]
+# the same bytes (scenelib/README.md says "the same bundle"), also with the
+# roots in the other order or spelled with "./" and a trailing "/"
+variants = {"lib": os.path.join(TMP, "lib.glsb")}
+for how, roots in (("dir_reversed", ["-I", TEX, "-I", LIB]), ("dir_spelled", ["-I", "./" + LIB + "/", "-I", TEX + "/"])):
+    variants[how] = os.path.join(TMP, how + ".glsb")
+    rv, ov, ev = run(os.path.join(BIN, "glsc"), *roots, "-o", variants[how], top)
+    if rv:
+        variants[how] = None
+dbytes = open(os.path.join(TMP, "dir.glsb"), "rb").read() if not d[0] else None
+differ = [h for h, f in variants.items() if not f or not os.path.exists(f) or open(f, "rb").read() != dbytes]
 if d[0] or l[0] or d[1] or l[1]:
     fail("scenelib_links_like_directory", "glsc: %s / %s" % (d[1].strip()[:200], l[1].strip()[:200]))
 elif d[2] != l[2]:
     fail("scenelib_links_like_directory", "bundles differ (glsdis)")
+elif differ:
+    fail("scenelib_links_like_directory", "bundle bytes differ from -I scenelib -I textures: %s" % " ".join(differ))
 else:
     ok("scenelib_links_like_directory")
 same = lambda f: open(os.path.join(d[5], f), "rb").read() == open(os.path.join(l[5], f), "rb").read()

@@ -23,7 +23,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     u->src.path = "fuzz.scene";
     u->src.text = text;
     u->src.len = size;
-    gls_diag d = {sink, 0, 0};
+    gls_diag d = {.out = sink};
     gls_compile_source(u, &d);
     gls_unit_free(u);
     return 0;

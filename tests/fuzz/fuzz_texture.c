@@ -25,10 +25,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
        before decoding are covered by the small ones (the probe is the
        product's own header check) */
     int w, h;
-    if (gls_texture_probe(data + 1, size - 1, data[0] & 1, "fuzz", &w, &h, why, sizeof why) == 0 &&
+    if (gls_texture_probe(data + 1, size - 1, "fuzz", &w, &h, why, sizeof why) == 0 &&
         (long long)w * h > (1 << 20))
         return 0;
-    if (gls_texture_decode_memory(data + 1, size - 1, data[0] & 1, "fuzz", &t, why, sizeof why) == 0)
+    if (gls_texture_decode_memory(data + 1, size - 1, "fuzz", &t, why, sizeof why) == 0)
         free(t.rgba);
     return 0;
 }

@@ -1,5 +1,5 @@
 /* Unit tests of the compiler API: texture decoding orientation and alpha
- * binarisation, library override order, and the precision of far-away
+ * binarisation, TGA channel counts, library override order, and the precision of far-away
  * coordinates through source text, compile, write and read. */
 #include <stdlib.h>
 #include <string.h>
@@ -41,6 +41,68 @@ static void test_texture_orientation_and_alpha(void)
     CHECK(px[8] == 0 && px[9] == 0 && px[10] == 255);                  /* bottom-left blue  */
     CHECK(b->textures[0].flags & GLS_TEX_ALPHA_HOLES);
     gls_bundle_free(b);
+}
+
+/* A 2x2 TGA: 18-byte header (image type, bits per pixel, descriptor with
+ * the origin bit 0x20 = top row first), then the pixel bytes as given. */
+static size_t make_tga(uint8_t *f, int type, int bpp, int top_first, const uint8_t *px, size_t npx)
+{
+    memset(f, 0, 18);
+    f[2] = (uint8_t)type;
+    f[12] = 2; /* width  */
+    f[14] = 2; /* height */
+    f[16] = (uint8_t)bpp;
+    f[17] = top_first ? 0x20 : 0;
+    memcpy(f + 18, px, npx);
+    return 18 + npx;
+}
+
+static int texel_is(const gls_texture *t, int i, int r, int g, int b, int a)
+{
+    const uint8_t *p = t->rgba + 4 * i;
+    return p[0] == r && p[1] == g && p[2] == b && p[3] == a;
+}
+
+/* 24-bit (BGR) and 8-bit grey TGA files are textures like RGBA ones:
+ * alpha 255, channels in RGB order, row 0 = top whatever the origin bit.
+ * The image: red, green on top; blue, white below (grey: 0x10, 0x80 on
+ * top; 0xf0, 0x00 below). */
+static void test_tga_rgb_and_grey(void)
+{
+    /* BGR, bottom row first / top row first */
+    static const uint8_t up[] = {255, 0, 0, 255, 255, 255, 0, 0, 255, 0, 255, 0};
+    static const uint8_t down[] = {0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255};
+    /* run-length encoded (type 10), bottom row first: one raw packet of
+       blue and white, then a run of one red and one raw green */
+    static const uint8_t rle[] = {0x01, 255, 0, 0, 255, 255, 255, 0x80, 0, 0, 255, 0x00, 0, 255, 0};
+    static const uint8_t grey[] = {0xf0, 0x00, 0x10, 0x80};
+    const struct {
+        int type, bpp, top_first;
+        const uint8_t *px;
+        size_t n;
+    } cases[] = {{2, 24, 0, up, sizeof up}, {2, 24, 1, down, sizeof down}, {10, 24, 0, rle, sizeof rle},
+                 {3, 8, 0, grey, sizeof grey}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        uint8_t file[64];
+        size_t len = make_tga(file, cases[k].type, cases[k].bpp, cases[k].top_first, cases[k].px, cases[k].n);
+        gls_texture t = {0};
+        char why[256] = "";
+        int r = gls_texture_decode_memory(file, len, "t.tga", &t, why, sizeof why);
+        if (r != 0)
+            printf("  case %zu: %s\n", k, why);
+        CHECK(r == 0);
+        if (r != 0)
+            continue;
+        CHECK(t.width == 2 && t.height == 2 && t.flags == 0);
+        if (cases[k].bpp == 8) {
+            CHECK(texel_is(&t, 0, 0x10, 0x10, 0x10, 255) && texel_is(&t, 1, 0x80, 0x80, 0x80, 255));
+            CHECK(texel_is(&t, 2, 0xf0, 0xf0, 0xf0, 255) && texel_is(&t, 3, 0, 0, 0, 255));
+        } else {
+            CHECK(texel_is(&t, 0, 255, 0, 0, 255) && texel_is(&t, 1, 0, 255, 0, 255));
+            CHECK(texel_is(&t, 2, 0, 0, 255, 255) && texel_is(&t, 3, 255, 255, 255, 255));
+        }
+        free(t.rgba);
+    }
 }
 
 static void write_text(const char *path, const char *text)
@@ -127,6 +189,7 @@ static void test_earlier_root_overrides_library(void)
 int main(void)
 {
     RUN(test_texture_orientation_and_alpha);
+    RUN(test_tga_rgb_and_grey);
     RUN(test_far_coordinates_exact_through_bundle);
     RUN(test_earlier_root_overrides_library);
     CHECK_EXIT();

@@ -1,0 +1,12 @@
+/* Every tool's standard output is checked at exit: a dump, an --explain
+ * plan or a camera file that did not reach its destination (a full disk,
+ * a closed pipe, >/dev/full) must not exit 0. */
+#ifndef GLS_STDOUT_CHECK_H
+#define GLS_STDOUT_CHECK_H
+
+/* Call first thing in main.  At exit, standard output is flushed and
+ * closed; if any write to it failed, "TOOL: error: cannot write standard
+ * output: REASON" goes to standard error and the exit status becomes 1.
+ * tool must stay valid until exit (a string literal). */
+void gls_check_stdout_at_exit(const char *tool);
+#endif
