@@ -12,6 +12,7 @@
 #include "bundle.h"
 #include "road.h"
 #include "camera.h"
+#include "textfile.h"
 #include "trajectory.h"
 
 static const char USAGE[] =
@@ -29,47 +30,6 @@ static int usage_error(const char *fmt, const char *arg)
     fprintf(stderr, fmt, arg);
     fprintf(stderr, "\n%s", USAGE);
     return 2;
-}
-
-static char *read_all(const char *path, size_t *len, char *err, size_t errlen)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    size_t cap = 65536, n = 0;
-    char *b = malloc(cap + 1);
-    while (b) {
-        size_t r = fread(b + n, 1, cap - n, f);
-        n += r;
-        if (n < cap)
-            break;
-        if (cap >= (1u << 30)) {
-            snprintf(err, errlen, "%s: error: larger than 1 GiB", path);
-            free(b);
-            fclose(f);
-            return NULL;
-        }
-        char *nb = realloc(b, 2 * cap + 1);
-        if (!nb) {
-            free(b);
-            b = NULL;
-            break;
-        }
-        b = nb;
-        cap *= 2;
-    }
-    if (!b || ferror(f)) {
-        snprintf(err, errlen, "%s: error: cannot read: %s", path, b ? strerror(errno) : "out of memory");
-        free(b);
-        fclose(f);
-        return NULL;
-    }
-    fclose(f);
-    b[n] = 0;
-    *len = n;
-    return b;
 }
 
 static int mkdir_p(const char *path)
@@ -99,7 +59,7 @@ static int make_road(const char *in, const char *dir)
 {
     char err[1024];
     size_t len;
-    char *text = read_all(in, &len, err, sizeof err);
+    char *text = gls_text_read(in, ROAD_MAX_FILE, "road description", &len, err, sizeof err);
     if (!text) {
         fprintf(stderr, "%s\n", err);
         return 1;
@@ -168,7 +128,7 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
     if (gls_traj_range(frame_s, &first, &end, err, sizeof err) || end != first + 1)
         return usage_error("--camera-at: '%s' is not a frame number", frame_s);
     size_t len;
-    char *text = read_all(cam_path, &len, err, sizeof err);
+    char *text = gls_text_read(cam_path, GLS_CAMERA_MAX_FILE, "camera file", &len, err, sizeof err);
     if (!text) {
         fprintf(stderr, "%s\n", err);
         return 1;

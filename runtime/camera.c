@@ -11,6 +11,7 @@
 #include "numfmt.h"
 #include "srcline.h"
 #include "suggest.h"
+#include "textfile.h"
 
 enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_COUNT };
 static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
@@ -81,22 +82,20 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
     unsigned seen[K_COUNT] = {0}; /* line where each key was given, 0 = absent */
     unsigned vcol[K_COUNT] = {0}; /* column of its first value              */
     unsigned last = 0;            /* last line holding a key               */
-    unsigned line = 0;
-    size_t p = 0;
-    char buf[4096];
-    while (p < len) {
-        size_t e = p;
-        while (e < len && text[e] != '\n')
-            e++;
-        line++;
-        size_t n = e - p;
-        if (n >= sizeof buf) {
-            errf(err, errlen, text, len, fname, line, 1, "line longer than %zu bytes", sizeof buf - 1);
+    gls_text_lines it = {text, len, 0, 0};
+    const char *start;
+    size_t n;
+    int got;
+    char buf[GLS_TEXT_MAX_LINE + 1];
+    while ((got = gls_text_next_line(&it, &start, &n)) != 0) {
+        unsigned line = it.line;
+        if (got < 0) {
+            errf(err, errlen, text, len, fname, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes",
+                 GLS_TEXT_MAX_LINE);
             return -1;
         }
-        memcpy(buf, text + p, n);
+        memcpy(buf, start, n);
         buf[n] = 0;
-        p = e + 1;
         for (size_t i = 0; i < n; i++)
             if (buf[i] == '#' || buf[i] == '\r')
                 buf[i] = 0;
@@ -206,29 +205,10 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
 
 int gls_camera_load(const char *path, gls_camera *cam, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: error: cannot open camera file: %s", path, strerror(errno));
+    size_t n;
+    char *text = gls_text_read(path, GLS_CAMERA_MAX_FILE, "camera file", &n, err, errlen);
+    if (!text)
         return -1;
-    }
-    /* Camera files are a few hundred bytes; 1 MiB is a generous cap that
-     * keeps a wrong path (a bundle, a device) from being slurped whole. */
-    size_t cap = 1u << 20, n = 0;
-    char *text = malloc(cap);
-    if (!text) {
-        fclose(f);
-        snprintf(err, errlen, "%s: error: out of memory", path);
-        return -1;
-    }
-    n = fread(text, 1, cap, f);
-    int bad = ferror(f);
-    int more = !bad && n == cap && fgetc(f) != EOF;
-    fclose(f);
-    if (bad || more) {
-        free(text);
-        snprintf(err, errlen, "%s: error: %s", path, bad ? "read error" : "camera file larger than 1 MiB");
-        return -1;
-    }
     int r = gls_camera_parse(text, n, path, cam, err, errlen);
     free(text);
     return r;

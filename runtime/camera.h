@@ -12,6 +12,9 @@
 #include <stdint.h>
 
 #define GLS_CAMERA_MAX_DIM 16384u
+/* Camera files are a few hundred bytes; the cap keeps a wrong path (a
+ * bundle, a device) from being read whole (spec/camera.md). */
+#define GLS_CAMERA_MAX_FILE ((size_t)1 << 20)
 
 typedef struct {
     uint32_t width, height;

@@ -6,17 +6,18 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include "textfile.h"
 #include "trajectory.h"
 
 struct gls_traj {
     FILE *f;
     char *path;
-    char *buf;
-    size_t cap;
     unsigned line;
     int have_prev;
     uint64_t prev_frame;
     double prev_time;
+    char buf[GLS_TEXT_MAX_LINE + 1]; /* one line: memory stays bounded */
 };
 
 static int fail(const gls_traj *t, char *err, size_t errlen, const char *fmt, ...)
@@ -45,6 +46,12 @@ gls_traj *gls_traj_open(const char *path, char *err, size_t errlen)
         free(t);
         return NULL;
     }
+    struct stat st;
+    if (fstat(fileno(t->f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
+        gls_traj_close(t);
+        return NULL;
+    }
     return t;
 }
 
@@ -54,7 +61,6 @@ void gls_traj_close(gls_traj *t)
         return;
     if (t->f)
         fclose(t->f);
-    free(t->buf);
     free(t->path);
     free(t);
 }
@@ -95,11 +101,14 @@ static int parse_u64(const char *s, uint64_t *out)
 int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
 {
     for (;;) {
-        errno = 0;
-        ssize_t n = getline(&t->buf, &t->cap, t->f);
-        if (n < 0) {
-            if (ferror(t->f))
-                return fail(t, err, errlen, "read error: %s", strerror(errno ? errno : EIO));
+        size_t n;
+        int got = gls_text_getline(t->f, t->buf, &n);
+        if (got == -2) {
+            int e = errno ? errno : EIO;
+            t->line++;
+            return fail(t, err, errlen, "read error: %s", strerror(e));
+        }
+        if (got == 0) {
             if (!t->have_prev) {
                 t->line = t->line ? t->line : 1;
                 return fail(t, err, errlen, "no frames in the trajectory");
@@ -107,7 +116,9 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
             return 0;
         }
         t->line++;
-        if ((size_t)n != strlen(t->buf))
+        if (got < 0)
+            return fail(t, err, errlen, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
+        if (memchr(t->buf, 0, n))
             return fail(t, err, errlen, "NUL byte in the line");
         char *hash = strchr(t->buf, '#');
         if (hash)

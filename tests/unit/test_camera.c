@@ -3,6 +3,7 @@
 #include <string.h>
 #include "camera.h"
 #include "check.h"
+#include "textfile.h"
 
 static const char good[] =
     "# a camera\n"
@@ -89,6 +90,51 @@ static void test_parse_errors(void)
     CHECK(parse("width 10\n\n# c\nbogus 1\n", &c, err) == -1 && strncmp(err, "x.cam:4:", 8) == 0);
 }
 
+/* Lines over 200 bytes get a window of the line around the column, with
+   "..." at the cut ends, and the caret under the column; lines over
+   GLS_TEXT_MAX_LINE bytes are refused at the byte where they overflow. */
+static void test_long_lines(void)
+{
+    static char text[8192];
+    char err[1024];
+    gls_camera c;
+    /* the error at column 4 of a 300-byte line: window from the start */
+    snprintf(text, sizeof text, "%s", good);
+    char *cy = strstr(text, "cy 257.8\n");
+    memmove(cy + 300, cy + 8, strlen(cy + 8) + 1);
+    memcpy(cy, "cy 2x7.8 #", 10);
+    memset(cy + 10, 'c', 290);
+    CHECK(parse(text, &c, err) == -1);
+    const char *nl = strchr(err, '\n');
+    CHECK_MSG(nl && strncmp(nl + 1, "cy 2x7.8 #ccc", 13) == 0 && strstr(nl + 1, "c...\n   ^") != NULL &&
+                  strlen(strstr(nl + 1, "...\n")) == 8,
+              "'%s'", err);
+    /* the error at column 258 of a 400-byte line: a window around it */
+    snprintf(text, sizeof text, "%s", good);
+    char *t = strstr(text, "T 0.2 -0.1 0.5\n");
+    memmove(t + 400, t + 14, strlen(t + 14) + 1);
+    memset(t, ' ', 400);
+    memcpy(t, "T 0 0", 5);
+    memcpy(t + 257, "q  # end", 8);
+    CHECK(parse(text, &c, err) == -1);
+    CHECK_MSG(strstr(err, ":10:258: error: key 'T': 'q' is not a finite number\n...") != NULL, "'%s'", err);
+    nl = strchr(err, '\n');
+    const char *caret = nl ? strchr(nl + 1, '\n') : NULL;
+    /* "..." then bytes 177.. of the line: q (byte 257) is at offset 83 */
+    CHECK_MSG(caret && strncmp(nl + 1 + 3 + 80, "q  # end", 8) == 0 && strcmp(caret + 1 + 83, "^") == 0 &&
+                  strspn(caret + 1, " ") == 83,
+              "'%s'", err);
+    /* a line over the limit (6000 bytes) */
+    snprintf(text, sizeof text, "width 640\n# %0*d\n", 5998, 0);
+    CHECK(parse(text, &c, err) == -1);
+    CHECK_MSG(strncmp(err, "x.cam:2:4096: error: line longer than 4095 bytes\n...000", 55) == 0, "'%s'", err);
+    nl = strchr(strchr(err, '\n') + 1, '\n');
+    CHECK_MSG(nl && strspn(nl + 1, " ") == 83 && strcmp(nl + 1 + 83, "^") == 0 && strstr(err, "000...\n"), "'%s'", err);
+    /* at the limit: a line of exactly GLS_TEXT_MAX_LINE bytes is read */
+    snprintf(text, sizeof text, "%s# %0*d\n", good, (int)GLS_TEXT_MAX_LINE - 2, 0);
+    CHECK_MSG(parse(text, &c, err) == 0, "'%s'", err);
+}
+
 static void test_load_missing_file(void)
 {
     gls_camera c;
@@ -152,6 +198,7 @@ int main(void)
 {
     RUN(test_parse_good);
     RUN(test_parse_errors);
+    RUN(test_long_lines);
     RUN(test_load_missing_file);
     RUN(test_matrices_map_to_pixels);
     CHECK_EXIT();

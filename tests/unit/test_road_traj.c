@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 #include "check.h"
+#include "textfile.h"
 #include "trajectory.h"
 
 static char dir[64];
@@ -133,6 +134,34 @@ static void test_range(void)
     CHECK_STR(err, "--frames: 'x' is not a frame range (A:B for frames A to B-1, A:, :B, or A)");
 }
 
+/* A line is read only up to GLS_TEXT_MAX_LINE bytes: a longer one is an
+   error at its line, and an endless one (/dev/zero) costs no memory. */
+static void test_line_bound(void)
+{
+    const char *I = "1 0 0 0 1 0 0 0 1";
+    static char t[3 * GLS_TEXT_MAX_LINE];
+    /* exactly at the limit: read */
+    int k = snprintf(t, sizeof t, "0 0 %s 0 0 0 #", I);
+    memset(t + k, 'c', GLS_TEXT_MAX_LINE - (size_t)k);
+    strcpy(t + GLS_TEXT_MAX_LINE, "\n");
+    const char *p = write_file("at_limit.txt", t);
+    char err[512] = "";
+    gls_traj_pose q;
+    CHECK_MSG(read_all(p, &q, err, sizeof err) == 1, "%s", err);
+    /* one byte more, on line 2 */
+    k = snprintf(t, sizeof t, "0 0 %s 0 0 0\n1 1 %s 0 0 0 #", I, I);
+    memset(t + k, 'c', 2 * GLS_TEXT_MAX_LINE);
+    strcpy(t + 2 * GLS_TEXT_MAX_LINE, "\n");
+    expect_error("long.txt", t, "long.txt:2: error: line longer than 4095 bytes");
+    /* no newline at all */
+    struct rusage r0, r1;
+    getrusage(RUSAGE_SELF, &r0);
+    CHECK(read_all("/dev/zero", &q, err, sizeof err) == -1);
+    getrusage(RUSAGE_SELF, &r1);
+    CHECK_STR(err, "/dev/zero:1: error: line longer than 4095 bytes");
+    CHECK_MSG(r1.ru_maxrss - r0.ru_maxrss < 1024, "peak RSS grew by %ld kB", r1.ru_maxrss - r0.ru_maxrss);
+}
+
 /* 20000 frames streamed: the reader holds one line, so the peak resident
    size does not grow with the file (the file itself is ~3 MB). */
 static void test_streaming(void)
@@ -166,6 +195,7 @@ int main(void)
     RUN(test_compose);
     RUN(test_range);
     RUN(test_streaming);
+    RUN(test_line_bound);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)

@@ -1,0 +1,49 @@
+#!/bin/sh
+# Inputs that never end or are not what they claim: every reader stops
+# after a bounded amount of time and memory with a message that names the
+# real problem (text lines longer than 4095 bytes, text files over their
+# size limit, bundles whose header is wrong or that are not regular files).
+# Prints "ok NAME" / "FAIL NAME: why".
+BIN=${GLS_BIN:-build}
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+"$BIN/glsc" -I tests/compiler/lang -o "$t/leaf.glsb" pkg.Leaf || { fail input_bounds_setup "glsc"; exit 0; }
+CAM=examples/demo/left.cam
+
+# expect NAME STATUS EXACT-FIRST-STDERR-LINE MAX-KIB -- command...
+# The command runs under a 60 s timeout; its peak memory must stay under
+# MAX-KIB (not checked under ASan, whose shadow memory is large).
+expect() {
+    name=$1 want=$2 msg=$3 kib=$4
+    shift 5
+    /usr/bin/time -f %M -o "$t/rss" timeout 60 "$@" >"$t/stdout" 2>"$t/stderr"
+    rc=$?
+    rss=$(tail -1 "$t/rss")
+    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(head -3 "$t/stderr")"
+    elif [ "$(head -1 "$t/stderr")" != "$msg" ]; then fail "$name" "stderr '$(head -1 "$t/stderr")', wanted '$msg'"
+    elif [ "$GLS_SANITIZED" != 1 ] && [ "$rss" -gt "$kib" ]; then fail "$name" "peak memory $rss KiB, over $kib KiB"
+    else ok "$name"; fi
+}
+
+# text inputs: an endless line, an endless file
+expect trajectory_endless_line 1 "/dev/zero:1: error: line longer than 4095 bytes" 200000 -- \
+    "$BIN/glsplay" "$t/leaf.glsb" --camera examples/road/rig/left.cam --trajectory /dev/zero -o "$t/o1"
+expect camera_endless_file 1 "/dev/zero: error: camera file larger than 1 MiB" 200000 -- \
+    "$BIN/glsplay" "$t/leaf.glsb" --camera /dev/zero -o "$t/o2"
+expect road_endless_file 1 "/dev/zero: error: road description larger than 16 MiB" 200000 -- \
+    "$BIN/glsroad" /dev/zero -o "$t/o3"
+expect road_camera_at_endless_trajectory 1 "/dev/zero:1: error: line longer than 4095 bytes" 200000 -- \
+    "$BIN/glsroad" --camera-at 0 /dev/zero examples/road/rig/left.cam
+mkdir "$t/dir"
+expect camera_directory 1 "$t/dir: error: is a directory, not a camera file" 200000 -- \
+    "$BIN/glsplay" "$t/leaf.glsb" --camera "$t/dir" -o "$t/o4"
+expect trajectory_directory 1 "$t/dir: error: is a directory, not a trajectory file" 200000 -- \
+    "$BIN/glsplay" "$t/leaf.glsb" --camera examples/road/rig/left.cam --trajectory "$t/dir" -o "$t/o5"
+# a road description line over the limit: reported where it overflows
+{ printf 'point 0 0 0\n# '; head -c 5000 /dev/zero | tr '\0' x; printf '\n'; } >"$t/long.road"
+expect road_long_line 1 "$t/long.road:2:4096: error: line longer than 4095 bytes" 200000 -- \
+    "$BIN/glsroad" "$t/long.road" -o "$t/o6"
+[ "$(sed -n 3p "$t/stderr" | tr -d ' ')" = "^" ] && [ "$(sed -n 2p "$t/stderr" | cut -c1-6)" = "...xxx" ] &&
+    ok road_long_line_excerpt || fail road_long_line_excerpt "$(cat "$t/stderr")"
