@@ -311,7 +311,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     b = gls_bundle_read_file(o->bundle, &gerr);
     if (!b) {
-        fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, gerr.msg);
+        fprintf(errs, "glsplay: error: %s\n", gerr.msg); /* the message names the file */
         goto out;
     }
     if (b->top == GLS_NONE) {

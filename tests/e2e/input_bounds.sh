@@ -47,3 +47,31 @@ expect road_long_line 1 "$t/long.road:2:4096: error: line longer than 4095 bytes
     "$BIN/glsroad" "$t/long.road" -o "$t/o6"
 [ "$(sed -n 3p "$t/stderr" | tr -d ' ')" = "^" ] && [ "$(sed -n 2p "$t/stderr" | cut -c1-6)" = "...xxx" ] &&
     ok road_long_line_excerpt || fail road_long_line_excerpt "$(cat "$t/stderr")"
+
+# bundles: the header is checked against the file's size before the rest
+# is read, and only regular files are read (a FIFO must not block)
+mkfifo "$t/fifo"
+expect bundle_fifo 1 "glsplay: error: $t/fifo: is a FIFO, not a regular file: a bundle is read from a file" 200000 -- \
+    "$BIN/glsplay" "$t/fifo" --camera "$CAM" --explain
+expect bundle_fifo_glsdis 1 "glsdis: error: $t/fifo: is a FIFO, not a regular file: a bundle is read from a file" 200000 -- \
+    "$BIN/glsdis" "$t/fifo"
+expect bundle_directory 1 "glsplay: error: $t/dir: is a directory, not a bundle" 200000 -- \
+    "$BIN/glsplay" "$t/dir" --camera "$CAM" --explain
+expect bundle_device 1 "glsplay: error: /dev/zero: is a character device, not a regular file: a bundle is read from a file" 200000 -- \
+    "$BIN/glsplay" /dev/zero --camera "$CAM" --explain
+# 5 GiB of zeros (a sparse file): refused on its first 48 bytes
+truncate -s 5G "$t/zeros.glsb"
+expect bundle_large_not_a_bundle 1 "glsplay: error: $t/zeros.glsb: not a glscene bundle (bad magic number)" 200000 -- \
+    "$BIN/glsplay" "$t/zeros.glsb" --camera "$CAM" --explain
+# a real header declaring 5 GiB, in a file of that size
+cp "$t/leaf.glsb" "$t/huge.glsb"
+/usr/bin/python3 -c 'import struct, sys; f = open(sys.argv[1], "r+b"); f.seek(32); f.write(struct.pack("<Q", 5 << 30))' "$t/huge.glsb"
+truncate -s 5G "$t/huge.glsb"
+expect bundle_declared_over_limit 1 "glsplay: error: $t/huge.glsb: bundle of 5368709120 bytes: bundles must be smaller than 4294967296 bytes (4 GiB)" 200000 -- \
+    "$BIN/glsplay" "$t/huge.glsb" --camera "$CAM" --explain
+# a header declaring more than the file holds: the path once in the message
+head -c 300 "$t/leaf.glsb" >"$t/short.glsb"
+size=$(wc -c <"$t/leaf.glsb")
+expect bundle_truncated_path_once 1 "glsplay: error: $t/short.glsb: bundle is truncated: header says $size bytes, only 300 present" 200000 -- \
+    "$BIN/glsplay" "$t/short.glsb" --camera "$CAM" --explain
+rm -f "$t/zeros.glsb" "$t/huge.glsb"
