@@ -136,13 +136,13 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
     /* the camera relative to the rig: parsed and checked by the player's
        own camera-file parser, so both tools accept the same files */
     gls_camera cam;
-    if (gls_camera_parse(text, len, cam_path, &cam, err, sizeof err)) {
+    if (gls_camera_parse(text, len, cam_path, stderr, &cam, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         free(text);
         return 1;
     }
     const double *Rc = cam.R, *Tc = cam.T;
-    gls_traj *t = gls_traj_open(traj_path, err, sizeof err);
+    gls_traj *t = gls_traj_open(traj_path, stderr, err, sizeof err);
     if (!t) {
         fprintf(stderr, "%s\n", err);
         free(text);

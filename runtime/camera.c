@@ -9,6 +9,7 @@
 #include <string.h>
 #include "camera.h"
 #include "numfmt.h"
+#include "rotation.h"
 #include "srcline.h"
 #include "suggest.h"
 #include "textfile.h"
@@ -50,33 +51,10 @@ static int parse_number(const char *tok, double *out)
     return 0;
 }
 
-static int check_rotation(const double R[9], char *why, size_t whylen)
-{
-    /* R R^T = I to 1e-6 (each entry), det R = +1 to 1e-6. */
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            double s = 0;
-            for (int k = 0; k < 3; k++)
-                s += R[3 * i + k] * R[3 * j + k];
-            double e = s - (i == j);
-            if (fabs(e) > 1e-6) {
-                snprintf(why, whylen, "R is not orthonormal: (R R^T)[%d][%d] = %.9g, must be %d within 1e-6", i,
-                         j, s, i == j);
-                return -1;
-            }
-        }
-    double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
-                 R[2] * (R[3] * R[7] - R[4] * R[6]);
-    if (fabs(det - 1) > 1e-6) {
-        snprintf(why, whylen, "R has determinant %.9g; a rotation needs +1 (a reflection swaps handedness)", det);
-        return -1;
-    }
-    return 0;
-}
-
 #define MAX_TOKENS 16
 
-int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera *cam, char *err, size_t errlen)
+int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *notes, gls_camera *cam, char *err,
+                     size_t errlen)
 {
     double val[K_COUNT][9];
     unsigned seen[K_COUNT] = {0}; /* line where each key was given, 0 = absent */
@@ -183,11 +161,15 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
         errf(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "far (%s) must be greater than near (%s)", f, n);
         return -1;
     }
-    char why[200];
-    if (check_rotation(val[K_R], why, sizeof why)) {
+    char why[300];
+    int rot = gls_rotation_check(val[K_R], why, sizeof why);
+    if (rot < 0) {
         errf(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
         return -1;
     }
+    /* notes only for a file that is accepted */
+    if (rot > 0 && notes)
+        fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
     memset(cam, 0, sizeof *cam);
     cam->width = (uint32_t)val[K_WIDTH][0];
     cam->height = (uint32_t)val[K_HEIGHT][0];
@@ -203,13 +185,13 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
     return 0;
 }
 
-int gls_camera_load(const char *path, gls_camera *cam, char *err, size_t errlen)
+int gls_camera_load(const char *path, FILE *notes, gls_camera *cam, char *err, size_t errlen)
 {
     size_t n;
     char *text = gls_text_read(path, GLS_CAMERA_MAX_FILE, "camera file", &n, err, errlen);
     if (!text)
         return -1;
-    int r = gls_camera_parse(text, n, path, cam, err, errlen);
+    int r = gls_camera_parse(text, n, path, notes, cam, err, errlen);
     free(text);
     return r;
 }

@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #define GLS_CAMERA_MAX_DIM 16384u
 /* Camera files are a few hundred bytes; the cap keeps a wrong path (a
@@ -25,12 +26,15 @@ typedef struct {
 } gls_camera;
 
 /* Parse a camera file's text.  fname is used only in messages.  On error
- * returns -1 and writes one line "fname:line: error: message" to err. */
-int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera *cam, char *err,
+ * returns -1 and writes "fname:line:col: error: message", the source line
+ * and a caret to err.  Notes about an accepted file (R re-orthonormalised,
+ * runtime/rotation.h) go to notes as "fname:line:col: note: ..." lines;
+ * NULL drops them. */
+int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *notes, gls_camera *cam, char *err,
                      size_t errlen);
 
 /* Read and parse a camera file ("fname: error: ..." if it cannot be read). */
-int gls_camera_load(const char *path, gls_camera *cam, char *err, size_t errlen);
+int gls_camera_load(const char *path, FILE *notes, gls_camera *cam, char *err, size_t errlen);
 
 /* Projection matrix, row-major, eye space -> clip space, for a principal
  * point shifted by (du, dv) pixels (0,0 for a plain render; sub-pixel

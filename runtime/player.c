@@ -242,7 +242,7 @@ static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_
                            const char *const *names, FILE *errs)
 {
     char err[1024];
-    gls_traj *t = gls_traj_open(o->trajectory, err, sizeof err);
+    gls_traj *t = gls_traj_open(o->trajectory, errs, err, sizeof err);
     if (!t) {
         fprintf(errs, "%s\n", err);
         return 1;
@@ -320,7 +320,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     for (size_t i = 0; i < o->ncameras; i++) {
-        if (gls_camera_load(o->cameras[i], &cams[i], err, sizeof err)) {
+        if (gls_camera_load(o->cameras[i], errs, &cams[i], err, sizeof err)) {
             fprintf(errs, "%s\n", err);
             goto out;
         }

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "rotation.h"
 #include "textfile.h"
 #include "trajectory.h"
 
@@ -14,6 +15,8 @@ struct gls_traj {
     FILE *f;
     char *path;
     unsigned line;
+    FILE *notes;
+    int noted; /* the note on a re-orthonormalised R was given */
     int have_prev;
     uint64_t prev_frame;
     double prev_time;
@@ -31,7 +34,7 @@ static int fail(const gls_traj *t, char *err, size_t errlen, const char *fmt, ..
     return -1;
 }
 
-gls_traj *gls_traj_open(const char *path, char *err, size_t errlen)
+gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen)
 {
     gls_traj *t = calloc(1, sizeof *t);
     if (!t || !(t->path = strdup(path))) {
@@ -39,6 +42,7 @@ gls_traj *gls_traj_open(const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: error: out of memory", path);
         return NULL;
     }
+    t->notes = notes;
     t->f = fopen(path, "r");
     if (!t->f) {
         snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
@@ -63,21 +67,6 @@ void gls_traj_close(gls_traj *t)
         fclose(t->f);
     free(t->path);
     free(t);
-}
-
-const char *gls_traj_check_rotation(const double R[9])
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            double d = R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2];
-            if (!(fabs(d - (i == j)) <= 1e-6))
-                return "R is not orthonormal (R R^T differs from the identity by more than 1e-6)";
-        }
-    double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
-                 R[2] * (R[3] * R[7] - R[4] * R[6]);
-    if (!(fabs(det - 1) <= 1e-6))
-        return "R has determinant -1: a reflection, not a rotation";
-    return NULL;
 }
 
 /* A whole number token: digits only, no sign, fits in 64 bits. */
@@ -154,9 +143,15 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
                         (unsigned long long)p->frame, (unsigned long long)t->prev_frame);
         if (t->have_prev && !(p->time > t->prev_time))
             return fail(t, err, errlen, "time %.17g is not after the previous frame's %.17g", p->time, t->prev_time);
-        const char *why = gls_traj_check_rotation(p->R);
-        if (why)
+        char why[300];
+        int rot = gls_rotation_check(p->R, why, sizeof why);
+        if (rot < 0)
             return fail(t, err, errlen, "%s", why);
+        /* one note per file: a trajectory printed with few decimals would
+           repeat it on every line */
+        if (rot > 0 && t->notes && !t->noted++)
+            fprintf(t->notes, "%s:%u: note: %s (and on every later line where needed, without a note)\n", t->path,
+                    t->line, why);
         t->have_prev = 1;
         t->prev_frame = p->frame;
         t->prev_time = p->time;

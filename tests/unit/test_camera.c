@@ -1,5 +1,6 @@
 /* Camera files and the camera's matrices (runtime/camera.c), CPU only. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "camera.h"
 #include "check.h"
@@ -14,7 +15,7 @@ static const char good[] =
 
 static int parse(const char *text, gls_camera *c, char *err)
 {
-    return gls_camera_parse(text, strlen(text), "x.cam", c, err, 512);
+    return gls_camera_parse(text, strlen(text), "x.cam", NULL, c, err, 512);
 }
 
 static void test_parse_good(void)
@@ -135,11 +136,50 @@ static void test_long_lines(void)
     CHECK_MSG(parse(text, &c, err) == 0, "'%s'", err);
 }
 
+/* R printed with 5 decimals: accepted with a note, re-orthonormalised;
+   with 3 decimals: refused.  A full-precision R is used as given. */
+static void test_rotation_tolerance(void)
+{
+    char text[2048], err[512] = "", *notes = NULL;
+    size_t nlen = 0;
+    gls_camera c;
+    /* a rotation about (1, 1, 1) by 0.5 rad, rounded to 5 decimals */
+    snprintf(text, sizeof text, "%s", good);
+    char *r = strstr(text, "R 0.36");
+    const char *R5 = "R 0.91839 -0.23599 0.3176  0.3176 0.91839 -0.23599  -0.23599 0.3176 0.91839";
+    memmove(r + strlen(R5), strchr(r, '\n'), strlen(strchr(r, '\n')) + 1);
+    memcpy(r, R5, strlen(R5));
+    FILE *nf = open_memstream(&notes, &nlen);
+    CHECK_MSG(gls_camera_parse(text, strlen(text), "x.cam", nf, &c, err, sizeof err) == 0, "%s", err);
+    fclose(nf);
+    CHECK_MSG(notes && strncmp(notes, "x.cam:9:3: note: R is orthonormal only within ", 46) == 0 &&
+                  strstr(notes, "replaced by the nearest rotation, which moves no entry by more than") && strchr(notes, '\n') == notes + nlen - 1,
+              "'%s'", notes ? notes : "");
+    free(notes);
+    double worst = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            worst = fmax(worst, fabs(c.R[3 * i] * c.R[3 * j] + c.R[3 * i + 1] * c.R[3 * j + 1] +
+                                     c.R[3 * i + 2] * c.R[3 * j + 2] - (i == j)));
+    CHECK_MSG(worst < 1e-15, "R R^T - I up to %g", worst);
+    CHECK_NEAR(c.R[0], 0.91838837, 1e-5);
+    /* the same with 3 decimals */
+    expect_error("R 0.36 0.48 -0.8  -0.8 0.6 0  0.48 0.64 0.6", "R 0.918 -0.236 0.318  0.318 0.918 -0.236  -0.236 0.318 0.918",
+                 "must be 1 within 1e-4");
+    /* full precision: as given, no note */
+    notes = NULL;
+    nf = open_memstream(&notes, &nlen);
+    CHECK(gls_camera_parse(good, strlen(good), "x.cam", nf, &c, err, sizeof err) == 0);
+    fclose(nf);
+    CHECK(nlen == 0 && c.R[0] == 0.36 && c.R[8] == 0.6);
+    free(notes);
+}
+
 static void test_load_missing_file(void)
 {
     gls_camera c;
     char err[256];
-    CHECK(gls_camera_load("/nonexistent/dir/a.cam", &c, err, sizeof err) == -1);
+    CHECK(gls_camera_load("/nonexistent/dir/a.cam", NULL, &c, err, sizeof err) == -1);
     CHECK(strstr(err, "/nonexistent/dir/a.cam: error: cannot open") == err);
 }
 
@@ -199,6 +239,7 @@ int main(void)
     RUN(test_parse_good);
     RUN(test_parse_errors);
     RUN(test_long_lines);
+    RUN(test_rotation_tolerance);
     RUN(test_load_missing_file);
     RUN(test_matrices_map_to_pixels);
     CHECK_EXIT();
