@@ -2,6 +2,7 @@
  * (spec/camera.md "Projection", "Depth", "Back-projection"). */
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -49,6 +50,26 @@ static int parse_number(const char *tok, double *out)
         return -1;
     *out = v;
     return 0;
+}
+
+int gls_camera_depth_range(double near, double far, double *near_min, double *near_max)
+{
+    const double L = GLS_DEPTH_MIN, M = FLT_MAX;
+    /* a = n/(f-n) >= L  <=>  n >= L f/(1+L);  b = n f/(f-n) >= L  <=>  n >= L f/(f+L);
+       b <= M  <=>  n <= M f/(f+M)  (spec/camera.md "Depth range") */
+    *near_min = fmax(L * far / (1 + L), L * far / (far + L));
+    *near_max = M * (far / (far + M));
+    double a = near / (far - near), b = a * far;
+    return a >= L && b >= L && b <= M ? 0 : -1;
+}
+
+/* v rounded to 3 significant digits, up (dir > 0) or down: a limit that
+ * reads well in a message and is still on the right side of the exact one. */
+static void fmt_limit(char *buf, size_t n, double v, int dir)
+{
+    snprintf(buf, n, "%.3g", v * (dir > 0 ? 1.01 : 0.99));
+    if (dir > 0 ? strtod(buf, NULL) < v : strtod(buf, NULL) > v)
+        gls_fmt_double(buf, n, v);
 }
 
 #define MAX_TOKENS 16
@@ -159,6 +180,19 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
         gls_fmt_double(f, sizeof f, val[K_FAR][0]);
         gls_fmt_double(n, sizeof n, val[K_NEAR][0]);
         errf(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "far (%s) must be greater than near (%s)", f, n);
+        return -1;
+    }
+    double nmin, nmax;
+    if (gls_camera_depth_range(val[K_NEAR][0], val[K_FAR][0], &nmin, &nmax)) {
+        char n[40], f[40], lim[40];
+        gls_fmt_double(n, sizeof n, val[K_NEAR][0]);
+        gls_fmt_double(f, sizeof f, val[K_FAR][0]);
+        int small = val[K_NEAR][0] < nmin;
+        fmt_limit(lim, sizeof lim, small ? nmin : nmax, small ? 1 : -1);
+        errf(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR],
+             "near %s is too %s for far %s: the float depth buffer would lose precision; near must be %s %s "
+             "(spec/camera.md, Depth range)",
+             n, small ? "small" : "large", f, small ? "at least" : "at most", lim);
         return -1;
     }
     char why[300];

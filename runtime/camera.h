@@ -36,6 +36,14 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
 /* Read and parse a camera file ("fname: error: ..." if it cannot be read). */
 int gls_camera_load(const char *path, FILE *notes, gls_camera *cam, char *err, size_t errlen);
 
+/* Reversed-Z float depth keeps float precision only while the mapping's
+ * coefficients a = n/(f-n), b = n f/(f-n) are at least 2^-102 and b is at
+ * most FLT_MAX (spec/camera.md "Depth range").  0 if near, far (far > near
+ * > 0) qualify, else -1; either way *near_min and *near_max are the limits
+ * on near for this far. */
+#define GLS_DEPTH_MIN 0x1p-102
+int gls_camera_depth_range(double near, double far, double *near_min, double *near_max);
+
 /* Projection matrix, row-major, eye space -> clip space, for a principal
  * point shifted by (du, dv) pixels (0,0 for a plain render; sub-pixel
  * jitter for anti-aliasing passes).  Maps image (u, v) to GL window

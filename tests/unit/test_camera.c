@@ -1,4 +1,5 @@
 /* Camera files and the camera's matrices (runtime/camera.c), CPU only. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -175,6 +176,44 @@ static void test_rotation_tolerance(void)
     free(notes);
 }
 
+/* spec/camera.md "Depth range": near is refused where the float
+   coefficients a = n/(f-n), b = n f/(f-n) fall below 2^-102 or b exceeds
+   FLT_MAX; at the limit every point closer than far by more than one float
+   step (2^-24 relative) still gets a normal (not subnormal) float depth. */
+static void test_depth_range(void)
+{
+    double lo, hi;
+    CHECK(gls_camera_depth_range(0.1, 1000, &lo, &hi) == 0);
+    CHECK(gls_camera_depth_range(1e-37, 1000, &lo, &hi) == -1);
+    CHECK_NEAR(lo, 0x1p-102 * 1000, 1e-40);
+    CHECK(gls_camera_depth_range(lo * (1 + 1e-9), 1000, &lo, &hi) == 0);
+    CHECK(gls_camera_depth_range(lo * (1 - 1e-9), 1000, &lo, &hi) == -1);
+    CHECK(gls_camera_depth_range(1, 1e31, &lo, &hi) == -1);      /* far/near > 2^102 */
+    CHECK(gls_camera_depth_range(1e-31, 1e-30, &lo, &hi) == -1); /* b < 2^-102 */
+    CHECK(gls_camera_depth_range(1e30, 1e38, &lo, &hi) == 0);
+    CHECK(gls_camera_depth_range(1e39, 2e39, &lo, &hi) == -1);   /* b > FLT_MAX */
+    CHECK(hi < 3.4e38 && gls_camera_depth_range(hi * (1 - 1e-9), 2e39, &lo, &hi) == 0);
+    /* the derivation: clip-space z = b - a Zc = a (f - Zc) and depth
+       d = z / Zc, with a as the float GL gets, at Zc one float step before
+       far, are normal floats at the limit; below it one of them is
+       subnormal (z ~ a f 2^-24 = b 2^-24 tests b, d ~ a 2^-24 tests a) */
+    static const double fars[] = {1e-20, 1, 1000, 1e20};
+    for (int k = 0; k < 4; k++) {
+        double f = fars[k];
+        gls_camera_depth_range(1, f, &lo, &hi);
+        for (int below = 0; below < 2; below++) {
+            double n = below ? lo / 4 : lo * 1.000001;
+            float a = (float)(n / (f - n));
+            double Zc = f * (1 - 0x1p-24);
+            double z = (double)a * (f - Zc), d = fmin(z, z / Zc);
+            CHECK_MSG(below ? d < FLT_MIN : d >= FLT_MIN, "far %g near %g: z or depth %g one step before far", f, n, d);
+        }
+    }
+    expect_error("near 0.1", "near 1e-37",
+                 "x.cam:11:6: error: near 1e-37 is too small for far 1000: the float depth buffer would lose precision; "
+                 "near must be at least 1.99e-28 (spec/camera.md, Depth range)");
+}
+
 static void test_load_missing_file(void)
 {
     gls_camera c;
@@ -240,6 +279,7 @@ int main(void)
     RUN(test_parse_errors);
     RUN(test_long_lines);
     RUN(test_rotation_tolerance);
+    RUN(test_depth_range);
     RUN(test_load_missing_file);
     RUN(test_matrices_map_to_pixels);
     CHECK_EXIT();
