@@ -40,18 +40,6 @@ static const char *suggest(const char *word)
     return gls_suggest(word, strlen(word), key_name, K_COUNT);
 }
 
-/* One number token: the whole token must be a finite decimal number. */
-static int parse_number(const char *tok, double *out)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(tok, &end);
-    if (end == tok || *end || errno == ERANGE || !isfinite(v))
-        return -1;
-    *out = v;
-    return 0;
-}
-
 int gls_camera_depth_range(double near, double far, double *near_min, double *near_max)
 {
     const double L = GLS_DEPTH_MIN, M = FLT_MAX;
@@ -130,17 +118,29 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
                  seen[k]);
             return -1;
         }
+        /* "T 0,0,0" or "cx 319,5": point at the comma, not at the count */
+        for (int j = 1; j < nt; j++) {
+            char *comma = strchr(tok[j], ',');
+            if (comma) {
+                errf(err, errlen, text, len, fname, line, COL(comma),
+                     "key '%s': a comma in '%s': separate numbers with spaces and write decimals with '.'", key_name[k],
+                     tok[j]);
+                return -1;
+            }
+        }
         if (nt - 1 != key_arity[k]) {
             errf(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' takes %d number%s, got %s%d", key_name[k],
                  key_arity[k], key_arity[k] == 1 ? "" : "s", nt > MAX_TOKENS ? "more than " : "", nt - 1);
             return -1;
         }
-        for (int j = 0; j < key_arity[k]; j++)
-            if (parse_number(tok[1 + j], &val[k][j])) {
-                errf(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' is not a finite number",
-                     key_name[k], tok[1 + j]);
+        for (int j = 0; j < key_arity[k]; j++) {
+            const char *why = gls_parse_double(tok[1 + j], &val[k][j]);
+            if (why) {
+                errf(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' %s", key_name[k],
+                     tok[1 + j], why);
                 return -1;
             }
+        }
         seen[k] = line;
         vcol[k] = COL(tok[1]);
         last = line;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "numfmt.h"
 #include "rotation.h"
 #include "textfile.h"
 #include "trajectory.h"
@@ -129,10 +130,9 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
             return fail(t, err, errlen, "frame '%s' is not a whole number", tok[0]);
         double v[13];
         for (int i = 0; i < 13; i++) {
-            char *end;
-            v[i] = strtod(tok[i + 1], &end);
-            if (end == tok[i + 1] || *end || !isfinite(v[i]))
-                return fail(t, err, errlen, "value %d ('%s') is not a finite number", i + 2, tok[i + 1]);
+            const char *why = gls_parse_double(tok[i + 1], &v[i]);
+            if (why)
+                return fail(t, err, errlen, "value %d ('%s') %s", i + 2, tok[i + 1], why);
         }
         p->time = v[0];
         memcpy(p->R, v + 1, sizeof p->R);

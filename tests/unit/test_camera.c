@@ -73,7 +73,16 @@ static void test_parse_errors(void)
     expect_error("R 0.36", "r 0.36", "did you mean 'R'");
     expect_error("fx 700.5", "fx nan", "not a finite number");
     expect_error("fx 700.5", "fx inf", "not a finite number");
-    expect_error("fx 700.5", "fx 1e999", "not a finite number");
+    expect_error("fx 700.5", "fx 1e999", "'1e999' is too large for a double (magnitudes up to 1.8e308)");
+    expect_error("fx 700.5", "fx 1e-308", "'1e-308' is too close to zero for a double (nonzero magnitudes from 2.2e-308)");
+    expect_error("fx 700.5", "fx 5e-324", "too close to zero");
+    expect_error("fx 700.5", "fx 0x1p-1074", "too close to zero");
+    /* commas: the caret on the comma (expect_error checks the column) */
+    expect_error("T 0.2 -0.1 0.5", "T 0.2,-0.1,0.5",
+                 "x.cam:10:6: error: key 'T': a comma in '0.2,-0.1,0.5': separate numbers with spaces");
+    expect_error("T 0.2 -0.1 0.5", "T 0.2, -0.1, 0.5", "x.cam:10:6: error: key 'T': a comma in '0.2,'");
+    expect_error("T 0.2 -0.1 0.5", "T 0.2 -0.1 , 0.5", "x.cam:10:12: error: key 'T': a comma in ','");
+    expect_error("cx 301.3", "cx 301,3", "x.cam:6:7: error: key 'cx': a comma in '301,3'");
     expect_error("fx 700.5", "fx 7x", "not a finite number");
     expect_error("fx 700.5", "fx 0", "fx must be > 0");
     expect_error("fy 650.25", "fy -1", "fy must be > 0");

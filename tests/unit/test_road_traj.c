@@ -78,7 +78,10 @@ static void test_errors(void)
     snprintf(t, sizeof t, "0 0 %s 0 nan 0\n", I);
     expect_error("nan.txt", t, "nan.txt:1: error: value 13 ('nan') is not a finite number");
     snprintf(t, sizeof t, "0 0 %s 0 0 1e999\n", I);
-    expect_error("inf.txt", t, "inf.txt:1: error: value 14 ('1e999') is not a finite number");
+    expect_error("inf.txt", t, "inf.txt:1: error: value 14 ('1e999') is too large for a double (magnitudes up to 1.8e308)");
+    snprintf(t, sizeof t, "0 0 %s 1e-320 0 0\n", I);
+    expect_error("tiny.txt", t,
+                 "tiny.txt:1: error: value 12 ('1e-320') is too close to zero for a double (nonzero magnitudes from 2.2e-308)");
     snprintf(t, sizeof t, "3 0 %s 0 0 0\n# c\n3 1 %s 0 0 0\n", I, I);
     expect_error("order.txt", t, "order.txt:3: error: frame 3 does not follow frame 3: frames must increase");
     snprintf(t, sizeof t, "3 1 %s 0 0 0\n4 1 %s 0 0 0\n", I, I);
