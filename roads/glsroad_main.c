@@ -136,7 +136,7 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
     /* the camera relative to the rig: parsed and checked by the player's
        own camera-file parser, so both tools accept the same files */
     gls_camera cam;
-    if (gls_camera_parse(text, len, cam_path, stderr, &cam, err, sizeof err)) {
+    if (gls_camera_parse(text, len, cam_path, GLS_POSE_RIG, stderr, &cam, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         free(text);
         return 1;
@@ -163,15 +163,21 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
     }
     double R[9], T[3];
     gls_traj_compose(Rc, Tc, pose.R, pose.T, R, T);
-    /* the camera file again, with R and T replaced */
+    /* the camera file again, with R and T replaced and its pose declared a
+       world pose (a 'pose rig' line becomes 'pose world') */
     printf("# %s at frame %llu (t = %.17g s) of %s\n", cam_path, (unsigned long long)first, pose.time, traj_path);
+    if (!cam.pose)
+        printf("pose world\n");
     for (char *p = text; *p;) {
         char *nl = strchr(p, '\n');
         size_t n = nl ? (size_t)(nl - p) : strlen(p);
         size_t skip = strspn(p, " \t\r");
         int key = skip < n && (p[skip] == 'R' || p[skip] == 'T') &&
                   (skip + 1 == n || strchr(" \t\r#", p[skip + 1]));
-        if (key) {
+        int pose_key = n - skip >= 4 && !strncmp(p + skip, "pose", 4) && (skip + 4 == n || strchr(" \t\r#", p[skip + 4]));
+        if (pose_key) {
+            printf("pose world\n");
+        } else if (key) {
             double *v = p[skip] == 'R' ? R : T;
             int m = p[skip] == 'R' ? 9 : 3;
             printf("%c", p[skip]);

@@ -15,10 +15,10 @@
 #include "suggest.h"
 #include "textfile.h"
 
-enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_COUNT };
+enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE, K_COUNT };
 static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
-                                              "skew", "R", "T", "near", "far"};
-static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1};
+                                              "skew", "R", "T", "near", "far", "pose"};
+static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1}; /* pose: a word */
 
 /* "FILE:LINE:COL: error: message", then the source line and a caret under
  * the column (as the scene compiler reports), into err. */
@@ -62,9 +62,10 @@ static void fmt_limit(char *buf, size_t n, double v, int dir)
 
 #define MAX_TOKENS 16
 
-int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *notes, gls_camera *cam, char *err,
-                     size_t errlen)
+int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes, gls_camera *cam,
+                     char *err, size_t errlen)
 {
+    gls_pose pose = GLS_POSE_UNDECLARED;
     double val[K_COUNT][9];
     unsigned seen[K_COUNT] = {0}; /* line where each key was given, 0 = absent */
     unsigned vcol[K_COUNT] = {0}; /* column of its first value              */
@@ -110,13 +111,32 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
                 errf(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
             else
                 errf(err, errlen, text, len, fname, line, COL(tok[0]),
-                     "unknown key '%s' (keys: width height fx fy cx cy skew R T near far)", tok[0]);
+                     "unknown key '%s' (keys: width height fx fy cx cy skew R T near far pose)", tok[0]);
             return -1;
         }
         if (seen[k]) {
             errf(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' given twice (first on line %u)", key_name[k],
                  seen[k]);
             return -1;
+        }
+        if (k == K_POSE) {
+            if (nt != 2) {
+                errf(err, errlen, text, len, fname, line, COL(tok[0]), "key 'pose' takes one word, world or rig, got %s%d",
+                     nt > MAX_TOKENS ? "more than " : "", nt - 1);
+                return -1;
+            }
+            pose = strcmp(tok[1], "world") == 0 ? GLS_POSE_WORLD : strcmp(tok[1], "rig") == 0 ? GLS_POSE_RIG
+                                                                                            : GLS_POSE_UNDECLARED;
+            if (!pose) {
+                errf(err, errlen, text, len, fname, line, COL(tok[1]),
+                     "key 'pose': '%s' is neither world (R and T map the world into the camera) nor rig (they map the "
+                     "rig, with a trajectory)", tok[1]);
+                return -1;
+            }
+            seen[k] = line;
+            vcol[k] = COL(tok[1]);
+            last = line;
+            continue;
         }
         /* "T 0,0,0" or "cx 319,5": point at the comma, not at the count */
         for (int j = 1; j < nt; j++) {
@@ -147,7 +167,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
 #undef COL
     }
     for (int k = 0; k < K_COUNT; k++)
-        if (!seen[k] && k != K_SKEW) {
+        if (!seen[k] && k != K_SKEW && k != K_POSE) {
             errf(err, errlen, text, len, fname, last ? last : 1, 1,
                  "missing key '%s' (required: width height fx fy cx cy R T near far)", key_name[k]);
             return -1;
@@ -195,6 +215,17 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
              n, small ? "small" : "large", f, small ? "at least" : "at most", lim);
         return -1;
     }
+    /* the same file must not give different images: a declared frame is
+       checked against the use */
+    if (pose && use && pose != use) {
+        errf(err, errlen, text, len, fname, seen[K_POSE], vcol[K_POSE],
+             pose == GLS_POSE_WORLD
+                 ? "'pose world': R and T are declared the camera's pose in the world, but they are used relative to "
+                   "the rig here (with a trajectory); use a camera file declared 'pose rig'"
+                 : "'pose rig': R and T are declared relative to the rig, which needs a trajectory (glsplay "
+                   "--trajectory, or glsroad --camera-at for one frame)");
+        return -1;
+    }
     char why[300];
     int rot = gls_rotation_check(val[K_R], why, sizeof why);
     if (rot < 0) {
@@ -204,6 +235,9 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
     /* notes only for a file that is accepted */
     if (rot > 0 && notes)
         fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
+    if (!pose && use == GLS_POSE_RIG && notes)
+        fprintf(notes, "%s: note: no 'pose' key: R and T are taken relative to the rig, as a trajectory needs; add "
+                       "'pose rig' to say so\n", fname);
     memset(cam, 0, sizeof *cam);
     cam->width = (uint32_t)val[K_WIDTH][0];
     cam->height = (uint32_t)val[K_HEIGHT][0];
@@ -216,16 +250,17 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *note
     memcpy(cam->T, val[K_T], sizeof cam->T);
     cam->near = val[K_NEAR][0];
     cam->far = val[K_FAR][0];
+    cam->pose = pose;
     return 0;
 }
 
-int gls_camera_load(const char *path, FILE *notes, gls_camera *cam, char *err, size_t errlen)
+int gls_camera_load(const char *path, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen)
 {
     size_t n;
     char *text = gls_text_read(path, GLS_CAMERA_MAX_FILE, "camera file", &n, err, errlen);
     if (!text)
         return -1;
-    int r = gls_camera_parse(text, n, path, notes, cam, err, errlen);
+    int r = gls_camera_parse(text, n, path, use, notes, cam, err, errlen);
     free(text);
     return r;
 }

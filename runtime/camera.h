@@ -17,24 +17,34 @@
  * bundle, a device) from being read whole (spec/camera.md). */
 #define GLS_CAMERA_MAX_FILE ((size_t)1 << 20)
 
+/* The frame a camera file's R and T are given in (its 'pose' key):
+ * undeclared, the world (P_cam = R P_world + T), or the rig of a
+ * trajectory (P_cam = R P_rig + T).  As a use: how the caller applies R
+ * and T; GLS_POSE_UNDECLARED then means "either, no check". */
+typedef enum { GLS_POSE_UNDECLARED = 0, GLS_POSE_WORLD = 1, GLS_POSE_RIG = 2 } gls_pose;
+
 typedef struct {
     uint32_t width, height;
     double fx, fy, cx, cy, skew;
     double R[9];           /* world to camera, row-major                  */
     double T[3];           /* Pc = R * P + T                               */
     double near, far;      /* clipping distances along +Z, scene units    */
+    gls_pose pose;         /* as the file declares it                     */
 } gls_camera;
 
-/* Parse a camera file's text.  fname is used only in messages.  On error
+/* Parse a camera file's text.  fname is used only in messages.  use is
+ * how the caller applies R and T (GLS_POSE_WORLD for a single render,
+ * GLS_POSE_RIG with a trajectory, GLS_POSE_UNDECLARED: no check); a file
+ * declaring the other frame is an error at its 'pose' line.  On error
  * returns -1 and writes "fname:line:col: error: message", the source line
- * and a caret to err.  Notes about an accepted file (R re-orthonormalised,
- * runtime/rotation.h) go to notes as "fname:line:col: note: ..." lines;
- * NULL drops them. */
-int gls_camera_parse(const char *text, size_t len, const char *fname, FILE *notes, gls_camera *cam, char *err,
-                     size_t errlen);
+ * and a caret to err.  Notes about an accepted file go to notes, one line
+ * each (R re-orthonormalised, runtime/rotation.h; a rig use of a file
+ * that does not declare its frame); NULL drops them. */
+int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes, gls_camera *cam,
+                     char *err, size_t errlen);
 
 /* Read and parse a camera file ("fname: error: ..." if it cannot be read). */
-int gls_camera_load(const char *path, FILE *notes, gls_camera *cam, char *err, size_t errlen);
+int gls_camera_load(const char *path, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen);
 
 /* Reversed-Z float depth keeps float precision only while the mapping's
  * coefficients a = n/(f-n), b = n f/(f-n) are at least 2^-102 and b is at

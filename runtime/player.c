@@ -320,7 +320,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     for (size_t i = 0; i < o->ncameras; i++) {
-        if (gls_camera_load(o->cameras[i], errs, &cams[i], err, sizeof err)) {
+        if (gls_camera_load(o->cameras[i], o->trajectory ? GLS_POSE_RIG : GLS_POSE_WORLD, errs, &cams[i], err,
+                            sizeof err)) {
             fprintf(errs, "%s\n", err);
             goto out;
         }

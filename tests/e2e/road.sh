@@ -138,7 +138,8 @@ ok("road_kitti_relative", worst_k < 1e-9 and np.allclose(ki[0], [1,0,0,0,0,1,0,0
 vals = {}
 for line in open(cam):
     line = line.split("#")[0].split()
-    if line: vals[line[0]] = [float(v) for v in line[1:]]
+    if line and line[0] != "pose": vals[line[0]] = [float(v) for v in line[1:]]
+ok("road_camera_at_pose_world", open(cam).read().count("\npose world\n") == 1)
 Rc, Tc = np.array(vals["R"]).reshape(3, 3), np.array(vals["T"])
 i = int(np.where(tr[:, 0] == 120)[0][0])
 R, T = tr[i, 2:11].reshape(3, 3), tr[i, 11:14]

@@ -16,7 +16,7 @@ static const char good[] =
 
 static int parse(const char *text, gls_camera *c, char *err)
 {
-    return gls_camera_parse(text, strlen(text), "x.cam", NULL, c, err, 512);
+    return gls_camera_parse(text, strlen(text), "x.cam", GLS_POSE_UNDECLARED, NULL, c, err, 512);
 }
 
 static void test_parse_good(void)
@@ -160,7 +160,7 @@ static void test_rotation_tolerance(void)
     memmove(r + strlen(R5), strchr(r, '\n'), strlen(strchr(r, '\n')) + 1);
     memcpy(r, R5, strlen(R5));
     FILE *nf = open_memstream(&notes, &nlen);
-    CHECK_MSG(gls_camera_parse(text, strlen(text), "x.cam", nf, &c, err, sizeof err) == 0, "%s", err);
+    CHECK_MSG(gls_camera_parse(text, strlen(text), "x.cam", GLS_POSE_UNDECLARED, nf, &c, err, sizeof err) == 0, "%s", err);
     fclose(nf);
     CHECK_MSG(notes && strncmp(notes, "x.cam:9:3: note: R is orthonormal only within ", 46) == 0 &&
                   strstr(notes, "replaced by the nearest rotation, which moves no entry by more than") && strchr(notes, '\n') == notes + nlen - 1,
@@ -179,7 +179,7 @@ static void test_rotation_tolerance(void)
     /* full precision: as given, no note */
     notes = NULL;
     nf = open_memstream(&notes, &nlen);
-    CHECK(gls_camera_parse(good, strlen(good), "x.cam", nf, &c, err, sizeof err) == 0);
+    CHECK(gls_camera_parse(good, strlen(good), "x.cam", GLS_POSE_UNDECLARED, nf, &c, err, sizeof err) == 0);
     fclose(nf);
     CHECK(nlen == 0 && c.R[0] == 0.36 && c.R[8] == 0.6);
     free(notes);
@@ -227,7 +227,7 @@ static void test_load_missing_file(void)
 {
     gls_camera c;
     char err[256];
-    CHECK(gls_camera_load("/nonexistent/dir/a.cam", NULL, &c, err, sizeof err) == -1);
+    CHECK(gls_camera_load("/nonexistent/dir/a.cam", GLS_POSE_UNDECLARED, NULL, &c, err, sizeof err) == -1);
     CHECK(strstr(err, "/nonexistent/dir/a.cam: error: cannot open") == err);
 }
 
