@@ -223,6 +223,45 @@ static void test_depth_range(void)
                  "near must be at least 1.99e-28 (spec/camera.md, Depth range)");
 }
 
+/* 'pose world' / 'pose rig': recorded, checked against the use; an
+   undeclared file used relative to the rig gets a note. */
+static void test_pose_frame(void)
+{
+    static const struct {
+        const char *line;
+        gls_pose use;
+        int ok;
+        gls_pose pose;
+        const char *msg;
+    } cases[] = {
+        {"", GLS_POSE_WORLD, 1, GLS_POSE_UNDECLARED, ""},
+        {"", GLS_POSE_RIG, 1, GLS_POSE_UNDECLARED, "x.cam: note: no 'pose' key: R and T are taken relative to the rig"},
+        {"pose world\n", GLS_POSE_WORLD, 1, GLS_POSE_WORLD, ""},
+        {"pose rig  # rig\n", GLS_POSE_RIG, 1, GLS_POSE_RIG, ""},
+        {"pose world\n", GLS_POSE_UNDECLARED, 1, GLS_POSE_WORLD, ""},
+        {"pose world\n", GLS_POSE_RIG, 0, 0, "x.cam:13:6: error: 'pose world': R and T are declared the camera's pose"},
+        {"  pose rig\n", GLS_POSE_WORLD, 0, 0, "x.cam:13:8: error: 'pose rig': R and T are declared relative to the rig"},
+        {"pose Rig\n", GLS_POSE_RIG, 0, 0, "x.cam:13:6: error: key 'pose': 'Rig' is neither world"},
+        {"pose\n", GLS_POSE_RIG, 0, 0, "x.cam:13:1: error: key 'pose' takes one word, world or rig, got 0"},
+        {"pose rig\npose rig\n", GLS_POSE_RIG, 0, 0, "x.cam:14:1: error: key 'pose' given twice (first on line 13)"},
+        {"poes rig\n", GLS_POSE_RIG, 0, 0, "x.cam:13:1: error: unknown key 'poes' (did you mean 'pose'?)"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char text[2048], err[512] = "", *notes = NULL;
+        size_t nlen = 0;
+        snprintf(text, sizeof text, "%s%s", good, cases[i].line);
+        FILE *nf = open_memstream(&notes, &nlen);
+        gls_camera c;
+        int r = gls_camera_parse(text, strlen(text), "x.cam", cases[i].use, nf, &c, err, sizeof err);
+        fclose(nf);
+        const char *got = cases[i].ok ? notes : err;
+        CHECK_MSG(r == (cases[i].ok ? 0 : -1) && strncmp(got, cases[i].msg, strlen(cases[i].msg)) == 0 &&
+                      (cases[i].msg[0] || !got[0]) && (!cases[i].ok || c.pose == cases[i].pose),
+                  "case %zu: r %d, '%s'", i, r, got);
+        free(notes);
+    }
+}
+
 static void test_load_missing_file(void)
 {
     gls_camera c;
@@ -289,6 +328,7 @@ int main(void)
     RUN(test_long_lines);
     RUN(test_rotation_tolerance);
     RUN(test_depth_range);
+    RUN(test_pose_frame);
     RUN(test_load_missing_file);
     RUN(test_matrices_map_to_pixels);
     CHECK_EXIT();
