@@ -55,6 +55,8 @@ expect bundle_fifo 1 "glsplay: error: $t/fifo: is a FIFO, not a regular file: a 
     "$BIN/glsplay" "$t/fifo" --camera "$CAM" --explain
 expect bundle_fifo_glsdis 1 "glsdis: error: $t/fifo: is a FIFO, not a regular file: a bundle is read from a file" 200000 -- \
     "$BIN/glsdis" "$t/fifo"
+expect bundle_fifo_search_root 1 "glsc: error: search root $t/fifo: is a FIFO, not a regular file: a bundle is read from a file" 200000 -- \
+    "$BIN/glsc" -I "$t/fifo" -I tests/compiler/lang -o "$t/out.glsb" pkg.Leaf
 expect bundle_directory 1 "glsplay: error: $t/dir: is a directory, not a bundle" 200000 -- \
     "$BIN/glsplay" "$t/dir" --camera "$CAM" --explain
 expect bundle_device 1 "glsplay: error: /dev/zero: is a character device, not a regular file: a bundle is read from a file" 200000 -- \
