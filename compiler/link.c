@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "compile.h"
 #include "fileio.h"
 #include "strmap.h"
@@ -146,7 +147,9 @@ int gls_compiler_add_root(gls_compiler *c, const char *path)
         return -1;
     path = r.path;
     if (!gls_is_dir(path)) {
-        if (!gls_is_file(path)) {
+        /* only a missing path is "no such": for a FIFO or a device the
+           bundle reader says what it is (and does not block on it) */
+        if (access(path, F_OK) != 0) {
             gls_error_at(&c->diag, noloc, "search root %s: no such directory or bundle", path);
             free(r.path);
             return -1;

@@ -3,10 +3,13 @@
  * the bytes that remain before anything is allocated for it.  After the
  * structure is read, gls_bundle_validate() checks the content. */
 #include <errno.h>
+#include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <zlib.h>
 #include <zstd.h>
 #include "bundle.h"
@@ -231,6 +234,37 @@ fail:
     return -1;
 }
 
+/* The checks that need only the first bytes of a bundle (have of them, at
+ * least the header when there is one) and its length: magic, version,
+ * declared file size.  The file reader runs them on the header alone,
+ * before it reads the rest, so that a file that is not a bundle, or whose
+ * size disagrees with its header, costs one small read. */
+static int check_start(const uint8_t *data, size_t have, uint64_t len, gls_error *err)
+{
+    if (have < GLS_MAGIC_LEN || memcmp(data, GLS_MAGIC, GLS_MAGIC_LEN) != 0)
+        FAIL("not a glscene bundle (bad magic number)");
+    if (len < GLS_HEADER_SIZE)
+        FAIL("bundle is truncated: %llu bytes, shorter than its %u-byte header", (unsigned long long)len,
+             GLS_HEADER_SIZE);
+    uint32_t version = gls_le_get_u32(data + GLS_HDR_VERSION);
+    if (version != GLS_FORMAT_VERSION)
+        FAIL("bundle format version %u is not supported: this build reads version %u (recompile the scene with this glsc)",
+             version, GLS_FORMAT_VERSION);
+    uint64_t fsize = gls_le_get_u64(data + GLS_HDR_FSIZE);
+    if (fsize > len)
+        FAIL("bundle is truncated: header says %llu bytes, only %llu present", (unsigned long long)fsize,
+             (unsigned long long)len);
+    if (fsize < len)
+        FAIL("bundle has %llu bytes after its declared end (%llu bytes)", (unsigned long long)(len - fsize),
+             (unsigned long long)fsize);
+    if (fsize >= GLS_MAX_FILE_BYTES)
+        FAIL("bundle of %llu bytes: bundles must be smaller than %llu bytes (4 GiB)", (unsigned long long)fsize,
+             (unsigned long long)GLS_MAX_FILE_BYTES);
+    return 0;
+fail:
+    return -1;
+}
+
 gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
 {
     uint8_t *raw[GLS_SEC_COUNT] = {0};
@@ -239,19 +273,9 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
     if (!b)
         FAIL("out of memory");
 
-    if (len < GLS_MAGIC_LEN || memcmp(data, GLS_MAGIC, GLS_MAGIC_LEN) != 0)
-        FAIL("not a glscene bundle (bad magic number)");
-    if (len < GLS_HEADER_SIZE)
-        FAIL("bundle is truncated: %zu bytes, shorter than its %u-byte header", len, GLS_HEADER_SIZE);
+    if (check_start(data, len, len, err))
+        goto fail;
     uint32_t version = gls_le_get_u32(data + GLS_HDR_VERSION);
-    if (version != GLS_FORMAT_VERSION)
-        FAIL("bundle format version %u is not supported: this build reads version %u (recompile the scene with this glsc)",
-             version, GLS_FORMAT_VERSION);
-    uint64_t fsize = gls_le_get_u64(data + GLS_HDR_FSIZE);
-    if (fsize > len)
-        FAIL("bundle is truncated: header says %llu bytes, only %zu present", (unsigned long long)fsize, len);
-    if (fsize < len)
-        FAIL("bundle has %zu bytes after its declared end (%llu bytes)", len - (size_t)fsize, (unsigned long long)fsize);
     {
         uint8_t zero[4] = {0};
         uLong crc = crc32(0L, Z_NULL, 0);
@@ -353,51 +377,93 @@ fail:
     return NULL;
 }
 
+/* All of n bytes from fd at its current offset: 0, or -1 (errno set; 0
+ * for a file that ended early). */
+static int read_full(int fd, uint8_t *p, size_t n)
+{
+    while (n) {
+        ssize_t r = read(fd, p, n > (1u << 30) ? (1u << 30) : n);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0) {
+            if (r == 0)
+                errno = 0;
+            return -1;
+        }
+        p += r;
+        n -= (size_t)r;
+    }
+    return 0;
+}
+
+static const char *file_kind(mode_t m)
+{
+    return S_ISFIFO(m) ? "a FIFO" : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
+         : S_ISSOCK(m) ? "a socket" : "not a plain file";
+}
+
 gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
+    /* O_NONBLOCK: opening a FIFO must not wait for a writer; only regular
+     * files are read, and for those the flag changes nothing. */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
         gls_fail(err, __LINE__, "%s: cannot open: %s", path, strerror(errno));
         return NULL;
     }
     uint8_t *data = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            if (cap >= GLS_MAX_FILE_BYTES) {
-                gls_fail(err, __LINE__, "%s: larger than the %llu-byte bundle limit", path,
-                         (unsigned long long)GLS_MAX_FILE_BYTES);
-                goto fail;
-            }
-            cap = cap ? cap * 2 : 65536;
-            uint8_t *d = realloc(data, cap);
-            if (!d) {
-                gls_fail(err, __LINE__, "%s: out of memory", path);
-                goto fail;
-            }
-            data = d;
-        }
-        size_t r = fread(data + len, 1, cap - len, f);
-        len += r;
-        if (r == 0)
-            break;
-    }
-    if (ferror(f)) {
-        gls_fail(err, __LINE__, "%s: read error: %s", path, strerror(errno));
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        gls_fail(err, __LINE__, "%s: cannot read: %s", path, strerror(errno));
         goto fail;
     }
-    fclose(f);
-    gls_bundle *b = gls_bundle_read(data, len, err);
+    if (S_ISDIR(st.st_mode)) {
+        gls_fail(err, __LINE__, "%s: is a directory, not a bundle", path);
+        goto fail;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        gls_fail(err, __LINE__, "%s: is %s, not a regular file: a bundle is read from a file", path,
+                 file_kind(st.st_mode));
+        goto fail;
+    }
+    /* The header first: magic, version and declared size against the
+     * file's size, before anything else is read or allocated. */
+    uint64_t len = (uint64_t)st.st_size;
+    uint8_t head[GLS_HEADER_SIZE];
+    size_t nh = len < sizeof head ? (size_t)len : sizeof head;
+    if (read_full(fd, head, nh)) {
+        gls_fail(err, __LINE__, "%s: cannot read: %s", path, errno ? strerror(errno) : "the file shrank while reading");
+        goto fail;
+    }
+    if (check_start(head, nh, len, err))
+        goto prefix;
+    data = malloc((size_t)len);
+    if (!data) {
+        gls_fail(err, __LINE__, "%s: out of memory (%llu bytes)", path, (unsigned long long)len);
+        goto fail;
+    }
+    memcpy(data, head, nh);
+    if (read_full(fd, data + nh, (size_t)len - nh)) {
+        gls_fail(err, __LINE__, "%s: cannot read: %s", path, errno ? strerror(errno) : "the file shrank while reading");
+        goto fail;
+    }
+    close(fd);
+    fd = -1;
+    gls_bundle *b = gls_bundle_read(data, (size_t)len, err);
     free(data);
-    if (!b) {
+    if (b)
+        return b;
+    data = NULL;
+prefix:
+    {
         /* prefix the file name, keeping the message one line */
         char tmp[sizeof err->msg];
         memcpy(tmp, err->msg, sizeof tmp);
         snprintf(err->msg, sizeof err->msg, "%.200s: %.300s", path, tmp);
     }
-    return b;
 fail:
-    fclose(f);
+    if (fd >= 0)
+        close(fd);
     free(data);
     return NULL;
 }

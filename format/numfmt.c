@@ -1,3 +1,5 @@
+#include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,3 +39,18 @@ static void fmt(char *buf, size_t n, double v, int maxprec, int is_float)
 
 void gls_fmt_double(char *buf, size_t n, double v) { fmt(buf, n, v, 17, 0); }
 void gls_fmt_float(char *buf, size_t n, float v) { fmt(buf, n, (double)v, 9, 1); }
+
+const char *gls_parse_double(const char *tok, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (end == tok || *end || isnan(v) || (isinf(v) && errno != ERANGE))
+        return "is not a finite number";
+    if (isinf(v))
+        return "is too large for a double (magnitudes up to 1.8e308)";
+    if (v != 0 ? fabs(v) < DBL_MIN : errno == ERANGE)
+        return "is too close to zero for a double (nonzero magnitudes from 2.2e-308)";
+    *out = v;
+    return NULL;
+}

@@ -7,7 +7,8 @@
 
 /* Append "\n<line LINE of text>\n<spaces>^" to the NUL-terminated string
  * in buf (capacity cap), the caret under 1-based column COL (tabs kept so
- * it lines up).  Appends nothing if the line is over 200 bytes or does not
- * fit. */
+ * it lines up).  A line over 200 bytes is shown as a 160-byte window
+ * around the column, "..." marking the cut ends.  Appends nothing if it
+ * does not fit. */
 void gls_append_source_line(char *buf, size_t cap, const char *text, size_t len, unsigned line, unsigned col);
 #endif

@@ -13,6 +13,7 @@
 #include "camera.h"
 #include "mkdirs.h"
 #include "stdout_check.h"
+#include "textfile.h"
 #include "trajectory.h"
 
 static const char USAGE[] =
@@ -30,47 +31,6 @@ static int usage_error(const char *fmt, const char *arg)
     fprintf(stderr, fmt, arg);
     fprintf(stderr, "\n%s", USAGE);
     return 2;
-}
-
-static char *read_all(const char *path, size_t *len, char *err, size_t errlen)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    size_t cap = 65536, n = 0;
-    char *b = malloc(cap + 1);
-    while (b) {
-        size_t r = fread(b + n, 1, cap - n, f);
-        n += r;
-        if (n < cap)
-            break;
-        if (cap >= (1u << 30)) {
-            snprintf(err, errlen, "%s: error: larger than 1 GiB", path);
-            free(b);
-            fclose(f);
-            return NULL;
-        }
-        char *nb = realloc(b, 2 * cap + 1);
-        if (!nb) {
-            free(b);
-            b = NULL;
-            break;
-        }
-        b = nb;
-        cap *= 2;
-    }
-    if (!b || ferror(f)) {
-        snprintf(err, errlen, "%s: error: cannot read: %s", path, b ? strerror(errno) : "out of memory");
-        free(b);
-        fclose(f);
-        return NULL;
-    }
-    fclose(f);
-    b[n] = 0;
-    *len = n;
-    return b;
 }
 
 static int put(const char *dir, const char *name, const road_buf *b)
@@ -91,7 +51,7 @@ static int make_road(const char *in, const char *dir)
 {
     char err[1024];
     size_t len;
-    char *text = read_all(in, &len, err, sizeof err);
+    char *text = gls_text_read(in, ROAD_MAX_FILE, "road description", &len, err, sizeof err);
     if (!text) {
         fprintf(stderr, "%s\n", err);
         return 1;
@@ -160,7 +120,7 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
     if (gls_traj_range(frame_s, &first, &end, err, sizeof err) || end != first + 1)
         return usage_error("--camera-at: '%s' is not a frame number", frame_s);
     size_t len;
-    char *text = read_all(cam_path, &len, err, sizeof err);
+    char *text = gls_text_read(cam_path, GLS_CAMERA_MAX_FILE, "camera file", &len, err, sizeof err);
     if (!text) {
         fprintf(stderr, "%s\n", err);
         return 1;
@@ -168,13 +128,13 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
     /* the camera relative to the rig: parsed and checked by the player's
        own camera-file parser, so both tools accept the same files */
     gls_camera cam;
-    if (gls_camera_parse(text, len, cam_path, &cam, err, sizeof err)) {
+    if (gls_camera_parse(text, len, cam_path, GLS_POSE_RIG, stderr, &cam, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         free(text);
         return 1;
     }
     const double *Rc = cam.R, *Tc = cam.T;
-    gls_traj *t = gls_traj_open(traj_path, err, sizeof err);
+    gls_traj *t = gls_traj_open(traj_path, stderr, err, sizeof err);
     if (!t) {
         fprintf(stderr, "%s\n", err);
         free(text);
@@ -195,15 +155,21 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
     }
     double R[9], T[3];
     gls_traj_compose(Rc, Tc, pose.R, pose.T, R, T);
-    /* the camera file again, with R and T replaced */
+    /* the camera file again, with R and T replaced and its pose declared a
+       world pose (a 'pose rig' line becomes 'pose world') */
     printf("# %s at frame %llu (t = %.17g s) of %s\n", cam_path, (unsigned long long)first, pose.time, traj_path);
+    if (!cam.pose)
+        printf("pose world\n");
     for (char *p = text; *p;) {
         char *nl = strchr(p, '\n');
         size_t n = nl ? (size_t)(nl - p) : strlen(p);
         size_t skip = strspn(p, " \t\r");
         int key = skip < n && (p[skip] == 'R' || p[skip] == 'T') &&
                   (skip + 1 == n || strchr(" \t\r#", p[skip + 1]));
-        if (key) {
+        int pose_key = n - skip >= 4 && !strncmp(p + skip, "pose", 4) && (skip + 4 == n || strchr(" \t\r#", p[skip + 4]));
+        if (pose_key) {
+            printf("pose world\n");
+        } else if (key) {
             double *v = p[skip] == 'R' ? R : T;
             int m = p[skip] == 'R' ? 9 : 3;
             printf("%c", p[skip]);

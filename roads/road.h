@@ -13,6 +13,9 @@
 
 #define ROAD_MAX_LANES 16
 #define ROAD_NAME_MAX 256
+/* The largest road description read (spec/road.md): some 300,000 control
+ * points; a wrong path (a device, a huge file) is refused after this. */
+#define ROAD_MAX_FILE ((size_t)16 << 20)
 
 enum { MARK_NONE, MARK_SOLID, MARK_DASHED, MARK_DOUBLE };
 

@@ -11,6 +11,7 @@
 #include "road.h"
 #include "srcline.h"
 #include "suggest.h"
+#include "textfile.h"
 
 #define MAXTOK 64
 
@@ -28,7 +29,7 @@ typedef struct {
 /* Point the next error at token tok of the current line. */
 static void at(pctx *c, const char *tok)
 {
-    if (c->linebuf && tok >= c->linebuf && tok < c->linebuf + 4096)
+    if (c->linebuf && tok >= c->linebuf && tok <= c->linebuf + GLS_TEXT_MAX_LINE)
         c->col = (int)(tok - c->linebuf) + 1;
 }
 
@@ -488,23 +489,22 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
     defaults(d);
     pctx c = {fname, 0, err, errlen, text, len, NULL, 1};
     int seen_degree = 0;
-    size_t i = 0;
-    char line[4096];
-    while (i < len) {
-        size_t j = i;
-        while (j < len && text[j] != '\n')
-            j++;
-        c.line++;
+    gls_text_lines it = {text, len, 0, 0};
+    const char *start;
+    size_t n;
+    int got;
+    char line[GLS_TEXT_MAX_LINE + 1];
+    while ((got = gls_text_next_line(&it, &start, &n)) != 0) {
+        c.line = (int)it.line;
         c.col = 1;
         c.linebuf = NULL;
-        size_t n = j - i;
-        if (n >= sizeof line) {
-            fail(&c, "line longer than %zu bytes", sizeof line - 1);
+        if (got < 0) {
+            c.col = GLS_TEXT_MAX_LINE + 1;
+            fail(&c, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
             goto bad;
         }
-        memcpy(line, text + i, n);
+        memcpy(line, start, n);
         line[n] = 0;
-        i = j + 1;
         if (memchr(line, 0, n)) {
             fail(&c, "NUL byte in the description");
             goto bad;

@@ -2,6 +2,7 @@
  * (spec/camera.md "Projection", "Depth", "Back-projection"). */
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -9,13 +10,15 @@
 #include <string.h>
 #include "camera.h"
 #include "numfmt.h"
+#include "rotation.h"
 #include "srcline.h"
 #include "suggest.h"
+#include "textfile.h"
 
-enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_COUNT };
+enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE, K_COUNT };
 static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
-                                              "skew", "R", "T", "near", "far"};
-static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1};
+                                              "skew", "R", "T", "near", "far", "pose"};
+static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1}; /* pose: a word */
 
 /* "FILE:LINE:COL: error: message", then the source line and a caret under
  * the column (as the scene compiler reports), into err. */
@@ -37,66 +40,50 @@ static const char *suggest(const char *word)
     return gls_suggest(word, strlen(word), key_name, K_COUNT);
 }
 
-/* One number token: the whole token must be a finite decimal number. */
-static int parse_number(const char *tok, double *out)
+int gls_camera_depth_range(double near, double far, double *near_min, double *near_max)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(tok, &end);
-    if (end == tok || *end || errno == ERANGE || !isfinite(v))
-        return -1;
-    *out = v;
-    return 0;
+    const double L = GLS_DEPTH_MIN, M = FLT_MAX;
+    /* a = n/(f-n) >= L  <=>  n >= L f/(1+L);  b = n f/(f-n) >= L  <=>  n >= L f/(f+L);
+       b <= M  <=>  n <= M f/(f+M)  (spec/camera.md "Depth range") */
+    *near_min = fmax(L * far / (1 + L), L * far / (far + L));
+    *near_max = M * (far / (far + M));
+    double a = near / (far - near), b = a * far;
+    return a >= L && b >= L && b <= M ? 0 : -1;
 }
 
-static int check_rotation(const double R[9], char *why, size_t whylen)
+/* v rounded to 3 significant digits, up (dir > 0) or down: a limit that
+ * reads well in a message and is still on the right side of the exact one. */
+static void fmt_limit(char *buf, size_t n, double v, int dir)
 {
-    /* R R^T = I to 1e-6 (each entry), det R = +1 to 1e-6. */
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            double s = 0;
-            for (int k = 0; k < 3; k++)
-                s += R[3 * i + k] * R[3 * j + k];
-            double e = s - (i == j);
-            if (fabs(e) > 1e-6) {
-                snprintf(why, whylen, "R is not orthonormal: (R R^T)[%d][%d] = %.9g, must be %d within 1e-6", i,
-                         j, s, i == j);
-                return -1;
-            }
-        }
-    double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
-                 R[2] * (R[3] * R[7] - R[4] * R[6]);
-    if (fabs(det - 1) > 1e-6) {
-        snprintf(why, whylen, "R has determinant %.9g; a rotation needs +1 (a reflection swaps handedness)", det);
-        return -1;
-    }
-    return 0;
+    snprintf(buf, n, "%.3g", v * (dir > 0 ? 1.01 : 0.99));
+    if (dir > 0 ? strtod(buf, NULL) < v : strtod(buf, NULL) > v)
+        gls_fmt_double(buf, n, v);
 }
 
 #define MAX_TOKENS 16
 
-int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera *cam, char *err, size_t errlen)
+int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes, gls_camera *cam,
+                     char *err, size_t errlen)
 {
+    gls_pose pose = GLS_POSE_UNDECLARED;
     double val[K_COUNT][9];
     unsigned seen[K_COUNT] = {0}; /* line where each key was given, 0 = absent */
     unsigned vcol[K_COUNT] = {0}; /* column of its first value              */
     unsigned last = 0;            /* last line holding a key               */
-    unsigned line = 0;
-    size_t p = 0;
-    char buf[4096];
-    while (p < len) {
-        size_t e = p;
-        while (e < len && text[e] != '\n')
-            e++;
-        line++;
-        size_t n = e - p;
-        if (n >= sizeof buf) {
-            errf(err, errlen, text, len, fname, line, 1, "line longer than %zu bytes", sizeof buf - 1);
+    gls_text_lines it = {text, len, 0, 0};
+    const char *start;
+    size_t n;
+    int got;
+    char buf[GLS_TEXT_MAX_LINE + 1];
+    while ((got = gls_text_next_line(&it, &start, &n)) != 0) {
+        unsigned line = it.line;
+        if (got < 0) {
+            errf(err, errlen, text, len, fname, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes",
+                 GLS_TEXT_MAX_LINE);
             return -1;
         }
-        memcpy(buf, text + p, n);
+        memcpy(buf, start, n);
         buf[n] = 0;
-        p = e + 1;
         for (size_t i = 0; i < n; i++)
             if (buf[i] == '#' || buf[i] == '\r')
                 buf[i] = 0;
@@ -124,7 +111,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
                 errf(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
             else
                 errf(err, errlen, text, len, fname, line, COL(tok[0]),
-                     "unknown key '%s' (keys: width height fx fy cx cy skew R T near far)", tok[0]);
+                     "unknown key '%s' (keys: width height fx fy cx cy skew R T near far pose)", tok[0]);
             return -1;
         }
         if (seen[k]) {
@@ -132,24 +119,55 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
                  seen[k]);
             return -1;
         }
+        if (k == K_POSE) {
+            if (nt != 2) {
+                errf(err, errlen, text, len, fname, line, COL(tok[0]), "key 'pose' takes one word, world or rig, got %s%d",
+                     nt > MAX_TOKENS ? "more than " : "", nt - 1);
+                return -1;
+            }
+            pose = strcmp(tok[1], "world") == 0 ? GLS_POSE_WORLD : strcmp(tok[1], "rig") == 0 ? GLS_POSE_RIG
+                                                                                            : GLS_POSE_UNDECLARED;
+            if (!pose) {
+                errf(err, errlen, text, len, fname, line, COL(tok[1]),
+                     "key 'pose': '%s' is neither world (R and T map the world into the camera) nor rig (they map the "
+                     "rig, with a trajectory)", tok[1]);
+                return -1;
+            }
+            seen[k] = line;
+            vcol[k] = COL(tok[1]);
+            last = line;
+            continue;
+        }
+        /* "T 0,0,0" or "cx 319,5": point at the comma, not at the count */
+        for (int j = 1; j < nt; j++) {
+            char *comma = strchr(tok[j], ',');
+            if (comma) {
+                errf(err, errlen, text, len, fname, line, COL(comma),
+                     "key '%s': a comma in '%s': separate numbers with spaces and write decimals with '.'", key_name[k],
+                     tok[j]);
+                return -1;
+            }
+        }
         if (nt - 1 != key_arity[k]) {
             errf(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' takes %d number%s, got %s%d", key_name[k],
                  key_arity[k], key_arity[k] == 1 ? "" : "s", nt > MAX_TOKENS ? "more than " : "", nt - 1);
             return -1;
         }
-        for (int j = 0; j < key_arity[k]; j++)
-            if (parse_number(tok[1 + j], &val[k][j])) {
-                errf(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' is not a finite number",
-                     key_name[k], tok[1 + j]);
+        for (int j = 0; j < key_arity[k]; j++) {
+            const char *why = gls_parse_double(tok[1 + j], &val[k][j]);
+            if (why) {
+                errf(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' %s", key_name[k],
+                     tok[1 + j], why);
                 return -1;
             }
+        }
         seen[k] = line;
         vcol[k] = COL(tok[1]);
         last = line;
 #undef COL
     }
     for (int k = 0; k < K_COUNT; k++)
-        if (!seen[k] && k != K_SKEW) {
+        if (!seen[k] && k != K_SKEW && k != K_POSE) {
             errf(err, errlen, text, len, fname, last ? last : 1, 1,
                  "missing key '%s' (required: width height fx fy cx cy R T near far)", key_name[k]);
             return -1;
@@ -184,11 +202,42 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
         errf(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "far (%s) must be greater than near (%s)", f, n);
         return -1;
     }
-    char why[200];
-    if (check_rotation(val[K_R], why, sizeof why)) {
+    double nmin, nmax;
+    if (gls_camera_depth_range(val[K_NEAR][0], val[K_FAR][0], &nmin, &nmax)) {
+        char n[40], f[40], lim[40];
+        gls_fmt_double(n, sizeof n, val[K_NEAR][0]);
+        gls_fmt_double(f, sizeof f, val[K_FAR][0]);
+        int small = val[K_NEAR][0] < nmin;
+        fmt_limit(lim, sizeof lim, small ? nmin : nmax, small ? 1 : -1);
+        errf(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR],
+             "near %s is too %s for far %s: the float depth buffer would lose precision; near must be %s %s "
+             "(spec/camera.md, Depth range)",
+             n, small ? "small" : "large", f, small ? "at least" : "at most", lim);
+        return -1;
+    }
+    /* the same file must not give different images: a declared frame is
+       checked against the use */
+    if (pose && use && pose != use) {
+        errf(err, errlen, text, len, fname, seen[K_POSE], vcol[K_POSE],
+             pose == GLS_POSE_WORLD
+                 ? "'pose world': R and T are declared the camera's pose in the world, but they are used relative to "
+                   "the rig here (with a trajectory); use a camera file declared 'pose rig'"
+                 : "'pose rig': R and T are declared relative to the rig, which needs a trajectory (glsplay "
+                   "--trajectory, or glsroad --camera-at for one frame)");
+        return -1;
+    }
+    char why[300];
+    int rot = gls_rotation_check(val[K_R], why, sizeof why);
+    if (rot < 0) {
         errf(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
         return -1;
     }
+    /* notes only for a file that is accepted */
+    if (rot > 0 && notes)
+        fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
+    if (!pose && use == GLS_POSE_RIG && notes)
+        fprintf(notes, "%s: note: no 'pose' key: R and T are taken relative to the rig, as a trajectory needs; add "
+                       "'pose rig' to say so\n", fname);
     memset(cam, 0, sizeof *cam);
     cam->width = (uint32_t)val[K_WIDTH][0];
     cam->height = (uint32_t)val[K_HEIGHT][0];
@@ -201,35 +250,17 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera
     memcpy(cam->T, val[K_T], sizeof cam->T);
     cam->near = val[K_NEAR][0];
     cam->far = val[K_FAR][0];
+    cam->pose = pose;
     return 0;
 }
 
-int gls_camera_load(const char *path, gls_camera *cam, char *err, size_t errlen)
+int gls_camera_load(const char *path, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: error: cannot open camera file: %s", path, strerror(errno));
+    size_t n;
+    char *text = gls_text_read(path, GLS_CAMERA_MAX_FILE, "camera file", &n, err, errlen);
+    if (!text)
         return -1;
-    }
-    /* Camera files are a few hundred bytes; 1 MiB is a generous cap that
-     * keeps a wrong path (a bundle, a device) from being slurped whole. */
-    size_t cap = 1u << 20, n = 0;
-    char *text = malloc(cap);
-    if (!text) {
-        fclose(f);
-        snprintf(err, errlen, "%s: error: out of memory", path);
-        return -1;
-    }
-    n = fread(text, 1, cap, f);
-    int bad = ferror(f);
-    int more = !bad && n == cap && fgetc(f) != EOF;
-    fclose(f);
-    if (bad || more) {
-        free(text);
-        snprintf(err, errlen, "%s: error: %s", path, bad ? "read error" : "camera file larger than 1 MiB");
-        return -1;
-    }
-    int r = gls_camera_parse(text, n, path, cam, err, errlen);
+    int r = gls_camera_parse(text, n, path, use, notes, cam, err, errlen);
     free(text);
     return r;
 }

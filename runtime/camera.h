@@ -10,8 +10,18 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #define GLS_CAMERA_MAX_DIM 16384u
+/* Camera files are a few hundred bytes; the cap keeps a wrong path (a
+ * bundle, a device) from being read whole (spec/camera.md). */
+#define GLS_CAMERA_MAX_FILE ((size_t)1 << 20)
+
+/* The frame a camera file's R and T are given in (its 'pose' key):
+ * undeclared, the world (P_cam = R P_world + T), or the rig of a
+ * trajectory (P_cam = R P_rig + T).  As a use: how the caller applies R
+ * and T; GLS_POSE_UNDECLARED then means "either, no check". */
+typedef enum { GLS_POSE_UNDECLARED = 0, GLS_POSE_WORLD = 1, GLS_POSE_RIG = 2 } gls_pose;
 
 typedef struct {
     uint32_t width, height;
@@ -19,15 +29,30 @@ typedef struct {
     double R[9];           /* world to camera, row-major                  */
     double T[3];           /* Pc = R * P + T                               */
     double near, far;      /* clipping distances along +Z, scene units    */
+    gls_pose pose;         /* as the file declares it                     */
 } gls_camera;
 
-/* Parse a camera file's text.  fname is used only in messages.  On error
- * returns -1 and writes one line "fname:line: error: message" to err. */
-int gls_camera_parse(const char *text, size_t len, const char *fname, gls_camera *cam, char *err,
-                     size_t errlen);
+/* Parse a camera file's text.  fname is used only in messages.  use is
+ * how the caller applies R and T (GLS_POSE_WORLD for a single render,
+ * GLS_POSE_RIG with a trajectory, GLS_POSE_UNDECLARED: no check); a file
+ * declaring the other frame is an error at its 'pose' line.  On error
+ * returns -1 and writes "fname:line:col: error: message", the source line
+ * and a caret to err.  Notes about an accepted file go to notes, one line
+ * each (R re-orthonormalised, runtime/rotation.h; a rig use of a file
+ * that does not declare its frame); NULL drops them. */
+int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes, gls_camera *cam,
+                     char *err, size_t errlen);
 
 /* Read and parse a camera file ("fname: error: ..." if it cannot be read). */
-int gls_camera_load(const char *path, gls_camera *cam, char *err, size_t errlen);
+int gls_camera_load(const char *path, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen);
+
+/* Reversed-Z float depth keeps float precision only while the mapping's
+ * coefficients a = n/(f-n), b = n f/(f-n) are at least 2^-102 and b is at
+ * most FLT_MAX (spec/camera.md "Depth range").  0 if near, far (far > near
+ * > 0) qualify, else -1; either way *near_min and *near_max are the limits
+ * on near for this far. */
+#define GLS_DEPTH_MIN 0x1p-102
+int gls_camera_depth_range(double near, double far, double *near_min, double *near_max);
 
 /* Projection matrix, row-major, eye space -> clip space, for a principal
  * point shifted by (du, dv) pixels (0,0 for a plain render; sub-pixel

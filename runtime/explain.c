@@ -80,6 +80,15 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         const gls_camera *c = &cams[i];
         fprintf(out, "camera %s: %ux%u fx %g fy %g cx %g cy %g skew %g near %g far %g\n", names[i], c->width,
                 c->height, c->fx, c->fy, c->cx, c->cy, c->skew, c->near, c->far);
+        /* the frame R and T are in: declared by the file, or implied by
+           --trajectory (spec/camera.md "The pose's frame") */
+        if (o->trajectory)
+            fprintf(out, "  pose: rig (%s): R and T map the rig into the camera, composed with each frame of %s\n",
+                    c->pose == GLS_POSE_RIG ? "declared by 'pose rig'" : "not declared; implied by --trajectory",
+                    o->trajectory);
+        else
+            fprintf(out, "  pose: world (%s): R and T map the world into the camera\n",
+                    c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
         if (aa) {
             uint32_t kx, ky;
             gls_aa_mosaic_shape(NULL, c->width, c->height, p.count, o->aa_tiles, &kx, &ky);

@@ -214,7 +214,7 @@ static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_
                            const char *const *names, FILE *errs)
 {
     char err[1024];
-    gls_traj *t = gls_traj_open(o->trajectory, err, sizeof err);
+    gls_traj *t = gls_traj_open(o->trajectory, errs, err, sizeof err);
     if (!t) {
         fprintf(errs, "%s\n", err);
         return 1;
@@ -283,7 +283,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     b = gls_bundle_read_file(o->bundle, &gerr);
     if (!b) {
-        fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, gerr.msg);
+        fprintf(errs, "glsplay: error: %s\n", gerr.msg); /* the message names the file */
         goto out;
     }
     if (b->top == GLS_NONE) {
@@ -292,7 +292,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     for (size_t i = 0; i < o->ncameras; i++) {
-        if (gls_camera_load(o->cameras[i], &cams[i], err, sizeof err)) {
+        if (gls_camera_load(o->cameras[i], o->trajectory ? GLS_POSE_RIG : GLS_POSE_WORLD, errs, &cams[i], err,
+                            sizeof err)) {
             fprintf(errs, "%s\n", err);
             goto out;
         }

@@ -6,17 +6,22 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include "numfmt.h"
+#include "rotation.h"
+#include "textfile.h"
 #include "trajectory.h"
 
 struct gls_traj {
     FILE *f;
     char *path;
-    char *buf;
-    size_t cap;
     unsigned line;
+    FILE *notes;
+    int noted; /* the note on a re-orthonormalised R was given */
     int have_prev;
     uint64_t prev_frame;
     double prev_time;
+    char buf[GLS_TEXT_MAX_LINE + 1]; /* one line: memory stays bounded */
 };
 
 static int fail(const gls_traj *t, char *err, size_t errlen, const char *fmt, ...)
@@ -30,7 +35,7 @@ static int fail(const gls_traj *t, char *err, size_t errlen, const char *fmt, ..
     return -1;
 }
 
-gls_traj *gls_traj_open(const char *path, char *err, size_t errlen)
+gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen)
 {
     gls_traj *t = calloc(1, sizeof *t);
     if (!t || !(t->path = strdup(path))) {
@@ -38,11 +43,18 @@ gls_traj *gls_traj_open(const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: error: out of memory", path);
         return NULL;
     }
+    t->notes = notes;
     t->f = fopen(path, "r");
     if (!t->f) {
         snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
         free(t->path);
         free(t);
+        return NULL;
+    }
+    struct stat st;
+    if (fstat(fileno(t->f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
+        gls_traj_close(t);
         return NULL;
     }
     return t;
@@ -54,24 +66,8 @@ void gls_traj_close(gls_traj *t)
         return;
     if (t->f)
         fclose(t->f);
-    free(t->buf);
     free(t->path);
     free(t);
-}
-
-const char *gls_traj_check_rotation(const double R[9])
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            double d = R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2];
-            if (!(fabs(d - (i == j)) <= 1e-6))
-                return "R is not orthonormal (R R^T differs from the identity by more than 1e-6)";
-        }
-    double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
-                 R[2] * (R[3] * R[7] - R[4] * R[6]);
-    if (!(fabs(det - 1) <= 1e-6))
-        return "R has determinant -1: a reflection, not a rotation";
-    return NULL;
 }
 
 /* A whole number token: digits only, no sign, fits in 64 bits. */
@@ -95,11 +91,14 @@ static int parse_u64(const char *s, uint64_t *out)
 int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
 {
     for (;;) {
-        errno = 0;
-        ssize_t n = getline(&t->buf, &t->cap, t->f);
-        if (n < 0) {
-            if (ferror(t->f))
-                return fail(t, err, errlen, "read error: %s", strerror(errno ? errno : EIO));
+        size_t n;
+        int got = gls_text_getline(t->f, t->buf, &n);
+        if (got == -2) {
+            int e = errno ? errno : EIO;
+            t->line++;
+            return fail(t, err, errlen, "read error: %s", strerror(e));
+        }
+        if (got == 0) {
             if (!t->have_prev) {
                 t->line = t->line ? t->line : 1;
                 return fail(t, err, errlen, "no frames in the trajectory");
@@ -107,7 +106,9 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
             return 0;
         }
         t->line++;
-        if ((size_t)n != strlen(t->buf))
+        if (got < 0)
+            return fail(t, err, errlen, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
+        if (memchr(t->buf, 0, n))
             return fail(t, err, errlen, "NUL byte in the line");
         char *hash = strchr(t->buf, '#');
         if (hash)
@@ -129,10 +130,9 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
             return fail(t, err, errlen, "frame '%s' is not a whole number", tok[0]);
         double v[13];
         for (int i = 0; i < 13; i++) {
-            char *end;
-            v[i] = strtod(tok[i + 1], &end);
-            if (end == tok[i + 1] || *end || !isfinite(v[i]))
-                return fail(t, err, errlen, "value %d ('%s') is not a finite number", i + 2, tok[i + 1]);
+            const char *why = gls_parse_double(tok[i + 1], &v[i]);
+            if (why)
+                return fail(t, err, errlen, "value %d ('%s') %s", i + 2, tok[i + 1], why);
         }
         p->time = v[0];
         memcpy(p->R, v + 1, sizeof p->R);
@@ -143,9 +143,15 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
                         (unsigned long long)p->frame, (unsigned long long)t->prev_frame);
         if (t->have_prev && !(p->time > t->prev_time))
             return fail(t, err, errlen, "time %.17g is not after the previous frame's %.17g", p->time, t->prev_time);
-        const char *why = gls_traj_check_rotation(p->R);
-        if (why)
+        char why[300];
+        int rot = gls_rotation_check(p->R, why, sizeof why);
+        if (rot < 0)
             return fail(t, err, errlen, "%s", why);
+        /* one note per file: a trajectory printed with few decimals would
+           repeat it on every line */
+        if (rot > 0 && t->notes && !t->noted++)
+            fprintf(t->notes, "%s:%u: note: %s (and on every later line where needed, without a note)\n", t->path,
+                    t->line, why);
         t->have_prev = 1;
         t->prev_frame = p->frame;
         t->prev_time = p->time;

@@ -11,7 +11,7 @@
  *
  * Typical use (memory stays flat: one line at a time):
  *
- *     gls_traj *t = gls_traj_open(path, err, sizeof err);
+ *     gls_traj *t = gls_traj_open(path, stderr, err, sizeof err);
  *     gls_traj_pose p;
  *     int r;
  *     while ((r = gls_traj_next(t, &p, err, sizeof err)) == 1) {
@@ -27,6 +27,7 @@
 #define GLS_TRAJECTORY_H
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 typedef struct {
     uint64_t frame;    /* frame index: strictly increasing through the file */
@@ -38,14 +39,17 @@ typedef struct {
 
 typedef struct gls_traj gls_traj;
 
-/* Open a trajectory file.  NULL on error, with "path: error: why" in err. */
-gls_traj *gls_traj_open(const char *path, char *err, size_t errlen);
+/* Open a trajectory file.  NULL on error, with "path: error: why" in err.
+ * Notes (an R re-orthonormalised, once per file) go to notes; NULL drops
+ * them. */
+gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen);
 
 /* The next frame: 1 (pose filled), 0 (end of file; an empty file -- no
  * frame at all -- is an error), or -1 with "path:line: error: message" in
  * err.  Checks every line: 14 finite numbers, FRAME a whole number,
- * frame and time strictly increasing, R orthonormal with determinant +1
- * (each entry of R R^T within 1e-6 of I, det within 1e-6 of 1). */
+ * frame and time strictly increasing, R a rotation (gls_rotation_check:
+ * used as given within 1e-6, replaced by the nearest rotation within
+ * 1e-4, refused beyond). */
 int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen);
 
 void gls_traj_close(gls_traj *t);
@@ -61,6 +65,4 @@ void gls_traj_compose(const double Rc[9], const double Tc[3], const double Rr[9]
  * ("--frames: ...") in err. */
 int gls_traj_range(const char *s, uint64_t *first, uint64_t *end, char *err, size_t errlen);
 
-/* The check gls_traj_next applies to R: NULL if proper orthonormal, else why. */
-const char *gls_traj_check_rotation(const double R[9]);
 #endif

@@ -12,7 +12,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     memcpy(text, data, size);
     text[size] = 0;
-    gls_camera_parse(text, size, "fuzz.cam", &c, err, sizeof err);
+    gls_camera_parse(text, size, "fuzz.cam", GLS_POSE_UNDECLARED, NULL, &c, err, sizeof err);
     free(text);
     return 0;
 }

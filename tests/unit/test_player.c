@@ -235,6 +235,46 @@ static void test_depth_fronto_parallel(void)
     gls_bundle_free(b);
 }
 
+/* The near limit of spec/camera.md "Depth range", rendered: with near just
+   above the smallest near for far = 1000 every plane up to 0.999 far is
+   drawn with its depth; far below the limit (near / 1e6, which the camera
+   parser refuses) the far planes' depths are subnormal floats and vanish. */
+static void test_depth_near_limit(void)
+{
+    static const double depths[] = {0.5, 10, 300, 900, 999};
+    enum { ND = sizeof depths / sizeof depths[0] };
+    double T[3] = {0, 0, 0}, nmin, nmax;
+    CHECK(gls_camera_depth_range(1, 1000, &nmin, &nmax) == 0);
+    for (int pass = 0; pass < 2; pass++) {
+        double n = pass == 0 ? nmin * 1.01 : nmin * 1e-6;
+        CHECK(gls_camera_depth_range(n, 1000, &nmin, &nmax) == (pass == 0 ? 0 : -1));
+        gls_camera c = tb_camera(50, 50, 40, 40, 24.5, 24.5, 0, I3, T, n, 1000);
+        tb t;
+        tb_init(&t);
+        tb_object(&t, "scene", 1);
+        for (int k = 0; k < ND; k++) { /* band k: rows 10k..10k+9 */
+            double Z = depths[k], y0 = (10 * k - 0.5 - c.cy) * Z / c.fy, y1 = (10 * k + 9.5 - c.cy) * Z / c.fy;
+            tb_rect_z(&t, -Z, y0, Z, y1, Z);
+        }
+        gls_bundle *b = tb_finish(&t);
+        float z[50 * 50];
+        CHECK(tb_render(ctx, b, &c, 0, 0, NULL, z) == 0);
+        printf("  near %.3g:", n);
+        int lost = 0;
+        for (int k = 0; k < ND; k++) {
+            double e = fabs(z[(10 * k + 5) * 50 + 25] - depths[k]) / depths[k];
+            printf(" %g:%.2g", depths[k], e);
+            if (pass == 0)
+                CHECK_MSG(e < 1e-5, "near %g: plane at %g has depth %g", n, depths[k], z[(10 * k + 5) * 50 + 25]);
+            lost += isinf(z[(10 * k + 5) * 50 + 25]);
+        }
+        printf("%s\n", lost ? " (planes lost)" : "");
+        if (pass == 1)
+            CHECK_MSG(lost > 0, "below the limit every plane was still drawn: the limit is stricter than needed");
+        gls_bundle_free(b);
+    }
+}
+
 /* A plane through three world points; returns unit normal n and d with
  * n.P = d. */
 static void plane_of(const double a[3], const double b[3], const double c[3], double n[3], double *d)
@@ -743,6 +783,7 @@ int main(int argc, char **argv)
     RUN(test_projection_detects_shift);
     RUN(test_depth_fronto_parallel);
     RUN(test_depth_slanted_plane);
+    RUN(test_depth_near_limit);
     RUN(test_points_on_plane);
     RUN(test_far_from_origin_identical);
     RUN(test_far_from_origin_generic);

@@ -3,6 +3,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 #include "check.h"
+#include "rotation.h"
+#include "textfile.h"
 #include "trajectory.h"
 
 static char dir[64];
@@ -20,7 +22,7 @@ static const char *write_file(const char *name, const char *text)
 /* Read all frames; returns the count, or -1 with err filled. */
 static long read_all(const char *path, gls_traj_pose *last, char *err, size_t errlen)
 {
-    gls_traj *t = gls_traj_open(path, err, errlen);
+    gls_traj *t = gls_traj_open(path, NULL, err, errlen);
     if (!t)
         return -1;
     long n = 0;
@@ -39,7 +41,7 @@ static void test_read(void)
                                          "7\t0.28\t1 0 0 0 1 0 0 0 1 0.1 0.2 0.30000000000000004\r\n");
     gls_traj *t;
     char err[512];
-    CHECK((t = gls_traj_open(p, err, sizeof err)) != NULL);
+    CHECK((t = gls_traj_open(p, NULL, err, sizeof err)) != NULL);
     gls_traj_pose q;
     CHECK(gls_traj_next(t, &q, err, sizeof err) == 1);
     CHECK(q.frame == 0 && q.time == 0 && q.R[0] == 1 && q.line == 3);
@@ -76,20 +78,56 @@ static void test_errors(void)
     snprintf(t, sizeof t, "0 0 %s 0 nan 0\n", I);
     expect_error("nan.txt", t, "nan.txt:1: error: value 13 ('nan') is not a finite number");
     snprintf(t, sizeof t, "0 0 %s 0 0 1e999\n", I);
-    expect_error("inf.txt", t, "inf.txt:1: error: value 14 ('1e999') is not a finite number");
+    expect_error("inf.txt", t, "inf.txt:1: error: value 14 ('1e999') is too large for a double (magnitudes up to 1.8e308)");
+    snprintf(t, sizeof t, "0 0 %s 1e-320 0 0\n", I);
+    expect_error("tiny.txt", t,
+                 "tiny.txt:1: error: value 12 ('1e-320') is too close to zero for a double (nonzero magnitudes from 2.2e-308)");
     snprintf(t, sizeof t, "3 0 %s 0 0 0\n# c\n3 1 %s 0 0 0\n", I, I);
     expect_error("order.txt", t, "order.txt:3: error: frame 3 does not follow frame 3: frames must increase");
     snprintf(t, sizeof t, "3 1 %s 0 0 0\n4 1 %s 0 0 0\n", I, I);
     expect_error("time.txt", t, "time.txt:2: error: time 1 is not after the previous frame's 1");
     expect_error("scaled.txt", "0 0 1.001 0 0 0 1 0 0 0 1 0 0 0\n",
-                 "scaled.txt:1: error: R is not orthonormal (R R^T differs from the identity by more than 1e-6)");
+                 "scaled.txt:1: error: R is not orthonormal: (R R^T)[0][0] = 1.002001, must be 1 within 1e-4");
     expect_error("mirror.txt", "0 0 -1 0 0 0 1 0 0 0 1 0 0 0\n",
-                 "mirror.txt:1: error: R has determinant -1: a reflection, not a rotation");
+                 "mirror.txt:1: error: R has determinant -1; a rotation needs +1 (a reflection swaps handedness)");
     expect_error("empty.txt", "# nothing\n", "empty.txt:1: error: no frames in the trajectory");
     char err[512];
     snprintf(t, sizeof t, "%s/none.txt", dir);
-    CHECK(gls_traj_open(t, err, sizeof err) == NULL);
+    CHECK(gls_traj_open(t, NULL, err, sizeof err) == NULL);
     CHECK_MSG(strstr(err, "none.txt: error: cannot open: No such file") != NULL, "%s", err);
+}
+
+/* Rotations printed with 5 decimals are re-orthonormalised, with one note
+   per file (at the first such line); beyond 1e-4 they are refused. */
+static void test_rotation_tolerance(void)
+{
+    const char *R5 = "0.91839 -0.23599 0.3176  0.3176 0.91839 -0.23599  -0.23599 0.3176 0.91839";
+    char text[512], err[512] = "", *notes = NULL;
+    size_t nlen = 0;
+    snprintf(text, sizeof text, "0 0 1 0 0 0 1 0 0 0 1 0 0 0\n1 0.1 %s 0 0 0\n2 0.2 %s 1 2 3\n", R5, R5);
+    const char *p = write_file("r5.txt", text);
+    FILE *nf = open_memstream(&notes, &nlen);
+    gls_traj *t = gls_traj_open(p, nf, err, sizeof err);
+    CHECK(t != NULL);
+    gls_traj_pose q;
+    int n = 0, r;
+    double worst = 0;
+    while (t && (r = gls_traj_next(t, &q, err, sizeof err)) == 1) {
+        n++;
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                worst = fmax(worst, fabs(q.R[3 * i] * q.R[3 * j] + q.R[3 * i + 1] * q.R[3 * j + 1] +
+                                         q.R[3 * i + 2] * q.R[3 * j + 2] - (i == j)));
+    }
+    gls_traj_close(t);
+    fclose(nf);
+    CHECK_MSG(n == 3, "%d frames: %s", n, err);
+    CHECK_MSG(worst < 1e-15, "R R^T - I up to %g", worst);
+    char want[256];
+    snprintf(want, sizeof want, "%s:2: note: R is orthonormal only within ", p);
+    CHECK_MSG(notes && strncmp(notes, want, strlen(want)) == 0 && strchr(notes, '\n') == notes + nlen - 1, "'%s'",
+              notes ? notes : "");
+    free(notes);
 }
 
 /* Compose against transforming a point in two steps. */
@@ -109,7 +147,8 @@ static void test_compose(void)
         Pd[i] = R[3 * i] * P[0] + R[3 * i + 1] * P[1] + R[3 * i + 2] * P[2] + T[i];
     for (int i = 0; i < 3; i++)
         CHECK_NEAR(Pd[i], Pc[i], 1e-9);
-    CHECK(gls_traj_check_rotation(R) == NULL);
+    char why[300];
+    CHECK(gls_rotation_check(R, why, sizeof why) == 0);
     /* identity camera: the rig's pose itself */
     double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, Z[3] = {0, 0, 0};
     gls_traj_compose(I, Z, Rr, Tr, R, T);
@@ -131,6 +170,34 @@ static void test_range(void)
     CHECK(gls_traj_range("-1:3", &a, &b, err, sizeof err) == -1);
     CHECK(gls_traj_range("x", &a, &b, err, sizeof err) == -1);
     CHECK_STR(err, "--frames: 'x' is not a frame range (A:B for frames A to B-1, A:, :B, or A)");
+}
+
+/* A line is read only up to GLS_TEXT_MAX_LINE bytes: a longer one is an
+   error at its line, and an endless one (/dev/zero) costs no memory. */
+static void test_line_bound(void)
+{
+    const char *I = "1 0 0 0 1 0 0 0 1";
+    static char t[3 * GLS_TEXT_MAX_LINE];
+    /* exactly at the limit: read */
+    int k = snprintf(t, sizeof t, "0 0 %s 0 0 0 #", I);
+    memset(t + k, 'c', GLS_TEXT_MAX_LINE - (size_t)k);
+    strcpy(t + GLS_TEXT_MAX_LINE, "\n");
+    const char *p = write_file("at_limit.txt", t);
+    char err[512] = "";
+    gls_traj_pose q;
+    CHECK_MSG(read_all(p, &q, err, sizeof err) == 1, "%s", err);
+    /* one byte more, on line 2 */
+    k = snprintf(t, sizeof t, "0 0 %s 0 0 0\n1 1 %s 0 0 0 #", I, I);
+    memset(t + k, 'c', 2 * GLS_TEXT_MAX_LINE);
+    strcpy(t + 2 * GLS_TEXT_MAX_LINE, "\n");
+    expect_error("long.txt", t, "long.txt:2: error: line longer than 4095 bytes");
+    /* no newline at all */
+    struct rusage r0, r1;
+    getrusage(RUSAGE_SELF, &r0);
+    CHECK(read_all("/dev/zero", &q, err, sizeof err) == -1);
+    getrusage(RUSAGE_SELF, &r1);
+    CHECK_STR(err, "/dev/zero:1: error: line longer than 4095 bytes");
+    CHECK_MSG(r1.ru_maxrss - r0.ru_maxrss < 1024, "peak RSS grew by %ld kB", r1.ru_maxrss - r0.ru_maxrss);
 }
 
 /* 20000 frames streamed: the reader holds one line, so the peak resident
@@ -163,9 +230,11 @@ int main(void)
         return 1;
     RUN(test_read);
     RUN(test_errors);
+    RUN(test_rotation_tolerance);
     RUN(test_compose);
     RUN(test_range);
     RUN(test_streaming);
+    RUN(test_line_bound);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)

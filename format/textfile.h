@@ -1,0 +1,42 @@
+/* Reading text inputs (camera files, trajectories, road descriptions)
+ * with bounds: a whole file is read only up to a stated size, and no line
+ * may be longer than GLS_TEXT_MAX_LINE bytes, so that a wrong path
+ * (/dev/zero, a bundle, a huge log) is refused after a bounded amount of
+ * memory and time instead of being read to the end. */
+#ifndef GLS_TEXTFILE_H
+#define GLS_TEXTFILE_H
+#include <stddef.h>
+#include <stdio.h>
+
+/* The longest line of any text input, newline excluded.  The formats are
+ * a few numbers per line (a trajectory line is under 400 bytes). */
+#define GLS_TEXT_MAX_LINE 4095u
+
+/* Read the text file at path whole: at most limit bytes, from a regular
+ * file, a pipe or a device (a directory is refused).  Returns a malloc'd
+ * buffer with a NUL after its *len bytes, or NULL with one line
+ * "path: error: why" in err; what names the input ("camera file") in the
+ * size message. */
+char *gls_text_read(const char *path, size_t limit, const char *what, size_t *len, char *err, size_t errlen);
+
+/* Lines of a text held in memory.  Start with {text, len} and line = 0. */
+typedef struct {
+    const char *text;
+    size_t len;
+    size_t pos;    /* start of the next line                            */
+    unsigned line; /* 1-based number of the line last returned          */
+} gls_text_lines;
+
+/* The next line (without its '\n'): 1 with *start and *n set, 0 at the
+ * end, -1 if it is longer than GLS_TEXT_MAX_LINE bytes (it->line is its
+ * number; report it at column GLS_TEXT_MAX_LINE + 1, where it overflows). */
+int gls_text_next_line(gls_text_lines *it, const char **start, size_t *n);
+
+/* Read one line of a stream into buf (capacity GLS_TEXT_MAX_LINE + 1),
+ * without its '\n', NUL-terminated; *n is its length (it may hold NUL
+ * bytes).  Returns 1 for a line, 0 at the end of the stream, -1 if the
+ * line is longer than GLS_TEXT_MAX_LINE bytes (reading stops there), -2 on
+ * a read error (errno set).  Memory stays bounded however long the line. */
+int gls_text_getline(FILE *f, char buf[GLS_TEXT_MAX_LINE + 1], size_t *n);
+
+#endif

@@ -1,0 +1,74 @@
+/* Rotation checks and re-orthonormalisation (rotation.h). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "rotation.h"
+
+#define STR_(x) #x
+#define STR(x) STR_(x) /* "1e-4": the limits as they are written */
+
+static double det3(const double R[9])
+{
+    return R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+           R[2] * (R[3] * R[7] - R[4] * R[6]);
+}
+
+int gls_rotation_polar(const double R[9], double Q[9])
+{
+    memcpy(Q, R, 9 * sizeof *Q);
+    for (int it = 0; it < 32; it++) {
+        double d = det3(Q);
+        if (!(fabs(d) > 1e-12))
+            return -1;
+        /* Q^-T = cofactor(Q) / det Q */
+        double C[9] = {Q[4] * Q[8] - Q[5] * Q[7], Q[5] * Q[6] - Q[3] * Q[8], Q[3] * Q[7] - Q[4] * Q[6],
+                       Q[2] * Q[7] - Q[1] * Q[8], Q[0] * Q[8] - Q[2] * Q[6], Q[1] * Q[6] - Q[0] * Q[7],
+                       Q[1] * Q[5] - Q[2] * Q[4], Q[2] * Q[3] - Q[0] * Q[5], Q[0] * Q[4] - Q[1] * Q[3]};
+        double change = 0;
+        for (int i = 0; i < 9; i++) {
+            double q = 0.5 * (Q[i] + C[i] / d);
+            change = fmax(change, fabs(q - Q[i]));
+            Q[i] = q;
+        }
+        if (change <= 1e-15)
+            return 0;
+    }
+    return 0;
+}
+
+int gls_rotation_check(double R[9], char *why, size_t whylen)
+{
+    double worst = 0; /* largest |R R^T - I| entry */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double s = R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2];
+            double e = fabs(s - (i == j));
+            if (!(e <= GLS_ROT_TOL)) {
+                snprintf(why, whylen, "R is not orthonormal: (R R^T)[%d][%d] = %.9g, must be %d within %s", i, j, s,
+                         i == j, STR(GLS_ROT_TOL));
+                return -1;
+            }
+            worst = fmax(worst, e);
+        }
+    double det = det3(R);
+    if (!(det > 0)) {
+        snprintf(why, whylen, "R has determinant %.9g; a rotation needs +1 (a reflection swaps handedness)", det);
+        return -1;
+    }
+    if (worst <= GLS_ROT_EXACT && fabs(det - 1) <= GLS_ROT_EXACT)
+        return 0;
+    double Q[9];
+    if (gls_rotation_polar(R, Q)) { /* cannot happen with det near 1; refuse rather than guess */
+        snprintf(why, whylen, "R is singular");
+        return -1;
+    }
+    double moved = 0;
+    for (int i = 0; i < 9; i++)
+        moved = fmax(moved, fabs(Q[i] - R[i]));
+    memcpy(R, Q, sizeof Q);
+    snprintf(why, whylen,
+             "R is orthonormal only within %.2g (used as given within %s): replaced by the nearest rotation, "
+             "which moves no entry by more than %.2g",
+             fmax(worst, fabs(det - 1)), STR(GLS_ROT_EXACT), moved);
+    return 1;
+}
