@@ -182,6 +182,11 @@ int main(int argc, char **argv)
                 rc = usage_error("%s given twice", a);
                 goto done;
             }
+            /* "" would make OUTDIR/NAME the absolute path /NAME */
+            if (!argv[i + 1][0]) {
+                rc = usage_error("%s needs a non-empty output directory", a);
+                goto done;
+            }
             o.outdir = argv[++i];
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
