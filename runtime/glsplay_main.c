@@ -19,7 +19,8 @@ static const char usage_text[] =
     "  -o OUTDIR              output directory (created if missing)\n"
     "  --outputs LIST         comma-separated subset of image,depth,points,mask\n"
     "                         (default image,depth,points; mask: 255 where a pixel's\n"
-    "                         anti-aliasing samples differ, i.e. it straddles an edge)\n"
+    "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
+    "                         it needs --aa N with N > 1)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
     "  --background R,G,B     colour where no surface is, components 0..1 (default 0,0,0)\n"
@@ -317,6 +318,11 @@ int main(int argc, char **argv)
             rc = usage_error("--subpixel %s needs a window larger than 4096x4096", "given");
             goto done;
         }
+    }
+    /* one sample per pixel: no pixel is mixed, the mask would be all 0 */
+    if ((o.outputs & GLS_OUT_MASK) && o.aa.n <= 1) {
+        rc = usage_error("%s--outputs mask needs anti-aliasing, --aa N with N > 1", "");
+        goto done;
     }
     if (!o.bundle) {
         rc = usage_error("%sno bundle given", "");

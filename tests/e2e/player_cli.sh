@@ -111,3 +111,12 @@ exact() {
 # -o "": OUTDIR/NAME would be /NAME at the file-system root
 exact player_usage_empty_outdir 2 "glsplay: error: -o needs a non-empty output directory (try glsplay --help)" -- \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o ""
+# a mask of one sample per pixel would be all 0: refused
+exact player_usage_mask_without_aa 2 \
+    "glsplay: error: --outputs mask needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs image,mask
+exact player_usage_mask_aa1 2 \
+    "glsplay: error: --outputs mask needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs mask --aa 1
+[ ! -e "$t/m" ] && ok player_mask_without_aa_writes_nothing || fail player_mask_without_aa_writes_nothing "$(find "$t/m")"
+exact player_mask_with_aa 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m2" --outputs mask --aa 2
