@@ -24,6 +24,9 @@ static const char usage_text[] =
     "  --size WxH             override every camera's width and height\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
     "  --background R,G,B     colour where no surface is, components 0..1 (default 0,0,0)\n"
+    "  --anisotropic N        anisotropic texture filtering up to N x, N in 1..16\n"
+    "                         (default 1: off; sharper textures at grazing angles, but\n"
+    "                         llvmpipe takes minutes per frame with it: make bench-aa)\n"
     "sequences (spec/road.md, \"Trajectory file\"):\n"
     "  --trajectory FILE      render every frame of FILE (e.g. from glsroad); each camera\n"
     "                         file then gives that camera's pose relative to the rig\n"
@@ -249,6 +252,14 @@ int main(int argc, char **argv)
                 goto done;
             }
             o.aa_tiles = (uint32_t)v;
+            i++;
+        } else if (strcmp(a, "--anisotropic") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 1, 16, &v)) {
+                rc = usage_error("--anisotropic needs N in 1..16, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.anisotropy = (uint32_t)v;
             i++;
         } else if (strcmp(a, "--image-format") == 0) {
             const char *f = has_val ? argv[i + 1] : "";

@@ -379,6 +379,10 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_bundle_free(b);
     b = NULL;
     gls_renderer_set_background(r, o->background);
+    if (o->anisotropy > 1 && gls_renderer_set_anisotropy(r, o->anisotropy, err, sizeof err)) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        goto out;
+    }
     if (!o->trajectory) {
         if (!(o->resume && frame_done(o, (const char *const *)names, o->frame)))
             for (size_t i = 0; i < o->ncameras; i++)

@@ -101,9 +101,6 @@ static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size
     }
     if (!(s->features & GLS_FEAT_TEXTURES))
         return 0;
-    GLfloat maxaniso = 1;
-    if (r->aniso)
-        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxaniso);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (uint32_t i = 0; i < s->nchunks; i++) {
         uint32_t t = s->chunks[i].key.texture;
@@ -132,10 +129,8 @@ static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        /* grazing angles (a road towards the horizon) blur badly with
-         * isotropic mipmapping alone */
-        if (r->aniso)
-            glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, maxaniso < 16 ? maxaniso : 16);
+        /* anisotropic filtering stays off (GL's default, 1) unless asked
+         * for: gls_renderer_set_anisotropy */
     }
     glBindTexture(GL_TEXTURE_2D, 0);
     GLenum e = glGetError();
@@ -487,6 +482,33 @@ void gls_render_read_z(gls_renderer *r, float *z)
 const char *gls_renderer_gl_name(const gls_renderer *r) { return r->gl_name; }
 const char *gls_renderer_gl_version(const gls_renderer *r) { return r->gl_version; }
 int gls_renderer_anisotropic(const gls_renderer *r) { return r->aniso; }
+
+int gls_renderer_set_anisotropy(gls_renderer *r, uint32_t n, char *err, size_t errlen)
+{
+    if (n <= 1 && !r->aniso)
+        return 0; /* off, and GL without the extension is off already */
+    if (!r->aniso) {
+        snprintf(err, errlen, "anisotropic texture filtering is not available in %s", r->gl_name);
+        return -1;
+    }
+    GLfloat maxaniso = 1;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxaniso);
+    GLfloat a = n < 1 ? 1.0f : (GLfloat)n;
+    if (a > maxaniso)
+        a = maxaniso;
+    for (uint32_t i = 0; i < r->ntex; i++)
+        if (r->tex[i]) {
+            glBindTexture(GL_TEXTURE_2D, r->tex[i]);
+            glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, a);
+        }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR) {
+        snprintf(err, errlen, "GL error %#x while setting anisotropic filtering", e);
+        return -1;
+    }
+    return 0;
+}
 
 void gls_renderer_destroy(gls_renderer *r)
 {

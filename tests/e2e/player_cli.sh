@@ -120,3 +120,17 @@ exact player_usage_mask_aa1 2 \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs mask --aa 1
 [ ! -e "$t/m" ] && ok player_mask_without_aa_writes_nothing || fail player_mask_without_aa_writes_nothing "$(find "$t/m")"
 exact player_mask_with_aa 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m2" --outputs mask --aa 2
+# anisotropic texture filtering: off in the default plan (llvmpipe takes
+# minutes per frame with it), on with --anisotropic N
+if "$B/glsc" -I examples/demo -I "$B/textures" -o "$t/tex.glsb" examples/demo/Demo.scene 2>"$t/stderr"; then
+    $PLAY "$t/tex.glsb" --camera examples/demo/left.cam --explain >"$t/plan" 2>&1
+    $PLAY "$t/tex.glsb" --camera examples/demo/left.cam --explain --anisotropic 16 >"$t/plan16" 2>&1
+    grep -q "GL: anisotropic filtering off" "$t/plan" && ! grep -q "anisotropic filtering up to" "$t/plan" &&
+        ok player_explain_anisotropic_off || fail player_explain_anisotropic_off "$(grep -i aniso "$t/plan")"
+    grep -q "GL: anisotropic filtering up to 16x (--anisotropic 16)" "$t/plan16" &&
+        ok player_explain_anisotropic_on || fail player_explain_anisotropic_on "$(grep -i aniso "$t/plan16")"
+else
+    fail player_explain_anisotropic "the demo scene does not compile: $(cat "$t/stderr")"
+fi
+exact player_usage_anisotropic 2 "glsplay: error: --anisotropic needs N in 1..16, got '32' (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --anisotropic 32
