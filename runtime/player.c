@@ -5,7 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "aa_render.h"
+#include "frame_record.h"
 #include "glctx.h"
 #include "outputs.h"
 #include "player.h"
@@ -173,6 +175,18 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
+    /* This camera's frame is incomplete from the first file rewritten
+     * until the last is written: no record meanwhile (frame_record.h). */
+    char record[MAXPATH], text[1024];
+    if (gls_frame_record_path(record, sizeof record, o->outdir, name, frame) ||
+        gls_frame_record_text(text, sizeof text, o, c, name, frame)) {
+        fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
+        goto out;
+    }
+    if (unlink(record) != 0 && errno != ENOENT) {
+        fprintf(errs, "glsplay: error: cannot remove %s: %s\n", record, strerror(errno));
+        goto out;
+    }
     for (size_t k = 0; k < NOUTS; k++) {
         if (!(o->outputs & outs[k].bit))
             continue;
@@ -204,6 +218,10 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
         if (write_buf(errs, path, &buf))
             goto out;
     }
+    if (gls_write_file_atomic(record, text, strlen(text))) {
+        fprintf(errs, "glsplay: error: cannot write %s: %s\n", record, strerror(errno));
+        goto out;
+    }
     rc = 0;
     goto out;
 oom:
@@ -218,12 +236,17 @@ out:
     return rc;
 }
 
-/* Are all the requested outputs of this frame there, for every camera?
- * Outputs are written atomically, so a file that exists is complete. */
-static int frame_done(const gls_play_opts *o, const char *const *names, uint32_t frame)
+/* Is this frame complete: for every camera, a record that covers what o
+ * asks for (written after the camera's last file, frame_record.h), and
+ * every requested output file still there? */
+static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char *const *names, uint32_t frame)
 {
-    char path[MAXPATH];
-    for (size_t i = 0; i < o->ncameras; i++)
+    char path[MAXPATH], text[1024];
+    for (size_t i = 0; i < o->ncameras; i++) {
+        if (gls_frame_record_path(path, sizeof path, o->outdir, names[i], frame) ||
+            gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame) ||
+            !gls_frame_record_matches(path, text))
+            return 0;
         for (size_t k = 0; k < NOUTS; k++) {
             if (!(o->outputs & outs[k].bit))
                 continue;
@@ -232,6 +255,7 @@ static int frame_done(const gls_play_opts *o, const char *const *names, uint32_t
                 stat(path, &st) != 0 || !S_ISREG(st.st_mode))
                 return 0;
         }
+    }
     return 1;
 }
 
@@ -262,7 +286,7 @@ static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_
             break;
         }
         rendered++;
-        if (o->resume && frame_done(o, names, (uint32_t)p.frame))
+        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
             continue;
         for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
             gls_camera c = rel[i];
@@ -384,7 +408,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     if (!o->trajectory) {
-        if (!(o->resume && frame_done(o, (const char *const *)names, o->frame)))
+        if (!(o->resume && frame_done(o, cams, (const char *const *)names, o->frame)))
             for (size_t i = 0; i < o->ncameras; i++)
                 if (play_camera(o, &plan, r, &cams[i], names[i], o->frame, errs))
                     goto out;
