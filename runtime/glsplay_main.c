@@ -50,7 +50,12 @@ static const char usage_text[] =
     "  --image-format F       png8 (default), png16 (16-bit PNG) or pfm (float32 RGB,\n"
     "                         image_F.pfm); 8 bits limit edges to ~1/256 px\n"
     "  --aa-tiles K           samples per GL pass (default: automatic)\n"
-    "  progress (samples done, time left) goes to stderr when it is a terminal\n"
+    "progress and time:\n"
+    "  on a terminal, stderr shows progress: frames done, frames/s and time left for a\n"
+    "  sequence, samples done for a long anti-aliased camera frame\n"
+    "  --progress             show it even when stderr is not a terminal\n"
+    "  a render projected to take over a minute (timed on its first passes or frames)\n"
+    "  prints the estimate on stderr first: \"glsplay: note: estimated render time ...\"\n"
     "  --help                 this text\n"
     "exit status: 0 success, 1 input error, 2 usage error\n";
 
@@ -279,6 +284,8 @@ int main(int argc, char **argv)
             o.explain = 1;
         } else if (strcmp(a, "--resume") == 0) {
             o.resume = 1;
+        } else if (strcmp(a, "--progress") == 0) {
+            o.progress = 1;
         } else if (strcmp(a, "--trajectory") == 0) {
             if (!has_val) {
                 rc = usage_error("%s--trajectory needs a trajectory file", "");

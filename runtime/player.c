@@ -11,6 +11,7 @@
 #include "glctx.h"
 #include "outputs.h"
 #include "player.h"
+#include "progress.h"
 #include "trajectory.h"
 #include "render.h"
 
@@ -93,6 +94,49 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
     return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
 }
 
+/* What one run keeps across cameras and frames: the options, the
+ * renderer, and the timing behind the progress line and the estimate. */
+typedef struct {
+    const gls_play_opts *o;
+    const gls_aa_plan *plan;
+    gls_renderer *r;
+    FILE *errs;
+    uint64_t views, views_done; /* camera frames to render, rendered    */
+    double t0;                  /* when rendering began                 */
+    int estimated;              /* the estimate was made (printed or not) */
+} session;
+
+/* The time estimate (spec/road.md "Progress and time estimate").  Made
+ * once, from the earliest of: the anti-aliasing passes of the first camera
+ * frame once they have run for ESTIMATE_AA_S (a long render learns its
+ * fate within seconds, not after its first frame), or the camera frames
+ * done once ESTIMATE_VIEWS_S have passed.  Both include the start-up
+ * (shader compilation, first touches of memory), so they err long. */
+#define ESTIMATE_AA_S 2.0
+#define ESTIMATE_VIEWS_S 0.5
+
+static void estimate_from_passes(void *ctx, uint64_t done, uint64_t total, double elapsed)
+{
+    session *s = ctx;
+    if (s->estimated || s->views_done || done >= total || elapsed < ESTIMATE_AA_S)
+        return;
+    s->estimated = 1;
+    gls_estimate_report(s->errs, elapsed, done, total, s->views);
+}
+
+static void view_done(session *s)
+{
+    s->views_done++;
+    if (s->estimated)
+        return;
+    double el = gls_now() - s->t0;
+    if (s->views_done >= s->views || el >= ESTIMATE_VIEWS_S) {
+        s->estimated = 1;
+        if (s->views_done < s->views)
+            gls_estimate_report(s->errs, el, s->views_done, 1, s->views);
+    }
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -101,9 +145,12 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
  * (the geometry at each pixel centre, never averaged across an edge),
  * drawn only when they are asked for; the points' colours come from that
  * pass too, so each point has the colour of the surface it lies on. */
-static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_renderer *r, const gls_camera *c,
-                       const char *name, uint32_t frame, FILE *errs)
+static int play_camera(session *s, const gls_camera *c, const char *name, uint32_t frame)
 {
+    const gls_play_opts *o = s->o;
+    const gls_aa_plan *plan = s->plan;
+    gls_renderer *r = s->r;
+    FILE *errs = s->errs;
     char err[512], path[MAXPATH];
     size_t n = (size_t)c->width * c->height;
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
@@ -137,7 +184,7 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_MASK) != 0))
             goto oom;
-        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name};
+        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name, estimate_from_passes, s};
         if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
             fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
             goto out;
@@ -222,6 +269,7 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
         fprintf(errs, "glsplay: error: cannot write %s: %s\n", record, strerror(errno));
         goto out;
     }
+    view_done(s);
     rc = 0;
     goto out;
 oom:
@@ -259,21 +307,29 @@ static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char
     return 1;
 }
 
-/* Every frame of the trajectory in [frame_first, frame_end), read one line
- * at a time (memory stays flat however long the sequence).  Each camera
- * file gives that camera's pose relative to the rig. */
-static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_renderer *r, const gls_camera *rel,
-                           const char *const *names, FILE *errs)
+static gls_traj *open_trajectory(const char *path, FILE *errs)
 {
     char err[1024];
-    gls_traj *t = gls_traj_open(o->trajectory, err, sizeof err);
-    if (!t) {
+    gls_traj *t = gls_traj_open(path, err, sizeof err);
+    if (!t)
         fprintf(errs, "%s\n", err);
+    return t;
+}
+
+/* The trajectory read once before anything is rendered: every line up
+ * to the end of the range is checked, the frames in the range counted
+ * and, with --resume, the complete ones among them.  0, or 1 after a
+ * message. */
+static int scan_trajectory(const gls_play_opts *o, const gls_camera *rel, const char *const *names, FILE *errs,
+                           uint64_t *inrange, uint64_t *complete)
+{
+    char err[1024];
+    gls_traj *t = open_trajectory(o->trajectory, errs);
+    if (!t)
         return 1;
-    }
     gls_traj_pose p;
     int got, rc = 0;
-    uint64_t rendered = 0;
+    *inrange = *complete = 0;
     while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
         if (p.frame < o->frame_first)
             continue;
@@ -285,27 +341,79 @@ static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_
             rc = 1;
             break;
         }
-        rendered++;
+        (*inrange)++;
         if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
-            continue;
-        for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
-            gls_camera c = rel[i];
-            gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
-            if (play_camera(o, plan, r, &c, names[i], (uint32_t)p.frame, errs))
-                rc = 1;
-        }
-        if (rc)
-            break;
+            (*complete)++;
     }
     if (got < 0) {
         fprintf(errs, "%s\n", err);
         rc = 1;
     }
     gls_traj_close(t);
-    if (rc == 0 && rendered == 0) {
+    if (rc == 0 && *inrange == 0) {
         fprintf(errs, "glsplay: error: %s: no frame in the range given by --frames\n", o->trajectory);
         rc = 1;
     }
+    return rc;
+}
+
+/* --resume: how many frames it skips (one line, always). */
+static void resume_note(FILE *errs, uint64_t complete, uint64_t total)
+{
+    fprintf(errs, "glsplay: note: --resume: %llu of %llu frame%s complete, skipped; %llu to render\n",
+            (unsigned long long)complete, (unsigned long long)total, total == 1 ? "" : "s",
+            (unsigned long long)(total - complete));
+}
+
+/* Every frame of the trajectory in [frame_first, frame_end), read one line
+ * at a time (memory stays flat however long the sequence).  Each camera
+ * file gives that camera's pose relative to the rig. */
+static int play_trajectory(session *s, const gls_camera *rel, const char *const *names)
+{
+    const gls_play_opts *o = s->o;
+    FILE *errs = s->errs;
+    uint64_t inrange, complete;
+    if (scan_trajectory(o, rel, names, errs, &inrange, &complete))
+        return 1;
+    if (o->resume)
+        resume_note(errs, complete, inrange);
+    uint64_t todo = inrange - complete, done = 0;
+    s->views = todo * o->ncameras;
+    char err[1024];
+    gls_traj *t = open_trajectory(o->trajectory, errs);
+    if (!t)
+        return 1;
+    gls_traj_pose p;
+    int got = 0, rc = 0;
+    double last = 0;
+    s->t0 = gls_now();
+    while (done < todo && (got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
+        if (p.frame < o->frame_first)
+            continue;
+        if (p.frame >= o->frame_end || p.frame > UINT32_MAX) /* checked by the scan */
+            break;
+        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
+            continue;
+        for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
+            gls_camera c = rel[i];
+            gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
+            if (play_camera(s, &c, names[i], (uint32_t)p.frame))
+                rc = 1;
+        }
+        if (rc)
+            break;
+        done++;
+        double now = gls_now();
+        if (o->progress && (done == todo || now - last >= 0.5)) {
+            last = now;
+            gls_progress_frames(errs, done, todo, now - s->t0, done == todo);
+        }
+    }
+    if (got < 0) {
+        fprintf(errs, "%s\n", err);
+        rc = 1;
+    }
+    gls_traj_close(t);
     return rc;
 }
 
@@ -407,15 +515,19 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
+    session ses = {o, &plan, r, errs, o->ncameras, 0, gls_now(), 0};
     if (!o->trajectory) {
-        if (!(o->resume && frame_done(o, cams, (const char *const *)names, o->frame)))
+        int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
+        if (o->resume)
+            resume_note(errs, skip, 1);
+        if (!skip)
             for (size_t i = 0; i < o->ncameras; i++)
-                if (play_camera(o, &plan, r, &cams[i], names[i], o->frame, errs))
+                if (play_camera(&ses, &cams[i], names[i], o->frame))
                     goto out;
         rc = 0;
         goto out;
     }
-    rc = play_trajectory(o, &plan, r, cams, (const char *const *)names, errs);
+    rc = play_trajectory(&ses, cams, (const char *const *)names);
 out:
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);

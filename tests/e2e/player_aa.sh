@@ -73,6 +73,17 @@ usage aa_usage_both $PLAY $S -o "$t/x" --aa 4 --subpixel 1/4
 usage aa_usage_filter $PLAY $S -o "$t/x" --filter tent
 usage aa_usage_format $PLAY $S -o "$t/x" --image-format jpg
 usage aa_usage_subpixel $PLAY $S -o "$t/x" --subpixel 1/5000
+# a render projected beyond a minute says so first: 4096 x 4096 samples at
+# 640x480 are 16.7 million passes, hours at any speed; the projection is
+# made after 2 s of passes, and the render is stopped once it is there
+$PLAY $S -o "$t/long" --aa 4096 --size 640x480 --outputs image 2>"$t/err" &
+pid=$!
+i=0
+while [ $i -lt 240 ] && ! grep -q "estimated render time" "$t/err"; do sleep 0.25; i=$((i + 1)); done
+kill "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+grep -q '^glsplay: note: estimated render time [0-9a-z ]*: 1 camera frame x 16777216 anti-aliasing passes x [0-9.]* [mu]*s (measured on the first [0-9]* passes; --explain shows the plan)$' \
+    "$t/err" && ok aa_estimate_before_long_render || fail aa_estimate_before_long_render "$(cat "$t/err")"
 # progress only on a terminal: stderr to a file stays empty
 $PLAY $S -o "$t/q" --aa 16 --outputs image 2>"$t/err"
 [ ! -s "$t/err" ] && ok aa_no_progress_when_not_tty || fail aa_no_progress_when_not_tty "$(cat "$t/err")"

@@ -106,6 +106,42 @@ depth1=$(od -An -tu1 -j24 -N1 "$tmp/fmt/cam/image_000001.png" | tr -d ' ')
 [ "$depth0" = 16 ] && [ "$depth1" = 16 ] && ok resume_checks_image_format ||
     fail resume_checks_image_format "bit depths after --resume --image-format png16: $depth0 $depth1"
 
+# frame-level progress: only on a terminal, or with --progress; --resume
+# says how many frames it skips
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" -o "$tmp/prog" 2>"$tmp/perr"
+[ ! -s "$tmp/perr" ] && ok progress_not_on_a_file || fail progress_not_on_a_file "$(cat "$tmp/perr")"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --progress -o "$tmp/prog" \
+    2>"$tmp/perr"
+# (lines between are at most two a second: five small frames may show none)
+if [ "$(head -c 1 "$tmp/perr")" = "$(printf '\r')" ] &&
+    tr '\r' '\n' <"$tmp/perr" | tail -1 | grep -q '^glsplay: 5 frames in [0-9. a-z]*, [0-9.]* frames/s *$'; then
+    ok progress_frames
+else
+    fail progress_frames "$(od -c "$tmp/perr" | head -5)"
+fi
+rm "$tmp/prog/cam/image_000003.png"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --resume -o "$tmp/prog" \
+    2>"$tmp/perr"
+[ "$(cat "$tmp/perr")" = "glsplay: note: --resume: 4 of 5 frames complete, skipped; 1 to render" ] &&
+    [ -f "$tmp/prog/cam/image_000003.png" ] && ok resume_says_what_it_skips ||
+    fail resume_says_what_it_skips "$(cat "$tmp/perr")"
+
+# a sequence projected beyond a minute says so first: a million frames
+# (over a minute at any speed; the projection is made on the frames done
+# in the first half second), stopped once the note is there
+awk 'BEGIN { for (i = 0; i < 1000000; i++) printf "%d %d 1 0 0 0 1 0 0 0 1 0 0 %.4f\n", i, i, -i * 0.0001 }' \
+    >"$tmp/million.txt"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --size 8x6 --outputs image --trajectory "$tmp/million.txt" \
+    -o "$tmp/million" 2>"$tmp/merr" &
+pid=$!
+i=0
+while [ $i -lt 240 ] && ! grep -q "estimated render time" "$tmp/merr"; do sleep 0.25; i=$((i + 1)); done
+kill "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+rm -rf "$tmp/million" "$tmp/million.txt"
+grep -q '^glsplay: note: estimated render time [0-9a-z ]*: 1000000 camera frames x [0-9.]* [mu]*s (measured on the first [0-9]*)$' \
+    "$tmp/merr" && ok estimate_before_long_sequence || fail estimate_before_long_sequence "$(cat "$tmp/merr")"
+
 # --background: uncovered pixels get the colour; depth stays +inf there
 "$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --background 0,0.5,1 -o "$tmp/bg" 2>>"$tmp/err"
 if /usr/bin/python3 - "$tmp/bg/cam" <<'PY'
