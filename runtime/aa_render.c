@@ -4,6 +4,7 @@
 #include <string.h>
 #include "aa_render.h"
 #include "progress.h"
+#include "units.h"
 
 /* Mosaic budget in pixels.  Larger mosaics amortise the clear, the
  * rasteriser start-up and the read-back over more samples, but past a
@@ -91,7 +92,10 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
         b[i].w = malloc(T * sizeof *b[i].w);
     }
     if (!du || !dv || !b[0].buf || !b[1].buf || !b[0].w || !b[1].w) {
-        snprintf(err, errlen, "out of memory for a %ux%u mosaic of %ux%u images", kx, ky, W, H);
+        char need[32];
+        gls_fmt_bytes(need, sizeof need, 2 * (uint64_t)bytes);
+        snprintf(err, errlen, "out of memory for the read-back of %ux%u tiles of %ux%u images (%s)", kx, ky, W, H,
+                 need);
         goto out;
     }
     double t0 = gls_now(), last = t0;

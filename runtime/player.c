@@ -14,6 +14,7 @@
 #include "progress.h"
 #include "trajectory.h"
 #include "render.h"
+#include "units.h"
 
 #define MAXPATH 4096
 
@@ -137,6 +138,32 @@ static void view_done(session *s)
     }
 }
 
+/* Roughly what play_camera allocates for an n-pixel image besides the
+ * framebuffer: read-backs, the accumulator and mask, the converted image
+ * and the largest encoded file.  For the message when it fails. */
+static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted, uint64_t n)
+{
+    unsigned out = o->outputs;
+    uint64_t b = 0, enc = 0;
+    if (out & (GLS_OUT_DEPTH | GLS_OUT_POINTS))
+        b += 4 * n, enc = 4 * n;
+    if ((!aa && (out & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (out & GLS_OUT_POINTS))
+        b += 4 * n;
+    if (aa)
+        b += (weighted ? 32 : 16) * n + ((out & GLS_OUT_MASK) ? 5 * n : 0);
+    if (out & GLS_OUT_IMAGE) {
+        uint64_t img = o->image_format == GLS_IMG_PFM ? 12 : o->image_format == GLS_IMG_PNG16 ? 6 : aa ? 4 : 0;
+        b += img * n;
+        if (img * n > enc)
+            enc = img * n;
+    }
+    if (out & GLS_OUT_MASK)
+        b += n;
+    if (out & GLS_OUT_POINTS)
+        enc = 27 * n; /* x y z double, r g b */
+    return b + enc;
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -147,6 +174,7 @@ static void view_done(session *s)
  * pass too, so each point has the colour of the surface it lies on. */
 static int play_camera(session *s, const gls_camera *c, const char *name, uint32_t frame)
 {
+    static const char lower_size[] = "lower --size (or the camera's width and height)";
     const gls_play_opts *o = s->o;
     const gls_aa_plan *plan = s->plan;
     gls_renderer *r = s->r;
@@ -163,7 +191,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     gls_buf buf = {0};
     int rc = -1;
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
-        fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
+        fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
         return -1;
     }
     if (centre) {
@@ -186,7 +214,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             goto oom;
         gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name, estimate_from_passes, s};
         if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
-            fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
+            uint32_t kx, ky;
+            gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
+            if (kx * ky > 1)
+                fprintf(errs, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)\n", name, err,
+                        kx * ky);
+            else
+                fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
             goto out;
         }
     }
@@ -272,8 +306,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     view_done(s);
     rc = 0;
     goto out;
-oom:
-    fprintf(errs, "glsplay: error: camera %s: out of memory\n", name);
+oom:;
+    char need[32];
+    gls_fmt_bytes(need, sizeof need, camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n));
+    fprintf(errs, "glsplay: error: camera %s: out of memory for the buffers of a %ux%u image (about %s); %s\n", name,
+            c->width, c->height, need, lower_size);
 out:
     gls_accum_free(&acc);
     free(rgba);

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "render.h"
+#include "units.h"
 
 #ifndef GL_TEXTURE_MAX_ANISOTROPY
 #define GL_TEXTURE_MAX_ANISOTROPY 0x84FE
@@ -223,6 +224,27 @@ uint32_t gls_renderer_max_dim(const gls_renderer *r)
     return maxrb > 0 ? (uint32_t)maxrb : 0;
 }
 
+uint64_t gls_renderer_bytes(uint32_t w, uint32_t h, uint32_t kx, uint32_t ky)
+{
+    /* RGBA8 colour and float depth per framebuffer pixel, and the float
+     * depth read-back of one image */
+    return (uint64_t)w * kx * h * ky * 8 + (uint64_t)w * h * 4;
+}
+
+/* The framebuffer could not be had: say which, and how much it needs.
+ * The renderer is left without a valid size, so the next call
+ * allocates again. */
+static int alloc_failed(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx, uint32_t ky, char *err, size_t errlen)
+{
+    char need[32], tiles[96] = "";
+    gls_fmt_bytes(need, sizeof need, gls_renderer_bytes(w, h, kx, ky));
+    if (kx * ky > 1)
+        snprintf(tiles, sizeof tiles, ", %ux%u tiles of %ux%u images", kx, ky, w, h);
+    snprintf(err, errlen, "cannot allocate a %ux%u framebuffer%s (%s of memory)", w * kx, h * ky, tiles, need);
+    r->kx = r->ky = 0;
+    return -1;
+}
+
 int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx, uint32_t ky, char *err,
                             size_t errlen)
 {
@@ -234,10 +256,8 @@ int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx
         return -1;
     }
     float *d = realloc(r->dbuf, (size_t)w * h * sizeof *d);
-    if (!d) {
-        snprintf(err, errlen, "out of memory for a %ux%u depth image", w, h);
-        return -1;
-    }
+    if (!d)
+        return alloc_failed(r, w, h, kx, ky, err, errlen);
     r->dbuf = d;
     if (!r->fbo) {
         r->glGenFramebuffers(1, &r->fbo);
@@ -254,8 +274,11 @@ int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx
     r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->rb_depth);
     GLenum st = r->glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (st != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(err, errlen, "framebuffer %ux%u incomplete (status %#x)", fw, fh, st);
-        return -1;
+        /* llvmpipe's renderbuffers are plain memory: incomplete means
+         * GL could not allocate them (GL_OUT_OF_MEMORY) */
+        while (glGetError() != GL_NO_ERROR)
+            ;
+        return alloc_failed(r, w, h, kx, ky, err, errlen);
     }
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
     glReadBuffer(GL_COLOR_ATTACHMENT0);

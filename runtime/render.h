@@ -39,6 +39,11 @@ void gls_renderer_set_background(gls_renderer *r, const float rgb[3]);
  * is at column t % kx, row t / kx; tile 0 is where a plain pass goes. */
 int gls_renderer_set_mosaic(gls_renderer *r, uint32_t width, uint32_t height, uint32_t kx, uint32_t ky, char *err,
                             size_t errlen);
+/* Memory a mosaic needs: its framebuffer (8 bytes a pixel: RGBA8 colour,
+ * float depth) and the depth read-back of one image.  When it cannot be
+ * had, set_size / set_mosaic say "cannot allocate a WxH framebuffer[, KxK
+ * tiles of wxh images] (N GiB of memory)". */
+uint64_t gls_renderer_bytes(uint32_t width, uint32_t height, uint32_t kx, uint32_t ky);
 /* Largest framebuffer side GL allows (GL_MAX_RENDERBUFFER_SIZE). */
 uint32_t gls_renderer_max_dim(const gls_renderer *r);
 
