@@ -172,7 +172,7 @@ bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 $(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
-bench-aa: $(B)/bench/aa_bench
+bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
 # -O3 vectorises them (gcc 12's -O2 leaves loops with remainders scalar).

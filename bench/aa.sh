@@ -3,7 +3,8 @@
 # anti-aliased player for N = 1..128 (and 256 where AA_BIG=1), box and
 # Gaussian filters, 8-bit / 16-bit / float output; writes
 # docs/aa_cost.txt (the table) and docs/aa_cost.svg (the plot, made by
-# bench/aa_plot.py); then the per-sample time breakdown.
+# bench/aa_plot.py), with the cost of anisotropic texture filtering
+# (bench/aniso.sh) appended; then the per-sample time breakdown.
 B=${1:-build}
 W=${AA_W:-320}
 H=${AA_H:-240}
@@ -25,6 +26,10 @@ printf '\n| N | filter | output | s/frame | edge RMS px | edge max px | row RMS 
 grep -v '^#' "$raw" | awk '{printf "| %s | %s | %s | %.4f | %.5f | %.5f | %.5f |\n", $1, $2, $3, $4, $5, $6, $7}'
 } >>docs/aa_cost.txt
 /usr/bin/python3 bench/aa_plot.py "$raw" docs/aa_cost.svg || exit 1
+{
+printf '\ntextures: one 640x480 frame of the road demo (frame 4, right camera), whole glsplay run\n\n'
+sh bench/aniso.sh "$B" || exit 1
+} >>docs/aa_cost.txt
 cat docs/aa_cost.txt
 echo "plot: docs/aa_cost.svg"
 echo

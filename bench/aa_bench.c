@@ -80,7 +80,7 @@ static int table(bench *b, int argc, char **argv)
            one-time cost belongs to no row of the table */
         gls_aa_opts o = gls_aa_defaults();
         o.n = 2;
-        gls_aa_run_opts ro = {0, 0, NULL, NULL};
+        gls_aa_run_opts ro = {0, 0, NULL, NULL, NULL, NULL};
         gls_accum acc;
         gls_aa_stats st;
         if (render(b, &o, &ro, &acc, &st) < 0)
@@ -93,7 +93,7 @@ static int table(bench *b, int argc, char **argv)
             gls_aa_opts o = gls_aa_defaults();
             o.n = N;
             o.filter = f ? GLS_AA_GAUSS : GLS_AA_BOX;
-            gls_aa_run_opts ro = {0, 0, NULL, NULL};
+            gls_aa_run_opts ro = {0, 0, NULL, NULL, NULL, NULL};
             gls_accum acc;
             gls_aa_stats st;
             double t = render(b, &o, &ro, &acc, &st);
@@ -139,7 +139,7 @@ static int breakdown(bench *b, uint32_t N, uint32_t tiles, int serial)
 {
     gls_aa_opts o = gls_aa_defaults();
     o.n = N;
-    gls_aa_run_opts ro = {tiles, serial, NULL, NULL};
+    gls_aa_run_opts ro = {tiles, serial, NULL, NULL, NULL, NULL};
     gls_accum acc;
     gls_aa_stats st;
     if (render(b, &o, &ro, &acc, &st) < 0)

@@ -2,8 +2,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include "aa_render.h"
+#include "progress.h"
+#include "units.h"
 
 /* Mosaic budget in pixels.  Larger mosaics amortise the clear, the
  * rasteriser start-up and the read-back over more samples, but past a
@@ -11,12 +12,6 @@
  * bench-aa (spec/antialiasing.md "Cost"). */
 #define MOSAIC_PIXELS (1u << 19)
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 void gls_aa_mosaic_shape(const gls_renderer *r, uint32_t w, uint32_t h, uint64_t samples, uint32_t tiles,
                          uint32_t *kx, uint32_t *ky)
@@ -63,7 +58,7 @@ static void progress(const gls_aa_run_opts *ro, uint64_t done, uint64_t total, d
 {
     if (!ro->progress)
         return;
-    double t = now();
+    double t = gls_now();
     if (!final && t - *last < 0.5)
         return;
     *last = t;
@@ -97,10 +92,13 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
         b[i].w = malloc(T * sizeof *b[i].w);
     }
     if (!du || !dv || !b[0].buf || !b[1].buf || !b[0].w || !b[1].w) {
-        snprintf(err, errlen, "out of memory for a %ux%u mosaic of %ux%u images", kx, ky, W, H);
+        char need[32];
+        gls_fmt_bytes(need, sizeof need, 2 * (uint64_t)bytes);
+        snprintf(err, errlen, "out of memory for the read-back of %ux%u tiles of %ux%u images (%s)", kx, ky, W, H,
+                 need);
         goto out;
     }
-    double t0 = now(), last = t0;
+    double t0 = gls_now(), last = t0;
     int cur = 0, pending = 0;
     for (uint64_t k = 0; k < p->count;) {
         batch *nb = &b[cur];
@@ -114,43 +112,45 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
             du[t] = -ou;
             dv[t] = -ov;
         }
-        double ta = now();
+        double ta = gls_now();
         gls_render_tiles(r, c, nb->n, du, dv);
         if (ro->serial) {
             gls_render_finish(r);
-            double tb = now();
+            double tb = gls_now();
             s.draw_s += tb - ta;
             gls_render_read_mosaic(r, (nb->n + kx - 1) / kx, nb->buf);
-            double tc = now();
+            double tc = gls_now();
             s.read_s += tc - tb;
             accumulate(acc, nb, kx, W, H);
-            s.accum_s += now() - tc;
+            s.accum_s += gls_now() - tc;
         } else {
             /* rasterise this batch on llvmpipe's threads while this thread
              * adds up the previous one */
             gls_render_flush(r);
-            double tb = now();
+            double tb = gls_now();
             s.draw_s += tb - ta;
             if (pending)
                 accumulate(acc, &b[cur ^ 1], kx, W, H);
-            double tc = now();
+            double tc = gls_now();
             s.accum_s += tc - tb;
             gls_render_read_mosaic(r, (nb->n + kx - 1) / kx, nb->buf);
-            s.read_s += now() - tc;
+            s.read_s += gls_now() - tc;
             pending = 1;
             cur ^= 1;
         }
         k += nb->n;
         s.passes++;
         progress(ro, k, p->count, t0, &last, 0);
+        if (ro->on_pass)
+            ro->on_pass(ro->ctx, s.passes, (p->count + T - 1) / T, gls_now() - t0);
     }
     if (pending) {
-        double tc = now();
+        double tc = gls_now();
         accumulate(acc, &b[cur ^ 1], kx, W, H);
-        s.accum_s += now() - tc;
+        s.accum_s += gls_now() - tc;
     }
     s.samples = p->count;
-    s.total_s = now() - t0;
+    s.total_s = gls_now() - t0;
     if (s.total_s > 2)
         progress(ro, p->count, p->count, t0, &last, 1);
     rc = gls_renderer_set_mosaic(r, W, H, 1, 1, err, errlen);

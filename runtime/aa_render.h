@@ -17,6 +17,11 @@ typedef struct {
                            accumulation (for the benchmark) */
     FILE *progress;     /* progress lines ("\r...") go here; NULL: none */
     const char *label;  /* name in the progress line */
+    /* called after every pass with the passes done, the passes of this
+     * render and the seconds since it began (the player's time estimate);
+     * NULL: none */
+    void (*on_pass)(void *ctx, uint64_t done, uint64_t total, double elapsed);
+    void *ctx;
 } gls_aa_run_opts;
 
 typedef struct {

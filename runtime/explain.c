@@ -53,6 +53,14 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                 on ? gls_feature_why[bit] : "not used by this bundle");
         if (on && effect[bit])
             fprintf(out, "  %-14s     GL: %s\n", "", effect[bit]);
+        if (on && bit == 0) {
+            if (o->anisotropy > 1)
+                fprintf(out, "  %-14s     GL: anisotropic filtering up to %ux (--anisotropic %u)\n", "",
+                        o->anisotropy, o->anisotropy);
+            else
+                fprintf(out, "  %-14s     GL: anisotropic filtering off (--anisotropic N turns it on; slow "
+                             "on llvmpipe)\n", "");
+        }
     }
     if (!aa) {
         fprintf(out, "passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0); no accumulator\n");

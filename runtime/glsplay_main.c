@@ -20,10 +20,14 @@ static const char usage_text[] =
     "  -o OUTDIR              output directory (created if missing)\n"
     "  --outputs LIST         comma-separated subset of image,depth,points,mask\n"
     "                         (default image,depth,points; mask: 255 where a pixel's\n"
-    "                         anti-aliasing samples differ, i.e. it straddles an edge)\n"
+    "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
+    "                         it needs --aa N with N > 1)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
     "  --background R,G,B     colour where no surface is, components 0..1 (default 0,0,0)\n"
+    "  --anisotropic N        anisotropic texture filtering up to N x, N in 1..16\n"
+    "                         (default 1: off; sharper textures at grazing angles, but\n"
+    "                         llvmpipe takes minutes per frame with it: make bench-aa)\n"
     "sequences (spec/road.md, \"Trajectory file\"):\n"
     "  --trajectory FILE      render every frame of FILE (e.g. from glsroad); each camera\n"
     "                         file then gives that camera's pose relative to the rig\n"
@@ -31,8 +35,9 @@ static const char usage_text[] =
     "                         consecutive ranges split a sequence across processes\n"
     "  --frame N              the frame number in the file names of a single render\n"
     "                         (default 0)\n"
-    "  --resume               skip frames whose outputs all exist (outputs are written\n"
-    "                         atomically, so an existing file is complete)\n"
+    "  --resume               skip frames that are complete: every camera has the record\n"
+    "                         NAME/.frame_F.done, written after its last file, for the\n"
+    "                         same outputs and settings, and every file is there\n"
     "anti-aliasing (spec/antialiasing.md):\n"
     "  --aa N                 NxN samples per pixel, N in 1..4096 (default 1: one pass)\n"
     "  --subpixel A           the N whose sample step is at most A pixels (A as 1/256 or\n"
@@ -46,7 +51,12 @@ static const char usage_text[] =
     "  --image-format F       png8 (default), png16 (16-bit PNG) or pfm (float32 RGB,\n"
     "                         image_F.pfm); 8 bits limit edges to ~1/256 px\n"
     "  --aa-tiles K           samples per GL pass (default: automatic)\n"
-    "  progress (samples done, time left) goes to stderr when it is a terminal\n"
+    "progress and time:\n"
+    "  on a terminal, stderr shows progress: frames done, frames/s and time left for a\n"
+    "  sequence, samples done for a long anti-aliased camera frame\n"
+    "  --progress             show it even when stderr is not a terminal\n"
+    "  a render projected to take over a minute (timed on its first passes or frames)\n"
+    "  prints the estimate on stderr first: \"glsplay: note: estimated render time ...\"\n"
     "  --help                 this text\n"
     "exit status: 0 success, 1 input error, 2 usage error\n";
 
@@ -184,6 +194,11 @@ int main(int argc, char **argv)
                 rc = usage_error("%s given twice", a);
                 goto done;
             }
+            /* "" would make OUTDIR/NAME the absolute path /NAME */
+            if (!argv[i + 1][0]) {
+                rc = usage_error("%s needs a non-empty output directory", a);
+                goto done;
+            }
             o.outdir = argv[++i];
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
@@ -246,6 +261,14 @@ int main(int argc, char **argv)
             }
             o.aa_tiles = (uint32_t)v;
             i++;
+        } else if (strcmp(a, "--anisotropic") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 1, 16, &v)) {
+                rc = usage_error("--anisotropic needs N in 1..16, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.anisotropy = (uint32_t)v;
+            i++;
         } else if (strcmp(a, "--image-format") == 0) {
             const char *f = has_val ? argv[i + 1] : "";
             if (strcmp(f, "png8") == 0 || strcmp(f, "png") == 0)
@@ -263,6 +286,8 @@ int main(int argc, char **argv)
             o.explain = 1;
         } else if (strcmp(a, "--resume") == 0) {
             o.resume = 1;
+        } else if (strcmp(a, "--progress") == 0) {
+            o.progress = 1;
         } else if (strcmp(a, "--trajectory") == 0) {
             if (!has_val) {
                 rc = usage_error("%s--trajectory needs a trajectory file", "");
@@ -314,6 +339,11 @@ int main(int argc, char **argv)
             rc = usage_error("--subpixel %s needs a window larger than 4096x4096", "given");
             goto done;
         }
+    }
+    /* one sample per pixel: no pixel is mixed, the mask would be all 0 */
+    if ((o.outputs & GLS_OUT_MASK) && o.aa.n <= 1) {
+        rc = usage_error("%s--outputs mask needs anti-aliasing, --aa N with N > 1", "");
+        goto done;
     }
     if (!o.bundle) {
         rc = usage_error("%sno bundle given", "");

@@ -42,18 +42,15 @@ int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out)
 
 int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out)
 {
-    /* PNG stores 16-bit samples big-endian; libspng takes the image as
-     * the file stores it (SPNG_FMT_PNG) */
+    /* SPNG_FMT_PNG on encode takes 16-bit samples in host byte order and
+     * converts them to the file's big-endian itself (libspng docs/encode.md:
+     * "16-bit images are assumed to be host-endian except for
+     * SPNG_FMT_RAW"), so the samples go in as they are. */
     size_t n = (size_t)w * h * 3;
-    uint8_t *be = malloc(n ? n * 2 : 1);
     spng_ctx *ctx = spng_ctx_new(SPNG_CTX_ENCODER);
     int rc = -1;
-    if (!be || !ctx)
-        goto out;
-    for (size_t i = 0; i < n; i++) {
-        be[2 * i] = (uint8_t)(rgb[i] >> 8);
-        be[2 * i + 1] = (uint8_t)rgb[i];
-    }
+    if (!ctx)
+        return -1;
     struct spng_ihdr ih;
     memset(&ih, 0, sizeof ih);
     ih.width = w;
@@ -61,7 +58,7 @@ int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out)
     ih.bit_depth = 16;
     ih.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
     if (spng_set_option(ctx, SPNG_ENCODE_TO_BUFFER, 1) || spng_set_ihdr(ctx, &ih) ||
-        spng_encode_image(ctx, be, n * 2, SPNG_FMT_PNG, SPNG_ENCODE_FINALIZE))
+        spng_encode_image(ctx, rgb, n * sizeof *rgb, SPNG_FMT_PNG, SPNG_ENCODE_FINALIZE))
         goto out;
     size_t len;
     int e = 0;
@@ -72,7 +69,6 @@ int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out)
     free(png);
 out:
     spng_ctx_free(ctx);
-    free(be);
     return rc;
 }
 

@@ -5,13 +5,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "aa_render.h"
+#include "frame_record.h"
 #include "glctx.h"
 #include "mkdirs.h"
 #include "outputs.h"
 #include "player.h"
+#include "progress.h"
 #include "trajectory.h"
 #include "render.h"
+#include "units.h"
 
 #define MAXPATH 4096
 
@@ -63,6 +67,75 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
     return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
 }
 
+/* What one run keeps across cameras and frames: the options, the
+ * renderer, and the timing behind the progress line and the estimate. */
+typedef struct {
+    const gls_play_opts *o;
+    const gls_aa_plan *plan;
+    gls_renderer *r;
+    FILE *errs;
+    uint64_t views, views_done; /* camera frames to render, rendered    */
+    double t0;                  /* when rendering began                 */
+    int estimated;              /* the estimate was made (printed or not) */
+} session;
+
+/* The time estimate (spec/road.md "Progress and time estimate").  Made
+ * once, from the earliest of: the anti-aliasing passes of the first camera
+ * frame once they have run for ESTIMATE_AA_S (a long render learns its
+ * fate within seconds, not after its first frame), or the camera frames
+ * done once ESTIMATE_VIEWS_S have passed.  Both include the start-up
+ * (shader compilation, first touches of memory), so they err long. */
+#define ESTIMATE_AA_S 2.0
+#define ESTIMATE_VIEWS_S 0.5
+
+static void estimate_from_passes(void *ctx, uint64_t done, uint64_t total, double elapsed)
+{
+    session *s = ctx;
+    if (s->estimated || s->views_done || done >= total || elapsed < ESTIMATE_AA_S)
+        return;
+    s->estimated = 1;
+    gls_estimate_report(s->errs, elapsed, done, total, s->views);
+}
+
+static void view_done(session *s)
+{
+    s->views_done++;
+    if (s->estimated)
+        return;
+    double el = gls_now() - s->t0;
+    if (s->views_done >= s->views || el >= ESTIMATE_VIEWS_S) {
+        s->estimated = 1;
+        if (s->views_done < s->views)
+            gls_estimate_report(s->errs, el, s->views_done, 1, s->views);
+    }
+}
+
+/* Roughly what play_camera allocates for an n-pixel image besides the
+ * framebuffer: read-backs, the accumulator and mask, the converted image
+ * and the largest encoded file.  For the message when it fails. */
+static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted, uint64_t n)
+{
+    unsigned out = o->outputs;
+    uint64_t b = 0, enc = 0;
+    if (out & (GLS_OUT_DEPTH | GLS_OUT_POINTS))
+        b += 4 * n, enc = 4 * n;
+    if ((!aa && (out & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (out & GLS_OUT_POINTS))
+        b += 4 * n;
+    if (aa)
+        b += (weighted ? 32 : 16) * n + ((out & GLS_OUT_MASK) ? 5 * n : 0);
+    if (out & GLS_OUT_IMAGE) {
+        uint64_t img = o->image_format == GLS_IMG_PFM ? 12 : o->image_format == GLS_IMG_PNG16 ? 6 : aa ? 4 : 0;
+        b += img * n;
+        if (img * n > enc)
+            enc = img * n;
+    }
+    if (out & GLS_OUT_MASK)
+        b += n;
+    if (out & GLS_OUT_POINTS)
+        enc = 27 * n; /* x y z double, r g b */
+    return b + enc;
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -71,9 +144,13 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
  * (the geometry at each pixel centre, never averaged across an edge),
  * drawn only when they are asked for; the points' colours come from that
  * pass too, so each point has the colour of the surface it lies on. */
-static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_renderer *r, const gls_camera *c,
-                       const char *name, uint32_t frame, FILE *errs)
+static int play_camera(session *s, const gls_camera *c, const char *name, uint32_t frame)
 {
+    static const char lower_size[] = "lower --size (or the camera's width and height)";
+    const gls_play_opts *o = s->o;
+    const gls_aa_plan *plan = s->plan;
+    gls_renderer *r = s->r;
+    FILE *errs = s->errs;
     char err[512], path[MAXPATH];
     size_t n = (size_t)c->width * c->height;
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
@@ -86,7 +163,7 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
     gls_buf buf = {0};
     int rc = -1;
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
-        fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
+        fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
         return -1;
     }
     if (centre) {
@@ -107,9 +184,15 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_MASK) != 0))
             goto oom;
-        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name};
+        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name, estimate_from_passes, s};
         if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
-            fprintf(errs, "glsplay: error: camera %s: %s\n", name, err);
+            uint32_t kx, ky;
+            gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
+            if (kx * ky > 1)
+                fprintf(errs, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)\n", name, err,
+                        kx * ky);
+            else
+                fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
             goto out;
         }
     }
@@ -145,6 +228,18 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
+    /* This camera's frame is incomplete from the first file rewritten
+     * until the last is written: no record meanwhile (frame_record.h). */
+    char record[MAXPATH], text[1024];
+    if (gls_frame_record_path(record, sizeof record, o->outdir, name, frame) ||
+        gls_frame_record_text(text, sizeof text, o, c, name, frame)) {
+        fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
+        goto out;
+    }
+    if (unlink(record) != 0 && errno != ENOENT) {
+        fprintf(errs, "glsplay: error: cannot remove %s: %s\n", record, strerror(errno));
+        goto out;
+    }
     for (size_t k = 0; k < NOUTS; k++) {
         if (!(o->outputs & outs[k].bit))
             continue;
@@ -176,10 +271,18 @@ static int play_camera(const gls_play_opts *o, const gls_aa_plan *plan, gls_rend
         if (write_buf(errs, path, &buf))
             goto out;
     }
+    if (gls_write_file_atomic(record, text, strlen(text))) {
+        fprintf(errs, "glsplay: error: cannot write %s: %s\n", record, strerror(errno));
+        goto out;
+    }
+    view_done(s);
     rc = 0;
     goto out;
-oom:
-    fprintf(errs, "glsplay: error: camera %s: out of memory\n", name);
+oom:;
+    char need[32];
+    gls_fmt_bytes(need, sizeof need, camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n));
+    fprintf(errs, "glsplay: error: camera %s: out of memory for the buffers of a %ux%u image (about %s); %s\n", name,
+            c->width, c->height, need, lower_size);
 out:
     gls_accum_free(&acc);
     free(rgba);
@@ -190,12 +293,17 @@ out:
     return rc;
 }
 
-/* Are all the requested outputs of this frame there, for every camera?
- * Outputs are written atomically, so a file that exists is complete. */
-static int frame_done(const gls_play_opts *o, const char *const *names, uint32_t frame)
+/* Is this frame complete: for every camera, a record that covers what o
+ * asks for (written after the camera's last file, frame_record.h), and
+ * every requested output file still there? */
+static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char *const *names, uint32_t frame)
 {
-    char path[MAXPATH];
-    for (size_t i = 0; i < o->ncameras; i++)
+    char path[MAXPATH], text[1024];
+    for (size_t i = 0; i < o->ncameras; i++) {
+        if (gls_frame_record_path(path, sizeof path, o->outdir, names[i], frame) ||
+            gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame) ||
+            !gls_frame_record_matches(path, text))
+            return 0;
         for (size_t k = 0; k < NOUTS; k++) {
             if (!(o->outputs & outs[k].bit))
                 continue;
@@ -204,24 +312,35 @@ static int frame_done(const gls_play_opts *o, const char *const *names, uint32_t
                 stat(path, &st) != 0 || !S_ISREG(st.st_mode))
                 return 0;
         }
+    }
     return 1;
 }
 
-/* Every frame of the trajectory in [frame_first, frame_end), read one line
- * at a time (memory stays flat however long the sequence).  Each camera
- * file gives that camera's pose relative to the rig. */
-static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_renderer *r, const gls_camera *rel,
-                           const char *const *names, FILE *errs)
+/* notes: where the reader's notes go (a re-orthonormalised rotation);
+ * the trajectory is opened twice (scan, then render), notes only once. */
+static gls_traj *open_trajectory(const char *path, FILE *notes, FILE *errs)
 {
     char err[1024];
-    gls_traj *t = gls_traj_open(o->trajectory, errs, err, sizeof err);
-    if (!t) {
+    gls_traj *t = gls_traj_open(path, notes, err, sizeof err);
+    if (!t)
         fprintf(errs, "%s\n", err);
+    return t;
+}
+
+/* The trajectory read once before anything is rendered: every line up
+ * to the end of the range is checked, the frames in the range counted
+ * and, with --resume, the complete ones among them.  0, or 1 after a
+ * message. */
+static int scan_trajectory(const gls_play_opts *o, const gls_camera *rel, const char *const *names, FILE *errs,
+                           uint64_t *inrange, uint64_t *complete)
+{
+    char err[1024];
+    gls_traj *t = open_trajectory(o->trajectory, errs, errs);
+    if (!t)
         return 1;
-    }
     gls_traj_pose p;
     int got, rc = 0;
-    uint64_t rendered = 0;
+    *inrange = *complete = 0;
     while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
         if (p.frame < o->frame_first)
             continue;
@@ -233,27 +352,79 @@ static int play_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, gls_
             rc = 1;
             break;
         }
-        rendered++;
-        if (o->resume && frame_done(o, names, (uint32_t)p.frame))
-            continue;
-        for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
-            gls_camera c = rel[i];
-            gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
-            if (play_camera(o, plan, r, &c, names[i], (uint32_t)p.frame, errs))
-                rc = 1;
-        }
-        if (rc)
-            break;
+        (*inrange)++;
+        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
+            (*complete)++;
     }
     if (got < 0) {
         fprintf(errs, "%s\n", err);
         rc = 1;
     }
     gls_traj_close(t);
-    if (rc == 0 && rendered == 0) {
+    if (rc == 0 && *inrange == 0) {
         fprintf(errs, "glsplay: error: %s: no frame in the range given by --frames\n", o->trajectory);
         rc = 1;
     }
+    return rc;
+}
+
+/* --resume: how many frames it skips (one line, always). */
+static void resume_note(FILE *errs, uint64_t complete, uint64_t total)
+{
+    fprintf(errs, "glsplay: note: --resume: %llu of %llu frame%s complete, skipped; %llu to render\n",
+            (unsigned long long)complete, (unsigned long long)total, total == 1 ? "" : "s",
+            (unsigned long long)(total - complete));
+}
+
+/* Every frame of the trajectory in [frame_first, frame_end), read one line
+ * at a time (memory stays flat however long the sequence).  Each camera
+ * file gives that camera's pose relative to the rig. */
+static int play_trajectory(session *s, const gls_camera *rel, const char *const *names)
+{
+    const gls_play_opts *o = s->o;
+    FILE *errs = s->errs;
+    uint64_t inrange, complete;
+    if (scan_trajectory(o, rel, names, errs, &inrange, &complete))
+        return 1;
+    if (o->resume)
+        resume_note(errs, complete, inrange);
+    uint64_t todo = inrange - complete, done = 0;
+    s->views = todo * o->ncameras;
+    char err[1024];
+    gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
+    if (!t)
+        return 1;
+    gls_traj_pose p;
+    int got = 0, rc = 0;
+    double last = 0;
+    s->t0 = gls_now();
+    while (done < todo && (got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
+        if (p.frame < o->frame_first)
+            continue;
+        if (p.frame >= o->frame_end || p.frame > UINT32_MAX) /* checked by the scan */
+            break;
+        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
+            continue;
+        for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
+            gls_camera c = rel[i];
+            gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
+            if (play_camera(s, &c, names[i], (uint32_t)p.frame))
+                rc = 1;
+        }
+        if (rc)
+            break;
+        done++;
+        double now = gls_now();
+        if (o->progress && (done == todo || now - last >= 0.5)) {
+            last = now;
+            gls_progress_frames(errs, done, todo, now - s->t0, done == todo);
+        }
+    }
+    if (got < 0) {
+        fprintf(errs, "%s\n", err);
+        rc = 1;
+    }
+    gls_traj_close(t);
     return rc;
 }
 
@@ -352,15 +523,23 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_bundle_free(b);
     b = NULL;
     gls_renderer_set_background(r, o->background);
+    if (o->anisotropy > 1 && gls_renderer_set_anisotropy(r, o->anisotropy, err, sizeof err)) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        goto out;
+    }
+    session ses = {o, &plan, r, errs, o->ncameras, 0, gls_now(), 0};
     if (!o->trajectory) {
-        if (!(o->resume && frame_done(o, (const char *const *)names, o->frame)))
+        int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
+        if (o->resume)
+            resume_note(errs, skip, 1);
+        if (!skip)
             for (size_t i = 0; i < o->ncameras; i++)
-                if (play_camera(o, &plan, r, &cams[i], names[i], o->frame, errs))
+                if (play_camera(&ses, &cams[i], names[i], o->frame))
                     goto out;
         rc = 0;
         goto out;
     }
-    rc = play_trajectory(o, &plan, r, cams, (const char *const *)names, errs);
+    rc = play_trajectory(&ses, cams, (const char *const *)names);
 out:
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);

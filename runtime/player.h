@@ -30,11 +30,13 @@ typedef struct {
                                     each of its frames (spec/road.md)   */
     uint64_t frame_first, frame_end; /* --frames A:B: frames A..B-1 of the
                                     trajectory; end UINT64_MAX = all    */
-    int resume;                  /* skip frames whose outputs all exist  */
+    int resume;                  /* skip complete frames (frame_record.h) */
     float background[3];         /* clear colour, 0..1 (default black)   */
     gls_aa_opts aa;              /* anti-aliasing; n = 0 is taken as 1   */
     gls_image_format image_format;
     uint32_t aa_tiles;           /* samples per GL pass, 0 = automatic   */
+    uint32_t anisotropy;         /* anisotropic texture filtering up to N x;
+                                    0 or 1 = off (the fast default)     */
     int progress;                /* progress lines on errs               */
 } gls_play_opts;
 

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "render.h"
+#include "units.h"
 
 #ifndef GL_TEXTURE_MAX_ANISOTROPY
 #define GL_TEXTURE_MAX_ANISOTROPY 0x84FE
@@ -101,9 +102,6 @@ static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size
     }
     if (!(s->features & GLS_FEAT_TEXTURES))
         return 0;
-    GLfloat maxaniso = 1;
-    if (r->aniso)
-        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxaniso);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (uint32_t i = 0; i < s->nchunks; i++) {
         uint32_t t = s->chunks[i].key.texture;
@@ -132,10 +130,8 @@ static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        /* grazing angles (a road towards the horizon) blur badly with
-         * isotropic mipmapping alone */
-        if (r->aniso)
-            glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, maxaniso < 16 ? maxaniso : 16);
+        /* anisotropic filtering stays off (GL's default, 1) unless asked
+         * for: gls_renderer_set_anisotropy */
     }
     glBindTexture(GL_TEXTURE_2D, 0);
     GLenum e = glGetError();
@@ -228,6 +224,27 @@ uint32_t gls_renderer_max_dim(const gls_renderer *r)
     return maxrb > 0 ? (uint32_t)maxrb : 0;
 }
 
+uint64_t gls_renderer_bytes(uint32_t w, uint32_t h, uint32_t kx, uint32_t ky)
+{
+    /* RGBA8 colour and float depth per framebuffer pixel, and the float
+     * depth read-back of one image */
+    return (uint64_t)w * kx * h * ky * 8 + (uint64_t)w * h * 4;
+}
+
+/* The framebuffer could not be had: say which, and how much it needs.
+ * The renderer is left without a valid size, so the next call
+ * allocates again. */
+static int alloc_failed(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx, uint32_t ky, char *err, size_t errlen)
+{
+    char need[32], tiles[96] = "";
+    gls_fmt_bytes(need, sizeof need, gls_renderer_bytes(w, h, kx, ky));
+    if (kx * ky > 1)
+        snprintf(tiles, sizeof tiles, ", %ux%u tiles of %ux%u images", kx, ky, w, h);
+    snprintf(err, errlen, "cannot allocate a %ux%u framebuffer%s (%s of memory)", w * kx, h * ky, tiles, need);
+    r->kx = r->ky = 0;
+    return -1;
+}
+
 int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx, uint32_t ky, char *err,
                             size_t errlen)
 {
@@ -239,10 +256,8 @@ int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx
         return -1;
     }
     float *d = realloc(r->dbuf, (size_t)w * h * sizeof *d);
-    if (!d) {
-        snprintf(err, errlen, "out of memory for a %ux%u depth image", w, h);
-        return -1;
-    }
+    if (!d)
+        return alloc_failed(r, w, h, kx, ky, err, errlen);
     r->dbuf = d;
     if (!r->fbo) {
         r->glGenFramebuffers(1, &r->fbo);
@@ -259,8 +274,11 @@ int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx
     r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->rb_depth);
     GLenum st = r->glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (st != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(err, errlen, "framebuffer %ux%u incomplete (status %#x)", fw, fh, st);
-        return -1;
+        /* llvmpipe's renderbuffers are plain memory: incomplete means
+         * GL could not allocate them (GL_OUT_OF_MEMORY) */
+        while (glGetError() != GL_NO_ERROR)
+            ;
+        return alloc_failed(r, w, h, kx, ky, err, errlen);
     }
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -487,6 +505,33 @@ void gls_render_read_z(gls_renderer *r, float *z)
 const char *gls_renderer_gl_name(const gls_renderer *r) { return r->gl_name; }
 const char *gls_renderer_gl_version(const gls_renderer *r) { return r->gl_version; }
 int gls_renderer_anisotropic(const gls_renderer *r) { return r->aniso; }
+
+int gls_renderer_set_anisotropy(gls_renderer *r, uint32_t n, char *err, size_t errlen)
+{
+    if (n <= 1 && !r->aniso)
+        return 0; /* off, and GL without the extension is off already */
+    if (!r->aniso) {
+        snprintf(err, errlen, "anisotropic texture filtering is not available in %s", r->gl_name);
+        return -1;
+    }
+    GLfloat maxaniso = 1;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxaniso);
+    GLfloat a = n < 1 ? 1.0f : (GLfloat)n;
+    if (a > maxaniso)
+        a = maxaniso;
+    for (uint32_t i = 0; i < r->ntex; i++)
+        if (r->tex[i]) {
+            glBindTexture(GL_TEXTURE_2D, r->tex[i]);
+            glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, a);
+        }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR) {
+        snprintf(err, errlen, "GL error %#x while setting anisotropic filtering", e);
+        return -1;
+    }
+    return 0;
+}
 
 void gls_renderer_destroy(gls_renderer *r)
 {

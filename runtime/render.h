@@ -39,6 +39,11 @@ void gls_renderer_set_background(gls_renderer *r, const float rgb[3]);
  * is at column t % kx, row t / kx; tile 0 is where a plain pass goes. */
 int gls_renderer_set_mosaic(gls_renderer *r, uint32_t width, uint32_t height, uint32_t kx, uint32_t ky, char *err,
                             size_t errlen);
+/* Memory a mosaic needs: its framebuffer (8 bytes a pixel: RGBA8 colour,
+ * float depth) and the depth read-back of one image.  When it cannot be
+ * had, set_size / set_mosaic say "cannot allocate a WxH framebuffer[, KxK
+ * tiles of wxh images] (N GiB of memory)". */
+uint64_t gls_renderer_bytes(uint32_t width, uint32_t height, uint32_t kx, uint32_t ky);
 /* Largest framebuffer side GL allows (GL_MAX_RENDERBUFFER_SIZE). */
 uint32_t gls_renderer_max_dim(const gls_renderer *r);
 
@@ -73,8 +78,14 @@ void gls_render_read_z(gls_renderer *r, float *z);
 /* GL_RENDERER and GL_VERSION strings of the context, for reports. */
 const char *gls_renderer_gl_name(const gls_renderer *r);
 const char *gls_renderer_gl_version(const gls_renderer *r);
-/* 1 if anisotropic filtering is available (and used for textures). */
+/* 1 if anisotropic filtering is available (GL_*_texture_filter_anisotropic). */
 int gls_renderer_anisotropic(const gls_renderer *r);
+/* Anisotropic filtering of every texture, up to n x (n <= 1: off, the
+ * default; capped at what GL allows).  Off by default because llvmpipe's
+ * anisotropic sampler is very slow: minutes instead of a fraction of a
+ * second for a 640x480 frame of the road demo (make bench-aa measures
+ * it).  -1 with a message when n > 1 and GL lacks the extension. */
+int gls_renderer_set_anisotropy(gls_renderer *r, uint32_t n, char *err, size_t errlen);
 
 void gls_renderer_destroy(gls_renderer *r);
 

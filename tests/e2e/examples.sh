@@ -14,7 +14,7 @@
 #     fx, fy, cx, cy within 1 px;
 #   - dense stereo: StereoSGBM on the rectified pair (--aa 4, as make demo)
 #     agrees with the ground-truth disparity f B / Z within 1 px on at least
-#     95% of the pixels valid in both (measured 0.991), within 3 px on 97%.
+#     95% of the pixels valid in both (measured 0.989), within 3 px on 97%.
 # EXAMPLES_KEEP=DIR keeps the renders.
 B=${GLS_BIN:-build}
 PY=/usr/bin/python3

@@ -28,6 +28,8 @@ run aa_seed6 $PLAY $S -o "$t/c16" --aa 4 --filter gauss:0.6 --pattern stratified
 cmp -s "$t/a16/proj/image_000000.png" "$t/c16/proj/image_000000.png" && fail aa_seed_matters "seeds 5 and 6 give the same image" || ok aa_seed_matters
 cmp -s "$t/plain/proj/depth_000000.pfm" "$t/a16/proj/depth_000000.pfm" && ok aa_depth_unjittered || fail aa_depth_unjittered "depth changed"
 run aa_pfm $PLAY $S -o "$t/pf" --subpixel 1/8 --image-format pfm --outputs image
+# the same samples as a16, written as float: png16 must agree with it
+run aa_16_pfm $PLAY $S -o "$t/a16pf" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format pfm --outputs image
 [ -s "$t/pf/proj/image_000000.pfm" ] && head -c 3 "$t/pf/proj/image_000000.pfm" | grep -q '^PF' && ok aa_pfm_header || fail aa_pfm_header "no PF file"
 if [ -x $PY ] && $PY -c 'import cv2' 2>/dev/null; then
     $PY - "$t" <<'PYEOF'
@@ -42,6 +44,12 @@ def res(name, cond, why=''):
 res('aa_png16_depth', a16.dtype == np.uint16 and a16.shape == plain.shape, str(a16.dtype))
 # anti-aliased values between 0 and 1 that 8 bits cannot hold
 res('aa_png16_fine', np.any(a16 % 257 != 0), 'all values multiples of 257')
+# png16 and pfm of the same samples agree on every pixel, mid-greys
+# included (a byte swap is invisible on multiples of 257 only)
+a16pf = cv2.imread(t + '/a16pf/proj/image_000000.pfm', cv2.IMREAD_UNCHANGED)
+d16 = np.abs(a16.astype(float) / 65535 - a16pf) if a16pf is not None and a16pf.shape == a16.shape else None
+res('aa_png16_matches_pfm', d16 is not None and d16.max() <= 1 / 65535 and np.any(a16 % 257 != 0),
+    'max difference %s' % (None if d16 is None else d16.max() * 65535))
 res('aa_pfm_float', pf.dtype == np.float32 and pf.shape == plain.shape and np.isfinite(pf).all(), str(pf.dtype))
 # same picture: far from edges the anti-aliased image equals the plain one
 flat = mask == 0
@@ -65,6 +73,17 @@ usage aa_usage_both $PLAY $S -o "$t/x" --aa 4 --subpixel 1/4
 usage aa_usage_filter $PLAY $S -o "$t/x" --filter tent
 usage aa_usage_format $PLAY $S -o "$t/x" --image-format jpg
 usage aa_usage_subpixel $PLAY $S -o "$t/x" --subpixel 1/5000
+# a render projected beyond a minute says so first: 4096 x 4096 samples at
+# 640x480 are 16.7 million passes, hours at any speed; the projection is
+# made after 2 s of passes, and the render is stopped once it is there
+$PLAY $S -o "$t/long" --aa 4096 --size 640x480 --outputs image 2>"$t/err" &
+pid=$!
+i=0
+while [ $i -lt 240 ] && ! grep -q "estimated render time" "$t/err"; do sleep 0.25; i=$((i + 1)); done
+kill "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+grep -q '^glsplay: note: estimated render time [0-9a-z ]*: 1 camera frame x 16777216 anti-aliasing passes x [0-9.]* [mu]*s (measured on the first [0-9]* passes; --explain shows the plan)$' \
+    "$t/err" && ok aa_estimate_before_long_render || fail aa_estimate_before_long_render "$(cat "$t/err")"
 # progress only on a terminal: stderr to a file stays empty
 $PLAY $S -o "$t/q" --aa 16 --outputs image 2>"$t/err"
 [ ! -s "$t/err" ] && ok aa_no_progress_when_not_tty || fail aa_no_progress_when_not_tty "$(cat "$t/err")"

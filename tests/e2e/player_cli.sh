@@ -96,3 +96,54 @@ expect player_usage_bad_outputs 2 "image, depth, points" -- $PLAY "$t/proj.glsb"
 expect player_usage_unknown_option 2 "unknown option" -- $PLAY "$t/proj.glsb" --frobnicate
 expect player_help 0 "" -- $PLAY --help
 grep -q "usage: glsplay" "$t/stdout" && ok player_help_text || fail player_help_text "no usage line"
+
+# exact NAME STATUS LINE -- command...: exit status, and stderr exactly LINE
+exact() {
+    name=$1 want=$2 line=$3
+    shift 4
+    "$@" >"$t/stdout" 2>"$t/stderr"
+    rc=$?
+    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
+    elif [ "$(cat "$t/stderr")" != "$line" ] || [ "$(wc -l <"$t/stderr")" -ne $([ -n "$line" ] && echo 1 || echo 0) ]; then
+        fail "$name" "stderr is '$(cat "$t/stderr")', wanted '$line'"
+    else ok "$name"; fi
+}
+# -o "": OUTDIR/NAME would be /NAME at the file-system root
+exact player_usage_empty_outdir 2 "glsplay: error: -o needs a non-empty output directory (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o ""
+# a mask of one sample per pixel would be all 0: refused
+exact player_usage_mask_without_aa 2 \
+    "glsplay: error: --outputs mask needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs image,mask
+exact player_usage_mask_aa1 2 \
+    "glsplay: error: --outputs mask needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs mask --aa 1
+[ ! -e "$t/m" ] && ok player_mask_without_aa_writes_nothing || fail player_mask_without_aa_writes_nothing "$(find "$t/m")"
+exact player_mask_with_aa 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m2" --outputs mask --aa 2
+# anisotropic texture filtering: off in the default plan (llvmpipe takes
+# minutes per frame with it), on with --anisotropic N
+if "$B/glsc" -I examples/demo -I "$B/textures" -o "$t/tex.glsb" examples/demo/Demo.scene 2>"$t/stderr"; then
+    $PLAY "$t/tex.glsb" --camera examples/demo/left.cam --explain >"$t/plan" 2>&1
+    $PLAY "$t/tex.glsb" --camera examples/demo/left.cam --explain --anisotropic 16 >"$t/plan16" 2>&1
+    grep -q "GL: anisotropic filtering off" "$t/plan" && ! grep -q "anisotropic filtering up to" "$t/plan" &&
+        ok player_explain_anisotropic_off || fail player_explain_anisotropic_off "$(grep -i aniso "$t/plan")"
+    grep -q "GL: anisotropic filtering up to 16x (--anisotropic 16)" "$t/plan16" &&
+        ok player_explain_anisotropic_on || fail player_explain_anisotropic_on "$(grep -i aniso "$t/plan16")"
+else
+    fail player_explain_anisotropic "the demo scene does not compile: $(cat "$t/stderr")"
+fi
+exact player_usage_anisotropic 2 "glsplay: error: --anisotropic needs N in 1..16, got '32' (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --anisotropic 32
+# an image too large for memory: which framebuffer, how much memory, and
+# the option that lowers it (memory capped at 1.5 GB with ulimit -v; not
+# under ASan, which reserves far more address space than that)
+if [ "$GLS_SANITIZED" != 1 ]; then
+    exact player_err_mosaic_memory 1 \
+        "glsplay: error: camera proj: cannot allocate a 16000x16000 framebuffer, 16x16 tiles of 1000x1000 images (1.9 GiB of memory); lower --aa-tiles (256 tiles a pass now)" -- \
+        sh -c 'ulimit -v 1500000; exec "$@"' sh $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/mem" \
+        --size 1000x1000 --aa 16 --aa-tiles 256 --outputs image
+    exact player_err_image_memory 1 \
+        "glsplay: error: camera proj: cannot allocate a 16384x16384 framebuffer (3.0 GiB of memory); lower --size (or the camera's width and height)" -- \
+        sh -c 'ulimit -v 1500000; exec "$@"' sh $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/mem" \
+        --size 16384x16384 --outputs image
+fi

@@ -68,6 +68,80 @@ else
     fail resume_skips_complete_frames "frame 1 rewritten=$old1, frame 2 rewritten=$new2"
 fi
 
+# a re-render that fails part way leaves frame 2 with a new image beside
+# the old depth and points; --resume must not take that frame as complete.
+# The failure: a file-size limit (4 KiB) kills glsplay (SIGXFSZ) while it
+# writes the depth map, after the (small) image.
+sed 's/^poly { vert(-1, -1, 10)/poly { vert(-1.5, -1, 10)/' "$tmp/s/Sq.scene" >"$tmp/s/Sq2.scene"
+"$BIN/glsc" -I "$tmp/s" -o "$tmp/sq2.glsb" Sq2 || fail resume_setup "second scene does not compile"
+# (in a shell of its own, whose stderr takes the shell's report of the signal)
+sh -c 'ulimit -f 8; "$@"' sh "$BIN/glsplay" "$tmp/sq2.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" \
+    --frames 2:3 -o "$tmp/seq" 2>/dev/null
+rm -f "$tmp"/seq/cam/*.tmp*
+if ! cmp -s "$tmp/seq/cam/image_000002.png" "$tmp/one/cam/image_000002.png" &&
+    cmp -s "$tmp/seq/cam/depth_000002.pfm" "$tmp/one/cam/depth_000002.pfm"; then
+    "$BIN/glsplay" "$tmp/sq2.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --frames 2:3 --resume \
+        -o "$tmp/seq" 2>>"$tmp/err"
+    "$BIN/glsplay" "$tmp/sq2.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --frames 2:3 -o "$tmp/fresh" \
+        2>>"$tmp/err"
+    if cmp -s "$tmp/seq/cam/depth_000002.pfm" "$tmp/fresh/cam/depth_000002.pfm" &&
+        cmp -s "$tmp/seq/cam/points_000002.ply" "$tmp/fresh/cam/points_000002.ply"; then
+        ok resume_rejects_partly_rewritten_frame
+    else
+        fail resume_rejects_partly_rewritten_frame "--resume kept the old depth/points beside the new image"
+    fi
+else
+    fail resume_rejects_partly_rewritten_frame "the interrupted render did not leave a new image and the old depth"
+fi
+
+# --resume with another image format (or other outputs) does not take the
+# frames rendered before as complete
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --frames 0:2 --outputs image \
+    -o "$tmp/fmt" 2>>"$tmp/err"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --frames 0:2 --outputs image \
+    --image-format png16 --resume -o "$tmp/fmt" 2>>"$tmp/err"
+# the IHDR bit depth, byte 25 of a PNG
+depth0=$(od -An -tu1 -j24 -N1 "$tmp/fmt/cam/image_000000.png" | tr -d ' ')
+depth1=$(od -An -tu1 -j24 -N1 "$tmp/fmt/cam/image_000001.png" | tr -d ' ')
+[ "$depth0" = 16 ] && [ "$depth1" = 16 ] && ok resume_checks_image_format ||
+    fail resume_checks_image_format "bit depths after --resume --image-format png16: $depth0 $depth1"
+
+# frame-level progress: only on a terminal, or with --progress; --resume
+# says how many frames it skips
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" -o "$tmp/prog" 2>"$tmp/perr"
+[ ! -s "$tmp/perr" ] && ok progress_not_on_a_file || fail progress_not_on_a_file "$(cat "$tmp/perr")"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --progress -o "$tmp/prog" \
+    2>"$tmp/perr"
+# (lines between are at most two a second: five small frames may show none)
+if [ "$(head -c 1 "$tmp/perr")" = "$(printf '\r')" ] &&
+    tr '\r' '\n' <"$tmp/perr" | tail -1 | grep -q '^glsplay: 5 frames in [0-9. a-z]*, [0-9.]* frames/s *$'; then
+    ok progress_frames
+else
+    fail progress_frames "$(od -c "$tmp/perr" | head -5)"
+fi
+rm "$tmp/prog/cam/image_000003.png"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --resume -o "$tmp/prog" \
+    2>"$tmp/perr"
+[ "$(cat "$tmp/perr")" = "glsplay: note: --resume: 4 of 5 frames complete, skipped; 1 to render" ] &&
+    [ -f "$tmp/prog/cam/image_000003.png" ] && ok resume_says_what_it_skips ||
+    fail resume_says_what_it_skips "$(cat "$tmp/perr")"
+
+# a sequence projected beyond a minute says so first: a million frames
+# (over a minute at any speed; the projection is made on the frames done
+# in the first half second), stopped once the note is there
+awk 'BEGIN { for (i = 0; i < 1000000; i++) printf "%d %d 1 0 0 0 1 0 0 0 1 0 0 %.4f\n", i, i, -i * 0.0001 }' \
+    >"$tmp/million.txt"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --size 8x6 --outputs image --trajectory "$tmp/million.txt" \
+    -o "$tmp/million" 2>"$tmp/merr" &
+pid=$!
+i=0
+while [ $i -lt 240 ] && ! grep -q "estimated render time" "$tmp/merr"; do sleep 0.25; i=$((i + 1)); done
+kill "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+rm -rf "$tmp/million" "$tmp/million.txt"
+grep -q '^glsplay: note: estimated render time [0-9a-z ]*: 1000000 camera frames x [0-9.]* [mu]*s (measured on the first [0-9]*)$' \
+    "$tmp/merr" && ok estimate_before_long_sequence || fail estimate_before_long_sequence "$(cat "$tmp/merr")"
+
 # --background: uncovered pixels get the colour; depth stays +inf there
 "$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --background 0,0.5,1 -o "$tmp/bg" 2>>"$tmp/err"
 if /usr/bin/python3 - "$tmp/bg/cam" <<'PY'

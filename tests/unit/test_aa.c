@@ -35,7 +35,7 @@ static int aa_render(const gls_bundle *b, const gls_camera *c, const gls_aa_opts
         printf("  renderer: %s\n", err);
         goto out;
     }
-    gls_aa_run_opts ro = {0, 0, NULL, NULL};
+    gls_aa_run_opts ro = {0, 0, NULL, NULL, NULL, NULL};
     if (gls_aa_render(r, c, &p, &ro, &acc, NULL, err, sizeof err)) {
         printf("  render: %s\n", err);
         gls_accum_free(&acc);
@@ -468,7 +468,7 @@ static void test_mosaic_same_as_single(void)
     for (int i = 0; i < 3 && r; i++) {
         gls_accum a;
         CHECK(gls_accum_init(&a, 64, 48, 1, 0) == 0);
-        gls_aa_run_opts ro = {tiles[i], i == 2, NULL, NULL};
+        gls_aa_run_opts ro = {tiles[i], i == 2, NULL, NULL, NULL, NULL};
         gls_aa_stats st;
         CHECK(gls_aa_render(r, &c, &p, &ro, &a, &st, err, sizeof err) == 0);
         CHECK(st.samples == 49 && st.kx * st.ky >= tiles[i] && st.passes == (49 + st.kx * st.ky - 1) / (st.kx * st.ky));

@@ -638,7 +638,7 @@ static void test_deterministic_png(void)
 static void test_texture_modes(void)
 {
     /* 8x8 texture of 4x4 quadrants: top red, green; bottom blue, hole
-     * (alpha 0).  Quadrants, not single texels: llvmpipe's anisotropic
+     * (alpha 0).  Quadrants, not single texels: llvmpipe's texture
      * filter blurs magnified textures by about a texel, so the checks
      * sample quadrant centres, two texels from any colour change. */
     static const uint8_t quad[4][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {0, 0, 0, 0}};
@@ -684,6 +684,62 @@ static void test_texture_modes(void)
     CHECK(q[0] >= 126 && q[0] <= 129 && q[1] == 0 && q[2] == 0);
     #undef PIX
     free(rgba);
+    gls_bundle_free(b);
+}
+
+/* Render b through c with anisotropic filtering n (0: the renderer's
+ * default, untouched). */
+static int render_aniso(const gls_bundle *b, const gls_camera *c, uint32_t n, uint8_t *rgba)
+{
+    char err[256];
+    gls_scene s;
+    if (gls_scene_flatten(b, &s, err, sizeof err))
+        return -1;
+    gls_renderer *r = gls_renderer_create(ctx, b, &s, err, sizeof err);
+    int rc = -1;
+    if (r && !gls_renderer_set_size(r, c->width, c->height, err, sizeof err) &&
+        (n == 0 || !gls_renderer_set_anisotropy(r, n, err, sizeof err))) {
+        gls_render_pass(r, c, 0, 0);
+        gls_render_read_rgba(r, rgba);
+        rc = 0;
+    }
+    gls_renderer_destroy(r);
+    gls_scene_free(&s);
+    return rc;
+}
+
+static void test_anisotropy_off_by_default(void)
+{
+    /* a ground plane of fine stripes across the view, seen at a grazing
+     * angle: isotropic mipmapping blurs them where anisotropic filtering
+     * keeps them, so the two images differ */
+    uint8_t tex[64 * 64 * 4];
+    for (int y = 0; y < 64; y++)
+        for (int x = 0; x < 64; x++) {
+            uint8_t v = (x / 2) % 2 ? 255 : 0;
+            uint8_t px[4] = {v, v, v, 255};
+            memcpy(tex + 4 * (64 * y + x), px, 4);
+        }
+    tb t;
+    tb_init(&t);
+    uint32_t ti = tb_texture(&t, "stripes", 64, 64, tex);
+    tb_object(&t, "scene", 1);
+    tb_u1(&t, GLS_OP_TEXTURE, ti);
+    tb_u1(&t, GLS_OP_TEXMODE, GLS_MODE_REPLACE);
+    gls_vec4 p[4] = {{-4, 1, 1, 1}, {4, 1, 1, 1}, {4, 1, 60, 1}, {-4, 1, 60, 1}};
+    gls_st st[4] = {{0, 0}, {8, 0}, {8, 60}, {0, 60}};
+    tb_prim4(&t, GLS_PRIM_POLY, 4, p, NULL, st);
+    gls_bundle *b = tb_finish(&t);
+    double T[3] = {0, 0, 0};
+    gls_camera c = tb_camera(96, 64, 80, 80, 47.5, 31.5, 0, I3, T, 0.1, 100);
+    size_t n = (size_t)c.width * c.height * 4;
+    uint8_t *def = malloc(n), *one = malloc(n), *a16 = malloc(n);
+    CHECK(render_aniso(b, &c, 0, def) == 0);
+    CHECK(render_aniso(b, &c, 1, one) == 0);
+    CHECK(render_aniso(b, &c, 16, a16) == 0);
+    CHECK(memcmp(def, one, n) == 0);  /* the default is off */
+    CHECK(memcmp(def, a16, n) != 0);  /* and 16 x is on */
+    free(def), free(one), free(a16);
     gls_bundle_free(b);
 }
 
@@ -791,6 +847,7 @@ int main(int argc, char **argv)
     RUN(test_replay_semantics);
     RUN(test_deterministic_png);
     RUN(test_texture_modes);
+    RUN(test_anisotropy_off_by_default);
     RUN(test_output_names);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();

@@ -1,0 +1,31 @@
+/* The completion record of one camera's outputs of one frame, which
+ * --resume trusts (spec/road.md "Resuming a sequence").
+ *
+ * Each output file is written atomically, but a frame is several files:
+ * a re-render that fails part way would leave new and old files side by
+ * side, each complete.  So the player removes the record before it
+ * rewrites any file of that camera and frame, and writes the record
+ * (atomically) after the last one.  The record says what it covers:
+ * camera name and size, outputs, image format and the settings that change
+ * the images, so --resume with other outputs or settings does not take it. */
+#ifndef GLS_FRAME_RECORD_H
+#define GLS_FRAME_RECORD_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "player.h"
+
+/* OUTDIR/NAME/.frame_F.done (hidden: it is bookkeeping, not an output).
+ * 0, or -1 if it does not fit. */
+int gls_frame_record_path(char *buf, size_t len, const char *outdir, const char *name, uint32_t frame);
+
+/* The record's text for camera c (its name, size) and frame under o
+ * (outputs, image format, anti-aliasing, anisotropy, background).  0, or
+ * -1 if it does not fit in len. */
+int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_camera *c, const char *name,
+                          uint32_t frame);
+
+/* 1 if the file at path holds exactly text (and is a regular file). */
+int gls_frame_record_matches(const char *path, const char *text);
+
+#endif
