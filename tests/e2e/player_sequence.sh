@@ -26,6 +26,7 @@ R 1 0 0 0 1 0 0 0 1
 T 0 0 0
 near 0.1
 far 100
+pose rig
 CAM
 # the rig moves 1 unit forward per frame (T = -R C with R = I)
 {
@@ -43,7 +44,7 @@ fi
 
 # frame 2 of the trajectory == a single render from a camera file holding
 # the composed pose (camera 2 units forward), numbered with --frame 2
-sed 's/^T 0 0 0$/T 0 0 -2/' "$tmp/cam.cam" >"$tmp/cam2.cam"
+sed 's/^T 0 0 0$/T 0 0 -2/; s/^pose rig$/pose world/' "$tmp/cam.cam" >"$tmp/cam2.cam"
 mkdir -p "$tmp/single"
 cp "$tmp/cam2.cam" "$tmp/single/cam.cam"
 "$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/single/cam.cam" --frame 2 -o "$tmp/one" 2>>"$tmp/err"
@@ -143,7 +144,9 @@ grep -q '^glsplay: note: estimated render time [0-9a-z ]*: 1000000 camera frames
     "$tmp/merr" && ok estimate_before_long_sequence || fail estimate_before_long_sequence "$(cat "$tmp/merr")"
 
 # --background: uncovered pixels get the colour; depth stays +inf there
-"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --background 0,0.5,1 -o "$tmp/bg" 2>>"$tmp/err"
+mkdir -p "$tmp/world"
+sed 's/^pose rig$/pose world/' "$tmp/cam.cam" >"$tmp/world/cam.cam"
+"$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/world/cam.cam" --background 0,0.5,1 -o "$tmp/bg" 2>>"$tmp/err"
 if /usr/bin/python3 - "$tmp/bg/cam" <<'PY'
 import sys, cv2, numpy as np
 d = sys.argv[1]
