@@ -265,6 +265,64 @@ static gls_unit *unit_from_file(gls_compiler *c, const char *name, const char *p
     return u;
 }
 
+/* Append n elements of size elem from src to the array *arr of *count;
+ * returns the index of the first, or GLS_NONE when out of memory. */
+static uint32_t append(void **arr, uint32_t *count, const void *src, uint32_t n, size_t elem)
+{
+    void *p = realloc(*arr, ((size_t)*count + n) * elem);
+    if (!p)
+        return GLS_NONE;
+    *arr = p;
+    memcpy((char *)p + (size_t)*count * elem, src, (size_t)n * elem);
+    uint32_t first = *count;
+    *count += n;
+    return first;
+}
+
+/* Operand i of in, read from bundle b, made unit-local in u: object and
+ * texture indices become by-name references, vertex indices point at
+ * copies of the vertices in u.  Returns -1 when out of memory. */
+static int import_operand(gls_unit *u, const gls_bundle *b, gls_insn *in, uint32_t i, gls_loc loc)
+{
+    uint32_t *v = &in->u[i];
+    gls_vertex_span s = {0};
+    gls_insn_vertices(in, &s);
+    const char *nm;
+    switch ((gls_operand_kind)gls_op[in->op].kind[i]) {
+    case GLS_KIND_OBJECT:
+        nm = b->objects[*v].name;
+        *v = gls_unit_add_ref(&u->refs, &u->nrefs, &u->refs_cap, nm, strlen(nm), loc);
+        break;
+    case GLS_KIND_TEXTURE:
+        nm = b->textures[*v].name;
+        *v = gls_unit_add_ref(&u->texrefs, &u->ntexrefs, &u->texrefs_cap, nm, strlen(nm), loc);
+        break;
+    case GLS_KIND_FIRST_POS:
+        *v = append((void **)&u->pos, &u->npos, b->pos + *v, s.n, sizeof *u->pos);
+        break;
+    case GLS_KIND_FIRST_COL:
+        if (*v == GLS_NONE)
+            return 0;
+        *v = append((void **)&u->col, &u->ncol, b->col + *v, s.n, sizeof *u->col);
+        break;
+    case GLS_KIND_FIRST_TC:
+        if (*v == GLS_NONE)
+            return 0;
+        *v = append((void **)&u->tc, &u->ntc, b->tc + *v, s.n, sizeof *u->tc);
+        break;
+    case GLS_KIND_NUM:
+    case GLS_KIND_ANGLE:
+    case GLS_KIND_COMPONENT:
+    case GLS_KIND_ALPHA:
+    case GLS_KIND_TEXMODE:
+    case GLS_KIND_PRIMKIND:
+    case GLS_KIND_NVERT:
+    case GLS_KIND_COUNT:
+        return 0; /* not an index */
+    }
+    return *v == GLS_NONE ? -1 : 0;
+}
+
 /* Import object oi of a library bundle as a unit: decode its code, turning
  * bundle indices back into by-name references and unit-local vertices. */
 static gls_unit *unit_from_lib(gls_compiler *c, const gls_bundle *b, uint32_t oi, gls_loc loc)
@@ -285,44 +343,9 @@ static gls_unit *unit_from_lib(gls_compiler *c, const gls_bundle *b, uint32_t oi
             if (file == GLS_NONE)
                 goto oom;
         }
-        if (in.op == GLS_OP_CALL) {
-            const char *nm = b->objects[in.u[0]].name;
-            in.u[0] = gls_unit_add_ref(&u->refs, &u->nrefs, &u->refs_cap, nm, strlen(nm), loc);
-            if (in.u[0] == GLS_NONE)
+        for (uint32_t i = 0; i < gls_op[in.op].noperands; i++)
+            if (import_operand(u, b, &in, i, loc))
                 goto oom;
-        } else if (in.op == GLS_OP_TEXTURE) {
-            const char *nm = b->textures[in.u[0]].name;
-            in.u[0] = gls_unit_add_ref(&u->texrefs, &u->ntexrefs, &u->texrefs_cap, nm, strlen(nm), loc);
-            if (in.u[0] == GLS_NONE)
-                goto oom;
-        } else if (in.op == GLS_OP_PRIM) {
-            uint32_t n = in.u[1];
-            gls_vec4 *np = realloc(u->pos, (size_t)(u->npos + n) * sizeof *np);
-            if (!np)
-                goto oom;
-            u->pos = np;
-            memcpy(u->pos + u->npos, b->pos + in.u[2], n * sizeof *np);
-            in.u[2] = u->npos;
-            u->npos += n;
-            if (in.u[3] != GLS_NONE) {
-                gls_rgba *nc = realloc(u->col, (size_t)(u->ncol + n) * sizeof *nc);
-                if (!nc)
-                    goto oom;
-                u->col = nc;
-                memcpy(u->col + u->ncol, b->col + in.u[3], n * sizeof *nc);
-                in.u[3] = u->ncol;
-                u->ncol += n;
-            }
-            if (in.u[4] != GLS_NONE) {
-                gls_st *nt = realloc(u->tc, (size_t)(u->ntc + n) * sizeof *nt);
-                if (!nt)
-                    goto oom;
-                u->tc = nt;
-                memcpy(u->tc + u->ntc, b->tc + in.u[4], n * sizeof *nt);
-                in.u[4] = u->ntc;
-                u->ntc += n;
-            }
-        }
         u->src_file = file;
         if (gls_unit_emit(u, &in, line))
             goto oom;
@@ -587,19 +610,18 @@ static gls_bundle *assemble(gls_compiler *c, const gls_unit *top, int all_textur
         for (uint32_t k = 0; k < u->ninsn; k++) {
             gls_insn in;
             gls_insn_decode(u->code.data, u->code.len, &pos, &in);
-            /* relocate: the schema says which operand is which kind */
-            uint32_t ui = 0;
-            for (const char *s = gls_op_schema[in.op]; *s; s++) {
-                if (*s == 'd')
-                    continue;
-                uint32_t *v = &in.u[ui++];
-                switch (*s) {
-                case 'o': *v = ((gls_unit *)gls_strmap_get(&c->units, u->refs[*v].name))->final_index; break;
-                case 't': *v = gls_bundle_find_texture(b, u->texrefs[*v].name); break;
-                case 'p': *v += p0; break;
-                case 'c': if (*v != GLS_NONE) *v += c0; break;
-                case 'x': if (*v != GLS_NONE) *v += t0; break;
-                default: break;
+            /* relocate: the operand kinds say which index is which */
+            for (uint32_t j = 0; j < gls_op[in.op].noperands; j++) {
+                uint32_t *v = &in.u[j];
+                switch ((gls_operand_kind)gls_op[in.op].kind[j]) {
+                case GLS_KIND_OBJECT: *v = ((gls_unit *)gls_strmap_get(&c->units, u->refs[*v].name))->final_index; break;
+                case GLS_KIND_TEXTURE: *v = gls_bundle_find_texture(b, u->texrefs[*v].name); break;
+                case GLS_KIND_FIRST_POS: *v += p0; break;
+                case GLS_KIND_FIRST_COL: if (*v != GLS_NONE) *v += c0; break;
+                case GLS_KIND_FIRST_TC: if (*v != GLS_NONE) *v += t0; break;
+                case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
+                case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
+                    break; /* not an index */
                 }
             }
             if (gls_insn_encode(&code, &in))

@@ -106,17 +106,19 @@ static void emit(gls_parse *ctx, gls_insn *in, unsigned line)
         ERR(ctx, line, 1, "out of memory");
 }
 
-static void emit_d(gls_parse *ctx, gls_opcode op, const double *d, unsigned nd, unsigned line)
+/* An instruction whose operands are all numbers: d holds them in order. */
+static void emit_d(gls_parse *ctx, gls_opcode op, const double *d, unsigned line)
 {
-    gls_insn in = {.op = op, .nd = nd, .nu = 0};
-    memcpy(in.d, d, nd * sizeof *d);
+    gls_insn in = {.op = op};
+    memcpy(in.d, d, gls_op[op].noperands * sizeof *d);
     emit(ctx, &in, line);
 }
 
-static void emit_u(gls_parse *ctx, gls_opcode op, uint32_t u, unsigned line)
+/* An instruction with one integer operand, at position arg. */
+static void emit_u(gls_parse *ctx, gls_opcode op, unsigned arg, uint32_t v, unsigned line)
 {
-    gls_insn in = {.op = op, .nd = 0, .nu = 1};
-    in.u[0] = u;
+    gls_insn in = {.op = op};
+    in.u[arg] = v;
     emit(ctx, &in, line);
 }
 
@@ -294,8 +296,8 @@ static void h_color(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     if (check_unit_range(ctx, a, n, "colour"))
         return;
-    double d[4] = {a[0].num, a[1].num, a[2].num, n > 3 ? a[3].num : 1.0};
-    emit_d(ctx, GLS_OP_COLOR, d, 4, name.line);
+    double d[GLS_NARGS_COLOR] = {a[0].num, a[1].num, a[2].num, n > 3 ? a[3].num : 1.0};
+    emit_d(ctx, GLS_OP_COLOR, d, name.line);
 }
 
 static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
@@ -304,7 +306,7 @@ static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
     for (unsigned m = 0; m < GLS_MODE_COUNT; m++) {
         size_t l = strlen(gls_texmode_name[m]);
         if (a[0].len == l && memcmp(a[0].s, gls_texmode_name[m], l) == 0) {
-            emit_u(ctx, GLS_OP_TEXMODE, m, name.line);
+            emit_u(ctx, GLS_OP_TEXMODE, GLS_ARG_TEXMODE_MODE, m, name.line);
             gls_texuse_mode(&ctx->texuse, m != GLS_MODE_COLOR, name.line);
             return;
         }
@@ -337,7 +339,7 @@ static void h_texture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
         ERR(ctx, name.line, name.col, "out of memory");
         return;
     }
-    emit_u(ctx, GLS_OP_TEXTURE, r, name.line);
+    emit_u(ctx, GLS_OP_TEXTURE, GLS_ARG_TEXTURE_INDEX, r, name.line);
     if (gls_texuse_select(&ctx->texuse, gls_tok_loc(ctx, name.line, name.col), a->s + 1, a->len - 2))
         ERR(ctx, name.line, name.col, "out of memory");
 }
@@ -352,35 +354,35 @@ static void h_notexture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned
 
 static void h_trans(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
-    double d[3] = {a[0].num, a[1].num, a[2].num};
+    double d[GLS_NARGS_TRANS] = {a[0].num, a[1].num, a[2].num};
     (void)n;
-    emit_d(ctx, GLS_OP_TRANS, d, 3, name.line);
+    emit_d(ctx, GLS_OP_TRANS, d, name.line);
 }
 
 static void h_rot(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
-    double d[4] = {a[0].num, a[1].num, a[2].num, a[3].num};
+    double d[GLS_NARGS_ROT] = {a[0].num, a[1].num, a[2].num, a[3].num};
     (void)n;
-    if (d[1] == 0 && d[2] == 0 && d[3] == 0) {
+    if (d[GLS_ARG_ROT_X] == 0 && d[GLS_ARG_ROT_Y] == 0 && d[GLS_ARG_ROT_Z] == 0) {
         ERR(ctx, a[1].line, a[1].col, "rotation axis is zero");
         return;
     }
-    emit_d(ctx, GLS_OP_ROT, d, 4, name.line);
+    emit_d(ctx, GLS_OP_ROT, d, name.line);
 }
 
 static void h_scale(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
-    double d[3] = {a[0].num, n == 3 ? a[1].num : a[0].num, n == 3 ? a[2].num : a[0].num};
-    emit_d(ctx, GLS_OP_SCALE, d, 3, name.line);
+    double d[GLS_NARGS_SCALE] = {a[0].num, n == 3 ? a[1].num : a[0].num, n == 3 ? a[2].num : a[0].num};
+    emit_d(ctx, GLS_OP_SCALE, d, name.line);
 }
 
 static void h_transform(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
-    double d[16];
-    for (unsigned i = 0; i < 16; i++)
+    double d[GLS_NARGS_TRANSFORM];
+    for (unsigned i = 0; i < GLS_NARGS_TRANSFORM; i++)
         d[i] = a[i].num;
     (void)n;
-    emit_d(ctx, GLS_OP_TRANSFORM, d, 16, name.line);
+    emit_d(ctx, GLS_OP_TRANSFORM, d, name.line);
 }
 
 static void h_push(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
@@ -428,7 +430,7 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         ERR(ctx, name.line, name.col, "out of memory");
         return;
     }
-    emit_u(ctx, GLS_OP_CALL, r, name.line);
+    emit_u(ctx, GLS_OP_CALL, GLS_ARG_CALL_OBJECT, r, name.line);
     gls_texuse_call(&ctx->texuse);
 }
 
@@ -489,12 +491,12 @@ void sema_block_close(gls_parse *ctx, gls_tok rbrace)
             ERR(ctx, t.line, t.col, "'%s' needs at least %u vertices; it has %u", gls_prim_name[k], min, nv);
         return;
     }
-    gls_insn in = {.op = GLS_OP_PRIM, .nd = 0, .nu = 5};
-    in.u[0] = (uint32_t)k;
-    in.u[1] = nv;
-    in.u[2] = ctx->prim_pos0;
-    in.u[3] = ctx->prim_has_col ? ctx->prim_col0 : GLS_NONE;
-    in.u[4] = ctx->prim_has_tc ? ctx->prim_tc0 : GLS_NONE;
+    gls_insn in = {.op = GLS_OP_PRIM};
+    in.u[GLS_ARG_PRIM_KIND] = (uint32_t)k;
+    in.u[GLS_ARG_PRIM_N] = nv;
+    in.u[GLS_ARG_PRIM_POS] = ctx->prim_pos0;
+    in.u[GLS_ARG_PRIM_COL] = ctx->prim_has_col ? ctx->prim_col0 : GLS_NONE;
+    in.u[GLS_ARG_PRIM_TC] = ctx->prim_has_tc ? ctx->prim_tc0 : GLS_NONE;
     emit(ctx, &in, t.line);
     gls_texuse_draw(&ctx->texuse);
 }
