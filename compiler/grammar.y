@@ -24,6 +24,8 @@
     sema_syntax_error(ctx, yymajor, TOKEN);
 }
 
+/* INVALID: the scanner's error token (lexer.h); unit.c reports it and never
+ * passes it to the parser. */
 %token INVALID.
 
 %left PLUS MINUS.

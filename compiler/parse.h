@@ -2,18 +2,12 @@
  * semantic actions (sema.c) while one .scene file is compiled. */
 #ifndef GLS_PARSE_H
 #define GLS_PARSE_H
+#include "lexer.h"
 #include "texuse.h"
 #include "unit.h"
 
 #define GLS_MAX_ARGS 16
 #define GLS_MAX_CONSTS_BUCKETS 256
-
-/* A token: where it is and, for numbers, its value. */
-typedef struct {
-    const char *p;
-    uint32_t len;
-    unsigned line, col;
-} gls_tok;
 
 enum { VAL_NUM, VAL_WORD, VAL_STR, VAL_ERR };
 
@@ -75,13 +69,6 @@ static inline gls_loc gls_tok_loc(const gls_parse *ctx, unsigned line, unsigned 
     gls_loc l = {&ctx->u->src, line, col};
     return l;
 }
-
-/* lexer.re */
-typedef struct {
-    const char *cur, *lim, *line_start, *tok;
-    unsigned line;
-} gls_lexer;
-int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx);
 
 /* sema.c: actions called from the grammar */
 void sema_stmt(gls_parse *ctx, gls_tok name, int parens);
