@@ -1,6 +1,6 @@
 /* A compilation unit: one object, compiled from one .scene file (or
  * imported from a library bundle).  Its bytecode uses unit-local indices
- * that the linker (link.c) relocates when it assembles the bundle:
+ * that the linker relocates when it assembles the bundle (assemble.c):
  *   CALL operand    -> index into unit->refs (resolved by name later)
  *   TEXTURE operand -> index into unit->texrefs
  *   PRIM p, c, x    -> indices into the unit's own vertex arrays
