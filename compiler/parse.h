@@ -1,5 +1,5 @@
 /* Shared state of the lexer (lexer.re), the grammar (grammar.y) and the
- * semantic actions (sema.c) while one .scene file is compiled. */
+ * semantic actions (sema.h) while one .scene file is compiled. */
 #ifndef GLS_PARSE_H
 #define GLS_PARSE_H
 #include "lexer.h"
@@ -70,7 +70,7 @@ static inline gls_loc gls_tok_loc(const gls_parse *ctx, unsigned line, unsigned 
     return l;
 }
 
-/* sema.c: actions called from the grammar */
+/* The semantic actions, called from the grammar (sema.h lists their files) */
 void sema_stmt(gls_parse *ctx, gls_tok name, int parens);
 void sema_block_open(gls_parse *ctx, gls_tok name);
 void sema_block_close(gls_parse *ctx, gls_tok rbrace);
