@@ -3,6 +3,8 @@
  * usage: gen_textures OUTROOT
  * Writes OUTROOT/<package path>/<Name>.tga for every texture listed in
  * textures[] below (scenelib/README.md lists them with their sizes).
+ * A long file on purpose: it is a catalogue, one generator per texture,
+ * each read on its own.
  *
  * Rows are written top row first here (row 0 is the top of the picture, as
  * an image viewer shows it); the TGA file records that, and scenes address
