@@ -142,30 +142,35 @@ static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
         (int)a[0].len, a[0].s, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
 }
 
-/* The string argument's text without its quotes. */
-static int ref_arg(gls_parse *ctx, const gls_val *a, const char *what)
+/* The quoted name a (texture or object, says what) checked and added to
+ * the unit's references (*arr, *n, *cap), located at its first character
+ * inside the quotes; then the instruction op whose operand arg indexes it.
+ * Returns 0, or -1 after reporting an invalid name or running out of
+ * memory. */
+static int emit_ref(gls_parse *ctx, gls_tok name, const gls_val *a, const char *what, gls_ref **arr, uint32_t *n,
+                    uint32_t *cap, gls_opcode op, unsigned arg)
 {
     if (!gls_valid_name(a->s + 1, a->len - 2)) {
         ERR(ctx, a->line, a->col, "%.*s is not a valid %s name (dotted identifiers, like \"road.vegetation.Birch\")",
             (int)a->len, a->s, what);
         return -1;
     }
+    uint32_t r = gls_unit_add_ref(arr, n, cap, a->s + 1, a->len - 2, gls_tok_loc(ctx, a->line, a->col + 1));
+    if (r == GLS_NONE) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return -1;
+    }
+    emit_u(ctx, op, arg, r, name.line);
     return 0;
 }
 
 static void h_texture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     (void)n;
-    if (ref_arg(ctx, a, "texture"))
-        return;
     gls_unit *u = ctx->u;
-    uint32_t r = gls_unit_add_ref(&u->texrefs, &u->ntexrefs, &u->texrefs_cap, a->s + 1, a->len - 2,
-                                  gls_tok_loc(ctx, a->line, a->col + 1));
-    if (r == GLS_NONE) {
-        ERR(ctx, name.line, name.col, "out of memory");
+    if (emit_ref(ctx, name, a, "texture", &u->texrefs, &u->ntexrefs, &u->texrefs_cap, GLS_OP_TEXTURE,
+                 GLS_ARG_TEXTURE_INDEX))
         return;
-    }
-    emit_u(ctx, GLS_OP_TEXTURE, GLS_ARG_TEXTURE_INDEX, r, name.line);
     if (gls_texuse_select(&ctx->texuse, gls_tok_loc(ctx, name.line, name.col), a->s + 1, a->len - 2))
         ERR(ctx, name.line, name.col, "out of memory");
 }
@@ -247,16 +252,9 @@ static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     (void)n;
-    if (ref_arg(ctx, a, "object"))
-        return;
     gls_unit *u = ctx->u;
-    uint32_t r = gls_unit_add_ref(&u->refs, &u->nrefs, &u->refs_cap, a->s + 1, a->len - 2,
-                                  gls_tok_loc(ctx, a->line, a->col + 1));
-    if (r == GLS_NONE) {
-        ERR(ctx, name.line, name.col, "out of memory");
+    if (emit_ref(ctx, name, a, "object", &u->refs, &u->nrefs, &u->refs_cap, GLS_OP_CALL, GLS_ARG_CALL_OBJECT))
         return;
-    }
-    emit_u(ctx, GLS_OP_CALL, GLS_ARG_CALL_OBJECT, r, name.line);
     gls_texuse_call(&ctx->texuse);
 }
 
