@@ -24,6 +24,8 @@
     sema_syntax_error(ctx, yymajor, TOKEN);
 }
 
+/* INVALID: the scanner's error token (lexer.h); unit.c reports it and never
+ * passes it to the parser. */
 %token INVALID.
 
 %left PLUS MINUS.
@@ -47,7 +49,7 @@ stmt ::= error SEMI.                            { sema_recover(ctx); }
  * or the end of the file can follow a statement, so these rules add no
  * conflict; lemon may still reduce them on any other token (a default
  * reduction), and the action then leaves that token's syntax error to be
- * reported as before (sema.c). */
+ * reported as before (syntax.c). */
 stmt ::= IDENT(N).                              { sema_stmt_without_semi(ctx, N, 0); }
 stmt ::= IDENT(N) LPAREN args RPAREN.           { sema_stmt_without_semi(ctx, N, 1); }
 stmt ::= CONST IDENT(N) ASSIGN expr(E).         { sema_const_without_semi(ctx, N, E); }

@@ -1,13 +1,19 @@
-/* The scene language scanner, for re2c.  The source buffer ends with a NUL
- * sentinel (the loader guarantees it); a NUL before the end is an error.
- * Token codes come from lemon's generated grammar.h.  Whitespace and
- * comments are skipped here; line and column are tracked for messages. */
+/* The scene language scanner, for re2c (lexer.h says what it promises).
+ * The source buffer ends with a NUL sentinel (the loader guarantees it); a
+ * NUL before the end is an error token.  Token codes come from lemon's
+ * generated grammar.h.  Whitespace and comments are skipped here; line and
+ * column are tracked for messages.  Nothing here prints: errors are
+ * TK_INVALID tokens, reported by the driver (unit.c). */
+#include <stdio.h>
 #include "grammar.h"
-#include "parse.h"
+#include "lexer.h"
 
-/* Returns the next token code, 0 at end of input.  Lexical errors are
- * reported here and the offending bytes skipped. */
-int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
+void gls_lexer_init(gls_lexer *lx, const char *text, size_t len)
+{
+    *lx = (gls_lexer){text, text + len, text, text, 1};
+}
+
+int gls_lex(gls_lexer *lx, gls_tok *t)
 {
     const char *YYMARKER;
     for (;;) {
@@ -15,7 +21,9 @@ int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
         t->p = lx->tok;
         t->line = lx->line;
         t->col = (unsigned)(lx->tok - lx->line_start) + 1;
+        t->err = GLS_LEX_OK;
 #define TOKEN(code) do { t->len = (uint32_t)(lx->cur - lx->tok); return TK_##code; } while (0)
+#define INVALID(e) do { t->err = (e); TOKEN(INVALID); } while (0)
         /*!re2c
         re2c:define:YYCTYPE = "unsigned char";
         re2c:define:YYCURSOR = "lx->cur";
@@ -29,8 +37,7 @@ int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
 
         "\x00" {
             if (lx->tok >= lx->lim) { lx->cur = lx->tok; t->len = 0; return 0; }
-            gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "NUL byte in source");
-            continue;
+            INVALID(GLS_LEX_NUL);
         }
         "\n"            { lx->line++; lx->line_start = lx->cur; continue; }
         [ \t\r\f\v]+    { continue; }
@@ -38,12 +45,8 @@ int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
         "/*"            {
             /* block comment: scan by hand to count lines and find the end */
             for (;;) {
-                if (lx->cur >= lx->lim) {
-                    gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "unterminated comment");
-                    ctx->lex_eof_error = 1;
-                    t->len = 0;
-                    return 0;
-                }
+                if (lx->cur >= lx->lim)
+                    INVALID(GLS_LEX_UNTERMINATED_COMMENT);
                 if (lx->cur[0] == '*' && lx->cur[1] == '/') { lx->cur += 2; break; }
                 if (lx->cur[0] == '\n') { lx->line++; lx->line_start = lx->cur + 1; }
                 lx->cur++;
@@ -53,17 +56,9 @@ int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
         "const"         { TOKEN(CONST); }
         ident           { TOKEN(IDENT); }
         number          { TOKEN(NUMBER); }
-        number [A-Za-z_0-9.]+ {
-            gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "malformed number '%.*s'",
-                         (int)(lx->cur - lx->tok), lx->tok);
-            TOKEN(NUMBER);
-        }
+        number [A-Za-z_0-9.]+ { INVALID(GLS_LEX_MALFORMED_NUMBER); }
         "\"" [^"\n\x00]* "\"" { TOKEN(STRING); }
-        "\"" [^"\n\x00]* {
-            gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "unterminated string");
-            ctx->lex_eof_error = 1;
-            continue;
-        }
+        "\"" [^"\n\x00]* { INVALID(GLS_LEX_UNTERMINATED_STRING); }
         "("  { TOKEN(LPAREN); }
         ")"  { TOKEN(RPAREN); }
         "{"  { TOKEN(LBRACE); }
@@ -77,13 +72,24 @@ int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
         "/"  { TOKEN(SLASH); }
         [^] {
             unsigned char ch = (unsigned char)*lx->tok;
-            if (ch >= 0x20 && ch < 0x7f)
-                gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "unexpected character '%c'", ch);
-            else
-                gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "unexpected byte 0x%02x", ch);
-            continue;
+            INVALID(ch >= 0x20 && ch < 0x7f ? GLS_LEX_UNEXPECTED_CHARACTER : GLS_LEX_UNEXPECTED_BYTE);
         }
         */
+#undef INVALID
 #undef TOKEN
     }
+}
+
+int gls_lex_message(const gls_tok *t, char *buf, size_t n)
+{
+    switch (t->err) {
+    case GLS_LEX_NUL: return snprintf(buf, n, "NUL byte in source");
+    case GLS_LEX_UNTERMINATED_COMMENT: return snprintf(buf, n, "unterminated comment");
+    case GLS_LEX_MALFORMED_NUMBER: return snprintf(buf, n, "malformed number '%.*s'", (int)t->len, t->p);
+    case GLS_LEX_UNTERMINATED_STRING: return snprintf(buf, n, "unterminated string");
+    case GLS_LEX_UNEXPECTED_CHARACTER: return snprintf(buf, n, "unexpected character '%c'", *t->p);
+    case GLS_LEX_UNEXPECTED_BYTE: return snprintf(buf, n, "unexpected byte 0x%02x", (unsigned char)*t->p);
+    case GLS_LEX_OK: break;
+    }
+    return snprintf(buf, n, "no lexical error");
 }

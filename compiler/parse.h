@@ -1,19 +1,13 @@
 /* Shared state of the lexer (lexer.re), the grammar (grammar.y) and the
- * semantic actions (sema.c) while one .scene file is compiled. */
+ * semantic actions (sema.h) while one .scene file is compiled. */
 #ifndef GLS_PARSE_H
 #define GLS_PARSE_H
+#include "lexer.h"
 #include "texuse.h"
 #include "unit.h"
 
 #define GLS_MAX_ARGS 16
 #define GLS_MAX_CONSTS_BUCKETS 256
-
-/* A token: where it is and, for numbers, its value. */
-typedef struct {
-    const char *p;
-    uint32_t len;
-    unsigned line, col;
-} gls_tok;
 
 enum { VAL_NUM, VAL_WORD, VAL_STR, VAL_ERR };
 
@@ -76,14 +70,7 @@ static inline gls_loc gls_tok_loc(const gls_parse *ctx, unsigned line, unsigned 
     return l;
 }
 
-/* lexer.re */
-typedef struct {
-    const char *cur, *lim, *line_start, *tok;
-    unsigned line;
-} gls_lexer;
-int gls_lex(gls_lexer *lx, gls_tok *t, gls_parse *ctx);
-
-/* sema.c: actions called from the grammar */
+/* The semantic actions, called from the grammar (sema.h lists their files) */
 void sema_stmt(gls_parse *ctx, gls_tok name, int parens);
 void sema_block_open(gls_parse *ctx, gls_tok name);
 void sema_block_close(gls_parse *ctx, gls_tok rbrace);

@@ -65,6 +65,31 @@ uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, uint32_t *cap, const char 
     return (*n)++;
 }
 
+/* The next token for the parser.  Lexical errors are reported here, in
+ * the order they occur, and the parser never sees them: a malformed number
+ * stands for a number (so its statement parses, and is dropped silently
+ * by sema_number), every other error token is skipped.  After an
+ * unterminated string or comment, the parser's "unexpected end of file"
+ * would only repeat it (lex_eof_error). */
+static int next_token(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
+{
+    int code;
+    while ((code = gls_lex(lx, t)) == TK_INVALID) {
+        char small[128], *msg = small;
+        int need = gls_lex_message(t, small, sizeof small);
+        if (need >= (int)sizeof small && (msg = malloc((size_t)need + 1)))
+            gls_lex_message(t, msg, (size_t)need + 1);
+        gls_error_at(ctx->d, gls_tok_loc(ctx, t->line, t->col), "%s", msg ? msg : small);
+        if (msg != small)
+            free(msg);
+        if (t->err == GLS_LEX_UNTERMINATED_COMMENT || t->err == GLS_LEX_UNTERMINATED_STRING)
+            ctx->lex_eof_error = 1;
+        if (t->err == GLS_LEX_MALFORMED_NUMBER)
+            return TK_NUMBER;
+    }
+    return code;
+}
+
 int gls_compile_source(gls_unit *u, gls_diag *d)
 {
     gls_parse *ctx = calloc(1, sizeof *ctx);
@@ -83,11 +108,12 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
         gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");
         return -1;
     }
-    gls_lexer lx = {u->src.text, u->src.text + u->src.len, u->src.text, NULL, 1};
+    gls_lexer lx;
+    gls_lexer_init(&lx, u->src.text, u->src.len);
     gls_tok t;
     int code;
     do {
-        code = gls_lex(&lx, &t, ctx);
+        code = next_token(&lx, &t, ctx);
         ctx->prev = ctx->last;
         ctx->last = t;
         ctx->cur_major = code;

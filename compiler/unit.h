@@ -1,9 +1,10 @@
 /* A compilation unit: one object, compiled from one .scene file (or
  * imported from a library bundle).  Its bytecode uses unit-local indices
- * that the linker (link.c) relocates when it assembles the bundle:
- *   CALL operand    -> index into unit->refs (resolved by name later)
- *   TEXTURE operand -> index into unit->texrefs
- *   PRIM p, c, x    -> indices into the unit's own vertex arrays
+ * that the linker relocates when it assembles the bundle (assemble.c), by
+ * operand kind (format/opcodes.h):
+ *   OBJECT (call)                -> index into unit->refs (resolved by name)
+ *   TEXTURE                      -> index into unit->texrefs
+ *   FIRST_POS, FIRST_COL, FIRST_TC -> indices into the unit's vertex arrays
  */
 #ifndef GLS_UNIT_H
 #define GLS_UNIT_H

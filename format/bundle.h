@@ -107,14 +107,23 @@ typedef struct {
     gls_st *tc;            /* per-vertex texture coordinates              */
 } gls_bundle;
 
-/* One decoded instruction. */
+/* One decoded instruction.  Operand k (of gls_op[op].noperands) is d[k] if
+ * its kind is stored as F64, else u[k]; GLS_ARG_ constants (opcodes.h)
+ * name the positions: in.u[GLS_ARG_PRIM_N]. */
 typedef struct {
     gls_opcode op;
-    uint32_t nd;                        /* number of d operands            */
-    double d[GLS_MAX_OPERANDS];         /* d operands, in order            */
-    uint32_t nu;                        /* number of integer operands      */
-    uint32_t u[GLS_MAX_OPERANDS];       /* b n o t p c x operands, in order */
+    double d[GLS_MAX_OPERANDS];
+    uint32_t u[GLS_MAX_OPERANDS];
 } gls_insn;
+
+/* The vertices an instruction draws, from its NVERT and FIRST_ operands:
+ * n vertices from pos[first_pos], col[first_col] (or GLS_NONE: the current
+ * colour), tc[first_tc] (or GLS_NONE: texture coordinates 0, 0). */
+typedef struct {
+    uint32_t n, first_pos, first_col, first_tc;
+} gls_vertex_span;
+/* Fills *v and returns 1 if in draws vertices; 0 otherwise. */
+int gls_insn_vertices(const gls_insn *in, gls_vertex_span *v);
 
 /* Decode the instruction at code[*pos]; advance *pos.  Returns 0 on success,
  * -1 if the bytes are not a complete instruction (unknown opcode or

@@ -3,6 +3,38 @@
 #include <string.h>
 #include "bundle.h"
 
+/* The features an operand implies, by its kind (spec/bundle.md, section 11). */
+static uint32_t operand_features(const gls_bundle *b, const gls_insn *in, uint32_t i)
+{
+    static const uint32_t texmode_feature[GLS_MODE_COUNT] = {
+        [GLS_MODE_COLOR] = 0, [GLS_MODE_REPLACE] = GLS_FEAT_REPLACE, [GLS_MODE_MODULATE] = GLS_FEAT_MODULATE};
+    uint32_t v = in->u[i];
+    switch ((gls_operand_kind)gls_op[in->op].kind[i]) {
+    case GLS_KIND_TEXTURE:
+        if (v < b->ntextures && (b->textures[v].flags & GLS_TEX_ALPHA_HOLES))
+            return GLS_FEAT_TEXTURES | GLS_FEAT_ALPHA_TEST;
+        return GLS_FEAT_TEXTURES;
+    case GLS_KIND_TEXMODE:
+        return v < GLS_MODE_COUNT ? texmode_feature[v] : 0;
+    case GLS_KIND_ALPHA:
+        return in->d[i] < 1.0 ? GLS_FEAT_TRANSLUCENT : 0;
+    case GLS_KIND_FIRST_COL:
+        return v != GLS_NONE ? GLS_FEAT_VERTEX_COLOR : 0;
+    case GLS_KIND_FIRST_TC:
+        return v != GLS_NONE ? GLS_FEAT_TEXCOORDS : 0;
+    case GLS_KIND_NUM:
+    case GLS_KIND_ANGLE:
+    case GLS_KIND_COMPONENT:
+    case GLS_KIND_PRIMKIND:
+    case GLS_KIND_NVERT:
+    case GLS_KIND_OBJECT:
+    case GLS_KIND_FIRST_POS:
+    case GLS_KIND_COUNT:
+        break;
+    }
+    return 0;
+}
+
 uint32_t gls_bundle_features(const gls_bundle *b)
 {
     uint32_t f = 0;
@@ -16,33 +48,9 @@ uint32_t gls_bundle_features(const gls_bundle *b)
         const gls_object *o = &b->objects[oi];
         size_t pos = 0;
         gls_insn in;
-        while (pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
-            switch (in.op) {
-            case GLS_OP_TEXTURE:
-                f |= GLS_FEAT_TEXTURES;
-                if (in.u[0] < b->ntextures && (b->textures[in.u[0]].flags & GLS_TEX_ALPHA_HOLES))
-                    f |= GLS_FEAT_ALPHA_TEST;
-                break;
-            case GLS_OP_TEXMODE:
-                if (in.u[0] == GLS_MODE_MODULATE)
-                    f |= GLS_FEAT_MODULATE;
-                if (in.u[0] == GLS_MODE_REPLACE)
-                    f |= GLS_FEAT_REPLACE;
-                break;
-            case GLS_OP_COLOR:
-                if (in.d[3] < 1.0)
-                    f |= GLS_FEAT_TRANSLUCENT;
-                break;
-            case GLS_OP_PRIM:
-                if (in.u[3] != GLS_NONE)
-                    f |= GLS_FEAT_VERTEX_COLOR;
-                if (in.u[4] != GLS_NONE)
-                    f |= GLS_FEAT_TEXCOORDS;
-                break;
-            default:
-                break;
-            }
-        }
+        while (pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0)
+            for (uint32_t i = 0; i < gls_op[in.op].noperands; i++)
+                f |= operand_features(b, &in, i);
     }
     return f;
 }

@@ -265,6 +265,16 @@ fail:
     return -1;
 }
 
+static int read_colors(gls_bundle *b, cursor *c, gls_error *err)
+{
+    return read_floats(c, &b->ncol, (void **)&b->col, 4, "colour", err);
+}
+
+static int read_texcoords(gls_bundle *b, cursor *c, gls_error *err)
+{
+    return read_floats(c, &b->ntex, (void **)&b->tc, 2, "texcoord", err);
+}
+
 gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
 {
     uint8_t *raw[GLS_SEC_COUNT] = {0};
@@ -342,21 +352,16 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
     if (expect_off != len)
         FAIL("bundle has %llu bytes after its last section", (unsigned long long)(len - expect_off));
 
-#define CUR(s) (cursor){raw[(s) - 1], rawlen[(s) - 1], 0, 0}
-    cursor c;
-    c = CUR(GLS_SEC_OBJECTS);
-    if (read_objects(b, &c, err)) goto fail;
-    c = CUR(GLS_SEC_SOURCES);
-    if (read_sources(b, &c, err)) goto fail;
-    c = CUR(GLS_SEC_TEXTURES);
-    if (read_textures(b, &c, err)) goto fail;
-    c = CUR(GLS_SEC_POSITIONS);
-    if (read_positions(b, &c, err)) goto fail;
-    c = CUR(GLS_SEC_COLORS);
-    if (read_floats(&c, &b->ncol, (void **)&b->col, 4, "colour", err)) goto fail;
-    c = CUR(GLS_SEC_TEXCOORDS);
-    if (read_floats(&c, &b->ntex, (void **)&b->tc, 2, "texcoord", err)) goto fail;
-#undef CUR
+    static int (*const readers[GLS_SEC_COUNT])(gls_bundle *, cursor *, gls_error *) = {
+#define GLS_X_SEC(id, name, content) read_##name,
+        GLS_SECTIONS(GLS_X_SEC)
+#undef GLS_X_SEC
+    };
+    for (unsigned s = 0; s < GLS_SEC_COUNT; s++) {
+        cursor c = {raw[s], rawlen[s], 0, 0};
+        if (readers[s](b, &c, err))
+            goto fail;
+    }
     for (unsigned s = 0; s < GLS_SEC_COUNT; s++)
         free(raw[s]);
     if (gls_bundle_validate(b, err)) {

@@ -116,8 +116,11 @@ int gls_bundle_write(const gls_bundle *bd, uint8_t **out, size_t *outlen, gls_er
 
 int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_t *outlen, gls_error *err)
 {
-    static const sec_fn fns[GLS_SEC_COUNT] = {sec_objects, sec_sources, sec_textures,
-                                              sec_positions, sec_colors, sec_texcoords};
+    static const sec_fn fns[GLS_SEC_COUNT] = {
+#define GLS_X_SEC(id, name, content) sec_##name,
+        GLS_SECTIONS(GLS_X_SEC)
+#undef GLS_X_SEC
+    };
     gls_buf file = {0};
     gls_buf raw = {0};
     ZSTD_CCtx *cctx = ZSTD_createCCtx();

@@ -27,31 +27,72 @@ static void print_src(const gls_bundle *b, const gls_object *o, uint32_t k, FILE
     fputc('\n', out);
 }
 
-static void print_prim(const gls_bundle *b, const gls_insn *in, FILE *out)
+/* The vertex lines after an instruction that draws vertices. */
+static void print_vertices(const gls_bundle *b, const gls_vertex_span *s, FILE *out)
 {
-    uint32_t n = in->u[1], p = in->u[2], c = in->u[3], x = in->u[4];
-    for (uint32_t i = 0; i < n; i++) {
-        const gls_vec4 *v = &b->pos[p + i];
+    for (uint32_t i = 0; i < s->n; i++) {
+        const gls_vec4 *v = &b->pos[s->first_pos + i];
         fputs("    vert", out);
         print_d(out, v->x);
         print_d(out, v->y);
         print_d(out, v->z);
         if (v->w != 1.0)
             print_d(out, v->w);
-        if (c != GLS_NONE) {
-            const gls_rgba *q = &b->col[c + i];
+        if (s->first_col != GLS_NONE) {
+            const gls_rgba *q = &b->col[s->first_col + i];
             fputs("  col", out);
             print_f(out, q->r);
             print_f(out, q->g);
             print_f(out, q->b);
             print_f(out, q->a);
         }
-        if (x != GLS_NONE) {
+        if (s->first_tc != GLS_NONE) {
             fputs("  tex", out);
-            print_f(out, b->tc[x + i].s);
-            print_f(out, b->tc[x + i].t);
+            print_f(out, b->tc[s->first_tc + i].s);
+            print_f(out, b->tc[s->first_tc + i].t);
         }
         fputc('\n', out);
+    }
+}
+
+/* One instruction line, without its end: the opcode's name (or the
+ * primitive's kind, for an instruction that has one), then its operands
+ * as their kinds print: numbers, enumeration names, vertex counts, object
+ * and texture names.  FIRST_ indices are not printed: the vertex lines
+ * show what they select. */
+static void print_insn(const gls_bundle *b, const gls_insn *in, FILE *out)
+{
+    const gls_op_info *op = &gls_op[in->op];
+    int kind = gls_op_find(in->op, GLS_KIND_PRIMKIND);
+    fprintf(out, "  %s", kind >= 0 ? gls_prim_name[in->u[kind]] : op->name);
+    for (uint32_t i = 0; i < op->noperands; i++) {
+        uint32_t v = in->u[i];
+        switch ((gls_operand_kind)op->kind[i]) {
+        case GLS_KIND_NUM:
+        case GLS_KIND_ANGLE:
+        case GLS_KIND_COMPONENT:
+        case GLS_KIND_ALPHA:
+            print_d(out, in->d[i]);
+            break;
+        case GLS_KIND_TEXMODE:
+            fprintf(out, " %s", gls_kind[op->kind[i]].value_names[v]);
+            break;
+        case GLS_KIND_NVERT:
+            fprintf(out, " %u", v);
+            break;
+        case GLS_KIND_OBJECT:
+            fprintf(out, " %s", b->objects[v].name);
+            break;
+        case GLS_KIND_TEXTURE:
+            fprintf(out, " %s", b->textures[v].name);
+            break;
+        case GLS_KIND_PRIMKIND:  /* printed as the name */
+        case GLS_KIND_FIRST_POS: /* shown by the vertex lines */
+        case GLS_KIND_FIRST_COL:
+        case GLS_KIND_FIRST_TC:
+        case GLS_KIND_COUNT:
+            break;
+        }
     }
 }
 
@@ -84,28 +125,11 @@ void gls_disassemble(const gls_bundle *b, FILE *out, int with_source)
         for (uint32_t k = 0; k < o->ninsn; k++) {
             gls_insn in;
             gls_insn_decode(o->code, o->code_len, &pos, &in);
-            switch (in.op) {
-            case GLS_OP_TEXMODE:
-                fprintf(out, "  texmode %s", gls_texmode_name[in.u[0]]);
-                break;
-            case GLS_OP_TEXTURE:
-                fprintf(out, "  texture %s", b->textures[in.u[0]].name);
-                break;
-            case GLS_OP_CALL:
-                fprintf(out, "  call %s", b->objects[in.u[0]].name);
-                break;
-            case GLS_OP_PRIM:
-                fprintf(out, "  %s %u", gls_prim_name[in.u[0]], in.u[1]);
-                break;
-            default:
-                fprintf(out, "  %s", gls_op_name[in.op]);
-                for (uint32_t j = 0; j < in.nd; j++)
-                    print_d(out, in.d[j]);
-                break;
-            }
+            print_insn(b, &in, out);
             print_src(b, o, k, out, with_source);
-            if (in.op == GLS_OP_PRIM)
-                print_prim(b, &in, out);
+            gls_vertex_span s;
+            if (gls_insn_vertices(&in, &s))
+                print_vertices(b, &s, out);
         }
     }
 }

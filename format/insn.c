@@ -1,5 +1,5 @@
-/* Encoding and decoding of one instruction, driven by the operand schema in
- * opcodes.h.  The encoder and decoder mirror each other. */
+/* Encoding and decoding of one instruction, driven by the operand kinds of
+ * the opcode table (opcodes.h).  The encoder and decoder mirror each other. */
 #include <stdlib.h>
 #include <string.h>
 #include "bundle.h"
@@ -39,18 +39,15 @@ int gls_insn_encode(gls_buf *b, const gls_insn *in)
 {
     uint8_t tmp[1 + GLS_MAX_OPERANDS * 8];
     size_t k = 0;
-    uint32_t di = 0, ui = 0;
+    const gls_op_info *op = &gls_op[in->op];
     tmp[k++] = (uint8_t)in->op;
-    for (const char *s = gls_op_schema[in->op]; *s; s++) {
-        if (*s == 'd') {
-            gls_le_put_f64(tmp + k, in->d[di++]);
-            k += 8;
-        } else if (*s == 'b') {
-            tmp[k++] = (uint8_t)in->u[ui++];
-        } else {
-            gls_le_put_u32(tmp + k, in->u[ui++]);
-            k += 4;
+    for (uint32_t i = 0; i < op->noperands; i++) {
+        switch (gls_kind[op->kind[i]].storage) {
+        case GLS_STORE_F64: gls_le_put_f64(tmp + k, in->d[i]); break;
+        case GLS_STORE_U8: tmp[k] = (uint8_t)in->u[i]; break;
+        case GLS_STORE_U32: gls_le_put_u32(tmp + k, in->u[i]); break;
         }
+        k += gls_kind[op->kind[i]].bytes;
     }
     return gls_buf_put(b, tmp, k);
 }
@@ -61,19 +58,31 @@ int gls_insn_decode(const uint8_t *code, size_t len, size_t *pos, gls_insn *out)
     if (p >= len || code[p] >= GLS_OP_COUNT)
         return -1;
     out->op = (gls_opcode)code[p++];
-    out->nd = out->nu = 0;
-    for (const char *s = gls_op_schema[out->op]; *s; s++) {
-        size_t w = *s == 'd' ? 8 : *s == 'b' ? 1 : 4;
-        if (len - p < w)
+    const gls_op_info *op = &gls_op[out->op];
+    for (uint32_t i = 0; i < op->noperands; i++) {
+        const gls_kind_info *k = &gls_kind[op->kind[i]];
+        if (len - p < k->bytes)
             return -1;
-        if (*s == 'd')
-            out->d[out->nd++] = gls_le_get_f64(code + p);
-        else if (*s == 'b')
-            out->u[out->nu++] = code[p];
-        else
-            out->u[out->nu++] = gls_le_get_u32(code + p);
-        p += w;
+        switch (k->storage) {
+        case GLS_STORE_F64: out->d[i] = gls_le_get_f64(code + p); break;
+        case GLS_STORE_U8: out->u[i] = code[p]; break;
+        case GLS_STORE_U32: out->u[i] = gls_le_get_u32(code + p); break;
+        }
+        p += k->bytes;
     }
     *pos = p;
     return 0;
+}
+
+int gls_insn_vertices(const gls_insn *in, gls_vertex_span *v)
+{
+    int n = gls_op_find(in->op, GLS_KIND_NVERT), p = gls_op_find(in->op, GLS_KIND_FIRST_POS);
+    int c = gls_op_find(in->op, GLS_KIND_FIRST_COL), x = gls_op_find(in->op, GLS_KIND_FIRST_TC);
+    if (n < 0 || p < 0)
+        return 0;
+    v->n = in->u[n];
+    v->first_pos = in->u[p];
+    v->first_col = c < 0 ? GLS_NONE : in->u[c];
+    v->first_tc = x < 0 ? GLS_NONE : in->u[x];
+    return 1;
 }

@@ -36,16 +36,26 @@
  * in the same order, contiguous, right after the directory. */
 #define GLS_DIRENT_SIZE 32u
 
+/* The sections, in id and file order:  X(ID, name, content).  Section ID
+ * is GLS_SEC_ID, numbered from 1; bundle_write.c writes each with
+ * sec_<name>() and bundle_read.c reads it with read_<name>(), in this
+ * order (SOURCES needs the objects read before it). */
+#define GLS_SECTIONS(X)                                                              \
+    X(OBJECTS,   objects,   "names, instruction counts, bytecode")                 \
+    X(SOURCES,   sources,   "source file names and per-instruction lines")         \
+    X(TEXTURES,  textures,  "texture names, sizes, flags, then texels")            \
+    X(POSITIONS, positions, "vertex positions, float64, delta+byte planes")        \
+    X(COLORS,    colors,    "vertex colours, float32, delta+byte planes")          \
+    X(TEXCOORDS, texcoords, "texture coordinates, float32, delta+byte planes")
+
 enum {
-    GLS_SEC_OBJECTS = 1,   /* names, instruction counts, bytecode          */
-    GLS_SEC_SOURCES,       /* source file names and per-instruction lines  */
-    GLS_SEC_TEXTURES,      /* texture names, sizes, flags, then texels      */
-    GLS_SEC_POSITIONS,     /* vertex positions, float64, delta+byte planes  */
-    GLS_SEC_COLORS,        /* vertex colours, float32, delta+byte planes    */
-    GLS_SEC_TEXCOORDS,     /* texture coordinates, float32, delta+planes    */
-    GLS_SEC_LAST = GLS_SEC_TEXCOORDS
+    GLS_SEC_BEFORE_FIRST_ = 0,
+#define GLS_X_SEC(id, name, content) GLS_SEC_##id,
+    GLS_SECTIONS(GLS_X_SEC)
+#undef GLS_X_SEC
+    GLS_SEC_AFTER_LAST_
 };
-#define GLS_SEC_COUNT 6u
+#define GLS_SEC_COUNT ((unsigned)GLS_SEC_AFTER_LAST_ - 1u)
 
 enum { GLS_CODEC_RAW = 0, GLS_CODEC_ZSTD = 1 };
 

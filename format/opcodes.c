@@ -1,21 +1,37 @@
 /* Tables generated from the X-macro lists in opcodes.h and bundle.h. */
+#include <stddef.h>
 #include "opcodes.h"
 #include "bundle.h"
 
-const char *const gls_op_name[GLS_OP_COUNT] = {
-#define GLS_X_NAME(e, name, schema) name,
-    GLS_OPCODES(GLS_X_NAME)
-#undef GLS_X_NAME
-};
-
-const char *const gls_op_schema[GLS_OP_COUNT] = {
-#define GLS_X_SCHEMA(e, name, schema) schema,
-    GLS_OPCODES(GLS_X_SCHEMA)
-#undef GLS_X_SCHEMA
-};
-
 const char *const gls_texmode_name[GLS_MODE_COUNT] = {"color", "replace", "modulate"};
 const char *const gls_prim_name[GLS_PRIM_COUNT] = {"poly", "qstrip", "tstrip", "tfan"};
+
+#define BYTES_F64 8
+#define BYTES_U8 1
+#define BYTES_U32 4
+
+const gls_kind_info gls_kind[GLS_KIND_COUNT] = {
+#define GLS_X_KIND(kind, storage, values, names, noun) \
+    [GLS_KIND_##kind] = {GLS_STORE_##storage, BYTES_##storage, values, names, noun},
+    GLS_OPERAND_KINDS(GLS_X_KIND)
+#undef GLS_X_KIND
+};
+
+const gls_op_info gls_op[GLS_OP_COUNT] = {
+#define GLS_X_OP(e, name, flow, operands) [GLS_OP_##e] = {name, GLS_FLOW_##flow, GLS_NARGS_##e, {operands GLS_KIND_COUNT}},
+#define GLS_X_KIND_OF(kind, name) GLS_KIND_##kind,
+    GLS_OPCODES(GLS_X_OP, GLS_X_KIND_OF)
+#undef GLS_X_OP
+#undef GLS_X_KIND_OF
+};
+
+int gls_op_find(gls_opcode op, gls_operand_kind k)
+{
+    for (uint32_t i = 0; i < gls_op[op].noperands; i++)
+        if (gls_op[op].kind[i] == k)
+            return (int)i;
+    return -1;
+}
 
 const char *const gls_feature_name[32] = {
 #define GLS_X_FNAME(e, bit, name, why) [bit] = name,

@@ -106,6 +106,92 @@ fail:
     return -1;
 }
 
+static int is_vertex_kind(uint8_t kind)
+{
+    return kind == GLS_KIND_NVERT || kind == GLS_KIND_FIRST_POS || kind == GLS_KIND_FIRST_COL ||
+           kind == GLS_KIND_FIRST_TC;
+}
+
+/* Operand i of in, by its kind: in range, or a message in err.  The
+ * vertex kinds come after the others (check_operands), so that the
+ * primitive kind they depend on is known to be valid. */
+static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, const gls_insn *in, uint32_t i,
+                         gls_error *err)
+{
+    const char *nm = gls_op[in->op].name;
+    const gls_kind_info *ki = &gls_kind[gls_op[in->op].kind[i]];
+    uint32_t v = in->u[i];
+    gls_vertex_span s = {0};
+    if (is_vertex_kind(gls_op[in->op].kind[i]))
+        gls_insn_vertices(in, &s);
+    switch ((gls_operand_kind)gls_op[in->op].kind[i]) {
+    case GLS_KIND_COMPONENT:
+    case GLS_KIND_ALPHA:
+        if (in->d[i] < 0 || in->d[i] > 1)
+            FAIL("object %s, instruction %u (%s): component outside 0..1", o->name, k, nm);
+        break;
+    case GLS_KIND_TEXMODE:
+    case GLS_KIND_PRIMKIND:
+        if (v >= ki->values)
+            FAIL("object %s, instruction %u (%s): %s %u unknown", o->name, k, nm, ki->noun, v);
+        break;
+    case GLS_KIND_OBJECT:
+        if (v >= b->nobjects)
+            FAIL("object %s, instruction %u (%s): index %u >= %u objects", o->name, k, nm, v, b->nobjects);
+        break;
+    case GLS_KIND_TEXTURE:
+        if (v >= b->ntextures)
+            FAIL("object %s, instruction %u (%s): index %u >= %u textures", o->name, k, nm, v, b->ntextures);
+        break;
+    case GLS_KIND_NVERT: {
+        int pk = gls_op_find(in->op, GLS_KIND_PRIMKIND);
+        gls_primkind kind = (gls_primkind)in->u[pk];
+        if (v < gls_prim_min_verts(kind) || v > GLS_MAX_PRIM_VERTICES || (gls_prim_needs_even(kind) && v % 2))
+            FAIL("object %s, instruction %u (%s): %u vertices is not a legal count", o->name, k,
+                 gls_prim_name[kind], v);
+        break;
+    }
+    case GLS_KIND_FIRST_POS:
+        if (v > b->npos || s.n > b->npos - v)
+            FAIL("object %s, instruction %u (%s): positions %u+%u beyond %u", o->name, k, nm, v, s.n, b->npos);
+        break;
+    case GLS_KIND_FIRST_COL:
+        if (v != GLS_NONE && (v > b->ncol || s.n > b->ncol - v))
+            FAIL("object %s, instruction %u (%s): colours %u+%u beyond %u", o->name, k, nm, v, s.n, b->ncol);
+        break;
+    case GLS_KIND_FIRST_TC:
+        if (v != GLS_NONE && (v > b->ntex || s.n > b->ntex - v))
+            FAIL("object %s, instruction %u (%s): texcoords %u+%u beyond %u", o->name, k, nm, v, s.n, b->ntex);
+        break;
+    case GLS_KIND_NUM:
+    case GLS_KIND_ANGLE:
+    case GLS_KIND_COUNT:
+        break; /* finite: checked first, for every F64 operand */
+    }
+    return 0;
+fail:
+    return -1;
+}
+
+/* Every operand of instruction k: F64 operands finite, the source map's
+ * file index in range, then each operand in range for its kind. */
+static int check_operands(const gls_bundle *b, const gls_object *o, uint32_t k, const gls_insn *in, gls_error *err)
+{
+    const gls_op_info *op = &gls_op[in->op];
+    for (uint32_t i = 0; i < op->noperands; i++)
+        if (gls_kind[op->kind[i]].storage == GLS_STORE_F64 && !isfinite(in->d[i]))
+            FAIL("object %s, instruction %u (%s): operand %u is not finite", o->name, k, op->name, i + 1);
+    if (o->src && (o->src[k].file >= b->nsources))
+        FAIL("object %s, instruction %u: source file index out of range", o->name, k);
+    for (int vertex_kinds = 0; vertex_kinds < 2; vertex_kinds++)
+        for (uint32_t i = 0; i < op->noperands; i++)
+            if (is_vertex_kind(op->kind[i]) == vertex_kinds && check_operand(b, o, k, in, i, err))
+                return -1;
+    return 0;
+fail:
+    return -1;
+}
+
 /* One object's code: decodable, operands in range, stack balanced. */
 static int check_code(const gls_bundle *b, uint32_t oi, gls_error *err)
 {
@@ -118,62 +204,25 @@ static int check_code(const gls_bundle *b, uint32_t oi, gls_error *err)
             FAIL("object %s: more instructions than the %u declared", o->name, o->ninsn);
         if (gls_insn_decode(o->code, o->code_len, &pos, &in))
             FAIL("object %s, instruction %u: unknown opcode or truncated operands", o->name, k);
-        const char *nm = gls_op_name[in.op];
-        for (uint32_t j = 0; j < in.nd; j++)
-            if (!isfinite(in.d[j]))
-                FAIL("object %s, instruction %u (%s): operand %u is not finite", o->name, k, nm, j + 1);
-        if (o->src && (o->src[k].file >= b->nsources))
-            FAIL("object %s, instruction %u: source file index out of range", o->name, k);
-        switch (in.op) {
-        case GLS_OP_END:
+        if (check_operands(b, o, k, &in, err))
+            return -1;
+        switch (gls_op[in.op].flow) {
+        case GLS_FLOW_END:
             if (depth != 0)
                 FAIL("object %s: ends with %u unbalanced push", o->name, depth);
             if (pos != o->code_len || k + 1 != o->ninsn)
                 FAIL("object %s: end is not the last instruction", o->name);
             return 0;
-        case GLS_OP_COLOR:
-            for (int j = 0; j < 4; j++)
-                if (in.d[j] < 0 || in.d[j] > 1)
-                    FAIL("object %s, instruction %u (color): component outside 0..1", o->name, k);
-            break;
-        case GLS_OP_TEXMODE:
-            if (in.u[0] >= GLS_MODE_COUNT)
-                FAIL("object %s, instruction %u (texmode): mode %u unknown", o->name, k, in.u[0]);
-            break;
-        case GLS_OP_TEXTURE:
-            if (in.u[0] >= b->ntextures)
-                FAIL("object %s, instruction %u (texture): index %u >= %u textures", o->name, k, in.u[0], b->ntextures);
-            break;
-        case GLS_OP_PUSH:
+        case GLS_FLOW_PUSH:
             if (++depth > GLS_MAX_PUSH_DEPTH)
                 FAIL("object %s, instruction %u: push nested deeper than %u", o->name, k, GLS_MAX_PUSH_DEPTH);
             break;
-        case GLS_OP_POP:
+        case GLS_FLOW_POP:
             if (depth == 0)
                 FAIL("object %s, instruction %u: pop without push", o->name, k);
             depth--;
             break;
-        case GLS_OP_CALL:
-            if (in.u[0] >= b->nobjects)
-                FAIL("object %s, instruction %u (call): index %u >= %u objects", o->name, k, in.u[0], b->nobjects);
-            break;
-        case GLS_OP_PRIM: {
-            uint32_t kind = in.u[0], n = in.u[1], p = in.u[2], c = in.u[3], x = in.u[4];
-            if (kind >= GLS_PRIM_COUNT)
-                FAIL("object %s, instruction %u (prim): kind %u unknown", o->name, k, kind);
-            if (n < gls_prim_min_verts(kind) || n > GLS_MAX_PRIM_VERTICES ||
-                (gls_prim_needs_even(kind) && n % 2))
-                FAIL("object %s, instruction %u (%s): %u vertices is not a legal count", o->name, k,
-                     gls_prim_name[kind], n);
-            if (p > b->npos || n > b->npos - p)
-                FAIL("object %s, instruction %u (prim): positions %u+%u beyond %u", o->name, k, p, n, b->npos);
-            if (c != GLS_NONE && (c > b->ncol || n > b->ncol - c))
-                FAIL("object %s, instruction %u (prim): colours %u+%u beyond %u", o->name, k, c, n, b->ncol);
-            if (x != GLS_NONE && (x > b->ntex || n > b->ntex - x))
-                FAIL("object %s, instruction %u (prim): texcoords %u+%u beyond %u", o->name, k, x, n, b->ntex);
-            break;
-        }
-        default:
+        case GLS_FLOW_NEXT:
             break;
         }
     }
@@ -207,9 +256,10 @@ static int check_calls(const gls_bundle *b, gls_error *err)
             int descended = 0;
             while (pc[sp - 1] < o->code_len) {
                 gls_insn_decode(o->code, o->code_len, &pc[sp - 1], &in);
-                if (in.op != GLS_OP_CALL)
+                int arg = gls_op_find(in.op, GLS_KIND_OBJECT);
+                if (arg < 0)
                     continue;
-                uint32_t callee = in.u[0];
+                uint32_t callee = in.u[arg];
                 if (state[callee] == 1)
                     FAIL("call cycle through %s and %s", o->name, b->objects[callee].name);
                 if (state[callee] == 2) {
@@ -253,10 +303,12 @@ static uint64_t expanded(const gls_bundle *b, uint32_t oi, uint64_t *memo)
     size_t pos = 0;
     gls_insn in;
     while (n < cap && pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
-        if (in.op == GLS_OP_PRIM)
-            n += in.u[1];
-        else if (in.op == GLS_OP_CALL)
-            n += expanded(b, in.u[0], memo);
+        gls_vertex_span s;
+        int callee = gls_op_find(in.op, GLS_KIND_OBJECT);
+        if (gls_insn_vertices(&in, &s))
+            n += s.n;
+        if (callee >= 0)
+            n += expanded(b, in.u[callee], memo);
     }
     memo[oi] = n < cap ? n : cap;
     return memo[oi];

@@ -145,7 +145,7 @@ typedef struct {
 static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t k, vtx *v)
 {
     const gls_bundle *b = w->b;
-    const gls_vec4 *q = &b->pos[in->u[2] + k];
+    const gls_vec4 *q = &b->pos[in->u[GLS_ARG_PRIM_POS] + k];
     const double *M = st->M;
     double h[4];
     for (int i = 0; i < 4; i++)
@@ -163,8 +163,8 @@ static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t
         if (!(fabs(v->p[i]) <= GLS_SCENE_MAX_COORD))
             v->ok = 0;
     }
-    if (in->u[3] != GLS_NONE) {
-        const gls_rgba *c = &b->col[in->u[3] + k];
+    if (in->u[GLS_ARG_PRIM_COL] != GLS_NONE) {
+        const gls_rgba *c = &b->col[in->u[GLS_ARG_PRIM_COL] + k];
         v->c[0] = unorm8(c->r), v->c[1] = unorm8(c->g), v->c[2] = unorm8(c->b);
     } else {
         v->c[0] = unorm8(st->rgba[0]), v->c[1] = unorm8(st->rgba[1]), v->c[2] = unorm8(st->rgba[2]);
@@ -172,9 +172,9 @@ static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t
     /* Alpha is not blended (outputs are RGB): opaque, so that the alpha
      * test sees only the texture's binary alpha. */
     v->c[3] = 255;
-    if (in->u[4] != GLS_NONE) {
-        v->st[0] = b->tc[in->u[4] + k].s;
-        v->st[1] = b->tc[in->u[4] + k].t;
+    if (in->u[GLS_ARG_PRIM_TC] != GLS_NONE) {
+        v->st[0] = b->tc[in->u[GLS_ARG_PRIM_TC] + k].s;
+        v->st[1] = b->tc[in->u[GLS_ARG_PRIM_TC] + k].t;
     } else {
         v->st[0] = v->st[1] = 0;
     }
@@ -221,9 +221,9 @@ static void prim(walker *w, const state *st, const gls_insn *in)
         for (int j = 0; j < 3; j++)
             key.rgba[j] = unorm8(st->rgba[j]);
     key.rgba[3] = w->has_color ? 0 : 255;
-    uint32_t n = in->u[1];
+    uint32_t n = in->u[GLS_ARG_PRIM_N];
     vtx v0, v1, v2, v3;
-    switch (in->u[0]) {
+    switch (in->u[GLS_ARG_PRIM_KIND]) {
     case GLS_PRIM_POLY: /* convex polygon: a fan, like GL_POLYGON */
     case GLS_PRIM_TFAN:
         fetch(w, st, in, 0, &v0);
@@ -274,33 +274,33 @@ static void run(walker *w, uint32_t oi, state st)
             w->sp = base;
             return;
         case GLS_OP_COLOR:
-            memcpy(st.rgba, in.d, sizeof st.rgba);
+            memcpy(st.rgba, in.d + GLS_ARG_COLOR_R, sizeof st.rgba);
             break;
         case GLS_OP_TEXMODE:
-            st.mode = in.u[0];
+            st.mode = in.u[GLS_ARG_TEXMODE_MODE];
             break;
         case GLS_OP_TEXTURE:
-            st.texture = in.u[0];
+            st.texture = in.u[GLS_ARG_TEXTURE_INDEX];
             break;
         case GLS_OP_NOTEXTURE:
             st.texture = GLS_NONE;
             break;
         case GLS_OP_TRANS:
             identity(A);
-            A[3] = in.d[0], A[7] = in.d[1], A[11] = in.d[2];
+            A[3] = in.d[GLS_ARG_TRANS_X], A[7] = in.d[GLS_ARG_TRANS_Y], A[11] = in.d[GLS_ARG_TRANS_Z];
             mat_mul(st.M, A);
             break;
         case GLS_OP_ROT:
-            rotation(in.d[0], in.d[1], in.d[2], in.d[3], A);
+            rotation(in.d[GLS_ARG_ROT_ANGLE], in.d[GLS_ARG_ROT_X], in.d[GLS_ARG_ROT_Y], in.d[GLS_ARG_ROT_Z], A);
             mat_mul(st.M, A);
             break;
         case GLS_OP_SCALE:
             identity(A);
-            A[0] = in.d[0], A[5] = in.d[1], A[10] = in.d[2];
+            A[0] = in.d[GLS_ARG_SCALE_X], A[5] = in.d[GLS_ARG_SCALE_Y], A[10] = in.d[GLS_ARG_SCALE_Z];
             mat_mul(st.M, A);
             break;
         case GLS_OP_TRANSFORM:
-            mat_mul(st.M, in.d); /* operands are row-major, like M */
+            mat_mul(st.M, in.d + GLS_ARG_TRANSFORM_A00); /* operands are row-major, like M */
             break;
         case GLS_OP_PUSH:
             if (push_state(w, &st))
@@ -310,7 +310,7 @@ static void run(walker *w, uint32_t oi, state st)
             st = w->stack[--w->sp];
             break;
         case GLS_OP_CALL:
-            run(w, in.u[0], st); /* by value: the callee gets a copy */
+            run(w, in.u[GLS_ARG_CALL_OBJECT], st); /* by value: the callee gets a copy */
             break;
         case GLS_OP_PRIM:
             prim(w, &st, &in);

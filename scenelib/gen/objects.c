@@ -9,6 +9,9 @@
  * runs this program again and checks that the committed files are
  * byte-identical to its output.  `make B=... gen-scenelib` rewrites them.
  *
+ * A long file on purpose: it is a catalogue, one short writer per object
+ * family over a few shared emitters, each read on its own.
+ *
  * Conventions (scenelib/README.md): metres; y up; the ground is y = 0;
  * right-handed, so looking along +z, +x is on the LEFT.  The "front" of an
  * object faces -z: it is what a camera at negative z looking along +z sees.

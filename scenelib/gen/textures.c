@@ -3,6 +3,8 @@
  * usage: gen_textures OUTROOT
  * Writes OUTROOT/<package path>/<Name>.tga for every texture listed in
  * textures[] below (scenelib/README.md lists them with their sizes).
+ * A long file on purpose: it is a catalogue, one generator per texture,
+ * each read on its own.
  *
  * Rows are written top row first here (row 0 is the top of the picture, as
  * an image viewer shows it); the TGA file records that, and scenes address
@@ -691,7 +693,12 @@ static image objects_speckle(void)
                                       {0.9, 0.7, 0.1}, {0.1, 0.1, 0.1}, {0.6, 0.2, 0.6}};
     for (int k = 0; k < 140; k++) {
         const double *q = pal[k % 6];
-        fill_disc(&c, rnd(&r), rnd(&r), 0.01 + 0.04 * rnd(&r), flat(q[0], q[1], q[2]));
+        /* drawn in sequence: the order in which a call's arguments are
+           evaluated is unspecified (gcc and clang differ), and the texture
+           must not depend on the compiler.  This is gcc's order, in which
+           the committed bundles and images were made. */
+        double radius = 0.01 + 0.04 * rnd(&r), v = rnd(&r), u = rnd(&r);
+        fill_disc(&c, u, v, radius, flat(q[0], q[1], q[2]));
     }
     return resolve(&c, 0, flat(0, 0, 0));
 }

@@ -21,6 +21,8 @@
 #     bundle (bytes) and renders byte-identically to the same scene linked
 #     against the directory tree;
 #   - README.md lists exactly the objects and textures that exist.
+# A long script on purpose: one independent check per paragraph, all over
+# the same build products.
 # SCENELIB_KEEP=DIR keeps the renders (DIR/<object>/...) and the work files
 # (DIR/tmp).
 B=${GLS_BIN:-build}

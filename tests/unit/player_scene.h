@@ -59,11 +59,12 @@ static inline void tb_insn(tb *t, gls_opcode op, const double *d, const uint32_t
     gls_insn in;
     memset(&in, 0, sizeof in);
     in.op = op;
-    for (const char *s = gls_op_schema[op]; *s; s++) {
-        if (*s == 'd')
-            in.d[in.nd] = d[in.nd], in.nd++;
+    /* d holds the numbers, u the integers, each in operand order */
+    for (uint32_t i = 0, nd = 0, nu = 0; i < gls_op[op].noperands; i++) {
+        if (gls_kind[gls_op[op].kind[i]].storage == GLS_STORE_F64)
+            in.d[i] = d[nd++];
         else
-            in.u[in.nu] = u[in.nu], in.nu++;
+            in.u[i] = u[nu++];
     }
     if (gls_insn_encode(&t->code[t->cur], &in))
         tb_die("out of memory");

@@ -4,7 +4,8 @@
  * bench/aa_scene.h, the rasteriser's vertex snapping, and hard geometry
  * (far from the origin, deep depth ranges, near-plane crossings, behind
  * the camera, degenerate and grazing polygons, principal point outside
- * the image). */
+ * the image).  A list of independent tests, one function each: long on
+ * purpose. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>

@@ -37,9 +37,9 @@ static gls_bundle *make_bundle(void)
     gls_buf code = {0};
     gls_insn in = {.op = GLS_OP_PUSH};
     gls_insn_encode(&code, &in);
-    in = (gls_insn){.op = GLS_OP_TRANS, .nd = 3, .d = {1, 2, 3}};
+    in = (gls_insn){.op = GLS_OP_TRANS, .d = {1, 2, 3}};
     gls_insn_encode(&code, &in);
-    in = (gls_insn){.op = GLS_OP_CALL, .nu = 1, .u = {1}};
+    in = (gls_insn){.op = GLS_OP_CALL, .u = {1}};
     gls_insn_encode(&code, &in);
     in = (gls_insn){.op = GLS_OP_POP};
     gls_insn_encode(&code, &in);
@@ -47,9 +47,9 @@ static gls_bundle *make_bundle(void)
     gls_insn_encode(&code, &in);
     b->objects[0] = (gls_object){strdup("a.Top"), code.data, (uint32_t)code.len, 5, NULL};
     gls_buf code2 = {0};
-    in = (gls_insn){.op = GLS_OP_TEXTURE, .nu = 1, .u = {0}};
+    in = (gls_insn){.op = GLS_OP_TEXTURE, .u = {0}};
     gls_insn_encode(&code2, &in);
-    in = (gls_insn){.op = GLS_OP_PRIM, .nu = 5, .u = {GLS_PRIM_TFAN, 3, 0, 0, 0}};
+    in = (gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_TFAN, 3, 0, 0, 0}};
     gls_insn_encode(&code2, &in);
     in = (gls_insn){.op = GLS_OP_END};
     gls_insn_encode(&code2, &in);
@@ -237,7 +237,7 @@ static void test_validator_rejects(void)
     gls_le_put_u32(b->objects[1].code + 1, 0); /* TEXTURE 0 stays valid; make Tri call Top instead */
     {
         gls_buf code = {0};
-        gls_insn c = {.op = GLS_OP_CALL, .nu = 1, .u = {0}};
+        gls_insn c = {.op = GLS_OP_CALL, .u = {0}};
         gls_insn_encode(&code, &c);
         c = (gls_insn){.op = GLS_OP_END};
         gls_insn_encode(&code, &c);
@@ -263,6 +263,111 @@ static void test_validator_rejects(void)
     expect_invalid(b, "not sorted");
 }
 
+/* Object oi's code becomes the n instructions of in, then END. */
+static void set_code(gls_bundle *b, uint32_t oi, const gls_insn *in, uint32_t n)
+{
+    gls_buf code = {0};
+    for (uint32_t i = 0; i < n; i++)
+        gls_insn_encode(&code, &in[i]);
+    gls_insn_encode(&code, &(gls_insn){.op = GLS_OP_END});
+    free(b->objects[oi].code);
+    b->objects[oi].code = code.data;
+    b->objects[oi].code_len = (uint32_t)code.len;
+    b->objects[oi].ninsn = n + 1;
+}
+
+/* The validator's message for object a.Tri's code in[0..n), verbatim. */
+static void expect_code_message(const gls_insn *in, uint32_t n, const char *msg)
+{
+    gls_bundle *b = make_bundle();
+    set_code(b, 1, in, n);
+    gls_error err = {{0}, 0};
+    CHECK_MSG(gls_bundle_validate(b, &err) != 0, "accepted, expected '%s'", msg);
+    CHECK_MSG(strcmp(err.msg, msg) == 0, "message '%s', expected '%s'", err.msg, msg);
+    gls_bundle_free(b);
+}
+
+/* Every operand check, one per operand kind, and the push/pop/end rules,
+ * with their messages (spec/bundle.md 12.2). */
+static void test_validator_operand_messages(void)
+{
+    const double inf = 1.0 / 0.0;
+    expect_code_message(&(gls_insn){.op = GLS_OP_COLOR, .d = {0, 1.5, 0, 1}}, 1,
+                        "object a.Tri, instruction 0 (color): component outside 0..1");
+    expect_code_message(&(gls_insn){.op = GLS_OP_COLOR, .d = {0, 1, 0, -0.5}}, 1,
+                        "object a.Tri, instruction 0 (color): component outside 0..1");
+    expect_code_message(&(gls_insn){.op = GLS_OP_COLOR, .d = {2, 0.0 / 0.0, 0, 1}}, 1,
+                        "object a.Tri, instruction 0 (color): operand 2 is not finite");
+    expect_code_message(&(gls_insn){.op = GLS_OP_ROT, .d = {inf, 0, 0, 1}}, 1,
+                        "object a.Tri, instruction 0 (rot): operand 1 is not finite");
+    expect_code_message(&(gls_insn){.op = GLS_OP_TRANSFORM, .d = {[15] = -inf}}, 1,
+                        "object a.Tri, instruction 0 (transform): operand 16 is not finite");
+    expect_code_message(&(gls_insn){.op = GLS_OP_TEXMODE, .u = {3}}, 1,
+                        "object a.Tri, instruction 0 (texmode): mode 3 unknown");
+    expect_code_message(&(gls_insn){.op = GLS_OP_TEXTURE, .u = {1}}, 1,
+                        "object a.Tri, instruction 0 (texture): index 1 >= 1 textures");
+    expect_code_message(&(gls_insn){.op = GLS_OP_CALL, .u = {2}}, 1,
+                        "object a.Tri, instruction 0 (call): index 2 >= 2 objects");
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {4, 3, 0, GLS_NONE, GLS_NONE}}, 1,
+                        "object a.Tri, instruction 0 (prim): kind 4 unknown");
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_QSTRIP, 3, 0, GLS_NONE, GLS_NONE}}, 1,
+                        "object a.Tri, instruction 0 (qstrip): 3 vertices is not a legal count");
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_TSTRIP, 2, 0, GLS_NONE, GLS_NONE}}, 1,
+                        "object a.Tri, instruction 0 (tstrip): 2 vertices is not a legal count");
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_POLY, 3, 1, GLS_NONE, GLS_NONE}}, 1,
+                        "object a.Tri, instruction 0 (prim): positions 1+3 beyond 3");
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_POLY, 3, 0, 1, GLS_NONE}}, 1,
+                        "object a.Tri, instruction 0 (prim): colours 1+3 beyond 3");
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_POLY, 3, 0, GLS_NONE, 4}}, 1,
+                        "object a.Tri, instruction 0 (prim): texcoords 4+3 beyond 3");
+    /* the kind is checked before the count, the count before the ranges */
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {9, 1, 7, 7, 7}}, 1,
+                        "object a.Tri, instruction 0 (prim): kind 9 unknown");
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_TFAN, 1, 7, 7, 7}}, 1,
+                        "object a.Tri, instruction 0 (tfan): 1 vertices is not a legal count");
+    gls_insn pushes[GLS_MAX_PUSH_DEPTH + 1];
+    for (int i = 0; i <= (int)GLS_MAX_PUSH_DEPTH; i++)
+        pushes[i] = (gls_insn){.op = GLS_OP_PUSH};
+    expect_code_message(pushes, GLS_MAX_PUSH_DEPTH + 1, "object a.Tri, instruction 64: push nested deeper than 64");
+    expect_code_message(pushes, 2, "object a.Tri: ends with 2 unbalanced push");
+    expect_code_message(&(gls_insn){.op = GLS_OP_POP}, 1, "object a.Tri, instruction 0: pop without push");
+    expect_code_message(&(gls_insn){.op = GLS_OP_END}, 1, "object a.Tri: end is not the last instruction");
+}
+
+/* The opcode table's encoding (spec/bundle.md 9.1): each opcode's size in
+ * bytes, and the rules the consumers of the operand kinds rely on. */
+static void test_opcode_table(void)
+{
+    static const unsigned size[GLS_OP_COUNT] = {
+        [GLS_OP_END] = 1,   [GLS_OP_COLOR] = 33, [GLS_OP_TEXMODE] = 2,    [GLS_OP_TEXTURE] = 5,
+        [GLS_OP_NOTEXTURE] = 1, [GLS_OP_TRANS] = 25, [GLS_OP_ROT] = 33,   [GLS_OP_SCALE] = 25,
+        [GLS_OP_TRANSFORM] = 129, [GLS_OP_PUSH] = 1, [GLS_OP_POP] = 1,    [GLS_OP_CALL] = 5,
+        [GLS_OP_PRIM] = 18};
+    for (int op = 0; op < GLS_OP_COUNT; op++) {
+        gls_buf code = {0};
+        gls_insn in = {.op = (gls_opcode)op};
+        CHECK(gls_insn_encode(&code, &in) == 0);
+        CHECK_MSG(code.len == size[op], "%s: %zu bytes, spec says %u", gls_op[op].name, code.len, size[op]);
+        size_t pos = 0;
+        CHECK(gls_insn_decode(code.data, code.len, &pos, &in) == 0 && pos == code.len && in.op == (gls_opcode)op);
+        pos = 0;
+        CHECK(code.len == 1 || gls_insn_decode(code.data, code.len - 1, &pos, &in) != 0); /* truncated */
+        free(code.data);
+        /* a vertex count needs a primitive kind and positions; at most one
+           object, one count and one of each vertex stream per instruction */
+        int count[GLS_KIND_COUNT] = {0};
+        CHECK(gls_op[op].noperands <= GLS_MAX_OPERANDS && gls_op[op].kind[gls_op[op].noperands] == GLS_KIND_COUNT);
+        for (uint32_t i = 0; i < gls_op[op].noperands; i++)
+            count[gls_op[op].kind[i]]++;
+        CHECK(count[GLS_KIND_OBJECT] <= 1 && count[GLS_KIND_NVERT] <= 1 && count[GLS_KIND_FIRST_POS] <= 1 &&
+              count[GLS_KIND_FIRST_COL] <= 1 && count[GLS_KIND_FIRST_TC] <= 1 && count[GLS_KIND_PRIMKIND] <= 1);
+        CHECK(count[GLS_KIND_NVERT] == count[GLS_KIND_FIRST_POS] && count[GLS_KIND_NVERT] == count[GLS_KIND_PRIMKIND]);
+        CHECK(count[GLS_KIND_NVERT] || (!count[GLS_KIND_FIRST_COL] && !count[GLS_KIND_FIRST_TC]));
+    }
+    CHECK(strcmp(gls_op[GLS_OP_TRANSFORM].name, "transform") == 0 && GLS_NARGS_TRANSFORM == 16);
+    CHECK(GLS_ARG_PRIM_N == 1 && GLS_ARG_ROT_Z == 3 && GLS_ARG_TRANSFORM_A33 == 15);
+}
+
 /* A valid-looking bundle whose calls unroll to 3 * 2^30 vertices: the
  * validator refuses it, so no player ever tries to flatten it. */
 static void test_expansion_bomb_refused(void)
@@ -280,11 +385,11 @@ static void test_expansion_bomb_refused(void)
         gls_buf code = {0};
         gls_insn in;
         if (i < LEVELS - 1) {
-            in = (gls_insn){.op = GLS_OP_CALL, .nu = 1, .u = {(uint32_t)i + 1}};
+            in = (gls_insn){.op = GLS_OP_CALL, .u = {(uint32_t)i + 1}};
             gls_insn_encode(&code, &in);
             gls_insn_encode(&code, &in);
         } else {
-            in = (gls_insn){.op = GLS_OP_PRIM, .nu = 5, .u = {GLS_PRIM_TFAN, 3, 0, GLS_NONE, GLS_NONE}};
+            in = (gls_insn){.op = GLS_OP_PRIM, .u = {GLS_PRIM_TFAN, 3, 0, GLS_NONE, GLS_NONE}};
             gls_insn_encode(&code, &in);
         }
         in = (gls_insn){.op = GLS_OP_END};
@@ -309,6 +414,8 @@ int main(void)
     RUN(test_version_mismatch_names_both);
     RUN(test_declared_size_checked_before_allocating);
     RUN(test_validator_rejects);
+    RUN(test_validator_operand_messages);
+    RUN(test_opcode_table);
     RUN(test_expansion_bomb_refused);
     CHECK_EXIT();
 }

@@ -6,6 +6,9 @@
  *   test_player --write DIR    also write the scenes and cameras the
  *                              end-to-end tests (tests/e2e/player_*.sh)
  *                              feed to glsplay and to OpenCV
+ *
+ * A long file on purpose: a list of independent tests, one function each,
+ * over the scene builder of player_scene.h and the model below.
  */
 #include <math.h>
 #include <stdint.h>

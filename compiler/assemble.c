@@ -1,0 +1,142 @@
+/* Assembly: the reachable units and the textures they use become one
+ * bundle, objects and textures sorted by name, vertex streams concatenated
+ * in that order, and every unit-local operand relocated to its bundle-wide
+ * index by its kind (format/opcodes.h). */
+#include <stdlib.h>
+#include <string.h>
+#include "linker.h"
+
+static int cmp_unit(const void *a, const void *b)
+{
+    return strcmp((*(gls_unit *const *)a)->name, (*(gls_unit *const *)b)->name);
+}
+
+static int cmp_tex(const void *a, const void *b)
+{
+    return strcmp((*(tex_entry *const *)a)->name, (*(tex_entry *const *)b)->name);
+}
+
+/* Build the bundle from every unit with state 2 and every loaded texture
+ * that a reachable unit uses (all loaded ones in library mode). */
+gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
+{
+    gls_bundle *b = calloc(1, sizeof *b);
+    gls_unit **units = malloc((c->nall ? c->nall : 1) * sizeof *units);
+    tex_entry **texs = malloc((c->nalltex ? c->nalltex : 1) * sizeof *texs);
+    uint32_t nu = 0, nt = 0;
+    if (!b || !units || !texs)
+        goto oom;
+    for (size_t i = 0; i < c->nall; i++)
+        if (c->all[i]->state == 2)
+            units[nu++] = c->all[i];
+    qsort(units, nu, sizeof *units, cmp_unit);
+    /* which textures are used: all_textures, or referenced by a unit */
+    gls_strmap used = {0};
+    for (uint32_t i = 0; i < nu; i++)
+        for (uint32_t k = 0; k < units[i]->ntexrefs; k++)
+            gls_strmap_put(&used, units[i]->texrefs[k].name, (void *)1);
+    for (size_t i = 0; i < c->nalltex; i++)
+        if (c->alltex[i]->ok && (all_textures || gls_strmap_get(&used, c->alltex[i]->name)))
+            texs[nt++] = c->alltex[i];
+    gls_strmap_free(&used);
+    qsort(texs, nt, sizeof *texs, cmp_tex);
+
+    b->version = GLS_FORMAT_VERSION;
+    b->nobjects = nu;
+    b->ntextures = nt;
+    b->objects = calloc(nu ? nu : 1, sizeof *b->objects);
+    b->textures = calloc(nt ? nt : 1, sizeof *b->textures);
+    if (!b->objects || !b->textures)
+        goto oom;
+    b->top = GLS_NONE;
+    uint64_t npos = 0, ncol = 0, ntc = 0;
+    for (uint32_t i = 0; i < nu; i++) {
+        units[i]->final_index = i;
+        if (units[i] == top)
+            b->top = i;
+        npos += units[i]->npos;
+        ncol += units[i]->ncol;
+        ntc += units[i]->ntc;
+    }
+    if (npos > GLS_MAX_VERTICES || ncol > GLS_MAX_VERTICES || ntc > GLS_MAX_VERTICES) {
+        gls_error_at(&c->diag, GLS_NOLOC, "the scene has more than %u vertices", GLS_MAX_VERTICES);
+        goto fail;
+    }
+    for (uint32_t i = 0; i < nt; i++) {
+        b->textures[i] = texs[i]->tex;
+        b->textures[i].name = strdup(texs[i]->name);
+        b->textures[i].rgba = malloc((size_t)texs[i]->tex.width * texs[i]->tex.height * 4);
+        if (!b->textures[i].name || !b->textures[i].rgba)
+            goto oom;
+        memcpy(b->textures[i].rgba, texs[i]->tex.rgba, (size_t)texs[i]->tex.width * texs[i]->tex.height * 4);
+    }
+    b->pos = malloc(npos * sizeof *b->pos + 1);
+    b->col = malloc(ncol * sizeof *b->col + 1);
+    b->tc = malloc(ntc * sizeof *b->tc + 1);
+    if (!b->pos || !b->col || !b->tc)
+        goto oom;
+    for (uint32_t i = 0; i < nu; i++) {
+        gls_unit *u = units[i];
+        gls_object *o = &b->objects[i];
+        uint32_t p0 = b->npos, c0 = b->ncol, t0 = b->ntex;
+        /* a unit without colours has u->col == NULL: memcpy(NULL, 0) is undefined */
+        if (u->npos)
+            memcpy(b->pos + p0, u->pos, u->npos * sizeof *u->pos);
+        if (u->ncol)
+            memcpy(b->col + c0, u->col, u->ncol * sizeof *u->col);
+        if (u->ntc)
+            memcpy(b->tc + t0, u->tc, u->ntc * sizeof *u->tc);
+        b->npos += u->npos;
+        b->ncol += u->ncol;
+        b->ntex += u->ntc;
+        gls_buf code = {0};
+        size_t pos = 0;
+        int has_src = u->ninsn && u->lines[0].file != GLS_NONE;
+        o->src = has_src ? malloc(u->ninsn * sizeof *o->src) : NULL;
+        if (!(o->name = strdup(u->name)) || (has_src && !o->src))
+            goto oom;
+        for (uint32_t k = 0; k < u->ninsn; k++) {
+            gls_insn in;
+            gls_insn_decode(u->code.data, u->code.len, &pos, &in);
+            /* relocate: the operand kinds say which index is which */
+            for (uint32_t j = 0; j < gls_op[in.op].noperands; j++) {
+                uint32_t *v = &in.u[j];
+                switch ((gls_operand_kind)gls_op[in.op].kind[j]) {
+                case GLS_KIND_OBJECT: *v = ((gls_unit *)gls_strmap_get(&c->units, u->refs[*v].name))->final_index; break;
+                case GLS_KIND_TEXTURE: *v = gls_bundle_find_texture(b, u->texrefs[*v].name); break;
+                case GLS_KIND_FIRST_POS: *v += p0; break;
+                case GLS_KIND_FIRST_COL: if (*v != GLS_NONE) *v += c0; break;
+                case GLS_KIND_FIRST_TC: if (*v != GLS_NONE) *v += t0; break;
+                case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
+                case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
+                    break; /* not an index */
+                }
+            }
+            if (gls_insn_encode(&code, &in))
+                goto oom;
+            if (has_src)
+                o->src[k] = u->lines[k];
+        }
+        o->code = code.data;
+        o->code_len = (uint32_t)code.len;
+        o->ninsn = u->ninsn;
+    }
+    b->nsources = c->nsources;
+    b->sources = calloc(c->nsources ? c->nsources : 1, sizeof *b->sources);
+    if (!b->sources)
+        goto oom;
+    for (uint32_t i = 0; i < c->nsources; i++)
+        if (!(b->sources[i] = strdup(c->sources[i])))
+            goto oom;
+    b->features = gls_bundle_features(b);
+    free(units);
+    free(texs);
+    return b;
+oom:
+    gls_error_at(&c->diag, GLS_NOLOC, "out of memory assembling the bundle");
+fail:
+    free(units);
+    free(texs);
+    gls_bundle_free(b);
+    return NULL;
+}

@@ -1,0 +1,278 @@
+/* Each instruction's own checks and the bytecode it emits
+ * (spec/language.md 7), and the table of instructions that statements.c
+ * looks names up in. */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "sema.h"
+
+void sema_emit(gls_parse *ctx, gls_insn *in, unsigned line)
+{
+    if (gls_unit_emit(ctx->u, in, line))
+        ERR(ctx, line, 1, "out of memory");
+}
+
+/* An instruction whose operands are all numbers: d holds them in order. */
+static void emit_d(gls_parse *ctx, gls_opcode op, const double *d, unsigned line)
+{
+    gls_insn in = {.op = op};
+    memcpy(in.d, d, gls_op[op].noperands * sizeof *d);
+    sema_emit(ctx, &in, line);
+}
+
+/* An instruction with one integer operand, at position arg. */
+static void emit_u(gls_parse *ctx, gls_opcode op, unsigned arg, uint32_t v, unsigned line)
+{
+    gls_insn in = {.op = op};
+    in.u[arg] = v;
+    sema_emit(ctx, &in, line);
+}
+
+static int check_unit_range(gls_parse *ctx, const gls_val *a, unsigned n, const char *what)
+{
+    for (unsigned i = 0; i < n; i++)
+        if (a[i].num < 0 || a[i].num > 1) {
+            ERR(ctx, a[i].line, a[i].col, "%s component %g is outside 0..1", what, a[i].num);
+            return -1;
+        }
+    return 0;
+}
+
+static int grow(void **arr, uint32_t *cap, uint32_t need, size_t elem)
+{
+    if (need <= *cap)
+        return 0;
+    uint32_t c = *cap ? *cap : 64;
+    while (c < need) {
+        if (c > UINT32_MAX / 2)
+            return -1;
+        c *= 2;
+    }
+    void *p = realloc(*arr, (size_t)c * elem);
+    if (!p)
+        return -1;
+    *arr = p;
+    *cap = c;
+    return 0;
+}
+
+static void h_vert(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    gls_unit *u = ctx->u;
+    gls_vec4 p = {a[0].num, n > 1 ? a[1].num : 0, n > 2 ? a[2].num : 0, n > 3 ? a[3].num : 1};
+    if (p.w == 0) {
+        ERR(ctx, a[3].line, a[3].col, "w must not be 0");
+        return;
+    }
+    if (ctx->prim_kind < 0)
+        return;
+    if (ctx->prim_nvert >= GLS_MAX_PRIM_VERTICES || u->npos >= GLS_MAX_VERTICES) {
+        ERR(ctx, name.line, name.col, "too many vertices (a primitive may have %u, an object %u)",
+            GLS_MAX_PRIM_VERTICES, GLS_MAX_VERTICES);
+        ctx->prim_kind = -1;
+        return;
+    }
+    if (grow((void **)&u->pos, &u->pos_cap, u->npos + 1, sizeof *u->pos) ||
+        (ctx->prim_has_col && grow((void **)&u->col, &u->col_cap, u->ncol + 1, sizeof *u->col)) ||
+        (ctx->prim_has_tc && grow((void **)&u->tc, &u->tc_cap, u->ntc + 1, sizeof *u->tc))) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        ctx->stop = 1;
+        return;
+    }
+    u->pos[u->npos++] = p;
+    if (ctx->prim_has_col)
+        u->col[u->ncol++] = ctx->cur_col;
+    if (ctx->prim_has_tc)
+        u->tc[u->ntc++] = ctx->cur_tc;
+    ctx->prim_nvert++;
+}
+
+static void h_col(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    if (check_unit_range(ctx, a, n, "colour"))
+        return;
+    if (!ctx->prim_has_col && ctx->prim_nvert > 0) {
+        ERR(ctx, name.line, name.col,
+            "'col' after the first 'vert' of this primitive: put a 'col' before the first vertex so every vertex has a colour");
+        return;
+    }
+    ctx->prim_has_col = 1;
+    ctx->cur_col = (gls_rgba){(float)a[0].num, (float)a[1].num, (float)a[2].num, n > 3 ? (float)a[3].num : 1.0f};
+}
+
+static void h_tex(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    for (int i = 0; i < 2; i++)
+        if (fabs(a[i].num) > FLT_MAX) {
+            ERR(ctx, a[i].line, a[i].col, "texture coordinate %g is outside the range of a float", a[i].num);
+            return;
+        }
+    if (!ctx->prim_has_tc && ctx->prim_nvert > 0) {
+        ERR(ctx, name.line, name.col,
+            "'tex' after the first 'vert' of this primitive: put a 'tex' before the first vertex so every vertex has coordinates");
+        return;
+    }
+    ctx->prim_has_tc = 1;
+    ctx->cur_tc = (gls_st){(float)a[0].num, (float)a[1].num};
+}
+
+static void h_color(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    if (check_unit_range(ctx, a, n, "colour"))
+        return;
+    double d[GLS_NARGS_COLOR] = {a[0].num, a[1].num, a[2].num, n > 3 ? a[3].num : 1.0};
+    emit_d(ctx, GLS_OP_COLOR, d, name.line);
+}
+
+static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    for (unsigned m = 0; m < GLS_MODE_COUNT; m++) {
+        size_t l = strlen(gls_texmode_name[m]);
+        if (a[0].len == l && memcmp(a[0].s, gls_texmode_name[m], l) == 0) {
+            emit_u(ctx, GLS_OP_TEXMODE, GLS_ARG_TEXMODE_MODE, m, name.line);
+            gls_texuse_mode(&ctx->texuse, m != GLS_MODE_COLOR, name.line);
+            return;
+        }
+    }
+    const char *s = gls_suggest(a[0].s, a[0].len, gls_texmode_name, GLS_MODE_COUNT);
+    ERR(ctx, a[0].line, a[0].col, "unknown texture mode '%.*s'%s%s%s (the modes are color, replace, modulate)",
+        (int)a[0].len, a[0].s, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
+}
+
+/* The quoted name a (texture or object, says what) checked and added to
+ * the unit's references (*arr, *n, *cap), located at its first character
+ * inside the quotes; then the instruction op whose operand arg indexes it.
+ * Returns 0, or -1 after reporting an invalid name or running out of
+ * memory. */
+static int emit_ref(gls_parse *ctx, gls_tok name, const gls_val *a, const char *what, gls_ref **arr, uint32_t *n,
+                    uint32_t *cap, gls_opcode op, unsigned arg)
+{
+    if (!gls_valid_name(a->s + 1, a->len - 2)) {
+        ERR(ctx, a->line, a->col, "%.*s is not a valid %s name (dotted identifiers, like \"road.vegetation.Birch\")",
+            (int)a->len, a->s, what);
+        return -1;
+    }
+    uint32_t r = gls_unit_add_ref(arr, n, cap, a->s + 1, a->len - 2, gls_tok_loc(ctx, a->line, a->col + 1));
+    if (r == GLS_NONE) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return -1;
+    }
+    emit_u(ctx, op, arg, r, name.line);
+    return 0;
+}
+
+static void h_texture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    gls_unit *u = ctx->u;
+    if (emit_ref(ctx, name, a, "texture", &u->texrefs, &u->ntexrefs, &u->texrefs_cap, GLS_OP_TEXTURE,
+                 GLS_ARG_TEXTURE_INDEX))
+        return;
+    if (gls_texuse_select(&ctx->texuse, gls_tok_loc(ctx, name.line, name.col), a->s + 1, a->len - 2))
+        ERR(ctx, name.line, name.col, "out of memory");
+}
+
+static void h_notexture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)a, (void)n;
+    gls_insn in = {.op = GLS_OP_NOTEXTURE};
+    sema_emit(ctx, &in, name.line);
+    gls_texuse_deselect(&ctx->texuse);
+}
+
+static void h_trans(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[GLS_NARGS_TRANS] = {a[0].num, a[1].num, a[2].num};
+    (void)n;
+    emit_d(ctx, GLS_OP_TRANS, d, name.line);
+}
+
+static void h_rot(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[GLS_NARGS_ROT] = {a[0].num, a[1].num, a[2].num, a[3].num};
+    (void)n;
+    if (d[GLS_ARG_ROT_X] == 0 && d[GLS_ARG_ROT_Y] == 0 && d[GLS_ARG_ROT_Z] == 0) {
+        ERR(ctx, a[1].line, a[1].col, "rotation axis is zero");
+        return;
+    }
+    emit_d(ctx, GLS_OP_ROT, d, name.line);
+}
+
+static void h_scale(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[GLS_NARGS_SCALE] = {a[0].num, n == 3 ? a[1].num : a[0].num, n == 3 ? a[2].num : a[0].num};
+    emit_d(ctx, GLS_OP_SCALE, d, name.line);
+}
+
+static void h_transform(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    double d[GLS_NARGS_TRANSFORM];
+    for (unsigned i = 0; i < GLS_NARGS_TRANSFORM; i++)
+        d[i] = a[i].num;
+    (void)n;
+    emit_d(ctx, GLS_OP_TRANSFORM, d, name.line);
+}
+
+static void h_push(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)a, (void)n;
+    if (ctx->depth >= GLS_MAX_PUSH_DEPTH) {
+        ERR(ctx, name.line, name.col, "'push' nested deeper than %u", GLS_MAX_PUSH_DEPTH);
+        ctx->depth_overflow++; /* its pop must not complain as well */
+        return;
+    }
+    gls_texuse_push(&ctx->texuse, ctx->depth);
+    ctx->push_tok[ctx->depth++] = name;
+    gls_insn in = {.op = GLS_OP_PUSH};
+    sema_emit(ctx, &in, name.line);
+}
+
+static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)a, (void)n;
+    if (ctx->depth_overflow) {
+        ctx->depth_overflow--; /* the pop of a push refused as too deep */
+        return;
+    }
+    if (ctx->depth == 0) {
+        /* after a syntax error the matching push may be what was dropped */
+        if (!ctx->syntax_errors)
+            ERR(ctx, name.line, name.col, "'pop' without a matching 'push'");
+        return;
+    }
+    ctx->depth--;
+    gls_texuse_pop(&ctx->texuse, ctx->depth);
+    gls_insn in = {.op = GLS_OP_POP};
+    sema_emit(ctx, &in, name.line);
+}
+
+static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    gls_unit *u = ctx->u;
+    if (emit_ref(ctx, name, a, "object", &u->refs, &u->nrefs, &u->refs_cap, GLS_OP_CALL, GLS_ARG_CALL_OBJECT))
+        return;
+    gls_texuse_call(&ctx->texuse);
+}
+
+/* The instructions (sema.h says what each field means). */
+const sema_instr sema_instrs[] = {
+    {"vert", 1, 4, "nnnn", WHERE_PRIM, h_vert},
+    {"col", 3, 4, "nnnn", WHERE_PRIM, h_col},
+    {"tex", 2, 2, "nn", WHERE_PRIM, h_tex},
+    {"color", 3, 4, "nnnn", WHERE_OUTSIDE, h_color},
+    {"texmode", 1, 1, "w", WHERE_OUTSIDE, h_texmode},
+    {"texture", 1, 1, "s", WHERE_OUTSIDE, h_texture},
+    {"notexture", 0, 0, "", WHERE_OUTSIDE, h_notexture},
+    {"trans", 3, 3, "nnn", WHERE_OUTSIDE, h_trans},
+    {"rot", 4, 4, "nnnn", WHERE_OUTSIDE, h_rot},
+    {"scale", 1, 3, "nnn", WHERE_OUTSIDE, h_scale},
+    {"transform", 16, 16, "nnnnnnnnnnnnnnnn", WHERE_OUTSIDE, h_transform},
+    {"push", 0, 0, "", WHERE_OUTSIDE, h_push},
+    {"pop", 0, 0, "", WHERE_OUTSIDE, h_pop},
+    {"call", 1, 1, "s", WHERE_OUTSIDE, h_call},
+};
+const size_t sema_ninstrs = sizeof sema_instrs / sizeof sema_instrs[0];

@@ -1,0 +1,133 @@
+/* Statements (spec/language.md 7): an instruction's name is looked up
+ * (with "did you mean" for unknown ones, aliases from other languages
+ * included), then the checks every instruction shares, in this order:
+ * placement inside or outside a primitive block, argument count, the kind
+ * of each argument; then its handler (instructions.c). */
+#include <stdio.h>
+#include <string.h>
+#include "sema.h"
+
+const char *const sema_words[] = {"vert",  "col", "tex",   "color",     "texmode", "texture", "notexture",
+                                  "trans", "rot", "scale", "transform", "push",    "pop",     "call",
+                                  "poly",  "qstrip", "tstrip", "tfan",  "const"};
+const size_t sema_nwords = sizeof sema_words / sizeof sema_words[0];
+
+/* Names people bring from OpenGL and other scene languages, for "did you
+ * mean" (gls_suggest_alias also takes their OpenGL spellings: glRotatef,
+ * glVertex3f, glPushMatrix, glTexCoord2f, glColor3ub, glMultMatrixd, ...).
+ * The real names are the keys of sema_instrs[] and gls_prim_name. */
+const gls_alias sema_aliases[] = {
+    {"rotate", "rot"},          {"rotation", "rot"},
+    {"translate", "trans"},     {"translation", "trans"},   {"move", "trans"},
+    {"scaling", "scale"},       {"scl", "scale"},
+    {"vertex", "vert"},         {"point", "vert"},
+    {"colour", "color"},        {"rgb", "color"},           {"rgba", "color"},
+    {"texcoord", "tex"},        {"texcoords", "tex"},       {"uv", "tex"},
+    {"bindtexture", "texture"}, {"settexture", "texture"},
+    {"texenv", "texmode"},      {"texturemode", "texmode"}, {"texture_mode", "texmode"},
+    {"notex", "notexture"},     {"untexture", "notexture"}, {"disabletexture", "notexture"},
+    {"pushmatrix", "push"},     {"save", "push"},           {"popmatrix", "pop"},          {"restore", "pop"},
+    {"multmatrix", "transform"}, {"matrix", "transform"},
+    {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},
+    {"define", "const"},        {"let", "const"},           {"var", "const"},
+    {"begin", "poly"},          {"polygon", "poly"},        {"triangle", "poly"},          {"triangles", "poly"},
+    {"quad", "poly"},           {"quads", "poly"},
+    {"quadstrip", "qstrip"},    {"quad_strip", "qstrip"},
+    {"trianglestrip", "tstrip"}, {"triangle_strip", "tstrip"}, {"tristrip", "tstrip"},
+    {"trianglefan", "tfan"},    {"triangle_fan", "tfan"},   {"trifan", "tfan"},
+};
+const size_t sema_naliases = sizeof sema_aliases / sizeof sema_aliases[0];
+
+int sema_tok_is(gls_tok t, const char *s)
+{
+    size_t n = strlen(s);
+    return t.len == n && memcmp(t.p, s, n) == 0;
+}
+
+int sema_prim_kind(gls_tok t)
+{
+    for (int k = 0; k < GLS_PRIM_COUNT; k++)
+        if (sema_tok_is(t, gls_prim_name[k]))
+            return k;
+    return -1;
+}
+
+static void describe_kind(const gls_val *v, char *buf, size_t n)
+{
+    if (v->kind == VAL_STR)
+        snprintf(buf, n, "a string");
+    else if (v->kind == VAL_WORD)
+        snprintf(buf, n, "the word '%.*s'", (int)v->len, v->s);
+    else
+        snprintf(buf, n, "a number");
+}
+
+void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
+{
+    unsigned n = ctx->nargs;
+    int too_many = ctx->too_many_args;
+    ctx->nargs = 0;
+    ctx->too_many_args = 0;
+    (void)parens;
+
+    const sema_instr *ins = NULL;
+    for (size_t i = 0; i < sema_ninstrs; i++)
+        if (sema_tok_is(name, sema_instrs[i].name)) {
+            ins = &sema_instrs[i];
+            break;
+        }
+    if (!ins) {
+        if (sema_prim_kind(name) >= 0) {
+            ERR(ctx, name.line, name.col, "'%.*s' is a primitive block: write %.*s { vert(...); ... }",
+                (int)name.len, name.p, (int)name.len, name.p);
+            return;
+        }
+        const char *s =
+            gls_suggest_alias(name.p, name.len, sema_words, sema_nwords, sema_aliases, sema_naliases);
+        if (s)
+            ERR(ctx, name.line, name.col, "unknown instruction '%.*s'; did you mean '%s'?", (int)name.len, name.p, s);
+        else
+            ERR(ctx, name.line, name.col, "unknown instruction '%.*s'", (int)name.len, name.p);
+        return;
+    }
+    if (ins->where == WHERE_PRIM && !ctx->in_prim) {
+        ERR(ctx, name.line, name.col, "'%s' is only allowed inside a primitive block (poly, qstrip, tstrip, tfan)",
+            ins->name);
+        return;
+    }
+    if (ins->where == WHERE_OUTSIDE && ctx->in_prim) {
+        ERR(ctx, name.line, name.col, "'%s' is not allowed inside a primitive block", ins->name);
+        return;
+    }
+    int is_scale = strcmp(ins->name, "scale") == 0; /* 1 or 3 arguments, not 2 */
+    if (too_many || n < ins->min || n > ins->max || (is_scale && n == 2)) {
+        if (is_scale)
+            ERR(ctx, name.line, name.col, "'scale' takes 1 or 3 arguments, got %u", n);
+        else if (ins->min == ins->max)
+            ERR(ctx, name.line, name.col, "'%s' takes %u argument%s, got %u", ins->name, ins->min,
+                ins->min == 1 ? "" : "s", n);
+        else
+            ERR(ctx, name.line, name.col, "'%s' takes %u to %u arguments, got %u", ins->name, ins->min, ins->max, n);
+        return;
+    }
+    const gls_val *a = ctx->args;
+    for (unsigned i = 0; i < n; i++) {
+        char want = ins->kinds[i];
+        if (a[i].kind == VAL_ERR)
+            return; /* already reported */
+        int ok = (want == 'n' && a[i].kind == VAL_NUM) || (want == 's' && a[i].kind == VAL_STR) ||
+                 (want == 'w' && a[i].kind == VAL_WORD);
+        if (ok)
+            continue;
+        if (want == 'n' && a[i].kind == VAL_WORD) {
+            ERR(ctx, a[i].line, a[i].col, "unknown constant '%.*s'", (int)a[i].len, a[i].s);
+            return;
+        }
+        char got[128];
+        describe_kind(&a[i], got, sizeof got);
+        ERR(ctx, a[i].line, a[i].col, "argument %u of '%s' must be %s, not %s", i + 1, ins->name,
+            want == 'n' ? "a number" : want == 's' ? "a quoted name" : "a word", got);
+        return;
+    }
+    ins->fn(ctx, name, a, n);
+}

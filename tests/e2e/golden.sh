@@ -1,0 +1,91 @@
+#!/bin/sh
+# Byte-identity guard.  Compiles a fixed set of scenes (the demo, the
+# examples, tests/compiler/*, the scene library as a library bundle), dumps
+# each bundle with glsdis --source, renders the demo at the README's
+# command and one example, and compares the SHA-256 of every bundle, dump
+# and image with the list in tests/e2e/golden.sha256.  Prints "ok NAME" /
+# "FAIL NAME: why", one line per file.
+#
+# The list was recorded on main before the refactoring of issue 12, which
+# must not change a byte.  A later change that legitimately changes a
+# bundle, dump or image updates the list in the same commit and says why in
+# a comment there:  sh tests/e2e/golden.sh --record  rewrites the digests
+# and keeps the comment lines.
+#
+# Every command runs from the repository root with relative paths: source
+# paths are recorded in bundles as spelled (spec/bundle.md, section 14).
+B=${GLS_BIN:-build}
+LIST=tests/e2e/golden.sha256
+t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+
+for f in glsc glsdis glsplay textures; do
+    [ -e "$B/$f" ] || { fail golden_build_products "no $B/$f (run make)"; exit 0; }
+done
+
+mkdir -p "$t/files"
+# bundle NAME GLSC_ARGS...: compile into files/NAME.glsb, dump into files/NAME.dis
+bundle() {
+    name=$1
+    shift
+    if ! "$B/glsc" "$@" -o "$t/files/$name.glsb" >"$t/err" 2>&1; then
+        fail "golden_compile_$name" "$(head -3 "$t/err")"
+        return
+    fi
+    "$B/glsdis" --source "$t/files/$name.glsb" >"$t/files/$name.dis" 2>"$t/err" ||
+        fail "golden_dump_$name" "$(head -3 "$t/err")"
+}
+
+bundle scenelib -I "$B/textures" --lib scenelib
+bundle demo -I examples/demo -I "$B/textures" examples/demo/Demo.scene
+for e in calibration stereo dense_stereo grouping lane signs; do
+    bundle "$e" -I "$t/files/scenelib.glsb" examples/$e/*.scene
+done
+bundle lang -I tests/compiler/lang tests/compiler/lang/Top.scene
+bundle figure7 -I tests/compiler/paper tests/compiler/paper/Figure7.scene
+bundle tga_rgb -I tests/compiler/tga_rgb tests/compiler/tga_rgb/Top.scene
+
+# render NAME BUNDLE GLSPLAY_ARGS...: every file glsplay writes, renamed
+# files/NAME_CAMERA_FILE
+render() {
+    name=$1 bundle=$2
+    shift 2
+    [ -f "$t/files/$bundle.glsb" ] || return
+    if ! "$B/glsplay" "$t/files/$bundle.glsb" "$@" -o "$t/out_$name" >"$t/err" 2>&1; then
+        fail "golden_render_$name" "$(head -3 "$t/err")"
+        return
+    fi
+    for f in "$t/out_$name"/*/*; do
+        cam=$(basename "$(dirname "$f")")
+        mv "$f" "$t/files/${name}_${cam}_$(basename "$f")"
+    done
+}
+
+# the README's "Compile, inspect, play" command (image, depth, points)
+render demo demo --camera examples/demo/left.cam --camera examples/demo/right.cam
+# an example with textures and anti-aliasing, as examples/render.sh renders it
+render signs signs --camera examples/signs/left.cam --aa 4 --outputs image,depth --background 0.55,0.7,0.9
+
+(cd "$t/files" && sha256sum -- *) >"$t/got"
+
+if [ "$1" = --record ]; then
+    { grep '^#' "$LIST" 2>/dev/null; cat "$t/got"; } >"$t/list" && cp "$t/list" "$LIST"
+    echo "recorded $(wc -l <"$t/got") digests in $LIST"
+    exit 0
+fi
+
+[ -f "$LIST" ] || { fail golden_list "no $LIST"; exit 0; }
+grep -v '^#' "$LIST" | while read -r want name; do
+    got=$(awk -v n="$name" '$2 == n { print $1 }' "$t/got")
+    if [ -z "$got" ]; then
+        fail "golden_$name" "not produced"
+    elif [ "$got" = "$want" ]; then
+        ok "golden_$name"
+    else
+        fail "golden_$name" "SHA-256 $got, $LIST records $want"
+    fi
+done
+awk '{ print $2 }' "$t/got" | while read -r name; do
+    grep -q "^[0-9a-f]*  $name\$" "$LIST" || fail "golden_$name" "produced but not in $LIST (record it)"
+done
