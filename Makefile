@@ -5,7 +5,7 @@ CC      ?= cc
 CSTD    := -std=c11 -D_XOPEN_SOURCE=700
 WARN    := -Wall -Wextra -Werror
 OPT     ?= -O2 -g
-CFLAGS  += $(CSTD) $(WARN) $(OPT) -Iformat -Icompiler -Iruntime -I$(B)/gen
+CFLAGS  += $(CSTD) $(WARN) $(OPT) -Ibase -Iformat -Icompiler -Iruntime -I$(B)/gen
 LDLIBS  := -lzstd -lz -lstb -lm
 
 ifeq ($(SANITIZE),1)
@@ -21,10 +21,12 @@ CFLAGS  += -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -
 LDFLAGS += -fsanitize=address,undefined
 endif
 
+BASE_SRC     := $(wildcard base/*.c)
 FORMAT_SRC   := $(wildcard format/*.c)
 COMPILER_SRC := $(filter-out compiler/glsc_main.c compiler/glsdis_main.c,$(wildcard compiler/*.c))
 RUNTIME_SRC  := $(filter-out runtime/glsplay_main.c,$(wildcard runtime/*.c))
 
+BASE_OBJ     := $(BASE_SRC:%.c=$(B)/%.o)
 FORMAT_OBJ   := $(FORMAT_SRC:%.c=$(B)/%.o)
 COMPILER_OBJ := $(COMPILER_SRC:%.c=$(B)/%.o) $(B)/gen/lexer.o $(B)/gen/grammar.o
 RUNTIME_OBJ  := $(RUNTIME_SRC:%.c=$(B)/%.o)
@@ -47,9 +49,9 @@ test:
 	@$(MAKE) --no-print-directory all $(UNIT_BIN)
 	@GLS_BIN=$(B) sh tests/run.sh
 
-$(B)/tests/%: tests/unit/%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/tests/%: tests/unit/%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Itests $(LDFLAGS) $< -o $@ $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+	$(CC) $(CFLAGS) -Itests $(LDFLAGS) $< -o $@ $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a $(LDLIBS) $(GL_LIBS)
 
 deps:
 	@sh tools/deps.sh
@@ -70,6 +72,8 @@ $(B)/gen/%.o: $(B)/gen/%.c
 	$(CC) $(CFLAGS) -Wno-unused-parameter -Wno-unused-variable -Icompiler -MMD -MP -c $< -o $@
 $(COMPILER_OBJ): | $(B)/gen/grammar.h
 
+$(B)/libglsbase.a: $(BASE_OBJ)
+	$(AR) rcs $@ $^
 $(B)/libglsformat.a: $(FORMAT_OBJ)
 	$(AR) rcs $@ $^
 $(B)/libglscompiler.a: $(COMPILER_OBJ)
@@ -77,25 +81,25 @@ $(B)/libglscompiler.a: $(COMPILER_OBJ)
 $(B)/libglsruntime.a: $(RUNTIME_OBJ)
 	$(AR) rcs $@ $^
 
-$(B)/glsc: $(B)/compiler/glsc_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
+$(B)/glsc: $(B)/compiler/glsc_main.o $(B)/libglscompiler.a $(B)/libglsformat.a $(B)/libglsbase.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
+$(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat.a $(B)/libglsbase.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
 
 # Fuzz targets (tests/fuzz/README.md): `make fuzz-build`, then
 # `sh tests/fuzz/run.sh SECONDS` fuzzes every target.
 FUZZ_TARGETS := compile bundle texture camera road writers
-$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsroad.a $(B)/libglsformat.a
+$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsroad.a $(B)/libglsformat.a $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Iroads -fsanitize=fuzzer $< -o $@ $(B)/libglscompiler.a $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+	$(CC) $(CFLAGS) -Iroads -fsanitize=fuzzer $< -o $@ $(B)/libglscompiler.a $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a $(LDLIBS) $(GL_LIBS)
 fuzz-build:
 	@$(MAKE) --no-print-directory B=build-fuzz CC=clang FUZZ=1 $(FUZZ_TARGETS:%=build-fuzz/fuzz/fuzz_%)
 
 # Texture generator for the scene library and the examples (no binary
 # textures are committed: they are made here, deterministically).
-$(B)/gen_textures: scenelib/gen/textures.c $(B)/libglsformat.a
+$(B)/gen_textures: scenelib/gen/textures.c $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $^ -o $@ -lstb -lm
 $(B)/textures.stamp: $(B)/gen_textures
@@ -108,7 +112,7 @@ $(B)/textures.stamp: $(B)/gen_textures
 # the whole library precompiled: -I $(B)/scenelib.glsb stands for
 # -I scenelib -I $(B)/textures.
 SCENELIB_SRC := $(shell find scenelib -name '*.scene' 2>/dev/null)
-$(B)/gen_objects: scenelib/gen/objects.c $(B)/libglsformat.a
+$(B)/gen_objects: scenelib/gen/objects.c $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $^ -o $@ -lm
 $(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC)
@@ -159,19 +163,19 @@ clean:
 -include $(shell find $(B) -name '*.d' 2>/dev/null)
 
 # bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
-$(B)/bench/play_floor: bench/play_floor.c bench/play_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/bench/play_floor: bench/play_floor.c bench/play_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
-$(B)/bench/play_bench: bench/play_bench.c bench/play_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a $(LDLIBS) $(GL_LIBS)
+$(B)/bench/play_bench: bench/play_bench.c bench/play_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a $(LDLIBS) $(GL_LIBS)
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
-$(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a $(LDLIBS) $(GL_LIBS)
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
@@ -184,11 +188,11 @@ ROAD_SRC := $(filter-out roads/glsroad_main.c,$(wildcard roads/*.c))
 ROAD_OBJ := $(ROAD_SRC:%.c=$(B)/%.o)
 $(B)/libglsroad.a: $(ROAD_OBJ)
 	$(AR) rcs $@ $^
-$(B)/glsroad: $(B)/roads/glsroad_main.o $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/glsroad: $(B)/roads/glsroad_main.o $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/tests/test_road%: tests/unit/test_road%.c $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/tests/test_road%: tests/unit/test_road%.c $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Itests -Iroads $(LDFLAGS) $< -o $@ $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS)
+	$(CC) $(CFLAGS) -Itests -Iroads -Ibase $(LDFLAGS) $< -o $@ $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(B)/libglsbase.a $(LDLIBS)
 $(B)/road_montage: examples/road/montage.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $< -o $@ -lstb -lm

@@ -10,7 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "bundle.h"
+#include "atomic_write.h"
 
 /* Write everything to fd; 0 or -1 with errno set. */
 static int write_all(int fd, const void *data, size_t len)
