@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
-#include "../tests/unit/player_scene.h"
+#include "player_scene.h"
 #include "play_scene.h"
 
 int main(void)
