@@ -1,8 +1,6 @@
 /* Bounded reading of text inputs (textfile.h). */
-#include <errno.h>
-#include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
+#include "readfile.h"
 #include "textfile.h"
 
 /* "1 MiB" for whole mebibytes, else "N bytes". */
@@ -16,63 +14,25 @@ static void fmt_size(char *buf, size_t n, size_t bytes)
 
 char *gls_text_read(const char *path, size_t limit, const char *what, size_t *len, char *err, size_t errlen)
 {
+    gls_read_error e;
+    char *buf = gls_file_read(path, limit, 0, len, &e);
+    if (buf)
+        return buf;
     char lim[32];
     fmt_size(lim, sizeof lim, limit);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    struct stat st;
-    if (fstat(fileno(f), &st) == 0) {
-        if (S_ISDIR(st.st_mode)) {
-            snprintf(err, errlen, "%s: error: is a directory, not a %s", path, what);
-            fclose(f);
-            return NULL;
-        }
-        /* a regular file tells its size: refuse before reading any of it */
-        if (S_ISREG(st.st_mode) && (unsigned long long)st.st_size > limit) {
-            snprintf(err, errlen, "%s: error: %s larger than %s (%llu bytes)", path, what, lim,
-                     (unsigned long long)st.st_size);
-            fclose(f);
-            return NULL;
-        }
-    }
-    /* Pipes and devices do not: read at most limit + 1 bytes, growing the
-     * buffer as the data comes, so a short pipe costs little memory. */
-    size_t cap = limit < 65536 ? limit + 1 : 65536, n = 0;
-    char *buf = malloc(cap + 1);
-    while (buf) {
-        size_t r = fread(buf + n, 1, cap - n, f);
-        n += r;
-        if (n < cap || n > limit)
-            break;
-        size_t ncap = cap > limit / 2 ? limit + 1 : 2 * cap;
-        char *nb = realloc(buf, ncap + 1);
-        if (!nb) {
-            free(buf);
-            buf = NULL;
-            break;
-        }
-        buf = nb;
-        cap = ncap;
-    }
-    int bad = ferror(f);
-    int e = errno;
-    fclose(f);
-    if (!buf || bad || n > limit) {
-        if (!buf)
-            snprintf(err, errlen, "%s: error: out of memory", path);
-        else if (bad)
-            snprintf(err, errlen, "%s: error: cannot read: %s", path, strerror(e));
+    switch (e.status) {
+    case GLS_READ_OPEN: snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(e.err)); break;
+    case GLS_READ_DIR: snprintf(err, errlen, "%s: error: is a directory, not a %s", path, what); break;
+    case GLS_READ_TOO_LARGE:
+        if (e.size)
+            snprintf(err, errlen, "%s: error: %s larger than %s (%llu bytes)", path, what, lim, e.size);
         else
             snprintf(err, errlen, "%s: error: %s larger than %s", path, what, lim);
-        free(buf);
-        return NULL;
+        break;
+    case GLS_READ_IO: snprintf(err, errlen, "%s: error: cannot read: %s", path, strerror(e.err)); break;
+    default: snprintf(err, errlen, "%s: error: out of memory", path); break;
     }
-    buf[n] = 0;
-    *len = n;
-    return buf;
+    return NULL;
 }
 
 int gls_text_next_line(gls_text_lines *it, const char **start, size_t *n)

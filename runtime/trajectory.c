@@ -6,8 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
+#include <unistd.h>
 #include "numfmt.h"
+#include "readfile.h"
 #include "rotation.h"
 #include "textfile.h"
 #include "trajectory.h"
@@ -44,16 +45,16 @@ gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen)
         return NULL;
     }
     t->notes = notes;
-    t->f = fopen(path, "r");
-    if (!t->f) {
-        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
-        free(t->path);
-        free(t);
-        return NULL;
-    }
     struct stat st;
-    if (fstat(fileno(t->f), &st) == 0 && S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
+    gls_read_error e;
+    int fd = gls_file_open(path, 0, &st, &e);
+    if (fd < 0 || !(t->f = fdopen(fd, "r"))) {
+        if (fd < 0 && e.status == GLS_READ_DIR)
+            snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
+        else
+            snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(fd < 0 ? e.err : errno));
+        if (fd >= 0)
+            close(fd);
         gls_traj_close(t);
         return NULL;
     }
