@@ -40,17 +40,37 @@ static void fmt(char *buf, size_t n, double v, int maxprec, int is_float)
 void gls_fmt_double(char *buf, size_t n, double v) { fmt(buf, n, v, 17, 0); }
 void gls_fmt_float(char *buf, size_t n, float v) { fmt(buf, n, (double)v, 9, 1); }
 
-const char *gls_parse_double(const char *tok, double *out)
+/* strtod over the whole token: 0 with *v and *range (errno was ERANGE),
+ * or -1 if the token is not a number or is a NaN. */
+static int read_number(const char *tok, double *v, int *range)
 {
     char *end;
     errno = 0;
-    double v = strtod(tok, &end);
-    if (end == tok || *end || isnan(v) || (isinf(v) && errno != ERANGE))
+    *v = strtod(tok, &end);
+    *range = errno == ERANGE;
+    return end == tok || *end || isnan(*v) ? -1 : 0;
+}
+
+const char *gls_parse_double(const char *tok, double *out)
+{
+    double v;
+    int range;
+    if (read_number(tok, &v, &range) || (isinf(v) && !range))
         return "is not a finite number";
     if (isinf(v))
         return "is too large for a double (magnitudes up to 1.8e308)";
-    if (v != 0 ? fabs(v) < DBL_MIN : errno == ERANGE)
+    if (v != 0 ? fabs(v) < DBL_MIN : range)
         return "is too close to zero for a double (nonzero magnitudes from 2.2e-308)";
+    *out = v;
+    return NULL;
+}
+
+const char *gls_parse_finite(const char *tok, double *out)
+{
+    double v;
+    int range;
+    if (read_number(tok, &v, &range) || !isfinite(v))
+        return "is not a finite number";
     *out = v;
     return NULL;
 }

@@ -12,4 +12,9 @@ void gls_fmt_float(char *buf, size_t n, float v);
  * for a double, or too close to zero (a nonzero magnitude below the
  * smallest normal double, which strtod can only approximate). */
 const char *gls_parse_double(const char *tok, double *out);
+
+/* The same, but accepting whatever strtod rounds to a finite number (a
+ * magnitude that underflows to a subnormal or to zero included): NULL
+ * with *out set, or "is not a finite number". */
+const char *gls_parse_finite(const char *tok, double *out);
 #endif

@@ -1,4 +1,6 @@
 /* The source excerpt under a diagnostic (srcline.h). */
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "srcline.h"
@@ -90,4 +92,17 @@ void gls_append_source_line(char *buf, size_t cap, const char *text, size_t len,
         buf[used + 1 + b.len] = 0;
     }
     free(b.data);
+}
+
+void gls_text_error(char *err, size_t errlen, const char *text, size_t len, const char *file, unsigned line,
+                    unsigned col, const char *fmt, ...)
+{
+    int k = snprintf(err, errlen, "%s:%u:%u: error: ", file, line, col);
+    if (k < 0 || (size_t)k >= errlen)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err + k, errlen - (size_t)k, fmt, ap);
+    va_end(ap);
+    gls_append_source_line(err, errlen, text, len, line, col);
 }

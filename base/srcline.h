@@ -22,4 +22,9 @@ int gls_excerpt(gls_buf *b, const char *text, size_t len, unsigned line, unsigne
 /* Append "\n" and the GLS_EXCERPT_WINDOW excerpt to the NUL-terminated
  * string in buf (capacity cap).  Appends nothing if it does not fit. */
 void gls_append_source_line(char *buf, size_t cap, const char *text, size_t len, unsigned line, unsigned col);
+
+/* The located error of a text input, into err: "FILE:LINE:COL: error: "
+ * and the formatted message, then the excerpt (gls_append_source_line). */
+void gls_text_error(char *err, size_t errlen, const char *text, size_t len, const char *file, unsigned line,
+                    unsigned col, const char *fmt, ...) __attribute__((format(printf, 8, 9)));
 #endif

@@ -50,6 +50,16 @@ int gls_text_next_line(gls_text_lines *it, const char **start, size_t *n)
     return k > GLS_TEXT_MAX_LINE ? -1 : 1;
 }
 
+int gls_text_split(char *line, const char *cut, const char *seps, char **tok, int max)
+{
+    line[strcspn(line, cut)] = 0;
+    int n = 0;
+    char *save;
+    for (char *w = strtok_r(line, seps, &save); w && n < max; w = strtok_r(NULL, seps, &save))
+        tok[n++] = w;
+    return n;
+}
+
 int gls_text_getline(FILE *f, char buf[GLS_TEXT_MAX_LINE + 1], size_t *n)
 {
     size_t k = 0;

@@ -32,6 +32,15 @@ typedef struct {
  * number; report it at column GLS_TEXT_MAX_LINE + 1, where it overflows). */
 int gls_text_next_line(gls_text_lines *it, const char **start, size_t *n);
 
+/* Split a line (NUL-terminated; it is modified) into words, the one
+ * tokenizer of the key/value text formats (camera files, road
+ * descriptions, trajectories): the line is cut at its first character
+ * from cut (a comment: "#"), the rest split at characters from seps.
+ * tok[i] points into line, so a word's column is tok[i] - line + 1.
+ * Returns the number of words, at most max: a caller that accepts n words
+ * passes max = n + 1 and reads a result of n + 1 as "too many". */
+int gls_text_split(char *line, const char *cut, const char *seps, char **tok, int max);
+
 /* Read one line of a stream into buf (capacity GLS_TEXT_MAX_LINE + 1),
  * without its '\n', NUL-terminated; *n is its length (it may hold NUL
  * bytes).  Returns 1 for a line, 0 at the end of the stream, -1 if the

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "numfmt.h"
 #include "road.h"
 #include "srcline.h"
 #include "suggest.h"
@@ -40,21 +41,18 @@ static int fail(pctx *c, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(c->err, c->errlen, "%s:%d:%d: error: %s", c->file, c->line, c->col > 0 ? c->col : 1, msg);
-    gls_append_source_line(c->err, c->errlen, c->text, c->len, (unsigned)c->line, (unsigned)(c->col > 0 ? c->col : 1));
+    gls_text_error(c->err, c->errlen, c->text, c->len, c->file, (unsigned)c->line, (unsigned)(c->col > 0 ? c->col : 1),
+                   "%s", msg);
     return -1;
 }
 
 static int num(pctx *c, const char *tok, const char *what, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(tok, &end);
-    if (end == tok || *end || !isfinite(v)) { /* underflow to 0 is harmless */
+    const char *why = gls_parse_finite(tok, out); /* underflow to 0 is harmless */
+    if (why) {
         at(c, tok);
-        return fail(c, "%s: '%s' is not a finite number", what, tok);
+        return fail(c, "%s: '%s' %s", what, tok, why);
     }
-    *out = v;
     return 0;
 }
 
@@ -509,17 +507,11 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
             fail(&c, "NUL byte in the description");
             goto bad;
         }
-        char *hash = strchr(line, '#');
-        if (hash)
-            *hash = 0;
-        char *tok[MAXTOK];
-        int ntok = 0;
-        for (char *p = strtok(line, " \t\r\f\v"); p; p = strtok(NULL, " \t\r\f\v")) {
-            if (ntok == MAXTOK) {
-                fail(&c, "more than %d words on one line", MAXTOK);
-                goto bad;
-            }
-            tok[ntok++] = p;
+        char *tok[MAXTOK + 1];
+        int ntok = gls_text_split(line, "#", " \t\r\f\v", tok, MAXTOK + 1);
+        if (ntok > MAXTOK) {
+            fail(&c, "more than %d words on one line", MAXTOK);
+            goto bad;
         }
         if (ntok == 0)
             continue;

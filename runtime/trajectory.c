@@ -111,17 +111,8 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
             return fail(t, err, errlen, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
         if (memchr(t->buf, 0, n))
             return fail(t, err, errlen, "NUL byte in the line");
-        char *hash = strchr(t->buf, '#');
-        if (hash)
-            *hash = 0;
         char *tok[15];
-        int nt = 0;
-        char *save;
-        for (char *q = strtok_r(t->buf, " \t\r\n\f\v", &save); q; q = strtok_r(NULL, " \t\r\n\f\v", &save)) {
-            if (nt == 15)
-                break;
-            tok[nt++] = q;
-        }
+        int nt = gls_text_split(t->buf, "#", " \t\r\n\f\v", tok, 15);
         if (nt == 0)
             continue;
         if (nt != 14)
