@@ -1,7 +1,11 @@
-/* Small double-precision 3-vector and 3x3 matrix helpers for roads/.
- * Matrices are row-major double[9]; m[3*r + c]. */
-#ifndef GLS_ROAD_VEC_H
-#define GLS_ROAD_VEC_H
+/* Small double-precision vector and matrix helpers, the generic ones every
+ * layer uses (the road geometry, the camera model, rotation checks, the
+ * scene's transform stack): rv3 is a 3-vector; rm_ functions take
+ * row-major 3x3 matrices, double[9] with m[3*r + c]; m4_ functions
+ * row-major 4x4 matrices, double[16].  Sums are formed left to right, the
+ * order every caller has always used, so results are bit-identical. */
+#ifndef GLS_VEC_H
+#define GLS_VEC_H
 #include <math.h>
 
 typedef struct {
@@ -63,11 +67,39 @@ static inline rv3 rm_apply(const double A[9], rv3 v)
     return rv(A[0] * v.x + A[1] * v.y + A[2] * v.z, A[3] * v.x + A[4] * v.y + A[5] * v.z,
               A[6] * v.x + A[7] * v.y + A[8] * v.z);
 }
+/* A^T v */
+static inline rv3 rm_apply_t(const double A[9], rv3 v)
+{
+    return rv(A[0] * v.x + A[3] * v.y + A[6] * v.z, A[1] * v.x + A[4] * v.y + A[7] * v.z,
+              A[2] * v.x + A[5] * v.y + A[8] * v.z);
+}
+static inline double rm_det(const double A[9])
+{
+    return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+           A[2] * (A[3] * A[7] - A[4] * A[6]);
+}
 /* The matrix whose columns are a, b, c. */
 static inline void rm_cols(rv3 a, rv3 b, rv3 c, double M[9])
 {
     M[0] = a.x, M[1] = b.x, M[2] = c.x;
     M[3] = a.y, M[4] = b.y, M[5] = c.y;
     M[6] = a.z, M[7] = b.z, M[8] = c.z;
+}
+
+/* C = A * B (4x4, row-major); C may be A or B. */
+static inline void m4_mul(const double A[16], const double B[16], double C[16])
+{
+    double t[16];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            t[4 * i + j] = A[4 * i] * B[j] + A[4 * i + 1] * B[4 + j] + A[4 * i + 2] * B[8 + j] + A[4 * i + 3] * B[12 + j];
+    for (int i = 0; i < 16; i++)
+        C[i] = t[i];
+}
+/* r = A v for a homogeneous 4-vector (x, y, z, w). */
+static inline void m4_apply(const double A[16], double x, double y, double z, double w, double r[4])
+{
+    for (int i = 0; i < 4; i++)
+        r[i] = A[4 * i] * x + A[4 * i + 1] * y + A[4 * i + 2] * z + A[4 * i + 3] * w;
 }
 #endif

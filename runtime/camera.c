@@ -14,6 +14,7 @@
 #include "srcline.h"
 #include "suggest.h"
 #include "textfile.h"
+#include "vec.h"
 
 enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE, K_COUNT };
 static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
@@ -265,13 +266,15 @@ void gls_camera_projection(const gls_camera *c, double du, double dv, double P[1
 void gls_camera_modelview(const gls_camera *c, const double a[3], double MV[16])
 {
     const double *R = c->R;
+    /* R*a + T: the large parts cancel here, in double */
+    rv3 r = rm_apply(R, rv(a[0], a[1], a[2]));
+    const double Ra[3] = {r.x, r.y, r.z};
     memset(MV, 0, 16 * sizeof *MV);
     for (int i = 0; i < 3; i++) {
         double s = i == 0 ? 1.0 : -1.0; /* the flip diag(1, -1, -1) */
         for (int j = 0; j < 3; j++)
             MV[4 * i + j] = s * R[3 * i + j];
-        /* R*a + T: the large parts cancel here, in double */
-        MV[4 * i + 3] = s * (R[3 * i] * a[0] + R[3 * i + 1] * a[1] + R[3 * i + 2] * a[2] + c->T[i]);
+        MV[4 * i + 3] = s * (Ra[i] + c->T[i]);
     }
     MV[15] = 1;
 }
@@ -295,15 +298,14 @@ void gls_camera_unproject(const gls_camera *c, double u, double v, double Zc, do
 
 void gls_camera_to_world(const gls_camera *c, const double Pc[3], double P[3])
 {
-    double d[3] = {Pc[0] - c->T[0], Pc[1] - c->T[1], Pc[2] - c->T[2]};
-    for (int j = 0; j < 3; j++)
-        P[j] = c->R[j] * d[0] + c->R[3 + j] * d[1] + c->R[6 + j] * d[2];
+    rv3 p = rm_apply_t(c->R, rv(Pc[0] - c->T[0], Pc[1] - c->T[1], Pc[2] - c->T[2]));
+    P[0] = p.x, P[1] = p.y, P[2] = p.z;
 }
 
 void gls_camera_to_cam(const gls_camera *c, const double P[3], double Pc[3])
 {
-    for (int i = 0; i < 3; i++)
-        Pc[i] = c->R[3 * i] * P[0] + c->R[3 * i + 1] * P[1] + c->R[3 * i + 2] * P[2] + c->T[i];
+    rv3 p = rm_apply(c->R, rv(P[0], P[1], P[2]));
+    Pc[0] = p.x + c->T[0], Pc[1] = p.y + c->T[1], Pc[2] = p.z + c->T[2];
 }
 
 double gls_camera_project(const gls_camera *c, const double P[3], double *u, double *v)

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "scene.h"
+#include "vec.h"
 
 typedef struct {
     double M[16];
@@ -40,15 +41,6 @@ typedef struct {
     uint64_t dropped;
     int oom;
 } walker;
-
-static void mat_mul(double A[16], const double B[16])
-{
-    double r[16];
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++)
-            r[4 * i + j] = A[4 * i] * B[j] + A[4 * i + 1] * B[4 + j] + A[4 * i + 2] * B[8 + j] + A[4 * i + 3] * B[12 + j];
-    memcpy(A, r, sizeof r);
-}
 
 static void identity(double A[16])
 {
@@ -148,8 +140,7 @@ static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t
     const gls_vec4 *q = &b->pos[in->u[GLS_ARG_PRIM_POS] + k];
     const double *M = st->M;
     double h[4];
-    for (int i = 0; i < 4; i++)
-        h[i] = M[4 * i] * q->x + M[4 * i + 1] * q->y + M[4 * i + 2] * q->z + M[4 * i + 3] * q->w;
+    m4_apply(M, q->x, q->y, q->z, q->w, h);
     /* homogeneous: divide through in double; 1/w is skipped when w == 1 so
      * ordinary coordinates stay bit-exact */
     /* A vertex must be finite and within GLS_SCENE_MAX_COORD of the
@@ -288,19 +279,19 @@ static void run(walker *w, uint32_t oi, state st)
         case GLS_OP_TRANS:
             identity(A);
             A[3] = in.d[GLS_ARG_TRANS_X], A[7] = in.d[GLS_ARG_TRANS_Y], A[11] = in.d[GLS_ARG_TRANS_Z];
-            mat_mul(st.M, A);
+            m4_mul(st.M, A, st.M);
             break;
         case GLS_OP_ROT:
             rotation(in.d[GLS_ARG_ROT_ANGLE], in.d[GLS_ARG_ROT_X], in.d[GLS_ARG_ROT_Y], in.d[GLS_ARG_ROT_Z], A);
-            mat_mul(st.M, A);
+            m4_mul(st.M, A, st.M);
             break;
         case GLS_OP_SCALE:
             identity(A);
             A[0] = in.d[GLS_ARG_SCALE_X], A[5] = in.d[GLS_ARG_SCALE_Y], A[10] = in.d[GLS_ARG_SCALE_Z];
-            mat_mul(st.M, A);
+            m4_mul(st.M, A, st.M);
             break;
         case GLS_OP_TRANSFORM:
-            mat_mul(st.M, in.d + GLS_ARG_TRANSFORM_A00); /* operands are row-major, like M */
+            m4_mul(st.M, in.d + GLS_ARG_TRANSFORM_A00, st.M); /* operands are row-major, like M */
             break;
         case GLS_OP_PUSH:
             if (push_state(w, &st))

@@ -12,6 +12,7 @@
 #include "rotation.h"
 #include "textfile.h"
 #include "trajectory.h"
+#include "vec.h"
 
 struct gls_traj {
     FILE *f;
@@ -154,11 +155,11 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
 void gls_traj_compose(const double Rc[9], const double Tc[3], const double Rr[9], const double Tr[3], double R[9],
                       double T[3])
 {
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++)
-            R[3 * i + j] = Rc[3 * i] * Rr[j] + Rc[3 * i + 1] * Rr[3 + j] + Rc[3 * i + 2] * Rr[6 + j];
-        T[i] = Rc[3 * i] * Tr[0] + Rc[3 * i + 1] * Tr[1] + Rc[3 * i + 2] * Tr[2] + Tc[i];
-    }
+    rm_mul(Rc, Rr, R);
+    rv3 t = rm_apply(Rc, rv(Tr[0], Tr[1], Tr[2]));
+    T[0] = t.x + Tc[0];
+    T[1] = t.y + Tc[1];
+    T[2] = t.z + Tc[2];
 }
 
 int gls_traj_range(const char *s, uint64_t *first, uint64_t *end, char *err, size_t errlen)
