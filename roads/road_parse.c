@@ -3,11 +3,13 @@
  * the offending line and a caret under the column. */
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "numfmt.h"
 #include "road.h"
 #include "srcline.h"
@@ -87,16 +89,10 @@ static int whole(pctx *c, const char *tok, const char *what, long lo, long hi, l
 
 static int grow(void **p, int *cap, int need, size_t elem)
 {
-    if (need <= *cap)
-        return 0;
-    int nc = *cap ? *cap * 2 : 16;
-    while (nc < need)
-        nc *= 2;
-    void *q = realloc(*p, elem * nc);
-    if (!q)
+    size_t c = (size_t)*cap;
+    if (gls_grow(p, &c, (size_t)need, elem) || c > INT_MAX)
         return -1;
-    *p = q;
-    *cap = nc;
+    *cap = (int)c;
     return 0;
 }
 

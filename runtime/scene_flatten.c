@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "scene.h"
 #include "vec.h"
 
@@ -89,14 +90,8 @@ static uint8_t unorm8(double v)
 
 static int push_state(walker *w, const state *st)
 {
-    if (w->sp == w->cap) {
-        size_t cap = w->cap ? w->cap * 2 : 64;
-        state *n = realloc(w->stack, cap * sizeof *n);
-        if (!n)
-            return -1;
-        w->stack = n;
-        w->cap = cap;
-    }
+    if (gls_grow(&w->stack, &w->cap, w->sp + 1, sizeof *w->stack))
+        return -1;
     w->stack[w->sp++] = *st;
     return 0;
 }
@@ -105,19 +100,18 @@ static int grow_tris(walker *w, size_t need)
 {
     if (w->ntri + need <= w->tcap)
         return 0;
-    size_t cap = w->tcap ? w->tcap : 1024;
-    while (cap < w->ntri + need)
-        cap *= 2;
-    tri *t = realloc(w->tris, cap * sizeof *t);
+    /* four arrays of one capacity: grown by the largest element's rule */
+    size_t cap = gls_grow_cap(w->tcap, w->ntri + need, 9 * sizeof *w->wpos);
+    tri *t = cap ? gls_resize(w->tris, cap, sizeof *t) : NULL;
     if (t)
         w->tris = t;
-    double *p = realloc(w->wpos, cap * 9 * sizeof *p);
+    double *p = cap ? gls_resize(w->wpos, cap, 9 * sizeof *p) : NULL;
     if (p)
         w->wpos = p;
-    uint8_t *c = realloc(w->wcol, cap * 12);
+    uint8_t *c = cap ? gls_resize(w->wcol, cap, 12) : NULL;
     if (c)
         w->wcol = c;
-    float *x = realloc(w->wtc, cap * 6 * sizeof *x);
+    float *x = cap ? gls_resize(w->wtc, cap, 6 * sizeof *x) : NULL;
     if (x)
         w->wtc = x;
     if (!t || !p || !c || !x)
