@@ -88,6 +88,7 @@ test:
 .SECONDEXPANSION:
 
 # Unit tests: each sees and links the layers it tests.
+SEES_test_base := base
 SEES_test_bundle := format
 SEES_test_compile := compiler
 SEES_test_lex := compiler
