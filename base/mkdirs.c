@@ -57,11 +57,9 @@ int gls_mkdir_parents(const char *path)
     if (!slash || slash == path)
         return 0; /* in the current directory, or in / */
     size_t n = (size_t)(slash - path);
-    char *dir = malloc(n + 1);
+    char *dir = strndup(path, n);
     if (!dir)
         return -1;
-    memcpy(dir, path, n);
-    dir[n] = 0;
     int rc = gls_mkdir_p(dir);
     int e = errno;
     free(dir);

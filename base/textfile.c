@@ -35,7 +35,7 @@ char *gls_text_read(const char *path, size_t limit, const char *what, size_t *le
     return NULL;
 }
 
-int gls_text_next_line(gls_text_lines *it, const char **start, size_t *n)
+int gls_text_next_line(gls_text_lines *it, char buf[GLS_TEXT_MAX_LINE + 1], size_t *n)
 {
     if (it->pos >= it->len)
         return 0;
@@ -44,10 +44,13 @@ int gls_text_next_line(gls_text_lines *it, const char **start, size_t *n)
     const char *nl = memchr(p, '\n', left);
     size_t k = nl ? (size_t)(nl - p) : left;
     it->line++;
-    *start = p;
-    *n = k;
     it->pos += k + (nl != NULL);
-    return k > GLS_TEXT_MAX_LINE ? -1 : 1;
+    if (k > GLS_TEXT_MAX_LINE)
+        return -1;
+    memcpy(buf, p, k);
+    buf[k] = 0;
+    *n = k;
+    return 1;
 }
 
 int gls_text_split(char *line, const char *cut, const char *seps, char **tok, int max)

@@ -27,10 +27,11 @@ typedef struct {
     unsigned line; /* 1-based number of the line last returned          */
 } gls_text_lines;
 
-/* The next line (without its '\n'): 1 with *start and *n set, 0 at the
- * end, -1 if it is longer than GLS_TEXT_MAX_LINE bytes (it->line is its
- * number; report it at column GLS_TEXT_MAX_LINE + 1, where it overflows). */
-int gls_text_next_line(gls_text_lines *it, const char **start, size_t *n);
+/* The next line (without its '\n'), copied into buf with a NUL after its
+ * *n bytes (it may hold NUL bytes of its own): 1, 0 at the end, -1 if it
+ * is longer than GLS_TEXT_MAX_LINE bytes (nothing copied; it->line is its
+ * number: report it at column GLS_TEXT_MAX_LINE + 1, where it overflows). */
+int gls_text_next_line(gls_text_lines *it, char buf[GLS_TEXT_MAX_LINE + 1], size_t *n);
 
 /* Split a line (NUL-terminated; it is modified) into words, the one
  * tokenizer of the key/value text formats (camera files, road

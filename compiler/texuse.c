@@ -17,11 +17,9 @@ int gls_texuse_select(gls_texuse *t, gls_loc loc, const char *name, size_t n)
 {
     if (gls_grow(&t->sel, &t->cap, t->nsel + 1, sizeof *t->sel))
         return -1;
-    char *copy = malloc(n + 1);
+    char *copy = strndup(name, n); /* a valid name: no NUL inside */
     if (!copy)
         return -1;
-    memcpy(copy, name, n);
-    copy[n] = 0;
     t->sel[t->nsel] = (gls_texsel){loc, copy, UINT_MAX, 0};
     t->cur.sel = (long)t->nsel++;
     return 0;

@@ -44,11 +44,9 @@ uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, size_t *cap, const char *n
 {
     if (gls_grow(arr, cap, (size_t)*n + 1, sizeof **arr))
         return GLS_NONE;
-    char *s = malloc(len + 1);
+    char *s = strndup(name, len); /* a valid name: no NUL inside */
     if (!s)
         return GLS_NONE;
-    memcpy(s, name, len);
-    s[len] = 0;
     (*arr)[*n].name = s;
     (*arr)[*n].loc = loc;
     return (*n)++;

@@ -68,12 +68,7 @@ static char *get_str(cursor *c)
         c->bad = 1;
         return NULL;
     }
-    char *s = malloc(n + 1);
-    if (!s)
-        return NULL;
-    memcpy(s, q, n);
-    s[n] = 0;
-    return s;
+    return strndup((const char *)q, n);
 }
 
 /* count items of at least min_bytes each must fit in what is left */

@@ -484,11 +484,10 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
     pctx c = {fname, 0, err, errlen, text, len, NULL, 1};
     int seen_degree = 0;
     gls_text_lines it = {text, len, 0, 0};
-    const char *start;
     size_t n;
     int got;
     char line[GLS_TEXT_MAX_LINE + 1];
-    while ((got = gls_text_next_line(&it, &start, &n)) != 0) {
+    while ((got = gls_text_next_line(&it, line, &n)) != 0) {
         c.line = (int)it.line;
         c.col = 1;
         c.linebuf = NULL;
@@ -497,8 +496,6 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
             fail(&c, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
             goto bad;
         }
-        memcpy(line, start, n);
-        line[n] = 0;
         if (memchr(line, 0, n)) {
             fail(&c, "NUL byte in the description");
             goto bad;

@@ -57,19 +57,16 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     unsigned vcol[K_COUNT] = {0}; /* column of its first value              */
     unsigned last = 0;            /* last line holding a key               */
     gls_text_lines it = {text, len, 0, 0};
-    const char *start;
     size_t n;
     int got;
     char buf[GLS_TEXT_MAX_LINE + 1];
-    while ((got = gls_text_next_line(&it, &start, &n)) != 0) {
+    while ((got = gls_text_next_line(&it, buf, &n)) != 0) {
         unsigned line = it.line;
         if (got < 0) {
             gls_text_error(err, errlen, text, len, fname, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes",
                  GLS_TEXT_MAX_LINE);
             return -1;
         }
-        memcpy(buf, start, n);
-        buf[n] = 0;
         const char *nul = memchr(buf, 0, n);
         if (nul) {
             gls_text_error(err, errlen, text, len, fname, line, (unsigned)(nul - buf) + 1,

@@ -1,4 +1,5 @@
-/* Little-endian load/store helpers: the only place byte order is handled. */
+/* Little-endian load/store helpers: the only place byte order is handled
+ * (the bundle's encoding, the player's PFM and PLY files). */
 #ifndef GLS_LE_H
 #define GLS_LE_H
 #include <stdint.h>
@@ -20,6 +21,12 @@ static inline uint32_t gls_le_get_u32(const uint8_t *p)
 static inline uint64_t gls_le_get_u64(const uint8_t *p)
 {
     return (uint64_t)gls_le_get_u32(p) | (uint64_t)gls_le_get_u32(p + 4) << 32;
+}
+static inline void gls_le_put_f32(uint8_t *p, float f)
+{
+    uint32_t v;
+    memcpy(&v, &f, 4);
+    gls_le_put_u32(p, v);
 }
 static inline void gls_le_put_f64(uint8_t *p, double d)
 {
