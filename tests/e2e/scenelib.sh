@@ -118,6 +118,8 @@ cat >"$t/check.py" <<'PYEOF'
 import math, os, re, subprocess, sys
 import numpy as np
 import cv2
+sys.path.insert(0, os.path.join(os.getcwd(), "tests", "py"))
+from examples_check import read_pfm  # noqa: E402 (the one PFM reader of the tests)
 
 BIN, TMP, KEEP = sys.argv[1], sys.argv[2], os.environ.get("SCENELIB_KEEP")
 LIB = os.path.join(BIN, "scenelib")   # the library directory the build makes
@@ -245,16 +247,6 @@ def look_camera(path, C, target, W, H, f, near, far, roll=0.0):
                                                    " ".join(repr(float(x)) for x in T), near, far))
     K = np.array([[f, 0, (W - 1) / 2], [0, f, (H - 1) / 2], [0, 0, 1]])
     return K, R, T
-
-
-def read_pfm(path):
-    with open(path, "rb") as fh:
-        data = fh.read()
-    parts = data.split(b"\n", 3)
-    w, h = (int(x) for x in parts[1].split())
-    scale = float(parts[2])
-    a = np.frombuffer(parts[3], dtype="<f4" if scale < 0 else ">f4").reshape(h, w)
-    return a[::-1]  # PFM rows go bottom to top
 
 
 def declared(path, name):
