@@ -184,9 +184,9 @@ $(B)/textures.stamp: $(B)/gen_textures
 # the objects scenelib/gen/objects.c writes (they are not committed: git
 # holds what a person wrote) and links to the hand-written objects of
 # scenelib/, so that an edit there is seen at once.  It is made anew, never
-# updated in place, whenever the generator, a hand-written object or the
-# set of them (a directory's time) changes, so no generated file can go
-# stale; a generated object named like a hand-written one stops the build.
+# updated in place, whenever the generator or the set of hand-written
+# objects (a directory's time) changes, so no generated file can go stale;
+# a generated object named like a hand-written one stops the build.
 # $(B)/scenelib.glsb is that directory precompiled, from $(B), so that its
 # source paths read scenelib/... whatever the build directory is called:
 # -I $(B)/scenelib.glsb stands for -I $(B)/scenelib -I $(B)/textures.
@@ -194,7 +194,7 @@ SCENELIB_SRC := $(shell find scenelib -name '*.scene' 2>/dev/null)
 SCENELIB_DIRS := $(shell find scenelib -type d 2>/dev/null)
 $(B)/gen_objects: $(B)/gen_objects.o $(LIB_base)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_base) -lm
-$(B)/scenelib.stamp: $(B)/gen_objects $(SCENELIB_SRC) $(SCENELIB_DIRS)
+$(B)/scenelib.stamp: $(B)/gen_objects $(SCENELIB_DIRS)
 	rm -rf $(B)/scenelib
 	$(B)/gen_objects $(B)/scenelib >/dev/null
 	for f in $(SCENELIB_SRC); do mkdir -p $(B)/$${f%/*} && ln -sr $$f $(B)/$$f || exit 1; done
