@@ -5,8 +5,12 @@ CC      ?= cc
 CSTD    := -std=c11 -D_XOPEN_SOURCE=700
 WARN    := -Wall -Wextra -Werror
 OPT     ?= -O2 -g
-CFLAGS  += $(CSTD) $(WARN) $(OPT) -Iformat -Icompiler -Iruntime -I$(B)/gen
+CFLAGS  += $(CSTD) $(WARN) $(OPT)
 LDLIBS  := -lzstd -lz -lstb -lm
+# Every compile writes its dependency file (X.d beside X, the object or
+# program), included at the end: a changed header rebuilds exactly what
+# includes it (tests/e2e/build_deps.sh).
+DEPFLAGS := -MMD -MP
 
 ifeq ($(SANITIZE),1)
 CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
@@ -21,42 +25,95 @@ CFLAGS  += -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -
 LDFLAGS += -fsanitize=address,undefined
 endif
 
+# The layers (docs/ARCHITECTURE.md) and the headers each may include: its
+# own and those of the layers below it, through these include paths only,
+# so that a file including across the rule does not compile
+# (tests/e2e/build_layers.sh).  Seeing a layer means seeing what it sees.
+INC_base     := -Ibase
+INC_format   := -Iformat $(INC_base)
+INC_compiler := -Icompiler -I$(B)/gen $(INC_format)
+INC_runtime  := -Iruntime $(INC_format)
+INC_roads    := -Iroads $(INC_base)
+# glsroad's main also reads camera files and trajectories (runtime/)
+INC_glsroad  := $(INC_roads) $(INC_runtime)
+# An object sees the layer of its top directory (base/x.c: base).
+LAYER_INC = $(INC_$(firstword $(subst /, ,$*)))
+$(B)/roads/glsroad_main.o: LAYER_INC = $(INC_glsroad)
+
+BASE_SRC     := $(wildcard base/*.c)
 FORMAT_SRC   := $(wildcard format/*.c)
 COMPILER_SRC := $(filter-out compiler/glsc_main.c compiler/glsdis_main.c,$(wildcard compiler/*.c))
 RUNTIME_SRC  := $(filter-out runtime/glsplay_main.c,$(wildcard runtime/*.c))
 
+BASE_OBJ     := $(BASE_SRC:%.c=$(B)/%.o)
 FORMAT_OBJ   := $(FORMAT_SRC:%.c=$(B)/%.o)
 COMPILER_OBJ := $(COMPILER_SRC:%.c=$(B)/%.o) $(B)/gen/lexer.o $(B)/gen/grammar.o
 RUNTIME_OBJ  := $(RUNTIME_SRC:%.c=$(B)/%.o)
 
+# the libraries of each layer, in link order (a layer before those below it)
+LIB_base     := $(B)/libglsbase.a
+LIB_format   := $(B)/libglsformat.a $(LIB_base)
+LIB_compiler := $(B)/libglscompiler.a $(LIB_format)
+LIB_runtime  := $(B)/libglsruntime.a $(LIB_format)
+LIB_roads    := $(B)/libglsroad.a $(LIB_base)
+
 TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay $(B)/glsroad
-# the scene library: textures, object generator, precompiled library bundle
-SCENELIB := $(B)/textures.stamp $(B)/gen_objects $(B)/scenelib.glsb
+# the scene library: textures, the library directory, precompiled library bundle
+SCENELIB := $(B)/textures.stamp $(B)/scenelib.stamp $(B)/scenelib.glsb
 
 GL_LIBS := -lOSMesa -lGL -lspng
 
 UNIT_SRC := $(wildcard tests/unit/*.c)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
+# The helper programs (benchmarks, image tools, fuzz seed writer): built by
+# `make test` too, so that every program compiles and its dependencies are
+# tracked like the rest.
+PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/depth2png $(B)/pnghalf \
+            $(B)/road_montage $(B)/rawseed
 
-.PHONY: all deps test check demo demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa
+.PHONY: all deps test check demo demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa units programs
 all: $(TOOLS) $(SCENELIB)
+units: $(UNIT_BIN)
+programs: $(PROGRAMS)
 
 # The README's test command: install what is missing, build, run everything.
 test:
 	@sh tools/deps.sh
-	@$(MAKE) --no-print-directory all $(UNIT_BIN)
+	@$(MAKE) --no-print-directory all units programs
 	@GLS_BIN=$(B) sh tests/run.sh
 
-$(B)/tests/%: tests/unit/%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Itests $(LDFLAGS) $< -o $@ $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+# Programs (tools, unit tests, benchmarks, helpers): the main file is
+# compiled like every object, with the include paths of what it sees, and
+# linked with those layers' libraries.
+.SECONDEXPANSION:
+
+# Unit tests: each sees and links the layers it tests.
+SEES_test_base := base
+SEES_test_bundle := format
+SEES_test_compile := compiler
+SEES_test_lex := compiler
+SEES_test_aa := bench
+SEES_test_camera := runtime
+SEES_test_player := runtime
+SEES_test_progress := runtime
+SEES_test_rotation := runtime
+SEES_test_road_geo := roads
+SEES_test_road_nurbs := roads
+SEES_test_road_motion := roads runtime
+SEES_test_road_traj := roads runtime
+# a program's include paths and libraries from the layers it sees
+sees_inc = $(foreach l,$(1),$(INC_$(l)))
+sees_lib = $(foreach l,$(1),$(LIB_$(l)))
+$(UNIT_BIN): $(B)/tests/%: $(B)/tests/unit/%.o $$(call sees_lib,$$(SEES_$$*))
+	$(CC) $(LDFLAGS) $< -o $@ $(call sees_lib,$(SEES_$*)) $(LDLIBS) $(GL_LIBS)
+$(UNIT_BIN:$(B)/tests/%=$(B)/tests/unit/%.o): LAYER_INC = $(call sees_inc,$(SEES_$(notdir $*))) -Itests -Itests/unit
 
 deps:
 	@sh tools/deps.sh
 
 $(B)/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(CFLAGS) $(LAYER_INC) $(DEPFLAGS) -c $< -o $@
 
 # Generated sources: re2c lexer and lemon grammar, produced at build time.
 $(B)/gen/lexer.c: compiler/lexer.re $(B)/gen/grammar.h
@@ -67,60 +124,86 @@ $(B)/gen/grammar.c $(B)/gen/grammar.h: compiler/grammar.y
 	cp compiler/grammar.y $(B)/gen/grammar.y
 	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y
 $(B)/gen/%.o: $(B)/gen/%.c
-	$(CC) $(CFLAGS) -Wno-unused-parameter -Wno-unused-variable -Icompiler -MMD -MP -c $< -o $@
+	$(CC) $(CFLAGS) $(INC_compiler) -Wno-unused-parameter -Wno-unused-variable $(DEPFLAGS) -c $< -o $@
 $(COMPILER_OBJ): | $(B)/gen/grammar.h
 
-$(B)/libglsformat.a: $(FORMAT_OBJ)
-	$(AR) rcs $@ $^
-$(B)/libglscompiler.a: $(COMPILER_OBJ)
-	$(AR) rcs $@ $^
-$(B)/libglsruntime.a: $(RUNTIME_OBJ)
-	$(AR) rcs $@ $^
+# Archives are written from scratch: `ar rcs` alone would keep the object
+# of a deleted or moved source inside, and links would pick it up.  An
+# archive also depends on its source directory, whose time changes when a
+# file is added, deleted or renamed in it, so that deleting a source
+# rebuilds the archive too (tests/e2e/build_archives.sh).
+ARCHIVE = rm -f $@ && $(AR) rcs $@ $(filter %.o,$^)
+$(B)/libglsbase.a: $(BASE_OBJ) base
+	$(ARCHIVE)
+$(B)/libglsformat.a: $(FORMAT_OBJ) format
+	$(ARCHIVE)
+$(B)/libglscompiler.a: $(COMPILER_OBJ) compiler
+	$(ARCHIVE)
+$(B)/libglsruntime.a: $(RUNTIME_OBJ) runtime
+	$(ARCHIVE)
 
-$(B)/glsc: $(B)/compiler/glsc_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
+$(B)/glsc: $(B)/compiler/glsc_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/glsdis: $(B)/compiler/glsdis_main.o $(B)/libglscompiler.a $(B)/libglsformat.a
+$(B)/glsdis: $(B)/compiler/glsdis_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/glsplay: $(B)/runtime/glsplay_main.o $(LIB_runtime)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
 
 # Fuzz targets (tests/fuzz/README.md): `make fuzz-build`, then
 # `sh tests/fuzz/run.sh SECONDS` fuzzes every target.
 FUZZ_TARGETS := compile bundle texture camera road writers
-$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(B)/libglscompiler.a $(B)/libglsruntime.a $(B)/libglsroad.a $(B)/libglsformat.a
+SEES_fuzz_compile := compiler
+SEES_fuzz_texture := compiler
+SEES_fuzz_bundle := runtime
+SEES_fuzz_camera := runtime
+SEES_fuzz_writers := runtime
+SEES_fuzz_road := roads
+$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $$(call sees_lib,$$(SEES_fuzz_%))
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Iroads -fsanitize=fuzzer $< -o $@ $(B)/libglscompiler.a $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
+	$(CC) $(CFLAGS) $(call sees_inc,$(SEES_fuzz_$*)) -fsanitize=fuzzer $(DEPFLAGS) $< -o $@ \
+	    $(call sees_lib,$(SEES_fuzz_$*)) $(LDLIBS) $(GL_LIBS)
 fuzz-build:
 	@$(MAKE) --no-print-directory B=build-fuzz CC=clang FUZZ=1 $(FUZZ_TARGETS:%=build-fuzz/fuzz/fuzz_%)
+# rawseed: a bundle rewritten with uncompressed sections (fuzzing seeds)
+$(B)/rawseed: $(B)/tests/fuzz/rawseed.o $(LIB_format)
+	$(CC) $(LDFLAGS) $< -o $@ $(LIB_format) $(LDLIBS)
+$(B)/tests/fuzz/rawseed.o: LAYER_INC = $(INC_format)
 
 # Texture generator for the scene library and the examples (no binary
 # textures are committed: they are made here, deterministically).
-$(B)/gen_textures: scenelib/gen/textures.c $(B)/libglsformat.a
+# The generators see the base layer.
+$(B)/gen_%.o: scenelib/gen/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $^ -o $@ -lstb -lm
+	$(CC) $(CFLAGS) $(INC_base) $(DEPFLAGS) -c $< -o $@
+$(B)/gen_textures: $(B)/gen_textures.o $(LIB_base)
+	$(CC) $(LDFLAGS) $< -o $@ $(LIB_base) -lstb -lm
 $(B)/textures.stamp: $(B)/gen_textures
 	$(B)/gen_textures $(B)/textures && touch $@
 
-# The scene library (scenelib/README.md).  Its parametric objects are
-# written by scenelib/gen/objects.c and committed; `make gen-scenelib`
-# rewrites them (removing generated files first, so none go stale) and
-# tests/e2e/scenelib.sh checks they are up to date.  $(B)/scenelib.glsb is
-# the whole library precompiled: -I $(B)/scenelib.glsb stands for
-# -I scenelib -I $(B)/textures.
+# The scene library (scenelib/README.md) as one directory, $(B)/scenelib/:
+# the objects scenelib/gen/objects.c writes (they are not committed: git
+# holds what a person wrote) and links to the hand-written objects of
+# scenelib/, so that an edit there is seen at once.  It is made anew, never
+# updated in place, whenever the generator or the set of hand-written
+# objects (a directory's time) changes, so no generated file can go stale;
+# a generated object named like a hand-written one stops the build.
+# $(B)/scenelib.glsb is that directory precompiled, from $(B), so that its
+# source paths read scenelib/... whatever the build directory is called:
+# -I $(B)/scenelib.glsb stands for -I $(B)/scenelib -I $(B)/textures.
 SCENELIB_SRC := $(shell find scenelib -name '*.scene' 2>/dev/null)
-$(B)/gen_objects: scenelib/gen/objects.c $(B)/libglsformat.a
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $^ -o $@ -lm
-$(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC)
-	$(B)/glsc -I $(B)/textures --lib scenelib -o $@
-.PHONY: gen-scenelib
-gen-scenelib: $(B)/gen_objects
-	grep -rl --include='*.scene' '^// Generated by scenelib/gen/objects.c' scenelib | xargs rm -f
-	$(B)/gen_objects scenelib >/dev/null
+SCENELIB_DIRS := $(shell find scenelib -type d 2>/dev/null)
+$(B)/gen_objects: $(B)/gen_objects.o $(LIB_base)
+	$(CC) $(LDFLAGS) $< -o $@ $(LIB_base) -lm
+$(B)/scenelib.stamp: $(B)/gen_objects $(SCENELIB_DIRS)
+	rm -rf $(B)/scenelib
+	$(B)/gen_objects $(B)/scenelib >/dev/null
+	for f in $(SCENELIB_SRC); do mkdir -p $(B)/$${f%/*} && ln -sr $$f $(B)/$$f || exit 1; done
+	touch $@
+$(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(B)/scenelib.stamp $(SCENELIB_SRC)
+	cd $(B) && ./glsc -I textures --lib scenelib -o scenelib.glsb
 
-$(B)/depth2png: tools/depth2png.c
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
+$(B)/depth2png: $(B)/tools/depth2png.o
+	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
 # The README's demo command: install what is missing, build, render the
 # demo scene with a stereo pair of cameras into out/demo/.
@@ -139,9 +222,8 @@ demo:
 demo-examples: all $(B)/depth2png $(B)/pnghalf
 	@mkdir -p out/gallery
 	sh examples/render.sh $(B) out out/gallery
-$(B)/pnghalf: tools/pnghalf.c
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
+$(B)/pnghalf: $(B)/tools/pnghalf.o
+	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
 # Regenerate the README's gallery images from the demo (committed copies).
 gallery: demo
@@ -158,20 +240,19 @@ clean:
 
 -include $(shell find $(B) -name '*.d' 2>/dev/null)
 
+# The benchmarks see the runtime layer and the unit tests' scenes
+# (tests/unit/player_scene.h); test_aa shares bench/aa_scene.h.
+INC_bench := -Ibench -Itests/unit $(INC_runtime)
+LIB_bench := $(LIB_runtime)
+BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench
+$(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
+	$(CC) $(LDFLAGS) $< -o $@ $(LIB_bench) $(LDLIBS) $(GL_LIBS)
+
 # bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
-$(B)/bench/play_floor: bench/play_floor.c bench/play_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
-$(B)/bench/play_bench: bench/play_bench.c bench/play_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
-$(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
@@ -182,16 +263,12 @@ $(B)/runtime/aa.o: CFLAGS += -O3
 # ground truth.  Library libglsroad.a (tests link it) and the tool.
 ROAD_SRC := $(filter-out roads/glsroad_main.c,$(wildcard roads/*.c))
 ROAD_OBJ := $(ROAD_SRC:%.c=$(B)/%.o)
-$(B)/libglsroad.a: $(ROAD_OBJ)
-	$(AR) rcs $@ $^
-$(B)/glsroad: $(B)/roads/glsroad_main.o $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a
-	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/tests/test_road%: tests/unit/test_road%.c $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Itests -Iroads $(LDFLAGS) $< -o $@ $(B)/libglsroad.a $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS)
-$(B)/road_montage: examples/road/montage.c
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $< -o $@ -lstb -lm
+$(B)/libglsroad.a: $(ROAD_OBJ) roads
+	$(ARCHIVE)
+$(B)/glsroad: $(B)/roads/glsroad_main.o $(LIB_roads) $(LIB_runtime)
+	$(CC) $(LDFLAGS) $< $(LIB_roads) $(LIB_runtime) -o $@ $(LDLIBS)
+$(B)/road_montage: $(B)/examples/road/montage.o
+	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
 # demo-road: the example road (examples/road/demo.road) rendered as a short
 # stereo sequence into out/road/, and a strip of frames, docs/road_strip.png.

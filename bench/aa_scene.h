@@ -33,7 +33,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "../tests/unit/player_scene.h"
+#include "player_scene.h"
 
 #define AS_PI 3.14159265358979323846
 #define AS_MAXSQ 16

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
-#include "../tests/unit/player_scene.h"
+#include "player_scene.h"
 #include "play_scene.h"
 
 int main(void)
@@ -55,13 +55,7 @@ int main(void)
         gls_render_read_z(r, z);
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    if (getenv("BENCH_DUMP")) { /* last frame, raw RGBA, for comparing the two */
-        FILE *df = fopen(getenv("BENCH_DUMP"), "wb");
-        if (df) {
-            fwrite(rgba, 4, (size_t)PS_W * PS_H, df);
-            fclose(df);
-        }
-    }
+    ps_dump(rgba);
     double s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     printf("player %.2f triangles %u chunks %u renderer %s\n", PS_FRAMES / s, sc.nverts / 3, sc.nchunks,
            gls_renderer_gl_name(r));

@@ -108,13 +108,7 @@ int main(void)
         glReadPixels(0, 0, PS_W, PS_H, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    if (getenv("BENCH_DUMP")) { /* last frame, raw RGBA, for comparing the two */
-        FILE *df = fopen(getenv("BENCH_DUMP"), "wb");
-        if (df) {
-            fwrite(rgba, 4, (size_t)PS_W * PS_H, df);
-            fclose(df);
-        }
-    }
+    ps_dump(rgba);
     double s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     printf("floor %.2f\n", PS_FRAMES / s);
     free(v), free(rgba), free(depth);

@@ -4,6 +4,9 @@
 #ifndef GLS_PLAY_SCENE_H
 #define GLS_PLAY_SCENE_H
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "camera.h"
 
@@ -48,5 +51,17 @@ static gls_camera ps_camera(int k)
         c.T[i] = -(R[3 * i] * C[0] + R[3 * i + 1] * C[1] + R[3 * i + 2] * C[2]);
     c.near = 0.1, c.far = 1000;
     return c;
+}
+
+/* BENCH_DUMP=FILE: the last frame as raw RGBA, for comparing the player's
+ * image with the floor's. */
+static void ps_dump(const uint8_t *rgba)
+{
+    const char *path = getenv("BENCH_DUMP");
+    FILE *df = path ? fopen(path, "wb") : NULL;
+    if (df) {
+        fwrite(rgba, 4, (size_t)PS_W * PS_H, df);
+        fclose(df);
+    }
 }
 #endif

@@ -1,6 +1,7 @@
 /* The compiler's lifetime (new, free, error count) and a small array helper
  * the linker's files share. */
 #include <stdlib.h>
+#include "buf.h"
 #include "linker.h"
 
 gls_compiler *gls_compiler_new(FILE *diag_out)
@@ -45,14 +46,8 @@ void gls_compiler_free(gls_compiler *c)
 
 int gls_push_ptr(void ***arr, size_t *n, size_t *cap, void *p)
 {
-    if (*n >= *cap) {
-        size_t nc = *cap ? *cap * 2 : 16;
-        void **a = realloc(*arr, nc * sizeof *a);
-        if (!a)
-            return -1;
-        *arr = a;
-        *cap = nc;
-    }
+    if (gls_grow(arr, cap, *n + 1, sizeof **arr))
+        return -1;
     (*arr)[(*n)++] = p;
     return 0;
 }

@@ -1,27 +1,17 @@
 #include <stdarg.h>
-#include <string.h>
+#include <stdlib.h>
 #include "diag.h"
+#include "srcline.h"
 
+/* The source line and a caret under the column (base/srcline.h). */
 static void print_line(FILE *out, const gls_loc *loc)
 {
-    const char *t = loc->src->text, *end = t + loc->src->len;
-    unsigned line = 1;
-    const char *p = t;
-    while (p < end && line < loc->line) {
-        const char *nl = memchr(p, '\n', (size_t)(end - p));
-        if (!nl)
-            return;
-        p = nl + 1;
-        line++;
+    gls_buf b = {0};
+    if (gls_excerpt(&b, loc->src->text, loc->src->len, loc->line, loc->col, GLS_EXCERPT_WHOLE_LINE) == 0) {
+        fwrite(b.data, 1, b.len, out);
+        fputc('\n', out);
     }
-    const char *e = p;
-    while (e < end && *e != '\n' && *e != '\r')
-        e++;
-    fprintf(out, "%.*s\n", (int)(e - p), p);
-    /* caret: keep tabs so it lines up with the source as the terminal shows it */
-    for (unsigned c = 1; c < loc->col && p + c - 1 < e; c++)
-        fputc(p[c - 1] == '\t' ? '\t' : ' ', out);
-    fputs("^\n", out);
+    free(b.data);
 }
 
 static void report(gls_diag *d, gls_loc loc, const char *kind, const char *fmt, va_list ap)

@@ -1,70 +1,43 @@
-#include <errno.h>
+/* The compiler's inputs read whole (fileio.h), through base/readfile.h,
+ * with the compiler's wording of what went wrong. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <fcntl.h>
 #include <sys/mman.h>
-#include <sys/stat.h>
 #include <unistd.h>
 #include "fileio.h"
+#include "readfile.h"
 
 char *gls_read_file(const char *path, size_t limit, size_t *len, char *why, size_t whylen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(why, whylen, "cannot open %s: %s", path, strerror(errno));
-        return NULL;
+    gls_read_error e;
+    char *buf = gls_file_read(path, limit, GLS_READ_REGULAR, len, &e);
+    if (buf)
+        return buf;
+    switch (e.status) {
+    case GLS_READ_OPEN: snprintf(why, whylen, "cannot open %s: %s", path, strerror(e.err)); break;
+    case GLS_READ_STAT:
+    case GLS_READ_DIR:
+    case GLS_READ_NOT_REGULAR: snprintf(why, whylen, "%s is not a regular file", path); break;
+    case GLS_READ_TOO_LARGE:
+        snprintf(why, whylen, "%s is %llu bytes, more than the limit of %zu", path, e.size, limit);
+        break;
+    case GLS_READ_NOMEM: snprintf(why, whylen, "out of memory reading %s", path); break;
+    default:
+        snprintf(why, whylen, "cannot read %s: %s", path,
+                 e.status == GLS_READ_IO ? strerror(e.err) : "file changed while reading");
+        break;
     }
-    struct stat st;
-    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
-        snprintf(why, whylen, "%s is not a regular file", path);
-        fclose(f);
-        return NULL;
-    }
-    if ((unsigned long long)st.st_size > limit) {
-        snprintf(why, whylen, "%s is %llu bytes, more than the limit of %zu", path, (unsigned long long)st.st_size, limit);
-        fclose(f);
-        return NULL;
-    }
-    size_t n = (size_t)st.st_size;
-    char *buf = malloc(n + 1);
-    if (!buf) {
-        snprintf(why, whylen, "out of memory reading %s", path);
-        fclose(f);
-        return NULL;
-    }
-    size_t got = fread(buf, 1, n, f);
-    if (got != n || ferror(f)) {
-        snprintf(why, whylen, "cannot read %s: %s", path, ferror(f) ? strerror(errno) : "file changed while reading");
-        free(buf);
-        fclose(f);
-        return NULL;
-    }
-    fclose(f);
-    buf[n] = 0;
-    *len = n;
-    return buf;
-}
-
-int gls_is_dir(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-int gls_is_file(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+    return NULL;
 }
 
 char *gls_load_source(const char *path, size_t limit, size_t *len, size_t *mapped, char *why, size_t whylen)
 {
     *mapped = 0;
-    int fd = open(path, O_RDONLY);
     struct stat st;
-    if (fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
-        (unsigned long long)st.st_size <= limit) {
+    gls_read_error e;
+    int fd = gls_file_open(path, GLS_READ_REGULAR, &st, &e);
+    if (fd >= 0 && st.st_size > 0 && (unsigned long long)st.st_size <= limit) {
         long page = sysconf(_SC_PAGESIZE);
         size_t n = (size_t)st.st_size;
         if (page > 0 && n % (size_t)page != 0) {

@@ -1,7 +1,9 @@
-/* Reading input files whole, with a size limit and a NUL sentinel. */
+/* Reading the compiler's input files whole, with a size limit and a NUL
+ * sentinel (base/readfile.h reads; this words the compiler's messages). */
 #ifndef GLS_FILEIO_H
 #define GLS_FILEIO_H
 #include <stddef.h>
+#include "readfile.h" /* and gls_is_dir, gls_is_file */
 
 #define GLS_MAX_INPUT_BYTES ((size_t)1 << 30)   /* 1 GiB per source or image */
 
@@ -14,6 +16,4 @@ char *gls_read_file(const char *path, size_t limit, size_t *len, char *why, size
  * buffer was malloc'd.  Saves copying large sources (bench-compile). */
 char *gls_load_source(const char *path, size_t limit, size_t *len, size_t *mapped, char *why, size_t whylen);
 void gls_release_file(const char *buf, size_t mapped);
-int gls_is_dir(const char *path);
-int gls_is_file(const char *path);
 #endif

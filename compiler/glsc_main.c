@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "atomic_write.h"
 #include "compile.h"
 #include "mkdirs.h"
 #include "stdout_check.h"

@@ -5,17 +5,19 @@
  * into the unit. */
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "linker.h"
 
-/* Append n elements of size elem from src to the array *arr of *count;
- * returns the index of the first, or GLS_NONE when out of memory. */
-static uint32_t append(void **arr, uint32_t *count, const void *src, uint32_t n, size_t elem)
+/* Append n elements of size elem from src to the array *arrp (a T **) of
+ * *count elements and capacity *cap; returns the index of the first, or
+ * GLS_NONE when out of memory. */
+static uint32_t append(void *arrp, uint32_t *count, size_t *cap, const void *src, uint32_t n, size_t elem)
 {
-    void *p = realloc(*arr, ((size_t)*count + n) * elem);
-    if (!p)
+    if (gls_grow(arrp, cap, (size_t)*count + n, elem))
         return GLS_NONE;
-    *arr = p;
-    memcpy((char *)p + (size_t)*count * elem, src, (size_t)n * elem);
+    char *arr;
+    memcpy(&arr, arrp, sizeof arr);
+    memcpy(arr + (size_t)*count * elem, src, (size_t)n * elem);
     uint32_t first = *count;
     *count += n;
     return first;
@@ -40,17 +42,17 @@ static int import_operand(gls_unit *u, const gls_bundle *b, gls_insn *in, uint32
         *v = gls_unit_add_ref(&u->texrefs, &u->ntexrefs, &u->texrefs_cap, nm, strlen(nm), loc);
         break;
     case GLS_KIND_FIRST_POS:
-        *v = append((void **)&u->pos, &u->npos, b->pos + *v, s.n, sizeof *u->pos);
+        *v = append(&u->pos, &u->npos, &u->pos_cap, b->pos + *v, s.n, sizeof *u->pos);
         break;
     case GLS_KIND_FIRST_COL:
         if (*v == GLS_NONE)
             return 0;
-        *v = append((void **)&u->col, &u->ncol, b->col + *v, s.n, sizeof *u->col);
+        *v = append(&u->col, &u->ncol, &u->col_cap, b->col + *v, s.n, sizeof *u->col);
         break;
     case GLS_KIND_FIRST_TC:
         if (*v == GLS_NONE)
             return 0;
-        *v = append((void **)&u->tc, &u->ntc, b->tc + *v, s.n, sizeof *u->tc);
+        *v = append(&u->tc, &u->ntc, &u->tc_cap, b->tc + *v, s.n, sizeof *u->tc);
         break;
     case GLS_KIND_NUM:
     case GLS_KIND_ANGLE:
@@ -94,9 +96,6 @@ gls_unit *gls_unit_from_lib(gls_compiler *c, const gls_bundle *b, uint32_t oi, g
         if (!o->src)
             u->lines[u->ninsn - 1].file = GLS_NONE;
     }
-    u->pos_cap = u->npos;
-    u->col_cap = u->ncol;
-    u->tc_cap = u->ntc;
     return u;
 oom:
     gls_unit_free(u);

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "sema.h"
 
 void sema_emit(gls_parse *ctx, gls_insn *in, unsigned line)
@@ -39,24 +40,6 @@ static int check_unit_range(gls_parse *ctx, const gls_val *a, unsigned n, const 
     return 0;
 }
 
-static int grow(void **arr, uint32_t *cap, uint32_t need, size_t elem)
-{
-    if (need <= *cap)
-        return 0;
-    uint32_t c = *cap ? *cap : 64;
-    while (c < need) {
-        if (c > UINT32_MAX / 2)
-            return -1;
-        c *= 2;
-    }
-    void *p = realloc(*arr, (size_t)c * elem);
-    if (!p)
-        return -1;
-    *arr = p;
-    *cap = c;
-    return 0;
-}
-
 static void h_vert(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     gls_unit *u = ctx->u;
@@ -73,9 +56,9 @@ static void h_vert(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         ctx->prim_kind = -1;
         return;
     }
-    if (grow((void **)&u->pos, &u->pos_cap, u->npos + 1, sizeof *u->pos) ||
-        (ctx->prim_has_col && grow((void **)&u->col, &u->col_cap, u->ncol + 1, sizeof *u->col)) ||
-        (ctx->prim_has_tc && grow((void **)&u->tc, &u->tc_cap, u->ntc + 1, sizeof *u->tc))) {
+    if (gls_grow(&u->pos, &u->pos_cap, (size_t)u->npos + 1, sizeof *u->pos) ||
+        (ctx->prim_has_col && gls_grow(&u->col, &u->col_cap, (size_t)u->ncol + 1, sizeof *u->col)) ||
+        (ctx->prim_has_tc && gls_grow(&u->tc, &u->tc_cap, (size_t)u->ntc + 1, sizeof *u->tc))) {
         ERR(ctx, name.line, name.col, "out of memory");
         ctx->stop = 1;
         return;
@@ -148,7 +131,7 @@ static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
  * Returns 0, or -1 after reporting an invalid name or running out of
  * memory. */
 static int emit_ref(gls_parse *ctx, gls_tok name, const gls_val *a, const char *what, gls_ref **arr, uint32_t *n,
-                    uint32_t *cap, gls_opcode op, unsigned arg)
+                    size_t *cap, gls_opcode op, unsigned arg)
 {
     if (!gls_valid_name(a->s + 1, a->len - 2)) {
         ERR(ctx, a->line, a->col, "%.*s is not a valid %s name (dotted identifiers, like \"road.vegetation.Birch\")",

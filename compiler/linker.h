@@ -24,7 +24,7 @@ typedef struct {
 struct gls_compiler {
     gls_diag diag;
     gls_root *roots;
-    size_t nroots;
+    size_t nroots, rootscap;
     gls_strmap units;        /* name -> gls_unit*; NULL-valued never stored */
     gls_strmap missing;      /* names already reported unknown -> (void*)1 */
     gls_strmap textures;     /* name -> tex_entry*                          */
@@ -33,7 +33,8 @@ struct gls_compiler {
     tex_entry **alltex;
     size_t nalltex, alltexcap;
     char **sources;
-    uint32_t nsources, sourcescap;
+    uint32_t nsources;
+    size_t sourcescap;
     gls_unit **stack;        /* DFS path, for cycle messages                */
     size_t depth, stackcap;
     const char *top_name;    /* the top object's name while it is loaded    */

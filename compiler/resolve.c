@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "fileio.h"
 #include "linker.h"
 
@@ -18,14 +19,8 @@ uint32_t gls_add_source(gls_compiler *c, const char *path)
     for (uint32_t i = 0; i < c->nsources; i++)
         if (strcmp(c->sources[i], path) == 0)
             return i;
-    if (c->nsources >= c->sourcescap) {
-        uint32_t nc = c->sourcescap ? c->sourcescap * 2 : 16;
-        char **s = realloc(c->sources, nc * sizeof *s);
-        if (!s)
-            return GLS_NONE;
-        c->sources = s;
-        c->sourcescap = nc;
-    }
+    if (gls_grow(&c->sources, &c->sourcescap, (size_t)c->nsources + 1, sizeof *c->sources))
+        return GLS_NONE;
     if (!(c->sources[c->nsources] = strdup(path)))
         return GLS_NONE;
     return c->nsources++;

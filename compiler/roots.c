@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "buf.h"
 #include "fileio.h"
 #include "linker.h"
 
@@ -66,13 +67,11 @@ int gls_compiler_add_root(gls_compiler *c, const char *path)
             return -1;
         }
     }
-    void *p = realloc(c->roots, (c->nroots + 1) * sizeof *c->roots);
-    if (!p) {
+    if (gls_grow(&c->roots, &c->rootscap, c->nroots + 1, sizeof *c->roots)) {
         free(r.path);
         gls_bundle_free(r.lib);
         return -1;
     }
-    c->roots = p;
     c->roots[c->nroots++] = r;
     return 0;
 }
@@ -135,12 +134,10 @@ void gls_default_root(gls_compiler *c)
 int gls_add_root_first(gls_compiler *c, const char *dir)
 {
     gls_root r = {gls_normalise_path(dir), NULL};
-    gls_root *nr = r.path ? realloc(c->roots, (c->nroots + 1) * sizeof *nr) : NULL;
-    if (!nr) {
+    if (!r.path || gls_grow(&c->roots, &c->rootscap, c->nroots + 1, sizeof *c->roots)) {
         free(r.path);
         return -1;
     }
-    c->roots = nr;
     memmove(c->roots + 1, c->roots, c->nroots * sizeof *c->roots);
     c->roots[0] = r;
     c->nroots++;

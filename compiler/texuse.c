@@ -2,6 +2,7 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "texuse.h"
 
 void gls_texuse_init(gls_texuse *t, int top)
@@ -14,19 +15,11 @@ void gls_texuse_init(gls_texuse *t, int top)
 
 int gls_texuse_select(gls_texuse *t, gls_loc loc, const char *name, size_t n)
 {
-    if (t->nsel == t->cap) {
-        size_t c = t->cap ? t->cap * 2 : 8;
-        gls_texsel *s = realloc(t->sel, c * sizeof *s);
-        if (!s)
-            return -1;
-        t->sel = s;
-        t->cap = c;
-    }
-    char *copy = malloc(n + 1);
+    if (gls_grow(&t->sel, &t->cap, t->nsel + 1, sizeof *t->sel))
+        return -1;
+    char *copy = strndup(name, n); /* a valid name: no NUL inside */
     if (!copy)
         return -1;
-    memcpy(copy, name, n);
-    copy[n] = 0;
     t->sel[t->nsel] = (gls_texsel){loc, copy, UINT_MAX, 0};
     t->cur.sel = (long)t->nsel++;
     return 0;

@@ -2,6 +2,7 @@
  * tokens to the lemon parser for one .scene file. */
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "fileio.h"
 #include "grammar.h"
 #include "parse.h"
@@ -29,14 +30,8 @@ void gls_unit_free(gls_unit *u)
 
 int gls_unit_emit(gls_unit *u, const gls_insn *in, uint32_t line)
 {
-    if (u->ninsn >= u->lines_cap) {
-        size_t cap = u->lines_cap ? u->lines_cap * 2 : 64;
-        gls_srcloc *l = realloc(u->lines, cap * sizeof *l);
-        if (!l)
-            return -1;
-        u->lines = l;
-        u->lines_cap = cap;
-    }
+    if (gls_grow(&u->lines, &u->lines_cap, (size_t)u->ninsn + 1, sizeof *u->lines))
+        return -1;
     if (gls_insn_encode(&u->code, in))
         return -1;
     u->lines[u->ninsn].file = u->src_file;
@@ -45,21 +40,13 @@ int gls_unit_emit(gls_unit *u, const gls_insn *in, uint32_t line)
     return 0;
 }
 
-uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, uint32_t *cap, const char *name, size_t len, gls_loc loc)
+uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, size_t *cap, const char *name, size_t len, gls_loc loc)
 {
-    if (*n >= *cap) {
-        uint32_t c = *cap ? *cap * 2 : 8;
-        gls_ref *r = realloc(*arr, c * sizeof *r);
-        if (!r)
-            return GLS_NONE;
-        *arr = r;
-        *cap = c;
-    }
-    char *s = malloc(len + 1);
+    if (gls_grow(arr, cap, (size_t)*n + 1, sizeof **arr))
+        return GLS_NONE;
+    char *s = strndup(name, len); /* a valid name: no NUL inside */
     if (!s)
         return GLS_NONE;
-    memcpy(s, name, len);
-    s[len] = 0;
     (*arr)[*n].name = s;
     (*arr)[*n].loc = loc;
     return (*n)++;

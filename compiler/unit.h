@@ -29,12 +29,14 @@ typedef struct gls_unit {
     gls_srcloc *lines;       /* per instruction                           */
     size_t lines_cap;
     gls_ref *refs;           /* call targets, in CALL operand order        */
-    uint32_t nrefs, refs_cap;
+    uint32_t nrefs;
+    size_t refs_cap;
     gls_ref *texrefs;        /* textures named by texture("...")          */
-    uint32_t ntexrefs, texrefs_cap;
-    gls_vec4 *pos; uint32_t npos, pos_cap;
-    gls_rgba *col; uint32_t ncol, col_cap;
-    gls_st *tc;    uint32_t ntc, tc_cap;
+    uint32_t ntexrefs;
+    size_t texrefs_cap;
+    gls_vec4 *pos; uint32_t npos; size_t pos_cap;
+    gls_rgba *col; uint32_t ncol; size_t col_cap;
+    gls_st *tc;    uint32_t ntc;  size_t tc_cap;
     int is_top;              /* compiled as the top object: its initial
                                 texture mode is known to be color          */
     /* linker state */
@@ -48,7 +50,7 @@ void gls_unit_free(gls_unit *u);
 /* Append instruction in (with local operands) and its source line. */
 int gls_unit_emit(gls_unit *u, const gls_insn *in, uint32_t line);
 /* Add a reference (call or texture); returns its index or GLS_NONE. */
-uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, uint32_t *cap, const char *name, size_t len, gls_loc loc);
+uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, size_t *cap, const char *name, size_t len, gls_loc loc);
 
 /* Parse and compile one .scene source into u (u->name and u->src set by
  * the caller).  Errors go to d.  Returns 0 if no error was reported. */

@@ -12,6 +12,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "buf.h"
 #include "opcodes.h"
 
 #define GLS_FORMAT_VERSION 1u
@@ -130,14 +131,8 @@ int gls_insn_vertices(const gls_insn *in, gls_vertex_span *v);
  * truncated operands).  Checks nothing else: use on validated code. */
 int gls_insn_decode(const uint8_t *code, size_t len, size_t *pos, gls_insn *out);
 
-/* Append the encoding of in to a growing buffer.  Returns 0, or -1 on
- * allocation failure. */
-typedef struct {
-    uint8_t *data;
-    size_t len, cap;
-} gls_buf;
-int gls_buf_put(gls_buf *b, const void *p, size_t n);
-int gls_buf_reserve(gls_buf *b, size_t extra); /* room for extra more bytes */
+/* Append the encoding of in to a growing buffer (base/buf.h).  Returns 0,
+ * or -1 on allocation failure. */
 int gls_insn_encode(gls_buf *b, const gls_insn *in);
 
 /* Error reporting for read/validate: one message, the first failure. */
@@ -178,16 +173,5 @@ void gls_bundle_free(gls_bundle *b);
 /* Is s[0..n) a valid dotted name: identifiers ([A-Za-z_][A-Za-z0-9_]*)
  * joined by single dots, at most GLS_MAX_NAME_BYTES long? */
 int gls_valid_name(const char *s, size_t n);
-
-/* Write bytes to path atomically: a temporary file in the same directory,
- * fsync'd, then renamed over path.  On failure nothing is left behind.  An
- * existing path that is not a regular file (a directory, FIFO, device or
- * socket) is refused and never opened.  Returns 0, or -1 with errno set
- * (EEXIST for such a file). */
-int gls_write_file_atomic(const char *path, const void *data, size_t len);
-/* The reason for "cannot write PATH: REASON" after gls_write_file_atomic
- * failed with errno err: what the special file is ("it is a FIFO (named
- * pipe), not a regular file"), or strerror(err). */
-const char *gls_write_error(const char *path, int err);
 
 #endif

@@ -16,6 +16,7 @@
 #include "layout.h"
 #include "le.h"
 #include "planes.h"
+#include "readfile.h"
 
 #define FAIL(...) do { gls_fail(err, __LINE__, __VA_ARGS__); goto fail; } while (0)
 
@@ -67,12 +68,7 @@ static char *get_str(cursor *c)
         c->bad = 1;
         return NULL;
     }
-    char *s = malloc(n + 1);
-    if (!s)
-        return NULL;
-    memcpy(s, q, n);
-    s[n] = 0;
-    return s;
+    return strndup((const char *)q, n);
 }
 
 /* count items of at least min_bytes each must fit in what is left */
@@ -382,25 +378,6 @@ fail:
     return NULL;
 }
 
-/* All of n bytes from fd at its current offset: 0, or -1 (errno set; 0
- * for a file that ended early). */
-static int read_full(int fd, uint8_t *p, size_t n)
-{
-    while (n) {
-        ssize_t r = read(fd, p, n > (1u << 30) ? (1u << 30) : n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r <= 0) {
-            if (r == 0)
-                errno = 0;
-            return -1;
-        }
-        p += r;
-        n -= (size_t)r;
-    }
-    return 0;
-}
-
 static const char *file_kind(mode_t m)
 {
     return S_ISFIFO(m) ? "a FIFO" : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
@@ -411,24 +388,20 @@ gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
 {
     /* O_NONBLOCK: opening a FIFO must not wait for a writer; only regular
      * files are read, and for those the flag changes nothing. */
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) {
-        gls_fail(err, __LINE__, "%s: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    uint8_t *data = NULL;
     struct stat st;
-    if (fstat(fd, &st) != 0) {
-        gls_fail(err, __LINE__, "%s: cannot read: %s", path, strerror(errno));
-        goto fail;
-    }
-    if (S_ISDIR(st.st_mode)) {
-        gls_fail(err, __LINE__, "%s: is a directory, not a bundle", path);
-        goto fail;
-    }
-    if (!S_ISREG(st.st_mode)) {
-        gls_fail(err, __LINE__, "%s: is %s, not a regular file: a bundle is read from a file", path,
-                 file_kind(st.st_mode));
+    gls_read_error e;
+    int fd = gls_file_open(path, GLS_READ_REGULAR | GLS_READ_NONBLOCK, &st, &e);
+    uint8_t *data = NULL;
+    if (fd < 0) {
+        if (e.status == GLS_READ_OPEN)
+            gls_fail(err, __LINE__, "%s: cannot open: %s", path, strerror(e.err));
+        else if (e.status == GLS_READ_STAT)
+            gls_fail(err, __LINE__, "%s: cannot read: %s", path, strerror(e.err));
+        else if (e.status == GLS_READ_DIR)
+            gls_fail(err, __LINE__, "%s: is a directory, not a bundle", path);
+        else
+            gls_fail(err, __LINE__, "%s: is %s, not a regular file: a bundle is read from a file", path,
+                     file_kind(e.mode));
         goto fail;
     }
     /* The header first: magic, version and declared size against the
@@ -436,7 +409,7 @@ gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
     uint64_t len = (uint64_t)st.st_size;
     uint8_t head[GLS_HEADER_SIZE];
     size_t nh = len < sizeof head ? (size_t)len : sizeof head;
-    if (read_full(fd, head, nh)) {
+    if (gls_read_full(fd, head, nh)) {
         gls_fail(err, __LINE__, "%s: cannot read: %s", path, errno ? strerror(errno) : "the file shrank while reading");
         goto fail;
     }
@@ -448,7 +421,7 @@ gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
         goto fail;
     }
     memcpy(data, head, nh);
-    if (read_full(fd, data + nh, (size_t)len - nh)) {
+    if (gls_read_full(fd, data + nh, (size_t)len - nh)) {
         gls_fail(err, __LINE__, "%s: cannot read: %s", path, errno ? strerror(errno) : "the file shrank while reading");
         goto fail;
     }

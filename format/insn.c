@@ -5,36 +5,6 @@
 #include "bundle.h"
 #include "le.h"
 
-int gls_buf_reserve(gls_buf *b, size_t n)
-{
-    if (n > SIZE_MAX - b->len)
-        return -1;
-    if (b->len + n > b->cap) {
-        size_t cap = b->cap ? b->cap : 256;
-        while (cap < b->len + n) {
-            if (cap > SIZE_MAX / 2)
-                return -1;
-            cap *= 2;
-        }
-        uint8_t *d = realloc(b->data, cap);
-        if (!d)
-            return -1;
-        b->data = d;
-        b->cap = cap;
-    }
-    return 0;
-}
-
-int gls_buf_put(gls_buf *b, const void *p, size_t n)
-{
-    if (gls_buf_reserve(b, n))
-        return -1;
-    if (n)
-        memcpy(b->data + b->len, p, n);
-    b->len += n;
-    return 0;
-}
-
 int gls_insn_encode(gls_buf *b, const gls_insn *in)
 {
     uint8_t tmp[1 + GLS_MAX_OPERANDS * 8];

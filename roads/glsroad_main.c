@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "bundle.h"
+#include "atomic_write.h"
 #include "road.h"
 #include "camera.h"
 #include "mkdirs.h"

@@ -1,9 +1,11 @@
 /* Clamped NURBS curves: evaluation (Piegl & Tiller) and arc length.
  * See nurbs.h. */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "nurbs.h"
 
 const char *nurbs_check(int p, int npts, const double *w, int nknots, const double *U)
@@ -273,16 +275,17 @@ typedef struct {
 static int tab_push(table *t, double u, double s)
 {
     if (t->n == t->cap) {
-        int cap = t->cap ? 2 * t->cap : 256;
-        double *nu = realloc(t->u, sizeof(double) * cap), *ns;
+        /* two arrays of one capacity */
+        size_t cap = gls_grow_cap((size_t)t->cap, (size_t)t->n + 1, sizeof(double));
+        double *nu = cap && cap <= INT_MAX ? gls_resize(t->u, cap, sizeof(double)) : NULL, *ns;
         if (!nu)
             return -1;
         t->u = nu;
-        ns = realloc(t->s, sizeof(double) * cap);
+        ns = gls_resize(t->s, cap, sizeof(double));
         if (!ns)
             return -1;
         t->s = ns;
-        t->cap = cap;
+        t->cap = (int)cap;
     }
     t->u[t->n] = u;
     t->s[t->n] = s;

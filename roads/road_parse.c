@@ -3,11 +3,14 @@
  * the offending line and a caret under the column. */
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
+#include "numfmt.h"
 #include "road.h"
 #include "srcline.h"
 #include "suggest.h"
@@ -40,21 +43,18 @@ static int fail(pctx *c, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(c->err, c->errlen, "%s:%d:%d: error: %s", c->file, c->line, c->col > 0 ? c->col : 1, msg);
-    gls_append_source_line(c->err, c->errlen, c->text, c->len, (unsigned)c->line, (unsigned)(c->col > 0 ? c->col : 1));
+    gls_text_error(c->err, c->errlen, c->text, c->len, c->file, (unsigned)c->line, (unsigned)(c->col > 0 ? c->col : 1),
+                   "%s", msg);
     return -1;
 }
 
 static int num(pctx *c, const char *tok, const char *what, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(tok, &end);
-    if (end == tok || *end || !isfinite(v)) { /* underflow to 0 is harmless */
+    const char *why = gls_parse_finite(tok, out); /* underflow to 0 is harmless */
+    if (why) {
         at(c, tok);
-        return fail(c, "%s: '%s' is not a finite number", what, tok);
+        return fail(c, "%s: '%s' %s", what, tok, why);
     }
-    *out = v;
     return 0;
 }
 
@@ -89,16 +89,10 @@ static int whole(pctx *c, const char *tok, const char *what, long lo, long hi, l
 
 static int grow(void **p, int *cap, int need, size_t elem)
 {
-    if (need <= *cap)
-        return 0;
-    int nc = *cap ? *cap * 2 : 16;
-    while (nc < need)
-        nc *= 2;
-    void *q = realloc(*p, elem * nc);
-    if (!q)
+    size_t c = (size_t)*cap;
+    if (gls_grow(p, &c, (size_t)need, elem) || c > INT_MAX)
         return -1;
-    *p = q;
-    *cap = nc;
+    *cap = (int)c;
     return 0;
 }
 
@@ -490,11 +484,10 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
     pctx c = {fname, 0, err, errlen, text, len, NULL, 1};
     int seen_degree = 0;
     gls_text_lines it = {text, len, 0, 0};
-    const char *start;
     size_t n;
     int got;
     char line[GLS_TEXT_MAX_LINE + 1];
-    while ((got = gls_text_next_line(&it, &start, &n)) != 0) {
+    while ((got = gls_text_next_line(&it, line, &n)) != 0) {
         c.line = (int)it.line;
         c.col = 1;
         c.linebuf = NULL;
@@ -503,23 +496,15 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
             fail(&c, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
             goto bad;
         }
-        memcpy(line, start, n);
-        line[n] = 0;
         if (memchr(line, 0, n)) {
             fail(&c, "NUL byte in the description");
             goto bad;
         }
-        char *hash = strchr(line, '#');
-        if (hash)
-            *hash = 0;
-        char *tok[MAXTOK];
-        int ntok = 0;
-        for (char *p = strtok(line, " \t\r\f\v"); p; p = strtok(NULL, " \t\r\f\v")) {
-            if (ntok == MAXTOK) {
-                fail(&c, "more than %d words on one line", MAXTOK);
-                goto bad;
-            }
-            tok[ntok++] = p;
+        char *tok[MAXTOK + 1];
+        int ntok = gls_text_split(line, "#", " \t\r\f\v", tok, MAXTOK + 1);
+        if (ntok > MAXTOK) {
+            fail(&c, "more than %d words on one line", MAXTOK);
+            goto bad;
         }
         if (ntok == 0)
             continue;

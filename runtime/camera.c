@@ -14,26 +14,12 @@
 #include "srcline.h"
 #include "suggest.h"
 #include "textfile.h"
+#include "vec.h"
 
 enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE, K_COUNT };
 static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
                                               "skew", "R", "T", "near", "far", "pose"};
 static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1}; /* pose: a word */
-
-/* "FILE:LINE:COL: error: message", then the source line and a caret under
- * the column (as the scene compiler reports), into err. */
-static void errf(char *err, size_t errlen, const char *text, size_t len, const char *fname, unsigned line,
-                 unsigned col, const char *fmt, ...)
-{
-    int k = snprintf(err, errlen, "%s:%u:%u: error: ", fname, line, col);
-    if (k < 0 || (size_t)k >= errlen)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err + k, errlen - (size_t)k, fmt, ap);
-    va_end(ap);
-    gls_append_source_line(err, errlen, text, len, line, col);
-}
 
 static const char *suggest(const char *word)
 {
@@ -71,34 +57,26 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     unsigned vcol[K_COUNT] = {0}; /* column of its first value              */
     unsigned last = 0;            /* last line holding a key               */
     gls_text_lines it = {text, len, 0, 0};
-    const char *start;
     size_t n;
     int got;
     char buf[GLS_TEXT_MAX_LINE + 1];
-    while ((got = gls_text_next_line(&it, &start, &n)) != 0) {
+    while ((got = gls_text_next_line(&it, buf, &n)) != 0) {
         unsigned line = it.line;
         if (got < 0) {
-            errf(err, errlen, text, len, fname, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes",
+            gls_text_error(err, errlen, text, len, fname, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes",
                  GLS_TEXT_MAX_LINE);
             return -1;
         }
-        memcpy(buf, start, n);
-        buf[n] = 0;
-        for (size_t i = 0; i < n; i++)
-            if (buf[i] == '#' || buf[i] == '\r')
-                buf[i] = 0;
-            else if (buf[i] == 0) {
-                errf(err, errlen, text, len, fname, line, (unsigned)i + 1, "NUL byte in camera file (is it a text file?)");
-                return -1;
-            }
-#define COL(t) ((unsigned)((t) - buf) + 1)
-        char *tok[MAX_TOKENS + 1];
-        int nt = 0;
-        for (char *s = strtok(buf, " \t\f\v"); s; s = strtok(NULL, " \t\f\v")) {
-            if (nt == MAX_TOKENS + 1)
-                break;
-            tok[nt++] = s;
+        const char *nul = memchr(buf, 0, n);
+        if (nul) {
+            gls_text_error(err, errlen, text, len, fname, line, (unsigned)(nul - buf) + 1,
+                           "NUL byte in camera file (is it a text file?)");
+            return -1;
         }
+#define COL(t) ((unsigned)((t) - buf) + 1)
+        /* a '#' or a CR ends the line */
+        char *tok[MAX_TOKENS + 1];
+        int nt = gls_text_split(buf, "#\r", " \t\f\v", tok, MAX_TOKENS + 1);
         if (nt == 0)
             continue;
         int k;
@@ -108,27 +86,27 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         if (k == K_COUNT) {
             const char *s = suggest(tok[0]);
             if (s)
-                errf(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
+                gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
             else
-                errf(err, errlen, text, len, fname, line, COL(tok[0]),
+                gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
                      "unknown key '%s' (keys: width height fx fy cx cy skew R T near far pose)", tok[0]);
             return -1;
         }
         if (seen[k]) {
-            errf(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' given twice (first on line %u)", key_name[k],
+            gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' given twice (first on line %u)", key_name[k],
                  seen[k]);
             return -1;
         }
         if (k == K_POSE) {
             if (nt != 2) {
-                errf(err, errlen, text, len, fname, line, COL(tok[0]), "key 'pose' takes one word, world or rig, got %s%d",
+                gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "key 'pose' takes one word, world or rig, got %s%d",
                      nt > MAX_TOKENS ? "more than " : "", nt - 1);
                 return -1;
             }
             pose = strcmp(tok[1], "world") == 0 ? GLS_POSE_WORLD : strcmp(tok[1], "rig") == 0 ? GLS_POSE_RIG
                                                                                             : GLS_POSE_UNDECLARED;
             if (!pose) {
-                errf(err, errlen, text, len, fname, line, COL(tok[1]),
+                gls_text_error(err, errlen, text, len, fname, line, COL(tok[1]),
                      "key 'pose': '%s' is neither world (R and T map the world into the camera) nor rig (they map the "
                      "rig, with a trajectory)", tok[1]);
                 return -1;
@@ -142,21 +120,21 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         for (int j = 1; j < nt; j++) {
             char *comma = strchr(tok[j], ',');
             if (comma) {
-                errf(err, errlen, text, len, fname, line, COL(comma),
+                gls_text_error(err, errlen, text, len, fname, line, COL(comma),
                      "key '%s': a comma in '%s': separate numbers with spaces and write decimals with '.'", key_name[k],
                      tok[j]);
                 return -1;
             }
         }
         if (nt - 1 != key_arity[k]) {
-            errf(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' takes %d number%s, got %s%d", key_name[k],
+            gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' takes %d number%s, got %s%d", key_name[k],
                  key_arity[k], key_arity[k] == 1 ? "" : "s", nt > MAX_TOKENS ? "more than " : "", nt - 1);
             return -1;
         }
         for (int j = 0; j < key_arity[k]; j++) {
             const char *why = gls_parse_double(tok[1 + j], &val[k][j]);
             if (why) {
-                errf(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' %s", key_name[k],
+                gls_text_error(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' %s", key_name[k],
                      tok[1 + j], why);
                 return -1;
             }
@@ -168,7 +146,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     }
     for (int k = 0; k < K_COUNT; k++)
         if (!seen[k] && k != K_SKEW && k != K_POSE) {
-            errf(err, errlen, text, len, fname, last ? last : 1, 1,
+            gls_text_error(err, errlen, text, len, fname, last ? last : 1, 1,
                  "missing key '%s' (required: width height fx fy cx cy R T near far)", key_name[k]);
             return -1;
         }
@@ -178,28 +156,28 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         if (v != floor(v) || v < 1 || v > GLS_CAMERA_MAX_DIM) {
             char num[40];
             gls_fmt_double(num, sizeof num, v);
-            errf(err, errlen, text, len, fname, seen[dims[i]], vcol[dims[i]], "%s %s must be a whole number in 1..%u",
+            gls_text_error(err, errlen, text, len, fname, seen[dims[i]], vcol[dims[i]], "%s %s must be a whole number in 1..%u",
                  key_name[dims[i]], num, GLS_CAMERA_MAX_DIM);
             return -1;
         }
     }
     if (!(val[K_FX][0] > 0)) {
-        errf(err, errlen, text, len, fname, seen[K_FX], vcol[K_FX], "fx must be > 0 (focal length in pixels)");
+        gls_text_error(err, errlen, text, len, fname, seen[K_FX], vcol[K_FX], "fx must be > 0 (focal length in pixels)");
         return -1;
     }
     if (!(val[K_FY][0] > 0)) {
-        errf(err, errlen, text, len, fname, seen[K_FY], vcol[K_FY], "fy must be > 0 (focal length in pixels)");
+        gls_text_error(err, errlen, text, len, fname, seen[K_FY], vcol[K_FY], "fy must be > 0 (focal length in pixels)");
         return -1;
     }
     if (!(val[K_NEAR][0] > 0)) {
-        errf(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR], "near must be > 0");
+        gls_text_error(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR], "near must be > 0");
         return -1;
     }
     if (!(val[K_FAR][0] > val[K_NEAR][0])) {
         char f[40], n[40];
         gls_fmt_double(f, sizeof f, val[K_FAR][0]);
         gls_fmt_double(n, sizeof n, val[K_NEAR][0]);
-        errf(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "far (%s) must be greater than near (%s)", f, n);
+        gls_text_error(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "far (%s) must be greater than near (%s)", f, n);
         return -1;
     }
     double nmin, nmax;
@@ -209,7 +187,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         gls_fmt_double(f, sizeof f, val[K_FAR][0]);
         int small = val[K_NEAR][0] < nmin;
         fmt_limit(lim, sizeof lim, small ? nmin : nmax, small ? 1 : -1);
-        errf(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR],
+        gls_text_error(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR],
              "near %s is too %s for far %s: the float depth buffer would lose precision; near must be %s %s "
              "(spec/camera.md, Depth range)",
              n, small ? "small" : "large", f, small ? "at least" : "at most", lim);
@@ -218,7 +196,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     /* the same file must not give different images: a declared frame is
        checked against the use */
     if (pose && use && pose != use) {
-        errf(err, errlen, text, len, fname, seen[K_POSE], vcol[K_POSE],
+        gls_text_error(err, errlen, text, len, fname, seen[K_POSE], vcol[K_POSE],
              pose == GLS_POSE_WORLD
                  ? "'pose world': R and T are declared the camera's pose in the world, but they are used relative to "
                    "the rig here (with a trajectory); use a camera file declared 'pose rig'"
@@ -229,7 +207,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     char why[300];
     int rot = gls_rotation_check(val[K_R], why, sizeof why);
     if (rot < 0) {
-        errf(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
+        gls_text_error(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
         return -1;
     }
     /* notes only for a file that is accepted */
@@ -285,13 +263,15 @@ void gls_camera_projection(const gls_camera *c, double du, double dv, double P[1
 void gls_camera_modelview(const gls_camera *c, const double a[3], double MV[16])
 {
     const double *R = c->R;
+    /* R*a + T: the large parts cancel here, in double */
+    rv3 r = rm_apply(R, rv(a[0], a[1], a[2]));
+    const double Ra[3] = {r.x, r.y, r.z};
     memset(MV, 0, 16 * sizeof *MV);
     for (int i = 0; i < 3; i++) {
         double s = i == 0 ? 1.0 : -1.0; /* the flip diag(1, -1, -1) */
         for (int j = 0; j < 3; j++)
             MV[4 * i + j] = s * R[3 * i + j];
-        /* R*a + T: the large parts cancel here, in double */
-        MV[4 * i + 3] = s * (R[3 * i] * a[0] + R[3 * i + 1] * a[1] + R[3 * i + 2] * a[2] + c->T[i]);
+        MV[4 * i + 3] = s * (Ra[i] + c->T[i]);
     }
     MV[15] = 1;
 }
@@ -315,15 +295,14 @@ void gls_camera_unproject(const gls_camera *c, double u, double v, double Zc, do
 
 void gls_camera_to_world(const gls_camera *c, const double Pc[3], double P[3])
 {
-    double d[3] = {Pc[0] - c->T[0], Pc[1] - c->T[1], Pc[2] - c->T[2]};
-    for (int j = 0; j < 3; j++)
-        P[j] = c->R[j] * d[0] + c->R[3 + j] * d[1] + c->R[6 + j] * d[2];
+    rv3 p = rm_apply_t(c->R, rv(Pc[0] - c->T[0], Pc[1] - c->T[1], Pc[2] - c->T[2]));
+    P[0] = p.x, P[1] = p.y, P[2] = p.z;
 }
 
 void gls_camera_to_cam(const gls_camera *c, const double P[3], double Pc[3])
 {
-    for (int i = 0; i < 3; i++)
-        Pc[i] = c->R[3 * i] * P[0] + c->R[3 * i + 1] * P[1] + c->R[3 * i + 2] * P[2] + c->T[i];
+    rv3 p = rm_apply(c->R, rv(P[0], P[1], P[2]));
+    Pc[0] = p.x + c->T[0], Pc[1] = p.y + c->T[1], Pc[2] = p.z + c->T[2];
 }
 
 double gls_camera_project(const gls_camera *c, const double P[3], double *u, double *v)

@@ -1,9 +1,10 @@
 /* Completion records of the player's outputs (frame_record.h). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "frame_record.h"
 #include "numfmt.h"
+#include "readfile.h"
 
 int gls_frame_record_path(char *buf, size_t len, const char *outdir, const char *name, uint32_t frame)
 {
@@ -50,15 +51,10 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
 
 int gls_frame_record_matches(const char *path, const char *text)
 {
-    size_t n = strlen(text);
-    struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size != n)
-        return 0;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return 0;
-    char buf[4096];
-    int same = n <= sizeof buf && fread(buf, 1, n, f) == n && memcmp(buf, text, n) == 0;
-    fclose(f);
+    size_t n = strlen(text), len;
+    gls_read_error e;
+    char *got = gls_file_read(path, n, GLS_READ_REGULAR, &len, &e);
+    int same = got && len == n && memcmp(got, text, n) == 0;
+    free(got);
     return same;
 }

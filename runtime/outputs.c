@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "le.h"
 #include "outputs.h"
 #include <spng.h>
 #include <stb/stb_image_write.h>
@@ -72,50 +73,33 @@ out:
     return rc;
 }
 
-static void put_f32le(uint8_t *p, float f)
+/* PFM, channels 1 ("Pf") or 3 ("PF"), float32 little-endian (scale
+ * -1.0), rows bottom to top as the format (Middlebury) requires; v is top
+ * row first. */
+static int encode_pfm(const float *v, uint32_t w, uint32_t h, unsigned channels, gls_buf *out)
 {
-    uint32_t u;
-    memcpy(&u, &f, 4);
-    for (int i = 0; i < 4; i++)
-        p[i] = (uint8_t)(u >> (8 * i));
-}
-
-static void put_f64le(uint8_t *p, double f)
-{
-    uint64_t u;
-    memcpy(&u, &f, 8);
-    for (int i = 0; i < 8; i++)
-        p[i] = (uint8_t)(u >> (8 * i));
+    char hdr[64];
+    int k = snprintf(hdr, sizeof hdr, "P%c\n%u %u\n-1.0\n", channels == 3 ? 'F' : 'f', w, h);
+    size_t row_values = (size_t)w * channels;
+    if (gls_buf_put(out, hdr, (size_t)k) || gls_buf_reserve(out, row_values * h * 4))
+        return -1;
+    for (uint32_t r = h; r-- > 0;) {
+        const float *row = v + (size_t)r * row_values;
+        for (size_t x = 0; x < row_values; x++)
+            gls_le_put_f32(out->data + out->len + 4 * x, row[x]);
+        out->len += row_values * 4;
+    }
+    return 0;
 }
 
 int gls_encode_pfm(const float *z, uint32_t w, uint32_t h, gls_buf *out)
 {
-    char hdr[64];
-    int k = snprintf(hdr, sizeof hdr, "Pf\n%u %u\n-1.0\n", w, h);
-    if (gls_buf_put(out, hdr, (size_t)k) || gls_buf_reserve(out, (size_t)w * h * 4))
-        return -1;
-    for (uint32_t r = h; r-- > 0;) {
-        const float *row = z + (size_t)r * w;
-        for (uint32_t x = 0; x < w; x++)
-            put_f32le(out->data + out->len + 4 * (size_t)x, row[x]);
-        out->len += (size_t)w * 4;
-    }
-    return 0;
+    return encode_pfm(z, w, h, 1, out);
 }
 
 int gls_encode_pfm_rgb(const float *rgb, uint32_t w, uint32_t h, gls_buf *out)
 {
-    char hdr[64];
-    int k = snprintf(hdr, sizeof hdr, "PF\n%u %u\n-1.0\n", w, h);
-    if (gls_buf_put(out, hdr, (size_t)k) || gls_buf_reserve(out, (size_t)w * h * 12))
-        return -1;
-    for (uint32_t r = h; r-- > 0;) {
-        const float *row = rgb + (size_t)r * w * 3;
-        for (size_t x = 0; x < (size_t)w * 3; x++)
-            put_f32le(out->data + out->len + 4 * x, row[x]);
-        out->len += (size_t)w * 12;
-    }
-    return 0;
+    return encode_pfm(rgb, w, h, 3, out);
 }
 
 int gls_encode_ply(const gls_camera *c, const float *z, const uint8_t *rgba, gls_buf *out, uint64_t *npoints)
@@ -144,7 +128,7 @@ int gls_encode_ply(const gls_camera *c, const float *z, const uint8_t *rgba, gls
             gls_camera_to_world(c, Pc, P);
             uint8_t *p = out->data + out->len;
             for (int j = 0; j < 3; j++)
-                put_f64le(p + 8 * j, P[j]);
+                gls_le_put_f64(p + 8 * j, P[j]);
             memcpy(p + 24, rgba + 4 * i, 3);
             out->len += 27;
         }

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "aa_render.h"
+#include "atomic_write.h"
 #include "frame_record.h"
 #include "glctx.h"
 #include "mkdirs.h"

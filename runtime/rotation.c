@@ -3,21 +3,16 @@
 #include <stdio.h>
 #include <string.h>
 #include "rotation.h"
+#include "vec.h"
 
 #define STR_(x) #x
 #define STR(x) STR_(x) /* "1e-4": the limits as they are written */
-
-static double det3(const double R[9])
-{
-    return R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
-           R[2] * (R[3] * R[7] - R[4] * R[6]);
-}
 
 int gls_rotation_polar(const double R[9], double Q[9])
 {
     memcpy(Q, R, 9 * sizeof *Q);
     for (int it = 0; it < 32; it++) {
-        double d = det3(Q);
+        double d = rm_det(Q);
         if (!(fabs(d) > 1e-12))
             return -1;
         /* Q^-T = cofactor(Q) / det Q */
@@ -38,10 +33,13 @@ int gls_rotation_polar(const double R[9], double Q[9])
 
 int gls_rotation_check(double R[9], char *why, size_t whylen)
 {
+    double Rt[9], RRt[9];
+    rm_transpose(R, Rt);
+    rm_mul(R, Rt, RRt);
     double worst = 0; /* largest |R R^T - I| entry */
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
-            double s = R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2];
+            double s = RRt[3 * i + j];
             double e = fabs(s - (i == j));
             if (!(e <= GLS_ROT_TOL)) {
                 snprintf(why, whylen, "R is not orthonormal: (R R^T)[%d][%d] = %.9g, must be %d within %s", i, j, s,
@@ -50,7 +48,7 @@ int gls_rotation_check(double R[9], char *why, size_t whylen)
             }
             worst = fmax(worst, e);
         }
-    double det = det3(R);
+    double det = rm_det(R);
     if (!(det > 0)) {
         snprintf(why, whylen, "R has determinant %.9g; a rotation needs +1 (a reflection swaps handedness)", det);
         return -1;

@@ -11,7 +11,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "buf.h"
 #include "scene.h"
+#include "vec.h"
 
 typedef struct {
     double M[16];
@@ -40,15 +42,6 @@ typedef struct {
     uint64_t dropped;
     int oom;
 } walker;
-
-static void mat_mul(double A[16], const double B[16])
-{
-    double r[16];
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++)
-            r[4 * i + j] = A[4 * i] * B[j] + A[4 * i + 1] * B[4 + j] + A[4 * i + 2] * B[8 + j] + A[4 * i + 3] * B[12 + j];
-    memcpy(A, r, sizeof r);
-}
 
 static void identity(double A[16])
 {
@@ -97,14 +90,8 @@ static uint8_t unorm8(double v)
 
 static int push_state(walker *w, const state *st)
 {
-    if (w->sp == w->cap) {
-        size_t cap = w->cap ? w->cap * 2 : 64;
-        state *n = realloc(w->stack, cap * sizeof *n);
-        if (!n)
-            return -1;
-        w->stack = n;
-        w->cap = cap;
-    }
+    if (gls_grow(&w->stack, &w->cap, w->sp + 1, sizeof *w->stack))
+        return -1;
     w->stack[w->sp++] = *st;
     return 0;
 }
@@ -113,19 +100,18 @@ static int grow_tris(walker *w, size_t need)
 {
     if (w->ntri + need <= w->tcap)
         return 0;
-    size_t cap = w->tcap ? w->tcap : 1024;
-    while (cap < w->ntri + need)
-        cap *= 2;
-    tri *t = realloc(w->tris, cap * sizeof *t);
+    /* four arrays of one capacity: grown by the largest element's rule */
+    size_t cap = gls_grow_cap(w->tcap, w->ntri + need, 9 * sizeof *w->wpos);
+    tri *t = cap ? gls_resize(w->tris, cap, sizeof *t) : NULL;
     if (t)
         w->tris = t;
-    double *p = realloc(w->wpos, cap * 9 * sizeof *p);
+    double *p = cap ? gls_resize(w->wpos, cap, 9 * sizeof *p) : NULL;
     if (p)
         w->wpos = p;
-    uint8_t *c = realloc(w->wcol, cap * 12);
+    uint8_t *c = cap ? gls_resize(w->wcol, cap, 12) : NULL;
     if (c)
         w->wcol = c;
-    float *x = realloc(w->wtc, cap * 6 * sizeof *x);
+    float *x = cap ? gls_resize(w->wtc, cap, 6 * sizeof *x) : NULL;
     if (x)
         w->wtc = x;
     if (!t || !p || !c || !x)
@@ -148,8 +134,7 @@ static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t
     const gls_vec4 *q = &b->pos[in->u[GLS_ARG_PRIM_POS] + k];
     const double *M = st->M;
     double h[4];
-    for (int i = 0; i < 4; i++)
-        h[i] = M[4 * i] * q->x + M[4 * i + 1] * q->y + M[4 * i + 2] * q->z + M[4 * i + 3] * q->w;
+    m4_apply(M, q->x, q->y, q->z, q->w, h);
     /* homogeneous: divide through in double; 1/w is skipped when w == 1 so
      * ordinary coordinates stay bit-exact */
     /* A vertex must be finite and within GLS_SCENE_MAX_COORD of the
@@ -288,19 +273,19 @@ static void run(walker *w, uint32_t oi, state st)
         case GLS_OP_TRANS:
             identity(A);
             A[3] = in.d[GLS_ARG_TRANS_X], A[7] = in.d[GLS_ARG_TRANS_Y], A[11] = in.d[GLS_ARG_TRANS_Z];
-            mat_mul(st.M, A);
+            m4_mul(st.M, A, st.M);
             break;
         case GLS_OP_ROT:
             rotation(in.d[GLS_ARG_ROT_ANGLE], in.d[GLS_ARG_ROT_X], in.d[GLS_ARG_ROT_Y], in.d[GLS_ARG_ROT_Z], A);
-            mat_mul(st.M, A);
+            m4_mul(st.M, A, st.M);
             break;
         case GLS_OP_SCALE:
             identity(A);
             A[0] = in.d[GLS_ARG_SCALE_X], A[5] = in.d[GLS_ARG_SCALE_Y], A[10] = in.d[GLS_ARG_SCALE_Z];
-            mat_mul(st.M, A);
+            m4_mul(st.M, A, st.M);
             break;
         case GLS_OP_TRANSFORM:
-            mat_mul(st.M, in.d + GLS_ARG_TRANSFORM_A00); /* operands are row-major, like M */
+            m4_mul(st.M, in.d + GLS_ARG_TRANSFORM_A00, st.M); /* operands are row-major, like M */
             break;
         case GLS_OP_PUSH:
             if (push_state(w, &st))

@@ -6,11 +6,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
+#include <unistd.h>
 #include "numfmt.h"
+#include "readfile.h"
 #include "rotation.h"
 #include "textfile.h"
 #include "trajectory.h"
+#include "vec.h"
 
 struct gls_traj {
     FILE *f;
@@ -44,16 +46,16 @@ gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen)
         return NULL;
     }
     t->notes = notes;
-    t->f = fopen(path, "r");
-    if (!t->f) {
-        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
-        free(t->path);
-        free(t);
-        return NULL;
-    }
     struct stat st;
-    if (fstat(fileno(t->f), &st) == 0 && S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
+    gls_read_error e;
+    int fd = gls_file_open(path, 0, &st, &e);
+    if (fd < 0 || !(t->f = fdopen(fd, "r"))) {
+        if (fd < 0 && e.status == GLS_READ_DIR)
+            snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
+        else
+            snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(fd < 0 ? e.err : errno));
+        if (fd >= 0)
+            close(fd);
         gls_traj_close(t);
         return NULL;
     }
@@ -110,17 +112,8 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
             return fail(t, err, errlen, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
         if (memchr(t->buf, 0, n))
             return fail(t, err, errlen, "NUL byte in the line");
-        char *hash = strchr(t->buf, '#');
-        if (hash)
-            *hash = 0;
         char *tok[15];
-        int nt = 0;
-        char *save;
-        for (char *q = strtok_r(t->buf, " \t\r\n\f\v", &save); q; q = strtok_r(NULL, " \t\r\n\f\v", &save)) {
-            if (nt == 15)
-                break;
-            tok[nt++] = q;
-        }
+        int nt = gls_text_split(t->buf, "#", " \t\r\n\f\v", tok, 15);
         if (nt == 0)
             continue;
         if (nt != 14)
@@ -162,11 +155,11 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
 void gls_traj_compose(const double Rc[9], const double Tc[3], const double Rr[9], const double Tr[3], double R[9],
                       double T[3])
 {
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++)
-            R[3 * i + j] = Rc[3 * i] * Rr[j] + Rc[3 * i + 1] * Rr[3 + j] + Rc[3 * i + 2] * Rr[6 + j];
-        T[i] = Rc[3 * i] * Tr[0] + Rc[3 * i + 1] * Tr[1] + Rc[3 * i + 2] * Tr[2] + Tc[i];
-    }
+    rm_mul(Rc, Rr, R);
+    rv3 t = rm_apply(Rc, rv(Tr[0], Tr[1], Tr[2]));
+    T[0] = t.x + Tc[0];
+    T[1] = t.y + Tc[1];
+    T[2] = t.z + Tc[2];
 }
 
 int gls_traj_range(const char *s, uint64_t *first, uint64_t *end, char *err, size_t errlen)

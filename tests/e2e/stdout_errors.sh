@@ -2,7 +2,7 @@
 # Every tool checks that its standard output was written: with standard
 # output on /dev/full (every write fails with ENOSPC) each exits 1 and
 # says exactly "TOOL: error: cannot write standard output: No space left
-# on device" (format/stdout_check.c).  The same commands writing to a file
+# on device" (base/stdout_check.c).  The same commands writing to a file
 # exit 0, so the failure is the output's.  Prints "ok NAME" / "FAIL NAME: why".
 BIN=$(cd "${GLS_BIN:-build}" && pwd)
 tmp=$(mktemp -d)

@@ -2,6 +2,7 @@
  * usage: rawseed IN.glsb OUT.glsb */
 #include <stdio.h>
 #include <stdlib.h>
+#include "atomic_write.h"
 #include "bundle.h"
 #include "layout.h"
 

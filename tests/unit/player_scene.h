@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "atomic_write.h"
 #include "bundle.h"
 #include "camera.h"
 #include "glctx.h"

@@ -13,7 +13,7 @@
 #include "aa_render.h"
 #include "check.h"
 #include <GL/gl.h>
-#include "../../bench/aa_scene.h"
+#include "aa_scene.h"
 
 static gls_glctx *ctx;
 

@@ -3,6 +3,7 @@
  * coordinates through source text, compile, write and read. */
 #include <stdlib.h>
 #include <string.h>
+#include "atomic_write.h"
 #include "check.h"
 #include "compile.h"
 

@@ -1,0 +1,101 @@
+/* Atomic file output: write a temporary file beside the target, flush it,
+ * then rename() it into place.  A reader never sees a half-written file,
+ * and an interrupted writer leaves at most a ".tmp" file, never a
+ * truncated output under the real name. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "atomic_write.h"
+
+/* Write everything to fd; 0 or -1 with errno set. */
+static int write_all(int fd, const void *data, size_t len)
+{
+    const char *p = data;
+    while (len) {
+        ssize_t w = write(fd, p, len);
+        if (w < 0) {
+            if (errno == EINTR)
+                continue;
+            return -1;
+        }
+        p += w;
+        len -= (size_t)w;
+    }
+    return 0;
+}
+
+/* What an existing non-regular file is, for messages; NULL for a regular
+ * file or none. */
+static const char *special_kind(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || S_ISREG(st.st_mode))
+        return NULL;
+    if (S_ISDIR(st.st_mode))
+        return "it is a directory";
+    if (S_ISFIFO(st.st_mode))
+        return "it is a FIFO (named pipe), not a regular file";
+    if (S_ISCHR(st.st_mode))
+        return "it is a character device, not a regular file";
+    if (S_ISBLK(st.st_mode))
+        return "it is a block device, not a regular file";
+    if (S_ISSOCK(st.st_mode))
+        return "it is a socket, not a regular file";
+    return "it is not a regular file";
+}
+
+const char *gls_write_error(const char *path, int err)
+{
+    const char *kind = special_kind(path);
+    return kind ? kind : strerror(err);
+}
+
+int gls_write_file_atomic(const char *path, const void *data, size_t len)
+{
+    /* An existing target that is not a regular file is refused without
+       being opened: renaming over it would replace a FIFO or a device node
+       with a plain file, and writing into it could block for ever (a FIFO
+       nobody reads) or send the bytes nowhere. */
+    if (special_kind(path)) {
+        errno = EEXIST;
+        return -1;
+    }
+    size_t n = strlen(path);
+    char *tmp = malloc(n + 32);
+    if (!tmp)
+        return -1;
+    snprintf(tmp, n + 32, "%s.tmp%ld", path, (long)getpid());
+    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) {
+        int e = errno;
+        free(tmp);
+        errno = e;
+        return -1;
+    }
+    if (write_all(fd, data, len))
+        goto fail;
+    if (fsync(fd) != 0 && errno != EINVAL)
+        goto fail;
+    if (close(fd) != 0) {
+        fd = -1;
+        goto fail;
+    }
+    fd = -1;
+    if (rename(tmp, path) != 0)
+        goto fail;
+    free(tmp);
+    return 0;
+fail:;
+    int e = errno;
+    if (fd >= 0)
+        close(fd);
+    unlink(tmp);
+    free(tmp);
+    errno = e;
+    return -1;
+}

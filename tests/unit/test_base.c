@@ -1,0 +1,238 @@
+/* The base layer's helpers (base/): growth, whole-file reading, the caret
+ * excerpt, the tokenizer, number reading, vector and matrix operations,
+ * mkdir -p and atomic writes.  Each is used by several layers; the tools'
+ * tests check them through their messages, these check the helpers
+ * themselves, including the cases no tool's input reaches easily. */
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "atomic_write.h"
+#include "buf.h"
+#include "check.h"
+#include "mkdirs.h"
+#include "numfmt.h"
+#include "readfile.h"
+#include "srcline.h"
+#include "textfile.h"
+#include "vec.h"
+
+static char dir[] = "/tmp/gls_test_base_XXXXXX";
+
+static void write_file(const char *path, const char *data, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    if (f) {
+        fwrite(data, 1, n, f);
+        fclose(f);
+    }
+}
+
+static void test_grow(void)
+{
+    CHECK(gls_grow_cap(0, 1, 8) == 32);         /* 16 elements and 256 bytes at least */
+    CHECK(gls_grow_cap(0, 1, 1) == 256);
+    CHECK(gls_grow_cap(0, 1, 1000) == 16);
+    CHECK(gls_grow_cap(32, 20, 8) == 32);       /* it fits: unchanged */
+    CHECK(gls_grow_cap(32, 33, 8) == 64);
+    CHECK(gls_grow_cap(32, 1000, 8) == 1024);
+    CHECK(gls_grow_cap(0, SIZE_MAX / 4, 8) == 0); /* more bytes than a size_t holds */
+    CHECK(gls_resize(NULL, SIZE_MAX / 2, 4) == NULL);
+    int *a = NULL;
+    size_t cap = 0;
+    for (int i = 0; i < 1000; i++) {
+        if (gls_grow(&a, &cap, (size_t)i + 1, sizeof *a))
+            break;
+        a[i] = i;
+    }
+    CHECK(cap == 1024);
+    CHECK(a && a[999] == 999 && a[17] == 17);
+    /* a failed growth leaves the array and its capacity as they were */
+    int *before = a;
+    CHECK(gls_grow(&a, &cap, SIZE_MAX / 2, sizeof *a) == -1);
+    CHECK(a == before && cap == 1024);
+    free(a);
+    gls_buf b = {0};
+    for (int i = 0; i < 100; i++)
+        CHECK(gls_buf_put(&b, "abc", 3) == 0);
+    CHECK(b.len == 300 && b.cap >= 300 && memcmp(b.data + 297, "abc", 3) == 0);
+    CHECK(gls_buf_reserve(&b, SIZE_MAX) == -1 && b.len == 300);
+    free(b.data);
+}
+
+static void test_readfile(void)
+{
+    char path[128], sub[128];
+    size_t len = 99;
+    gls_read_error e;
+    snprintf(path, sizeof path, "%s/f.txt", dir);
+    write_file(path, "hello\nworld", 11);
+    char *t = gls_file_read(path, 100, 0, &len, &e);
+    CHECK(t && len == 11 && memcmp(t, "hello\nworld", 12) == 0); /* and the NUL */
+    free(t);
+    t = gls_file_read(path, 100, GLS_READ_REGULAR, &len, &e);
+    CHECK(t && len == 11 && t[11] == 0);
+    free(t);
+    /* a regular file over the limit is refused before reading, with its size */
+    CHECK(!gls_file_read(path, 10, 0, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 11);
+    CHECK(!gls_file_read(path, 10, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_TOO_LARGE);
+    t = gls_file_read(path, 11, 0, &len, &e); /* exactly the limit */
+    CHECK(t && len == 11);
+    free(t);
+    snprintf(sub, sizeof sub, "%s/empty", dir);
+    write_file(sub, "", 0);
+    t = gls_file_read(sub, 10, GLS_READ_REGULAR, &len, &e);
+    CHECK(t && len == 0 && t[0] == 0);
+    free(t);
+    CHECK(!gls_file_read(dir, 100, 0, &len, &e) && e.status == GLS_READ_DIR);
+    CHECK(!gls_file_read(dir, 100, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_DIR);
+    snprintf(sub, sizeof sub, "%s/missing", dir);
+    CHECK(!gls_file_read(sub, 100, 0, &len, &e) && e.status == GLS_READ_OPEN && e.err == ENOENT);
+    /* a device is read as a stream, up to limit + 1 bytes */
+    CHECK(!gls_file_read("/dev/zero", 1000, 0, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 0);
+    CHECK(!gls_file_read("/dev/zero", 1000, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_NOT_REGULAR &&
+          S_ISCHR(e.mode));
+    t = gls_file_read("/dev/null", 1000, 0, &len, &e);
+    CHECK(t && len == 0);
+    free(t);
+    CHECK(gls_is_dir(dir) && !gls_is_file(dir) && gls_is_file(path) && !gls_is_dir(path) && !gls_is_file(sub));
+}
+
+/* The excerpt as a string, or "(none)". */
+static const char *excerpt(const char *text, unsigned line, unsigned col, gls_excerpt_style style, size_t len)
+{
+    static char out[1024];
+    gls_buf b = {0};
+    if (gls_excerpt(&b, text, len ? len : strlen(text), line, col, style) || b.len >= sizeof out)
+        snprintf(out, sizeof out, "(none)");
+    else
+        memcpy(out, b.data, b.len), out[b.len] = 0;
+    free(b.data);
+    return out;
+}
+
+static void test_excerpt(void)
+{
+    CHECK_STR(excerpt("ab\n\tcd e\n", 2, 4, GLS_EXCERPT_WHOLE_LINE, 0), "\tcd e\n\t  ^");
+    CHECK_STR(excerpt("ab\r\ncd", 1, 2, GLS_EXCERPT_WHOLE_LINE, 0), "ab\n ^");
+    CHECK_STR(excerpt("ab\ncd\n", 3, 1, GLS_EXCERPT_WINDOW, 0), "\n^"); /* after the last newline */
+    CHECK_STR(excerpt("ab\ncd", 3, 1, GLS_EXCERPT_WHOLE_LINE, 0), "(none)");
+    /* a NUL byte: the compiler's caret goes past it, a text input's line ends there */
+    CHECK_STR(excerpt("ab\0cd x;", 1, 7, GLS_EXCERPT_WHOLE_LINE, 8), "ab\n      ^");
+    CHECK_STR(excerpt("ab\0cd x;", 1, 7, GLS_EXCERPT_WINDOW, 8), "ab\n  ^");
+    /* a long line: whole for the compiler, a 160-byte window for text inputs */
+    char line[301];
+    for (int i = 0; i < 300; i++)
+        line[i] = (char)('a' + i % 26);
+    line[300] = 0;
+    CHECK(strlen(excerpt(line, 1, 150, GLS_EXCERPT_WHOLE_LINE, 0)) == 300 + 1 + 149 + 1);
+    const char *w = excerpt(line, 1, 150, GLS_EXCERPT_WINDOW, 0);
+    CHECK(strncmp(w, "...", 3) == 0 && strncmp(w + 3, line + 69, 160) == 0 && strncmp(w + 163, "...\n   ", 7) == 0);
+    CHECK(strlen(w) == 3 + 160 + 3 + 1 + 3 + 80 + 1);
+    /* the message form, and nothing appended when it does not fit */
+    char msg[64];
+    gls_text_error(msg, sizeof msg, "key 1,5\n", 8, "f.cam", 1, 6, "a comma in '%s'", "1,5");
+    CHECK_STR(msg, "f.cam:1:6: error: a comma in '1,5'\nkey 1,5\n     ^");
+    gls_text_error(msg, 40, "key 1,5\n", 8, "f.cam", 1, 6, "a comma in '%s'", "1,5");
+    CHECK_STR(msg, "f.cam:1:6: error: a comma in '1,5'");
+}
+
+static void test_split(void)
+{
+    char line[] = "  R 1\t2 # 3 4";
+    char *tok[4];
+    CHECK(gls_text_split(line, "#", " \t", tok, 4) == 3);
+    CHECK_STR(tok[0], "R");
+    CHECK(tok[2] - line + 1 == 7); /* the column of "2" */
+    char l2[] = "a b c d e";
+    CHECK(gls_text_split(l2, "#", " ", tok, 4) == 4); /* "more than 3" */
+    char l3[] = "w 640\rx";
+    CHECK(gls_text_split(l3, "#\r", " ", tok, 4) == 2);
+    char l4[] = "# only a comment";
+    CHECK(gls_text_split(l4, "#", " ", tok, 4) == 0);
+}
+
+static void test_numbers(void)
+{
+    double v = 7;
+    CHECK(gls_parse_double("1.5e3", &v) == NULL && v == 1500);
+    CHECK_STR(gls_parse_double("1e400", &v), "is too large for a double (magnitudes up to 1.8e308)");
+    CHECK_STR(gls_parse_double("1e-400", &v), "is too close to zero for a double (nonzero magnitudes from 2.2e-308)");
+    CHECK_STR(gls_parse_double("nan", &v), "is not a finite number");
+    CHECK_STR(gls_parse_double("1,5", &v), "is not a finite number");
+    CHECK(v == 1500); /* untouched by the failures */
+    CHECK(gls_parse_finite("1e-400", &v) == NULL && v == 0);
+    CHECK_STR(gls_parse_finite("1e400", &v), "is not a finite number");
+    CHECK_STR(gls_parse_finite("", &v), "is not a finite number");
+    char buf[40];
+    gls_fmt_double(buf, sizeof buf, 0.1);
+    CHECK_STR(buf, "0.1");
+    gls_fmt_double(buf, sizeof buf, 1500);
+    CHECK_STR(buf, "1500");
+    gls_fmt_float(buf, sizeof buf, 0.1f);
+    CHECK_STR(buf, "0.1");
+}
+
+static void test_vec(void)
+{
+    const double A[9] = {1, 2, 3, 4, 5, 6, 7, 8, 10}, B[9] = {0, 1, 0, -1, 0, 0, 0, 0, 1};
+    double C[9], T[9];
+    rm_mul(A, B, C);
+    const double AB[9] = {-2, 1, 3, -5, 4, 6, -8, 7, 10};
+    CHECK(memcmp(C, AB, sizeof C) == 0);
+    rm_transpose(A, T);
+    CHECK(T[1] == 4 && T[2] == 7 && T[5] == 8);
+    CHECK(rm_det(A) == -3);
+    rv3 v = rm_apply(A, rv(1, 0, -1)), u = rm_apply_t(A, rv(1, 0, -1));
+    CHECK(v.x == -2 && v.y == -2 && v.z == -3);
+    CHECK(u.x == -6 && u.y == -6 && u.z == -7);
+    double M[16] = {1, 0, 0, 5, 0, 1, 0, 6, 0, 0, 1, 7, 0, 0, 0, 1}, N[16], h[4];
+    m4_mul(M, M, N); /* two translations */
+    CHECK(N[3] == 10 && N[7] == 12 && N[11] == 14 && N[15] == 1);
+    m4_apply(N, 1, 2, 3, 1, h);
+    CHECK(h[0] == 11 && h[1] == 14 && h[2] == 17 && h[3] == 1);
+}
+
+static void test_files(void)
+{
+    char p[160];
+    snprintf(p, sizeof p, "%s/a/b//c", dir);
+    CHECK(gls_mkdir_p(p) == 0 && gls_is_dir(p));
+    CHECK(gls_mkdir_p(p) == 0); /* exists: fine */
+    snprintf(p, sizeof p, "%s/a/b/c/out.bin", dir);
+    CHECK(gls_write_file_atomic(p, "xyz", 3) == 0);
+    size_t len;
+    gls_read_error e;
+    char *t = gls_file_read(p, 10, GLS_READ_REGULAR, &len, &e);
+    CHECK(t && len == 3 && memcmp(t, "xyz", 3) == 0);
+    free(t);
+    snprintf(p, sizeof p, "%s/a/b/c/out.bin/d", dir);
+    CHECK(gls_mkdir_p(p) == -1 && errno == ENOTDIR);
+    snprintf(p, sizeof p, "%s/a", dir);
+    CHECK(gls_write_file_atomic(p, "x", 1) == -1 && errno == EEXIST);
+    CHECK_STR(gls_write_error(p, EEXIST), "it is a directory");
+    CHECK_STR(gls_write_error("/dev/null", EEXIST), "it is a character device, not a regular file");
+}
+
+int main(void)
+{
+    if (!mkdtemp(dir)) {
+        printf("FAIL test_base: mkdtemp\n");
+        return 1;
+    }
+    RUN(test_grow);
+    RUN(test_readfile);
+    RUN(test_excerpt);
+    RUN(test_split);
+    RUN(test_numbers);
+    RUN(test_vec);
+    RUN(test_files);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    if (system(cmd) != 0)
+        printf("  could not remove %s\n", dir);
+    CHECK_EXIT();
+}
