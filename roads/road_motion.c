@@ -325,7 +325,9 @@ void road_quat_from_R(const double R[9], double q[4])
 typedef struct {
     const road_geo *g;
     FILE *traj, *kitti, *tum, *veh;
-    double R0[9], T0[3]; /* first frame, for KITTI's relative poses */
+    double R0[9];     /* first frame's rotation and centre, for KITTI's */
+    rv3 c0;           /* poses relative to it                            */
+    double q_prev[4]; /* the last TUM quaternion, for continuity         */
 } outctx;
 
 static void nums(FILE *f, const double *v, int n)
@@ -353,20 +355,31 @@ static int write_pose(void *vctx, const road_pose *p)
     rm_transpose(p->R, Rw);
     rv3 c = rm_apply(Rw, rv(-p->T[0], -p->T[1], -p->T[2]));
     /* KITTI: [R|t] of frame i in frame 0's camera: T_c0_w * T_w_ci =
-       [R0 Rw_i | R0 c_i + T0] */
+       [R0 Rw_i | R0 (c_i - c_0)].  Frame 0 relative to itself is the
+       identity by definition: written as such, not as R0 R0^T (which is
+       the identity only to rounding). */
+    double row[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
     if (p->frame == 0) {
         memcpy(o->R0, p->R, sizeof o->R0);
-        memcpy(o->T0, p->T, sizeof o->T0);
+        o->c0 = c;
+    } else {
+        double K[9];
+        rm_mul(o->R0, Rw, K);
+        rv3 kt = rm_apply(o->R0, rv_sub(c, o->c0));
+        double r[12] = {K[0], K[1], K[2], kt.x, K[3], K[4], K[5], kt.y, K[6], K[7], K[8], kt.z};
+        memcpy(row, r, sizeof row);
     }
-    double K[9];
-    rm_mul(o->R0, Rw, K);
-    rv3 kt = rm_apply(o->R0, c);
-    double row[12] = {K[0], K[1], K[2], kt.x + o->T0[0], K[3], K[4], K[5], kt.y + o->T0[1],
-                      K[6], K[7], K[8], kt.z + o->T0[2]};
     nums(o->kitti, row, 12);
     fputc('\n', o->kitti);
+    /* TUM: q and -q are the same rotation; frame 0 takes w >= 0, every
+       later frame the sign nearer the previous quaternion, so the sequence
+       is continuous (interpolating it never takes the long way round) */
     double q[4];
     road_quat_from_R(Rw, q);
+    if (p->frame > 0 && q[0] * o->q_prev[0] + q[1] * o->q_prev[1] + q[2] * o->q_prev[2] + q[3] * o->q_prev[3] < 0)
+        for (int i = 0; i < 4; i++)
+            q[i] = -q[i];
+    memcpy(o->q_prev, q, sizeof q);
     double tum[8] = {p->time, c.x, c.y, c.z, q[0], q[1], q[2], q[3]};
     nums(o->tum, tum, 8);
     fputc('\n', o->tum);
@@ -410,7 +423,7 @@ int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_bu
         f[i] = open_memstream(&b[i]->text, &b[i]->len);
         ok &= f[i] != NULL;
     }
-    outctx o = {g, f[0], f[1], f[2], f[3], {0}, {0}};
+    outctx o = {g, f[0], f[1], f[2], f[3], {0}, {0, 0, 0}, {0}};
     long n = -1;
     if (ok) {
         fprintf(f[0], "# glsroad trajectory 1\n"
