@@ -107,21 +107,23 @@ static int make_road(const char *in, const char *dir)
     road_desc d;
     road_geo g;
     int rc = 1;
+    /* the description stays in memory: errors found after parsing quote it */
     if (road_parse(text, len, in, &d, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         free(text);
         return 1;
     }
-    free(text);
     if (road_geo_init(&g, &d, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         road_desc_free(&d);
+        free(text);
         return 1;
     }
     road_buf scene = {0}, tree = {0}, car = {0}, lanes = {0}, traj = {0}, kitti = {0}, tum = {0}, veh = {0};
     /* everything is computed before anything is written: an error leaves
        DIR as it was */
-    if (road_emit_scene(&g, &scene, &tree, &car, err, sizeof err) || road_emit_lanes(&g, &lanes, err, sizeof err) ||
+    if (road_check_limits(&g, err, sizeof err) || road_emit_scene(&g, &scene, &tree, &car, err, sizeof err) ||
+        road_emit_lanes(&g, &lanes, err, sizeof err) ||
         road_emit_motion(&g, &traj, &kitti, &tum, &veh, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         goto out;
@@ -157,6 +159,7 @@ out:
     free(veh.text);
     road_geo_free(&g);
     road_desc_free(&d);
+    free(text);
     return rc;
 }
 

@@ -52,6 +52,36 @@ void road_profile_motion(const road_profile *p, double t, double *x, double *v, 
     *a = 0;
 }
 
+double road_profile_time_to(const road_profile *p, double X)
+{
+    double t = 0, x = 0; /* where segment k starts */
+    for (int k = 0; k + 1 < p->n; k++) {
+        double v0 = p->v[k], v1 = p->v[k + 1];
+        if (p->by_time) {
+            double t0 = p->x[k], t1 = p->x[k + 1], acc = (v1 - v0) / (t1 - t0);
+            double D = 0.5 * (v0 + v1) * (t1 - t0);
+            if (X <= x + D) {
+                /* v0 tau + acc tau^2 / 2 = X - x, the root that cannot
+                   cancel */
+                double r = X - x;
+                return r <= 0 ? t0 : t0 + 2 * r / (v0 + sqrt(v0 * v0 + 2 * acc * r));
+            }
+            x += D;
+            t = t1;
+        } else {
+            double dx = p->x[k + 1] - p->x[k];
+            if (X <= x + dx) /* inverse of x(t) in road_profile_motion */
+                return t + (X - x) / v0 * log1p_over((v1 - v0) * (X - x) / (dx * v0));
+            t += dx / v0 * log1p_over((v1 - v0) / v0);
+            x += dx;
+        }
+    }
+    if (p->by_time)
+        t = p->x[p->n - 1];
+    double vl = p->v[p->n - 1];
+    return X <= x ? t : vl > 0 ? t + (X - x) / vl : INFINITY;
+}
+
 /* ---- road roughness ----------------------------------------------------- */
 
 #define NWAVES 32
@@ -274,8 +304,10 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         rig_pose(&rc, &f, y[0], y[2], p.R, p.T);
         if (fn && fn(ctx, &p))
             return -1;
-        if (k >= 100000000L)
+        if (k + 1 >= ROAD_MAX_FRAMES) { /* road_check_limits reports it first */
+            k++;
             break;
+        }
     }
     return k;
 }

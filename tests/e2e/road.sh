@@ -11,11 +11,12 @@ ok() { echo "ok $1"; }
 fail() { echo "FAIL $1: $2"; }
 [ -x "$R" ] || { fail road_cli "no $R"; exit 0; }
 
-# expect NAME STATUS EXACT-STDERR-LINE -- command...
+# expect NAME STATUS EXACT-STDERR-LINE -- command...  (a command that hangs
+# fails with status 124)
 expect() {
     name=$1 want=$2 msg=$3
     shift 4
-    "$@" >"$t/stdout" 2>"$t/stderr"
+    timeout 120 "$@" >"$t/stdout" 2>"$t/stderr"
     rc=$?
     if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
     elif [ -n "$msg" ] && [ "$(head -1 "$t/stderr")" != "$msg" ]; then fail "$name" "stderr '$(head -1 "$t/stderr")', wanted '$msg'"
@@ -52,6 +53,38 @@ err_case style "${P}${S}marking 1 dotted\n" "6:1: error: unknown marking 'dotted
 err_case too_far "${P}${S}frames 1000\n" "6:1: error: the vehicle passes the end of the road (150.399 m) at frame 376 (t = 15.04 s); give fewer frames, a lower speed or a longer road"
 err_case vehicle_unknown "${P}${S}vehicle_speed bus distance 0 10\n" "6:1: error: unknown vehicle 'bus' (define it with a 'vehicle' line first)"
 err_case fold "degree 2\npoint 0 0 0\npoint 0 0 10\npoint -8 0 10 0.7071067811865476\npoint -8 0 0\nknots 0 0 0 0.5 1 1 1\nverge 0\n${S}" " error: the road folds over itself near distance 8.981 m: the curve radius there (3.921 m) is smaller than the lateral offset of an edge (4.000 m); widen the curve or narrow the road"
+
+
+# computed counts are checked before anything is generated (spec/road.md,
+# "Limits"), at the key to change: none of these may run long or exhaust
+# memory (before the checks, fps 1e200 ran until memory ran out)
+err_case frames_product "${P}${S}fps 1e6\nduration 100\n" "7:1: error: duration 100 s at 1e+06 fps is 1e+08 frames, more than the 1000000 allowed"
+err_case frames_to_end "${P}${S}fps 1e200\n" "6:1: error: the vehicle reaches the end of the road (150.399 m) after 15.0399 s: 1.50399e+201 frames at 1e+200 fps, more than the 1000000 allowed; lower the fps or give 'frames' or 'duration'"
+err_case frames_limit "${P}${S}frames 1000001\n" "6:1: error: frames must be a whole number 1..1000000, got '1000001'"
+err_case seconds "${P}speed_at time 0 0\nfps 0.001\nframes 100\n" "7:1: error: 100 frames at 0.001 fps last 99000 s, more than the 10000 s allowed (the body's motion is integrated in steps of 1 ms)"
+V=''
+for v in a b c d e f g h i j k; do V="${V}vehicle $v\nvehicle_speed $v distance 0 1\n"; done
+err_case vehicle_poses "${P}${S}fps 1e5\nframes 1000000\n$V" "7:1: error: 1e+06 frames x 11 vehicles are 1.1e+07 vehicle poses, more than the 10000000 allowed"
+err_case max_segment "${P}${S}max_segment 1e-5\n" "6:1: error: 150.399 m of road within tolerance 0.001 m and max_segment 1e-05 m need about 9.78e+07 vertices for its surface and lines, more than the 4194304 allowed; raise max_segment"
+err_case dashes "${P}${S}dash 1e-5 1e-5\n" "6:1: error: 7.51996e+06 dashes (1e-05 m dash, 1e-05 m gap along 150.399 m of road) and the rest of the road need about 3.01e+07 vertices, more than the 4194304 allowed; lengthen the dashes and gaps"
+err_case trees "${P}${S}trees 1e-5 1\n" "6:1: error: the 'trees' lines place 3.00798e+07 trees along 150.399 m of road, more than the 1048576 allowed; space them further apart"
+# a helix of radius ~40 m, 100 turns: 1e-6 m of chordal tolerance is
+# millions of vertices (estimated from the curvature, refused at once)
+H=$(awk 'BEGIN { for (i = 0; i <= 800; i++) { a = i * 3.14159265 / 4; printf "point %.3f %.3f %.3f\\n", 40 * cos(a), i * 0.5, 40 * sin(a) } }')
+err_case tolerance "${H}${S}frames 2\ntolerance 1e-6\n" "804:1: error: 22668.535 m of road within tolerance 1e-06 m and max_segment 10 m need about 8.67e+06 vertices for its surface and lines, more than the 4194304 allowed; raise the tolerance"
+S257=$(awk 'BEGIN { for (i = 0; i <= 256; i++) printf "speed_at time %d 10\\n", i }')
+err_case profile_points "${P}${S257}" "261:1: error: a profile has at most 256 points"
+V257=$(awk 'BEGIN { for (i = 0; i <= 256; i++) printf "vehicle v%d\\n", i }')
+err_case vehicles "${P}${S}${V257}" "262:1: error: at most 256 'vehicle' lines"
+# a key with indentation: the caret is under the key
+printf '%b' "${P}${S}   fps 1e9\n" >"$t/key_col.road"
+timeout 120 "$R" "$t/key_col.road" -o "$t/o_key_col" 2>"$t/stderr"
+if [ "$(head -1 "$t/stderr")" = "$t/key_col.road:6:4: error: the vehicle reaches the end of the road (150.399 m) after 15.0399 s: 1.50399e+10 frames at 1e+09 fps, more than the 1000000 allowed; lower the fps or give 'frames' or 'duration'" ] &&
+    [ "$(sed -n 2p "$t/stderr")" = "   fps 1e9" ] && [ "$(sed -n 3p "$t/stderr")" = "   ^" ]; then
+    ok road_error_limit_at_key
+else
+    fail road_error_limit_at_key "$(cat "$t/stderr")"
+fi
 
 # the excerpt under the message: the offending line, a caret under the column
 printf '%b' "${P}${S}tolerance 1mm\n" >"$t/excerpt.road"
