@@ -121,6 +121,41 @@ if diff -r "$t/demo" "$t/demo2" >/dev/null; then ok road_deterministic; else fai
 n=$(grep -vc '^#' "$t/demo/trajectory.txt")
 [ "$n" = 500 ] && [ "$(wc -l <"$t/demo/poses_kitti.txt")" = 500 ] && ok road_frame_count || fail road_frame_count "$n frames"
 
+# The output directory is replaced as a whole (spec/road.md, "Outputs"):
+# a failure part way leaves the previous set intact.  The failure: a file
+# size limit (ulimit -f, SIGXFSZ ignored so write() fails with EFBIG) that
+# road.scene and lanes.txt of this road fit in and its trajectory.txt not.
+printf '%b' "${P}${S}fps 100\n" >"$t/long.road"
+"$R" examples/road/demo.road -o "$t/set" >/dev/null 2>&1 && cp -a "$t/set" "$t/set_before"
+expect road_output_write_fails 1 "glsroad: error: cannot write $t/set/trajectory.txt: File too large" -- \
+    sh -c 'trap "" XFSZ; ulimit -f 200; exec "$0" "$@"' "$R" "$t/long.road" -o "$t/set"
+if diff -r "$t/set_before" "$t/set" >"$t/diff" 2>&1; then ok road_output_kept_on_failure
+else fail road_output_kept_on_failure "the previous set changed: $(head -3 "$t/diff")"; fi
+ls -d "$t"/set.* >/dev/null 2>&1 && fail road_output_no_temporary_dir "left: $(ls -d "$t"/set.*)" ||
+    ok road_output_no_temporary_dir
+# without the limit the same road replaces the set: exactly its own outputs
+"$R" "$t/long.road" -o "$t/long_fresh" >/dev/null 2>&1
+if "$R" "$t/long.road" -o "$t/set/" >/dev/null 2>"$t/err" && diff -r "$t/long_fresh" "$t/set" >"$t/diff" 2>&1 &&
+    ! ls -d "$t"/set.* >/dev/null 2>&1; then
+    ok road_output_replaced_whole
+else
+    fail road_output_replaced_whole "$(cat "$t/err") $(head -3 "$t/diff")"
+fi
+# a directory glsroad did not write is never replaced, nor written into
+mkdir "$t/user" && echo keep >"$t/user/notes.txt"
+expect road_output_foreign_dir 1 "glsroad: error: $t/user is not a glsroad output directory: it holds 'notes.txt', which glsroad does not write; give a new or an empty directory" -- \
+    "$R" examples/road/demo.road -o "$t/user"
+[ "$(ls "$t/user")" = notes.txt ] && ok road_output_foreign_dir_untouched || fail road_output_foreign_dir_untouched "$(ls "$t/user")"
+echo x >"$t/afile"
+expect road_output_not_dir 1 "glsroad: error: $t/afile exists and is not a directory" -- \
+    "$R" examples/road/demo.road -o "$t/afile"
+mkdir "$t/empty"
+expect road_output_empty_dir 0 "" -- "$R" examples/road/demo.road -o "$t/empty"
+# the directory that cannot be created is the one named (it named
+# DIR/roadobj when DIR itself could not be made)
+expect road_output_parent_missing 1 "glsroad: error: cannot create directory $t/missing/out: No such file or directory" -- \
+    "$R" examples/road/demo.road -o "$t/missing/out"
+
 # --camera-at: the camera file with R, T composed; the rest kept
 if "$R" --camera-at 120 "$t/demo/trajectory.txt" examples/road/rig/left.cam >"$t/l120.cam" 2>"$t/err"; then
     grep -q '^fx 600$' "$t/l120.cam" && grep -q '^far 800$' "$t/l120.cam" && [ "$(grep -c '^R ' "$t/l120.cam")" = 1 ] &&
