@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "compile.h"
 
 static const char usage[] =
@@ -21,6 +22,28 @@ static const char usage[] =
     "  --help      this text\n"
     "\n"
     "Exit status: 0 success, 1 compile error, 2 usage error.\n";
+
+/* "textures" beside the glsc being run (the build puts both in build/),
+   as the user would type it: from argv[0] when it names a path, else from
+   /proc/self/exe.  NULL if unknown. */
+static char *textures_beside(const char *argv0)
+{
+    char exe[4096];
+    const char *self = argv0;
+    if (!strchr(argv0, '/')) {
+        ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+        if (n <= 0)
+            return NULL;
+        exe[n] = 0;
+        self = exe;
+    }
+    const char *slash = strrchr(self, '/');
+    size_t dn = (size_t)(slash - self);
+    char *dir = malloc(dn + sizeof "/textures");
+    if (dir)
+        snprintf(dir, dn + sizeof "/textures", "%.*s/textures", (int)dn, self);
+    return dir;
+}
 
 static int usage_error(const char *msg, const char *arg)
 {
@@ -85,6 +108,8 @@ int main(int argc, char **argv)
     }
 
     gls_compiler *c = gls_compiler_new(stderr);
+    char *gen_textures = textures_beside(argv[0]);
+    gls_compiler_set_generated_textures(c, gen_textures);
     int rc = 0;
     for (int i = 0; i < nroots && rc == 0; i++)
         rc = gls_compiler_add_root(c, roots[i]);
@@ -122,6 +147,7 @@ int main(int argc, char **argv)
     }
     gls_bundle_free(b);
     gls_compiler_free(c);
+    free(gen_textures);
     free(defout);
     return rc == 0 ? 0 : 1;
 }

@@ -38,6 +38,7 @@ struct gls_compiler {
     uint32_t nsources, sourcescap;
     gls_unit **stack;        /* DFS path, for cycle messages                */
     size_t depth, stackcap;
+    const char *gen_textures; /* where the build generates textures (hint) */
 };
 
 static const gls_loc noloc = {NULL, 0, 0};
@@ -51,6 +52,8 @@ gls_compiler *gls_compiler_new(FILE *diag_out)
 }
 
 unsigned gls_compiler_errors(const gls_compiler *c) { return c->diag.errors; }
+
+void gls_compiler_set_generated_textures(gls_compiler *c, const char *dir) { c->gen_textures = dir; }
 
 void gls_compiler_free(gls_compiler *c)
 {
@@ -396,8 +399,14 @@ static tex_entry *get_texture(gls_compiler *c, const char *name, gls_loc loc)
     if (!t->ok) {
         char roots[1024];
         list_roots(c, roots, sizeof roots);
-        gls_error_at(&c->diag, loc, "unknown texture '%s' (searched: %s; extensions .tga .png .jpg .jpeg .bmp)", name,
-                     roots);
+        /* the scene library's textures are generated, not in its tree: say
+           where, when the name is one of them */
+        char *gen = c->gen_textures ? name_to_path(c->gen_textures, name, ".tga") : NULL;
+        int there = gen && gls_is_file(gen);
+        free(gen);
+        gls_error_at(&c->diag, loc, "unknown texture '%s' (searched: %s; extensions .tga .png .jpg .jpeg .bmp)%s%s%s%s",
+                     name, roots, there ? "; the build generates it in " : "", there ? c->gen_textures : "",
+                     there ? ": add -I " : "", there ? c->gen_textures : "");
     }
     return t->ok ? t : NULL;
 }
