@@ -262,12 +262,9 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         /* until the end of the road: the vehicle must get there */
         double x, v, a, tl = d->speed.by_time ? d->speed.x[d->speed.n - 1] : 0;
         road_profile_motion(&d->speed, tl, &x, &v, &a);
-        if (v <= 0 && d->start + x < L) {
-            snprintf(err, errlen,
-                     "%s:%d:1: error: the vehicle stops before the end of the road; give 'frames' or 'duration'",
-                     d->file, d->speed.line);
-            return -1;
-        }
+        if (v <= 0 && d->start + x < L)
+            return road_error_at(d, d->speed.line, err, errlen,
+                                 "the vehicle stops before the end of the road; give 'frames' or 'duration'");
     }
     rigctx rc = {g, {d, {{0}, {0}, {0}}, 2 * M_PI * d->body_freq, d->body_damping, d->accel_pitch * DEG}, {0}};
     rough_init(&rc.b.r, d->roughness, d->seed);
@@ -285,11 +282,10 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         if (s > L) {
             if (d->frames < 0)
                 break;
-            snprintf(err, errlen,
-                     "%s:%d:1: error: the vehicle passes the end of the road (%.3f m) at frame %ld (t = %.6g s); "
-                     "give fewer frames, a lower speed or a longer road",
-                     d->file, d->line_frames, L, k, t);
-            return -1;
+            return road_error_at(d, d->line_frames, err, errlen,
+                                 "the vehicle passes the end of the road (%.3f m) at frame %ld (t = %.6g s); give "
+                                 "fewer frames, a lower speed or a longer road",
+                                 L, k, t);
         }
         if (k > 0)
             body_step(&rc.b, (k - 1) / d->fps, t, y);

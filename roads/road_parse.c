@@ -65,7 +65,8 @@ int road_error_at(const road_desc *d, int line, char *err, size_t errlen, const 
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
     snprintf(err, errlen, "%s:%d:%u: error: %s", d->file, line, col, msg);
-    gls_append_source_line(err, errlen, d->text, d->len, (unsigned)line, col);
+    if (d->text)
+        gls_append_source_line(err, errlen, d->text, d->len, (unsigned)line, col);
     return -1;
 }
 

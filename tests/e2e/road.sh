@@ -86,6 +86,16 @@ else
     fail road_error_limit_at_key "$(cat "$t/stderr")"
 fi
 
+# errors found while generating point at their key too
+printf '%b' "${P}${S}  frames 1000\n" >"$t/too_far_key.road"
+timeout 120 "$R" "$t/too_far_key.road" -o "$t/o_too_far_key" 2>"$t/stderr"
+if [ "$(head -1 "$t/stderr")" = "$t/too_far_key.road:6:3: error: the vehicle passes the end of the road (150.399 m) at frame 376 (t = 15.04 s); give fewer frames, a lower speed or a longer road" ] &&
+    [ "$(sed -n 2p "$t/stderr")" = "  frames 1000" ] && [ "$(sed -n 3p "$t/stderr")" = "  ^" ]; then
+    ok road_error_too_far_at_key
+else
+    fail road_error_too_far_at_key "$(cat "$t/stderr")"
+fi
+
 # the excerpt under the message: the offending line, a caret under the column
 printf '%b' "${P}${S}tolerance 1mm\n" >"$t/excerpt.road"
 "$R" "$t/excerpt.road" -o "$t/o_excerpt" 2>"$t/stderr"
