@@ -169,9 +169,9 @@ static long stations_upto(const road_geo *g, double u0, double u1, const road_ed
     tess t = {g, edges, nedges > MAXE ? MAXE : nedges, g->d->tolerance, g->d->max_segment, NULL, 0, 0, max};
     rv3 Pa[MAXE], Pb[MAXE];
     *st = NULL;
-    if (push_station(&t, u0))
-        return -1;
-    int r = 0;
+    int r = push_station(&t, u0);
+    if (r)
+        return r;
     edge_points(&t, u0, Pa);
     /* Knots inside [u0, u1] are stations: the curve's derivatives may jump
        there, and starting from them no span is skipped whole.  So are the
