@@ -71,7 +71,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: all deps test check demo demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa units programs
+.PHONY: all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa units programs
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -206,22 +206,38 @@ $(B)/depth2png: $(B)/tools/depth2png.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
 # The README's demo command: install what is missing, build, render the
-# demo scene with a stereo pair of cameras into out/demo/.
+# demo scene with a stereo pair of cameras into out/demo/ and the paper's
+# figures (below).  Incremental: each render is a file target (a stamp
+# under out/) that depends on its scene, cameras, bundle and tools, so a
+# second `make demo` renders nothing, and touching a camera file renders
+# again only the scene that camera belongs to (tests/e2e/readme_commands.sh).
 demo:
 	@sh tools/deps.sh
-	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/depth2png $(B)/pnghalf
-	$(B)/glsc -I examples/demo -I $(B)/textures -o $(B)/demo.glsb examples/demo/Demo.scene
+	@$(MAKE) --no-print-directory demo-render
+demo-render: all out/demo/.stamp demo-examples
+	@echo "demo: images, depth maps and point clouds are in out/demo/left and out/demo/right, the examples in out/<example>/"
+
+DEMO_SRC := $(shell find examples/demo -name '*.scene' 2>/dev/null)
+$(B)/demo.glsb: $(B)/glsc $(B)/textures.stamp $(DEMO_SRC)
+	$(B)/glsc -I examples/demo -I $(B)/textures -o $@ examples/demo/Demo.scene
+out/demo/.stamp: $(B)/demo.glsb $(B)/glsplay $(B)/depth2png examples/demo/left.cam examples/demo/right.cam
 	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
 	$(B)/depth2png out/demo/left/depth_000000.pfm out/demo/left/depth_000000_view.png
-	@echo "demo: images, depth maps and point clouds are in out/demo/left and out/demo/right"
-	@$(MAKE) --no-print-directory demo-examples
+	@touch $@
 
 # The paper's figures (examples/*/README.md): calibration, stereo, dense
 # stereo, grouping, lane, signs, rendered into out/<example>/, and their
-# 320x240 gallery images into out/gallery/.
-demo-examples: all $(B)/depth2png $(B)/pnghalf
+# 320x240 gallery images into out/gallery/, one example per rule (its
+# scene, its cameras, the scene library and the tools).
+EXAMPLES := calibration stereo dense_stereo grouping lane signs
+define example_rule
+out/$(1)/.stamp: $(wildcard examples/$(1)/*.scene examples/$(1)/*.cam) examples/render.sh $(B)/glsc $(B)/glsplay $(B)/depth2png $(B)/pnghalf $(B)/scenelib.glsb
 	@mkdir -p out/gallery
-	sh examples/render.sh $(B) out out/gallery
+	EXAMPLES_ONLY=$(1) sh examples/render.sh $(B) out out/gallery
+	@touch $$@
+endef
+$(foreach e,$(EXAMPLES),$(eval $(call example_rule,$(e))))
+demo-examples: $(EXAMPLES:%=out/%/.stamp)
 $(B)/pnghalf: $(B)/tools/pnghalf.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 

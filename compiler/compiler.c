@@ -14,6 +14,12 @@ gls_compiler *gls_compiler_new(FILE *diag_out)
 
 unsigned gls_compiler_errors(const gls_compiler *c) { return c->diag.errors; }
 
+void gls_compiler_set_build_dir(gls_compiler *c, const char *dir)
+{
+    if (c)
+        c->build_dir = dir;
+}
+
 void gls_compiler_free(gls_compiler *c)
 {
     if (!c)

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "atomic_write.h"
 #include "compile.h"
 #include "mkdirs.h"
@@ -24,6 +25,24 @@ static const char usage[] =
     "  --help      this text\n"
     "\n"
     "Exit status: 0 success, 1 compile error, 2 usage error.\n";
+
+/* The directory of the glsc being run (the build puts glsc, textures/ and
+   scenelib/ in build/), as the user would type it: from argv[0] when it
+   names a path, else from /proc/self/exe.  NULL if unknown. */
+static char *build_dir_of(const char *argv0)
+{
+    char exe[4096];
+    const char *self = argv0;
+    if (!strchr(argv0, '/')) {
+        ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+        if (n <= 0)
+            return NULL;
+        exe[n] = 0;
+        self = exe;
+    }
+    const char *slash = strrchr(self, '/');
+    return strndup(self, (size_t)(slash - self));
+}
 
 static int usage_error(const char *msg, const char *arg)
 {
@@ -89,6 +108,8 @@ int main(int argc, char **argv)
     }
 
     gls_compiler *c = gls_compiler_new(stderr);
+    char *build_dir = build_dir_of(argv[0]);
+    gls_compiler_set_build_dir(c, build_dir);
     int rc = 0;
     for (int i = 0; i < nroots && rc == 0; i++)
         rc = gls_compiler_add_root(c, roots[i]);
@@ -131,6 +152,7 @@ int main(int argc, char **argv)
     }
     gls_bundle_free(b);
     gls_compiler_free(c);
+    free(build_dir);
     free(defout);
     return rc == 0 ? 0 : 1;
 }

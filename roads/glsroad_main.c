@@ -10,6 +10,7 @@
 #include <string.h>
 #include "atomic_write.h"
 #include "road.h"
+#include "road_outdir.h"
 #include "camera.h"
 #include "mkdirs.h"
 #include "stdout_check.h"
@@ -20,7 +21,8 @@ static const char USAGE[] =
     "usage: glsroad ROAD.road -o DIR\n"
     "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"
     "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n"
-    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt.\n"
+    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt,\n"
+    "replacing a previous output in DIR as a whole.\n"
     "The second prints CAMERA (a camera file relative to the rig) with R and T\n"
     "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"
     "See spec/road.md.\n";
@@ -31,20 +33,6 @@ static int usage_error(const char *fmt, const char *arg)
     fprintf(stderr, fmt, arg);
     fprintf(stderr, "\n%s", USAGE);
     return 2;
-}
-
-static int put(const char *dir, const char *name, const road_buf *b)
-{
-    size_t n = strlen(dir) + strlen(name) + 2;
-    char *p = malloc(n);
-    if (!p)
-        return -1;
-    snprintf(p, n, "%s/%s", dir, name);
-    int r = gls_write_file_atomic(p, b->text, b->len);
-    if (r)
-        fprintf(stderr, "glsroad: error: cannot write %s: %s\n", p, gls_write_error(p, errno));
-    free(p);
-    return r;
 }
 
 static int make_road(const char *in, const char *dir)
@@ -59,40 +47,43 @@ static int make_road(const char *in, const char *dir)
     road_desc d;
     road_geo g;
     int rc = 1;
+    /* the description stays in memory: errors found after parsing quote it */
     if (road_parse(text, len, in, &d, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         free(text);
         return 1;
     }
-    free(text);
     if (road_geo_init(&g, &d, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         road_desc_free(&d);
+        free(text);
         return 1;
     }
     road_buf scene = {0}, tree = {0}, car = {0}, lanes = {0}, traj = {0}, kitti = {0}, tum = {0}, veh = {0};
-    /* everything is computed before anything is written: an error leaves
-       DIR as it was */
-    if (road_emit_scene(&g, &scene, &tree, &car, err, sizeof err) || road_emit_lanes(&g, &lanes, err, sizeof err) ||
+    road_out_file files[] = {
+        {"road.scene", NULL, 0},      {"roadobj/Tree.scene", NULL, 0}, {"roadobj/Car.scene", NULL, 0},
+        {"lanes.txt", NULL, 0},       {"trajectory.txt", NULL, 0},     {"poses_kitti.txt", NULL, 0},
+        {"poses_tum.txt", NULL, 0},   {"vehicles.txt", NULL, 0},
+    };
+    const road_buf *bufs[] = {&scene, &tree, &car, &lanes, &traj, &kitti, &tum, &veh};
+    enum { NFILES = sizeof files / sizeof files[0] };
+    /* cheap checks first (limits, an output directory that may not be
+       replaced), then everything is computed, then written as a whole:
+       an error leaves DIR as it was */
+    if (road_check_limits(&g, err, sizeof err) || road_outdir_check(dir, files, NFILES, err, sizeof err) ||
+        road_emit_scene(&g, &scene, &tree, &car, err, sizeof err) || road_emit_lanes(&g, &lanes, err, sizeof err) ||
         road_emit_motion(&g, &traj, &kitti, &tum, &veh, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         goto out;
     }
-    size_t n = strlen(dir) + 16;
-    char *sub = malloc(n);
-    if (!sub)
-        goto out;
-    snprintf(sub, n, "%s/roadobj", dir);
-    if (gls_mkdir_p(sub)) {
-        fprintf(stderr, "glsroad: error: cannot create directory %s: %s\n", sub, strerror(errno));
-        free(sub);
+    for (int i = 0; i < NFILES; i++) {
+        files[i].data = bufs[i]->text;
+        files[i].len = bufs[i]->len;
+    }
+    if (road_outdir_write(dir, files, NFILES, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
         goto out;
     }
-    free(sub);
-    if (put(dir, "road.scene", &scene) || put(dir, "roadobj/Tree.scene", &tree) ||
-        put(dir, "roadobj/Car.scene", &car) || put(dir, "lanes.txt", &lanes) || put(dir, "trajectory.txt", &traj) ||
-        put(dir, "poses_kitti.txt", &kitti) || put(dir, "poses_tum.txt", &tum) || put(dir, "vehicles.txt", &veh))
-        goto out;
     long frames = 0;
     for (size_t i = 0; i < traj.len; i++)
         frames += traj.text[i] == '\n' && i + 1 < traj.len && traj.text[i + 1] != '#';
@@ -109,9 +100,9 @@ out:
     free(veh.text);
     road_geo_free(&g);
     road_desc_free(&d);
+    free(text);
     return rc;
 }
-
 
 static int camera_at(const char *frame_s, const char *traj_path, const char *cam_path)
 {

@@ -17,6 +17,20 @@
  * points; a wrong path (a device, a huge file) is refused after this. */
 #define ROAD_MAX_FILE ((size_t)16 << 20)
 
+/* What a description may ask for (spec/road.md, "Limits").  Counts that
+ * follow from several keys (frames from duration and fps, vertices from
+ * the length and max_segment, ...) are checked before anything is
+ * generated, so no description makes glsroad run for hours or exhaust
+ * memory. */
+#define ROAD_MAX_FRAMES 1000000L          /* frames of the sequence            */
+#define ROAD_MAX_SECONDS 10000.0          /* its length in time (1 ms body steps) */
+#define ROAD_MAX_VEHICLES 256             /* 'vehicle' lines                   */
+#define ROAD_MAX_VEHICLE_POSES 10000000L  /* frames x vehicles                 */
+#define ROAD_MAX_PROFILE_POINTS 256       /* points of one profile             */
+#define ROAD_MAX_POINTS 65536             /* control points of the centre line */
+#define ROAD_MAX_VERTICES 4194304L        /* scene vertices; lanes.txt points  */
+#define ROAD_MAX_TREES 1048576L           /* trees placed, all 'trees' lines   */
+
 enum { MARK_NONE, MARK_SOLID, MARK_DASHED, MARK_DOUBLE };
 
 /* A piecewise-linear profile: values v[i] at abscissae x[i] (increasing),
@@ -47,6 +61,8 @@ typedef struct {
 
 typedef struct {
     const char *file;  /* for messages */
+    const char *text;  /* the description, borrowed from road_parse's caller */
+    size_t len;        /* (keep it while errors may be reported)             */
     /* curve */
     int degree, npts, ncap;
     double *pts, *w;   /* 3 per point; 1 per point */
@@ -64,6 +80,7 @@ typedef struct {
     double marking_width, dash, gap, double_gap, marking_height;
     double bank_max, bank_speed;
     double tolerance, max_segment;
+    int line_tolerance, line_max_segment, line_dash, line_fps; /* 0: default */
     double road_color[3], marking_color[3], verge_color[3];
     char road_texture[ROAD_NAME_MAX], verge_texture[ROAD_NAME_MAX];
     double road_tile, verge_tile;
@@ -85,9 +102,14 @@ typedef struct {
 } road_desc;
 
 /* Parse a description.  On error: -1 and "file:line: error: message" in
- * err.  road_desc_free releases what it allocated. */
+ * err.  road_desc_free releases what it allocated.  d keeps pointing at
+ * text (for errors found later): keep it alive as long as d. */
 int road_parse(const char *text, size_t len, const char *fname, road_desc *d, char *err, size_t errlen);
 void road_desc_free(road_desc *d);
+/* "file:LINE:COL: error: message", COL that of the key on LINE, then the
+ * line and a caret (LINE 0: the last line).  Returns -1. */
+int road_error_at(const road_desc *d, int line, char *err, size_t errlen, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
 
 /* ---- geometry ----------------------------------------------------------- */
 
@@ -125,7 +147,8 @@ rv3 road_edge_point(const road_frame *f, const road_edge *e);
 /* Stations (parameters) u0 = st[0] < ... < st[n-1] = u1 such that every
  * edge's polyline through the stations stays within the tolerance of the
  * true edge curve and no segment is longer than max_segment.  Returns the
- * count, or -1 on out of memory; *st is malloc'd. */
+ * count, -1 on out of memory, or -2 if more than ROAD_MAX_VERTICES stations
+ * would be needed; *st is malloc'd. */
 long road_stations(const road_geo *g, double u0, double u1, const road_edge *edges, int nedges, double **st);
 
 /* Write the scene: DIR/road.scene and DIR/roadobj/ (Tree, Car).  Scene text
@@ -137,10 +160,18 @@ typedef struct {
 int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf *car, char *err, size_t errlen);
 int road_emit_lanes(const road_geo *g, road_buf *out, char *err, size_t errlen);
 
+/* The counts the description asks for (frames, sequence length, vehicle
+ * poses, vertices, trees) against the limits above, before anything is
+ * generated: 0, or -1 with the error at the key to change in err. */
+int road_check_limits(const road_geo *g, char *err, size_t errlen);
+
 /* ---- motion ------------------------------------------------------------- */
 
 /* Distance travelled x, speed v and acceleration a at time t. */
 void road_profile_motion(const road_profile *p, double t, double *x, double *v, double *a);
+/* The time at which the distance travelled reaches X >= 0; INFINITY if
+ * the speed drops to 0 before. */
+double road_profile_time_to(const road_profile *p, double X);
 
 typedef struct {
     long frame;

@@ -108,11 +108,13 @@ typedef struct {
     int ne;
     double tol, maxseg;
     double *st;
-    long n, cap;
+    long n, cap, max;
 } tess;
 
 static int push_station(tess *t, double u)
 {
+    if (t->n >= t->max) /* a tolerance too fine for the road */
+        return -2;
     if (t->n == t->cap) {
         long cap = t->cap ? 2 * t->cap : 1024;
         double *p = realloc(t->st, sizeof(double) * cap);
@@ -156,18 +158,20 @@ static int subdivide(tess *t, double ua, const rv3 *Pa, double ub, const rv3 *Pb
     }
     if (ok || depth >= 60 || !(um > ua && um < ub))
         return push_station(t, ub);
-    if (subdivide(t, ua, Pa, um, Pm, depth + 1))
-        return -1;
-    return subdivide(t, um, Pm, ub, Pb, depth + 1);
+    int r = subdivide(t, ua, Pa, um, Pm, depth + 1);
+    return r ? r : subdivide(t, um, Pm, ub, Pb, depth + 1);
 }
 
-long road_stations(const road_geo *g, double u0, double u1, const road_edge *edges, int nedges, double **st)
+/* road_stations, giving up (-2) beyond max stations */
+static long stations_upto(const road_geo *g, double u0, double u1, const road_edge *edges, int nedges, double **st,
+                          long max)
 {
-    tess t = {g, edges, nedges > MAXE ? MAXE : nedges, g->d->tolerance, g->d->max_segment, NULL, 0, 0};
+    tess t = {g, edges, nedges > MAXE ? MAXE : nedges, g->d->tolerance, g->d->max_segment, NULL, 0, 0, max};
     rv3 Pa[MAXE], Pb[MAXE];
     *st = NULL;
-    if (push_station(&t, u0))
-        return -1;
+    int r = push_station(&t, u0);
+    if (r)
+        return r;
     edge_points(&t, u0, Pa);
     /* Knots inside [u0, u1] are stations: the curve's derivatives may jump
        there, and starting from them no span is skipped whole.  So are the
@@ -197,21 +201,26 @@ long road_stations(const road_geo *g, double u0, double u1, const road_edge *edg
         if (!(ub > ua))
             continue;
         edge_points(&t, ub, Pb);
-        if (subdivide(&t, ua, Pa, ub, Pb, 0)) {
+        if ((r = subdivide(&t, ua, Pa, ub, Pb, 0)) != 0) {
             free(brk);
             free(t.st);
-            return -1;
+            return r;
         }
         memcpy(Pa, Pb, sizeof(rv3) * t.ne);
         ua = ub;
     }
     free(brk);
-    if (t.st[t.n - 1] != u1 && push_station(&t, u1)) {
+    if (t.st[t.n - 1] != u1 && (r = push_station(&t, u1)) != 0) {
         free(t.st);
-        return -1;
+        return r;
     }
     *st = t.st;
     return t.n;
+}
+
+long road_stations(const road_geo *g, double u0, double u1, const road_edge *edges, int nedges, double **st)
+{
+    return stations_upto(g, u0, u1, edges, nedges, st, ROAD_MAX_VERTICES);
 }
 
 /* ---- scene text --------------------------------------------------------- */
@@ -260,7 +269,34 @@ typedef struct {
     char *err;
     size_t errlen;
     const char *file;
+    const road_desc *d;
+    long verts; /* emitted so far, against ROAD_MAX_VERTICES */
 } ectx;
+
+/* The tessellation the tolerance asks for is too fine: at the key that
+   sets it.  Returns -1. */
+static int too_fine(const road_desc *d, char *err, size_t errlen, const char *what)
+{
+    return road_error_at(d, d->line_tolerance ? d->line_tolerance : d->line_max_segment ? d->line_max_segment
+                                                                                        : d->line_points,
+                         err, errlen,
+                         "%s within tolerance %g m (max_segment %g m) need more than %ld vertices; raise the "
+                         "tolerance or max_segment",
+                         what, d->tolerance, d->max_segment, ROAD_MAX_VERTICES);
+}
+
+/* Stations for bands of per_station vertices per station, within what is
+   left of ROAD_MAX_VERTICES; or -1 with the error in x. */
+static long stations(const road_geo *g, double u0, double u1, const road_edge *e, int ne, double **st, ectx *x,
+                     int per_station)
+{
+    long n = stations_upto(g, u0, u1, e, ne, st, (ROAD_MAX_VERTICES - x->verts) / per_station);
+    if (n == -2)
+        return too_fine(x->d, x->err, x->errlen, "the road's surface and lines");
+    if (n < 0)
+        snprintf(x->err, x->errlen, "%s: error: out of memory", x->file);
+    return n;
+}
 
 /* Texture s across the road: s grows to the right as seen by a driver
    (towards -x, lateral offsets are positive to the left). */
@@ -276,6 +312,9 @@ static double across(const road_frame *fr, const road_edge *e, double tile)
 static int emit_band(FILE *f, const road_geo *g, const double *st, long n, const road_edge *e, double tile,
                      ectx *x)
 {
+    x->verts += 2 * (n + (n - 1) / STRIP_MAX); /* a strip after the first repeats a station */
+    if (x->verts > ROAD_MAX_VERTICES)
+        return too_fine(x->d, x->err, x->errlen, "the road's surface and lines");
     road_frame fr, prev = {0};
     rv3 L = {0, 0, 0}, R = {0, 0, 0}, Lp = {0, 0, 0}, Rp = {0, 0, 0};
     for (long k = 0; k < n; k++) {
@@ -332,11 +371,9 @@ static int emit_band(FILE *f, const road_geo *g, const double *st, long n, const
 static int band(FILE *f, const road_geo *g, double u0, double u1, const road_edge *e, double tile, ectx *x)
 {
     double *st;
-    long n = road_stations(g, u0, u1, e, 2, &st);
-    if (n < 0) {
-        snprintf(x->err, x->errlen, "%s: error: out of memory", x->file);
+    long n = stations(g, u0, u1, e, 2, &st, x, 2);
+    if (n < 0)
         return -1;
-    }
     int r = emit_band(f, g, st, n, e, tile, x);
     free(st);
     return r;
@@ -463,7 +500,7 @@ int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf
 {
     const road_desc *d = g->d;
     const nurbs *c = &g->c;
-    ectx x = {err, errlen, d->file};
+    ectx x = {err, errlen, d->file, d, 0};
     memset(scene, 0, sizeof *scene);
     FILE *f = open_memstream(&scene->text, &scene->len);
     if (!f) {
@@ -482,12 +519,11 @@ int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf
     /* Road and verges share one set of stations, so the verge's inner
        edge is the road's edge vertex for vertex: no gaps between them. */
     double *st;
-    long n = d->verge > 0 ? road_stations(g, nurbs_umin(c), nurbs_umax(c), e, 6, &st)
-                          : road_stations(g, nurbs_umin(c), nurbs_umax(c), e + 2, 2, &st);
+    long n = d->verge > 0 ? stations(g, nurbs_umin(c), nurbs_umax(c), e, 6, &st, &x, 6)
+                          : stations(g, nurbs_umin(c), nurbs_umax(c), e + 2, 2, &st, &x, 2);
     if (n < 0) {
         fclose(f);
         free(scene->text);
-        snprintf(err, errlen, "%s: error: out of memory", d->file);
         return -1;
     }
     fputs("// road surface\n", f);
@@ -574,13 +610,18 @@ int road_emit_lanes(const road_geo *g, road_buf *out, char *err, size_t errlen)
             d->tolerance);
     for (int b = 0; b <= d->lanes; b++)
         fprintf(f, "# boundary %d %s\n", b, style_name(d->marking[b]));
+    long points = 0;
     for (int b = 0; b <= d->lanes; b++) {
         road_edge e = {0.5 * d->lanes - b, 0, 0, 0};
         double *st;
-        long n = road_stations(g, nurbs_umin(c), nurbs_umax(c), &e, 1, &st);
+        long n = stations_upto(g, nurbs_umin(c), nurbs_umax(c), &e, 1, &st, ROAD_MAX_VERTICES - points);
+        if (n >= 0)
+            points += n;
         if (n < 0) {
             fclose(f);
             free(out->text);
+            if (n == -2)
+                return too_fine(d, err, errlen, "the lane polylines (lanes.txt)");
             return snprintf(err, errlen, "%s: error: out of memory", d->file), -1;
         }
         for (long k = 0; k < n; k++) {

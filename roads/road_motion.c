@@ -52,6 +52,36 @@ void road_profile_motion(const road_profile *p, double t, double *x, double *v, 
     *a = 0;
 }
 
+double road_profile_time_to(const road_profile *p, double X)
+{
+    double t = 0, x = 0; /* where segment k starts */
+    for (int k = 0; k + 1 < p->n; k++) {
+        double v0 = p->v[k], v1 = p->v[k + 1];
+        if (p->by_time) {
+            double t0 = p->x[k], t1 = p->x[k + 1], acc = (v1 - v0) / (t1 - t0);
+            double D = 0.5 * (v0 + v1) * (t1 - t0);
+            if (X <= x + D) {
+                /* v0 tau + acc tau^2 / 2 = X - x, the root that cannot
+                   cancel */
+                double r = X - x;
+                return r <= 0 ? t0 : t0 + 2 * r / (v0 + sqrt(v0 * v0 + 2 * acc * r));
+            }
+            x += D;
+            t = t1;
+        } else {
+            double dx = p->x[k + 1] - p->x[k];
+            if (X <= x + dx) /* inverse of x(t) in road_profile_motion */
+                return t + (X - x) / v0 * log1p_over((v1 - v0) * (X - x) / (dx * v0));
+            t += dx / v0 * log1p_over((v1 - v0) / v0);
+            x += dx;
+        }
+    }
+    if (p->by_time)
+        t = p->x[p->n - 1];
+    double vl = p->v[p->n - 1];
+    return X <= x ? t : vl > 0 ? t + (X - x) / vl : INFINITY;
+}
+
 /* ---- road roughness ----------------------------------------------------- */
 
 #define NWAVES 32
@@ -232,12 +262,9 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         /* until the end of the road: the vehicle must get there */
         double x, v, a, tl = d->speed.by_time ? d->speed.x[d->speed.n - 1] : 0;
         road_profile_motion(&d->speed, tl, &x, &v, &a);
-        if (v <= 0 && d->start + x < L) {
-            snprintf(err, errlen,
-                     "%s:%d:1: error: the vehicle stops before the end of the road; give 'frames' or 'duration'",
-                     d->file, d->speed.line);
-            return -1;
-        }
+        if (v <= 0 && d->start + x < L)
+            return road_error_at(d, d->speed.line, err, errlen,
+                                 "the vehicle stops before the end of the road; give 'frames' or 'duration'");
     }
     rigctx rc = {g, {d, {{0}, {0}, {0}}, 2 * M_PI * d->body_freq, d->body_damping, d->accel_pitch * DEG}, {0}};
     rough_init(&rc.b.r, d->roughness, d->seed);
@@ -255,11 +282,10 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         if (s > L) {
             if (d->frames < 0)
                 break;
-            snprintf(err, errlen,
-                     "%s:%d:1: error: the vehicle passes the end of the road (%.3f m) at frame %ld (t = %.6g s); "
-                     "give fewer frames, a lower speed or a longer road",
-                     d->file, d->line_frames, L, k, t);
-            return -1;
+            return road_error_at(d, d->line_frames, err, errlen,
+                                 "the vehicle passes the end of the road (%.3f m) at frame %ld (t = %.6g s); give "
+                                 "fewer frames, a lower speed or a longer road",
+                                 L, k, t);
         }
         if (k > 0)
             body_step(&rc.b, (k - 1) / d->fps, t, y);
@@ -274,8 +300,10 @@ long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *er
         rig_pose(&rc, &f, y[0], y[2], p.R, p.T);
         if (fn && fn(ctx, &p))
             return -1;
-        if (k >= 100000000L)
+        if (k + 1 >= ROAD_MAX_FRAMES) { /* road_check_limits reports it first */
+            k++;
             break;
+        }
     }
     return k;
 }
@@ -325,7 +353,9 @@ void road_quat_from_R(const double R[9], double q[4])
 typedef struct {
     const road_geo *g;
     FILE *traj, *kitti, *tum, *veh;
-    double R0[9], T0[3]; /* first frame, for KITTI's relative poses */
+    double R0[9];     /* first frame's rotation and centre, for KITTI's */
+    rv3 c0;           /* poses relative to it                            */
+    double q_prev[4]; /* the last TUM quaternion, for continuity         */
 } outctx;
 
 static void nums(FILE *f, const double *v, int n)
@@ -353,20 +383,31 @@ static int write_pose(void *vctx, const road_pose *p)
     rm_transpose(p->R, Rw);
     rv3 c = rm_apply(Rw, rv(-p->T[0], -p->T[1], -p->T[2]));
     /* KITTI: [R|t] of frame i in frame 0's camera: T_c0_w * T_w_ci =
-       [R0 Rw_i | R0 c_i + T0] */
+       [R0 Rw_i | R0 (c_i - c_0)].  Frame 0 relative to itself is the
+       identity by definition: written as such, not as R0 R0^T (which is
+       the identity only to rounding). */
+    double row[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
     if (p->frame == 0) {
         memcpy(o->R0, p->R, sizeof o->R0);
-        memcpy(o->T0, p->T, sizeof o->T0);
+        o->c0 = c;
+    } else {
+        double K[9];
+        rm_mul(o->R0, Rw, K);
+        rv3 kt = rm_apply(o->R0, rv_sub(c, o->c0));
+        double r[12] = {K[0], K[1], K[2], kt.x, K[3], K[4], K[5], kt.y, K[6], K[7], K[8], kt.z};
+        memcpy(row, r, sizeof row);
     }
-    double K[9];
-    rm_mul(o->R0, Rw, K);
-    rv3 kt = rm_apply(o->R0, c);
-    double row[12] = {K[0], K[1], K[2], kt.x + o->T0[0], K[3], K[4], K[5], kt.y + o->T0[1],
-                      K[6], K[7], K[8], kt.z + o->T0[2]};
     nums(o->kitti, row, 12);
     fputc('\n', o->kitti);
+    /* TUM: q and -q are the same rotation; frame 0 takes w >= 0, every
+       later frame the sign nearer the previous quaternion, so the sequence
+       is continuous (interpolating it never takes the long way round) */
     double q[4];
     road_quat_from_R(Rw, q);
+    if (p->frame > 0 && q[0] * o->q_prev[0] + q[1] * o->q_prev[1] + q[2] * o->q_prev[2] + q[3] * o->q_prev[3] < 0)
+        for (int i = 0; i < 4; i++)
+            q[i] = -q[i];
+    memcpy(o->q_prev, q, sizeof q);
     double tum[8] = {p->time, c.x, c.y, c.z, q[0], q[1], q[2], q[3]};
     nums(o->tum, tum, 8);
     fputc('\n', o->tum);
@@ -410,7 +451,7 @@ int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_bu
         f[i] = open_memstream(&b[i]->text, &b[i]->len);
         ok &= f[i] != NULL;
     }
-    outctx o = {g, f[0], f[1], f[2], f[3], {0}, {0}};
+    outctx o = {g, f[0], f[1], f[2], f[3], {0}, {0, 0, 0}, {0}};
     long n = -1;
     if (ok) {
         fprintf(f[0], "# glsroad trajectory 1\n"

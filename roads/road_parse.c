@@ -48,6 +48,32 @@ static int fail(pctx *c, const char *fmt, ...)
     return -1;
 }
 
+int road_error_at(const road_desc *d, int line, char *err, size_t errlen, const char *fmt, ...)
+{
+    /* the line's start, and its key: the first word */
+    size_t i = 0;
+    int at_line = 1;
+    if (line <= 0) { /* nothing to point at: the last line */
+        line = 1;
+        for (size_t k = 0; k + 1 < d->len; k++)
+            line += d->text[k] == '\n';
+    }
+    while (at_line < line && i < d->len)
+        at_line += d->text[i++] == '\n';
+    unsigned col = 1;
+    while (i < d->len && (d->text[i] == ' ' || d->text[i] == '\t'))
+        i++, col++;
+    char msg[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(err, errlen, "%s:%d:%u: error: %s", d->file, line, col, msg);
+    if (d->text)
+        gls_append_source_line(err, errlen, d->text, d->len, (unsigned)line, col);
+    return -1;
+}
+
 static int num(pctx *c, const char *tok, const char *what, double *out)
 {
     const char *why = gls_parse_finite(tok, out); /* underflow to 0 is harmless */
@@ -103,6 +129,8 @@ static int profile_add(pctx *c, road_profile *p, double x, double v)
                     x, p->x[p->n - 1]);
     if (p->n == 0 && x != 0)
         return fail(c, "the first point of a profile must be at %s 0", p->by_time ? "time" : "distance");
+    if (p->n == ROAD_MAX_PROFILE_POINTS)
+        return fail(c, "a profile has at most %d points", ROAD_MAX_PROFILE_POINTS);
     if (p->n == p->cap) {
         int cap = p->cap ? 2 * p->cap : 8;
         double *nx = realloc(p->x, sizeof(double) * cap);
@@ -207,6 +235,8 @@ static int parse_line(pctx *c, road_desc *d, char **tok, int ntok, int *seen_deg
     } else if (!strcmp(k, "point")) {
         if (na != 3 && na != 4)
             return fail(c, "'point' takes x y z [weight], got %d values", na);
+        if (d->npts == ROAD_MAX_POINTS)
+            return fail(c, "at most %d control points", ROAD_MAX_POINTS);
         if (grow((void **)&d->pts, &d->ncap, d->npts + 1, 3 * sizeof(double)))
             return fail(c, "out of memory");
         double *w = realloc(d->w, sizeof(double) * d->ncap);
@@ -276,6 +306,7 @@ static int parse_line(pctx *c, road_desc *d, char **tok, int ntok, int *seen_deg
         return pos(c, a[0], "marking width", &d->marking_width);
     } else if (!strcmp(k, "dash")) {
         NARGS(2);
+        d->line_dash = c->line;
         return pos(c, a[0], "dash length", &d->dash) || pos(c, a[1], "gap length", &d->gap) ? -1 : 0;
     } else if (!strcmp(k, "double_gap")) {
         NARGS(1);
@@ -294,12 +325,14 @@ static int parse_line(pctx *c, road_desc *d, char **tok, int ntok, int *seen_deg
         return pos(c, a[0], "bank_speed", &d->bank_speed);
     } else if (!strcmp(k, "tolerance")) {
         NARGS(1);
+        d->line_tolerance = c->line;
         if (pos(c, a[0], "tolerance", &d->tolerance))
             return -1;
         if (d->tolerance < 1e-6)
             return fail(c, "tolerance below a micrometre (%s) is beyond what the tessellation can meet", a[0]);
     } else if (!strcmp(k, "max_segment")) {
         NARGS(1);
+        d->line_max_segment = c->line;
         return pos(c, a[0], "max_segment", &d->max_segment);
     } else if (!strcmp(k, "road_color")) {
         return colour(c, a, na, d->road_color);
@@ -344,6 +377,7 @@ static int parse_line(pctx *c, road_desc *d, char **tok, int ntok, int *seen_deg
         d->ntrees++;
     } else if (!strcmp(k, "fps")) {
         NARGS(1);
+        d->line_fps = c->line;
         return pos(c, a[0], "fps", &d->fps);
     } else if (!strcmp(k, "frames") || !strcmp(k, "duration")) {
         NARGS(1);
@@ -351,7 +385,7 @@ static int parse_line(pctx *c, road_desc *d, char **tok, int ntok, int *seen_deg
             return fail(c, "'frames' or 'duration' given twice");
         d->line_frames = c->line;
         if (k[0] == 'f') {
-            if (whole(c, a[0], "frames", 1, 100000000, &lv))
+            if (whole(c, a[0], "frames", 1, ROAD_MAX_FRAMES, &lv))
                 return -1;
             d->frames = lv;
         } else {
@@ -410,6 +444,8 @@ static int parse_line(pctx *c, road_desc *d, char **tok, int ntok, int *seen_deg
                 return fail(c, "vehicle name '%s': use letters, digits and '_'", a[0]);
         if (find_vehicle(d, a[0]))
             return fail(c, "vehicle '%s' is already defined", a[0]);
+        if (d->nveh == ROAD_MAX_VEHICLES)
+            return fail(c, "at most %d 'vehicle' lines", ROAD_MAX_VEHICLES);
         if (grow((void **)&d->veh, &d->vcap, d->nveh + 1, sizeof(road_vehicle)))
             return fail(c, "out of memory");
         road_vehicle *v = &d->veh[d->nveh];
@@ -480,6 +516,8 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
 {
     memset(d, 0, sizeof *d);
     d->file = fname;
+    d->text = text;
+    d->len = len;
     defaults(d);
     pctx c = {fname, 0, err, errlen, text, len, NULL, 1};
     int seen_degree = 0;
@@ -561,8 +599,17 @@ int road_parse(const char *text, size_t len, const char *fname, road_desc *d, ch
         if (!d->marking_set[b])
             d->marking[b] = (b == 0 || b == d->lanes) ? MARK_SOLID : MARK_DASHED;
     }
-    if (d->frames == -2)
-        d->frames = lround(d->duration * d->fps);
+    if (d->frames == -2) {
+        /* the product is checked before it is rounded to a count */
+        double n = d->duration * d->fps;
+        if (!(n < ROAD_MAX_FRAMES + 0.5)) {
+            road_error_at(d, d->line_frames, err, errlen,
+                          "duration %g s at %g fps is %.6g frames, more than the %ld allowed", d->duration, d->fps,
+                          n, ROAD_MAX_FRAMES);
+            goto bad;
+        }
+        d->frames = lround(n);
+    }
     if (d->frames == 0) {
         c.line = d->line_frames;
         fail(&c, "duration %g s at %g fps is no frame at all", d->duration, d->fps);

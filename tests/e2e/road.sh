@@ -11,11 +11,12 @@ ok() { echo "ok $1"; }
 fail() { echo "FAIL $1: $2"; }
 [ -x "$R" ] || { fail road_cli "no $R"; exit 0; }
 
-# expect NAME STATUS EXACT-STDERR-LINE -- command...
+# expect NAME STATUS EXACT-STDERR-LINE -- command...  (a command that hangs
+# fails with status 124)
 expect() {
     name=$1 want=$2 msg=$3
     shift 4
-    "$@" >"$t/stdout" 2>"$t/stderr"
+    timeout 120 "$@" >"$t/stdout" 2>"$t/stderr"
     rc=$?
     if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
     elif [ -n "$msg" ] && [ "$(head -1 "$t/stderr")" != "$msg" ]; then fail "$name" "stderr '$(head -1 "$t/stderr")', wanted '$msg'"
@@ -56,6 +57,48 @@ err_case too_far "${P}${S}frames 1000\n" "6:1: error: the vehicle passes the end
 err_case vehicle_unknown "${P}${S}vehicle_speed bus distance 0 10\n" "6:1: error: unknown vehicle 'bus' (define it with a 'vehicle' line first)"
 err_case fold "degree 2\npoint 0 0 0\npoint 0 0 10\npoint -8 0 10 0.7071067811865476\npoint -8 0 0\nknots 0 0 0 0.5 1 1 1\nverge 0\n${S}" " error: the road folds over itself near distance 8.981 m: the curve radius there (3.921 m) is smaller than the lateral offset of an edge (4.000 m); widen the curve or narrow the road"
 
+
+# computed counts are checked before anything is generated (spec/road.md,
+# "Limits"), at the key to change: none of these may run long or exhaust
+# memory (before the checks, fps 1e200 ran until memory ran out)
+err_case frames_product "${P}${S}fps 1e6\nduration 100\n" "7:1: error: duration 100 s at 1e+06 fps is 1e+08 frames, more than the 1000000 allowed"
+err_case frames_to_end "${P}${S}fps 1e200\n" "6:1: error: the vehicle reaches the end of the road (150.399 m) after 15.0399 s: 1.50399e+201 frames at 1e+200 fps, more than the 1000000 allowed; lower the fps or give 'frames' or 'duration'"
+err_case frames_limit "${P}${S}frames 1000001\n" "6:1: error: frames must be a whole number 1..1000000, got '1000001'"
+err_case seconds "${P}speed_at time 0 0\nfps 0.001\nframes 100\n" "7:1: error: 100 frames at 0.001 fps last 99000 s, more than the 10000 s allowed (the body's motion is integrated in steps of 1 ms)"
+V=''
+for v in a b c d e f g h i j k; do V="${V}vehicle $v\nvehicle_speed $v distance 0 1\n"; done
+err_case vehicle_poses "${P}${S}fps 1e5\nframes 1000000\n$V" "7:1: error: 1e+06 frames x 11 vehicles are 1.1e+07 vehicle poses, more than the 10000000 allowed"
+err_case max_segment "${P}${S}max_segment 1e-5\n" "6:1: error: 150.399 m of road within tolerance 0.001 m and max_segment 1e-05 m need about 9.78e+07 vertices for its surface and lines, more than the 4194304 allowed; raise max_segment"
+err_case dashes "${P}${S}dash 1e-5 1e-5\n" "6:1: error: 7.51996e+06 dashes (1e-05 m dash, 1e-05 m gap along 150.399 m of road) and the rest of the road need about 3.01e+07 vertices, more than the 4194304 allowed; lengthen the dashes and gaps"
+err_case trees "${P}${S}trees 1e-5 1\n" "6:1: error: the 'trees' lines place 3.00798e+07 trees along 150.399 m of road, more than the 1048576 allowed; space them further apart"
+# a helix of radius ~40 m, 100 turns: 1e-6 m of chordal tolerance is
+# millions of vertices (estimated from the curvature, refused at once)
+H=$(awk 'BEGIN { for (i = 0; i <= 800; i++) { a = i * 3.14159265 / 4; printf "point %.3f %.3f %.3f\\n", 40 * cos(a), i * 0.5, 40 * sin(a) } }')
+err_case tolerance "${H}${S}frames 2\ntolerance 1e-6\n" "804:1: error: 22668.535 m of road within tolerance 1e-06 m and max_segment 10 m need about 8.67e+06 vertices for its surface and lines, more than the 4194304 allowed; raise the tolerance"
+S257=$(awk 'BEGIN { for (i = 0; i <= 256; i++) printf "speed_at time %d 10\\n", i }')
+err_case profile_points "${P}${S257}" "261:1: error: a profile has at most 256 points"
+V257=$(awk 'BEGIN { for (i = 0; i <= 256; i++) printf "vehicle v%d\\n", i }')
+err_case vehicles "${P}${S}${V257}" "262:1: error: at most 256 'vehicle' lines"
+# a key with indentation: the caret is under the key
+printf '%b' "${P}${S}   fps 1e9\n" >"$t/key_col.road"
+timeout 120 "$R" "$t/key_col.road" -o "$t/o_key_col" 2>"$t/stderr"
+if [ "$(head -1 "$t/stderr")" = "$t/key_col.road:6:4: error: the vehicle reaches the end of the road (150.399 m) after 15.0399 s: 1.50399e+10 frames at 1e+09 fps, more than the 1000000 allowed; lower the fps or give 'frames' or 'duration'" ] &&
+    [ "$(sed -n 2p "$t/stderr")" = "   fps 1e9" ] && [ "$(sed -n 3p "$t/stderr")" = "   ^" ]; then
+    ok road_error_limit_at_key
+else
+    fail road_error_limit_at_key "$(cat "$t/stderr")"
+fi
+
+# errors found while generating point at their key too
+printf '%b' "${P}${S}  frames 1000\n" >"$t/too_far_key.road"
+timeout 120 "$R" "$t/too_far_key.road" -o "$t/o_too_far_key" 2>"$t/stderr"
+if [ "$(head -1 "$t/stderr")" = "$t/too_far_key.road:6:3: error: the vehicle passes the end of the road (150.399 m) at frame 376 (t = 15.04 s); give fewer frames, a lower speed or a longer road" ] &&
+    [ "$(sed -n 2p "$t/stderr")" = "  frames 1000" ] && [ "$(sed -n 3p "$t/stderr")" = "  ^" ]; then
+    ok road_error_too_far_at_key
+else
+    fail road_error_too_far_at_key "$(cat "$t/stderr")"
+fi
+
 # the excerpt under the message: the offending line, a caret under the column
 printf '%b' "${P}${S}tolerance 1mm\n" >"$t/excerpt.road"
 "$R" "$t/excerpt.road" -o "$t/o_excerpt" 2>"$t/stderr"
@@ -90,6 +133,42 @@ if diff -r "$t/demo" "$t/demo2" >/dev/null; then ok road_deterministic; else fai
 # one frame per line, 500 frames (20 s at 25 fps)
 n=$(grep -vc '^#' "$t/demo/trajectory.txt")
 [ "$n" = 500 ] && [ "$(wc -l <"$t/demo/poses_kitti.txt")" = 500 ] && ok road_frame_count || fail road_frame_count "$n frames"
+
+# The output directory is replaced as a whole (spec/road.md, "Outputs"):
+# a failure part way leaves the previous set intact.  The failure: a file
+# size limit (ulimit -f, SIGXFSZ ignored so write() fails with EFBIG) that
+# road.scene and lanes.txt of this road fit in and its trajectory.txt not.
+printf '%b' "${P}${S}fps 100\n" >"$t/long.road"
+"$R" examples/road/demo.road -o "$t/set" >/dev/null 2>&1 && cp -a "$t/set" "$t/set_before"
+expect road_output_write_fails 1 "glsroad: error: cannot write $t/set/trajectory.txt: File too large" -- \
+    sh -c 'trap "" XFSZ; ulimit -f 200; exec "$0" "$@"' "$R" "$t/long.road" -o "$t/set"
+if diff -r "$t/set_before" "$t/set" >"$t/diff" 2>&1; then ok road_output_kept_on_failure
+else fail road_output_kept_on_failure "the previous set changed: $(head -3 "$t/diff")"; fi
+ls -d "$t"/set.* >/dev/null 2>&1 && fail road_output_no_temporary_dir "left: $(ls -d "$t"/set.*)" ||
+    ok road_output_no_temporary_dir
+# without the limit the same road replaces the set: exactly its own outputs
+"$R" "$t/long.road" -o "$t/long_fresh" >/dev/null 2>&1
+if "$R" "$t/long.road" -o "$t/set/" >/dev/null 2>"$t/err" && diff -r "$t/long_fresh" "$t/set" >"$t/diff" 2>&1 &&
+    ! ls -d "$t"/set.* >/dev/null 2>&1; then
+    ok road_output_replaced_whole
+else
+    fail road_output_replaced_whole "$(cat "$t/err") $(head -3 "$t/diff")"
+fi
+# a directory glsroad did not write is never replaced, nor written into
+mkdir "$t/user" && echo keep >"$t/user/notes.txt"
+expect road_output_foreign_dir 1 "glsroad: error: $t/user is not a glsroad output directory: it holds 'notes.txt', which glsroad does not write; give a new or an empty directory" -- \
+    "$R" examples/road/demo.road -o "$t/user"
+[ "$(ls "$t/user")" = notes.txt ] && ok road_output_foreign_dir_untouched || fail road_output_foreign_dir_untouched "$(ls "$t/user")"
+echo x >"$t/afile"
+expect road_output_not_dir 1 "glsroad: error: $t/afile exists and is not a directory" -- \
+    "$R" examples/road/demo.road -o "$t/afile"
+mkdir "$t/empty"
+expect road_output_empty_dir 0 "" -- "$R" examples/road/demo.road -o "$t/empty"
+# the directory that cannot be created is the one named (it named
+# DIR/roadobj when DIR itself could not be made); missing parents are
+# created (above), a parent that is a file cannot be
+expect road_output_parent_not_dir 1 "glsroad: error: cannot create the parent directories of $t/afile/out: Not a directory" -- \
+    "$R" examples/road/demo.road -o "$t/afile/out"
 
 # --camera-at: the camera file with R, T composed; the rest kept
 if "$R" --camera-at 120 "$t/demo/trajectory.txt" examples/road/rig/left.cam >"$t/l120.cam" 2>"$t/err"; then
@@ -129,14 +208,23 @@ for i in range(len(tr)):
     ang = np.linalg.norm(rvec)
     ax = rvec.ravel() / ang if ang > 0 else np.zeros(3)
     q = np.r_[ax * math.sin(ang / 2), math.cos(ang / 2)]
-    if q[3] < 0: q = -q
-    worst_q = max(worst_q, np.abs(q - tum[i, 4:8]).max())
+    # q and -q are the same rotation: compare with the nearer one
+    worst_q = max(worst_q, min(np.abs(q - tum[i, 4:8]).max(), np.abs(q + tum[i, 4:8]).max()))
     worst_t = max(worst_t, np.abs(c - tum[i, 1:4]).max())
     K = np.c_[R0 @ Rw, R0 @ c + T0]
     worst_k = max(worst_k, np.abs(K - ki[i].reshape(3, 4)).max())
 ok("road_tum_quaternion_opencv", worst_q < 1e-9, "quaternion error %g" % worst_q)
 ok("road_tum_position", worst_t < 1e-9, "position error %g" % worst_t)
-ok("road_kitti_relative", worst_k < 1e-9 and np.allclose(ki[0], [1,0,0,0,0,1,0,0,0,0,1,0]), "error %g" % worst_k)
+# TUM quaternions are continuous: the first has w >= 0, each next one the
+# sign nearer its predecessor (the demo's rig looks along +z, a half turn
+# from the world's axes, so w crosses 0 on the way)
+dots = np.sum(tum[1:, 4:8] * tum[:-1, 4:8], axis=1)
+ok("road_tum_quaternion_continuous", tum[0, 7] >= 0 and dots.min() >= 0,
+   "w0 = %g, %d sign flips, smallest dot %g" % (tum[0, 7], np.count_nonzero(dots < 0), dots.min()))
+ok("road_kitti_relative", worst_k < 1e-9, "error %g" % worst_k)
+# KITTI poses are relative to the first frame: line 0 is exactly [I|0]
+first = open(d + "/poses_kitti.txt").readline()
+ok("road_kitti_first_identity", first == "1 0 0 0 0 1 0 0 0 0 1 0\n", "line 0 is %r" % first)
 # the composed camera: left camera 0.15 m left of the rig (rig x is right)
 vals = {}
 for line in open(cam):

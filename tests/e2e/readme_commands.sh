@@ -1,0 +1,101 @@
+#!/bin/sh
+# Every command in README.md runs as written in a fresh copy of the
+# repository after `make demo`, and leaves that checkout clean: outputs go
+# only under out/ and build/, which git ignores.  Also `make demo` is
+# incremental: a second run renders nothing, and touching one camera file
+# renders again only the scene that camera belongs to.
+# Prints "ok NAME" / "FAIL NAME: why".
+#
+# The commands: the lines of README.md's indented code blocks whose first
+# line starts with "build/" or "make " (a trailing backslash joins the next
+# line), in order; the first is `make demo`.  `make test` is not run: it is
+# the suite this script belongs to.
+# The copy: the files git tracks or would track (not ignored) in this
+# checkout, as they are now, in a new git repository under mktemp -d, with
+# $GLS_BIN copied as its build/ (timestamps kept: make rebuilds nothing).
+# Nothing is written in this checkout.
+B=${GLS_BIN:-build}
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+# Under the sanitizers (CI's second pass, GLS_SANITIZED=1) the same
+# commands would only take minutes longer: they run once, on the normal build.
+[ "$GLS_SANITIZED" = 1 ] && exit 0
+for f in glsc glsdis glsplay glsroad scenelib.glsb; do
+    [ -e "$B/$f" ] || { fail readme_commands "no $B/$f (run make)"; exit 0; }
+done
+command -v git >/dev/null || { fail readme_commands "no git"; exit 0; }
+t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
+repo=$t/repo
+mkdir "$repo"
+git ls-files -z --cached --others --exclude-standard |
+    tar --null -T - --ignore-failed-read -cf - 2>/dev/null | tar -xf - -C "$repo" || { fail readme_copy "tar"; exit 0; }
+cp -a "$B/." "$repo/build/" 2>/dev/null || { fail readme_copy "cannot copy $B"; exit 0; }
+rm -f "$repo/build/test.log"
+(cd "$repo" && git init -q && git add -A && git -c user.name=readme -c user.email=readme@localhost commit -qm copy) ||
+    { fail readme_copy "git"; exit 0; }
+# the commands see the environment a user has, not this suite's make
+unset MAKEFLAGS MFLAGS MAKELEVEL B GLS_BIN
+
+# ---- the commands ----------------------------------------------------------------
+awk '
+    /^    / && (blank || inblock) {
+        if (!inblock) { inblock = 1; cmds = ($0 ~ /^    (build\/|make )/) }
+        if (cmds) {
+            line = substr($0, 5)
+            if (line ~ /\\$/) { acc = acc substr(line, 1, length(line) - 1); next }
+            sub(/^ +/, "", line)
+            print acc line
+            acc = ""
+        }
+        blank = 0; next
+    }
+    { inblock = 0; blank = ($0 ~ /^[ \t]*$/) }
+    BEGIN { blank = 1 }' README.md >"$t/commands"
+n=$(wc -l <"$t/commands")
+[ "$n" -ge 10 ] && [ "$(head -1 "$t/commands" | cut -c1-9)" = "make demo" ] && ok readme_commands_found ||
+    fail readme_commands_found "$n commands, the first '$(head -1 "$t/commands")' (want make demo first, and at least 10)"
+i=0
+while IFS= read -r cmd; do
+    i=$((i + 1))
+    case "$cmd" in "make test"*) continue ;; esac
+    echo "# README command $i: $cmd"
+    if (cd "$repo" && timeout 600 sh -c "$cmd") >"$t/out" 2>&1 </dev/null; then
+        ok "readme_command_$i"
+    else
+        fail "readme_command_$i" "'$cmd' failed: $(tail -3 "$t/out" | tr '\n' ' ')"
+    fi
+done <"$t/commands"
+st=$(cd "$repo" && git status --porcelain)
+[ -z "$st" ] && ok readme_commands_leave_checkout_clean ||
+    fail readme_commands_leave_checkout_clean "untracked or changed: $(echo "$st" | tr '\n' ' ')"
+
+# ---- make demo is incremental ------------------------------------------------------
+RENDERS='glsplay|render\.sh|/glsc |depth2png|pnghalf'
+(cd "$repo" && make -n demo) >"$t/n" 2>&1
+grep -Eq "$RENDERS" "$t/n" && fail demo_second_run_renders_nothing "$(grep -E "$RENDERS" "$t/n" | head -3)" ||
+    ok demo_second_run_renders_nothing
+# one camera file of one example: exactly that example again
+touch "$repo/examples/stereo/bino_left.cam"
+(cd "$repo" && make -n demo) >"$t/n" 2>&1
+if [ "$(grep -E "$RENDERS" "$t/n")" = "EXAMPLES_ONLY=stereo sh examples/render.sh build out out/gallery" ]; then
+    ok demo_camera_touch_plans_its_render
+else
+    fail demo_camera_touch_plans_its_render "make -n demo: $(grep -E "$RENDERS" "$t/n" | tr '\n' ' ')"
+fi
+touch "$t/mark"
+sleep 1
+(cd "$repo" && make demo) >"$t/out" 2>&1 || fail demo_camera_touch_rerenders "make demo: $(tail -3 "$t/out")"
+new=$(cd "$repo" && find out -type f -newer "$t/mark" | sort)
+other=$(echo "$new" | grep -v -e '^out/stereo/' -e '^out/gallery/ex_stereo')
+if echo "$new" | grep -q '^out/stereo/bino_left/image_000000.png$' && [ -z "$other" ]; then
+    ok demo_camera_touch_rerenders_only_its_scene
+else
+    fail demo_camera_touch_rerenders_only_its_scene "rewritten: $(echo "$new" | tr '\n' ' ')"
+fi
+# the demo's own camera: the demo render only
+touch "$repo/examples/demo/left.cam"
+(cd "$repo" && make -n demo) >"$t/n" 2>&1
+want="build/glsplay build/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
+build/depth2png out/demo/left/depth_000000.pfm out/demo/left/depth_000000_view.png"
+[ "$(grep -E "$RENDERS" "$t/n")" = "$want" ] && ok demo_camera_touch_plans_demo_render ||
+    fail demo_camera_touch_plans_demo_render "make -n demo: $(grep -E "$RENDERS" "$t/n" | tr '\n' ' ')"

@@ -1,0 +1,46 @@
+#!/bin/sh
+# glsc's unknown-texture and unknown-object messages name where the build
+# generates the scene library (spec/language.md, 2.1): `glsc -I scenelib`
+# alone cannot find its textures (in $GLS_BIN/textures) or its parametric
+# objects (in $GLS_BIN/scenelib).  Prints "ok NAME" / "FAIL NAME: why".
+B=${GLS_BIN:-build}
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+[ -x "$B/glsc" ] && [ -f "$B/textures/road/vegetation/tex/Birch.tga" ] || { echo "FAIL texture_hint: no $B/glsc or textures"; exit 0; }
+"$B/glsc" -I scenelib -o "$t/box.glsb" scenelib/road/vegetation/Birch.scene 2>"$t/err"
+rc=$?
+want="scenelib/road/vegetation/Birch.scene:17:10: error: unknown texture 'road.vegetation.tex.Birch' (searched: scenelib; extensions .tga .png .jpg .jpeg .bmp); the build generates it in $B/textures: add -I $B/textures"
+if [ $rc -eq 1 ] && [ "$(head -1 "$t/err")" = "$want" ] && [ "$(wc -l <"$t/err")" -eq 3 ]; then
+    echo "ok texture_hint_scenelib"
+else
+    echo "FAIL texture_hint_scenelib: exit $rc: $(cat "$t/err")"
+fi
+# and the advice works
+if "$B/glsc" -I scenelib -I "$B/textures" -o "$t/box.glsb" scenelib/road/vegetation/Birch.scene 2>"$t/err"; then
+    echo "ok texture_hint_advice_works"
+else
+    echo "FAIL texture_hint_advice_works: $(cat "$t/err")"
+fi
+# a texture the build does not generate gets no such note
+mkdir -p "$t/lib" && echo 'texture("tex.Missing"); poly { vert(0,0,0); vert(1,0,0); vert(0,1,0); }' >"$t/lib/Top.scene"
+"$B/glsc" -I "$t/lib" -o "$t/top.glsb" "$t/lib/Top.scene" 2>"$t/err"
+if grep -q "unknown texture 'tex.Missing'" "$t/err" && ! grep -q "generates" "$t/err"; then
+    echo "ok texture_hint_only_generated"
+else
+    echo "FAIL texture_hint_only_generated: $(cat "$t/err")"
+fi
+# the scene library's generated objects live in $B/scenelib, not scenelib/:
+# an unknown object found there gets the same kind of note
+"$B/glsc" -I scenelib -I "$B/textures" -o "$t/street.glsb" scenelib/scenes/Street.scene 2>"$t/err"
+rc=$?
+want="scenelib/scenes/Street.scene:18:7: error: unknown object 'road.Straight100m' (searched: scenelib, $B/textures); the build generates it in $B/scenelib: add -I $B/scenelib"
+if [ $rc -eq 1 ] && [ "$(head -1 "$t/err")" = "$want" ]; then
+    echo "ok object_hint_scenelib"
+else
+    echo "FAIL object_hint_scenelib: exit $rc: $(head -1 "$t/err")"
+fi
+if "$B/glsc" -I "$B/scenelib" -I "$B/textures" -o "$t/street.glsb" scenelib/scenes/Street.scene 2>"$t/err"; then
+    echo "ok object_hint_advice_works"
+else
+    echo "FAIL object_hint_advice_works: $(cat "$t/err")"
+fi
