@@ -167,7 +167,7 @@ expect road_output_empty_dir 0 "" -- "$R" examples/road/demo.road -o "$t/empty"
 # the directory that cannot be created is the one named (it named
 # DIR/roadobj when DIR itself could not be made); missing parents are
 # created (above), a parent that is a file cannot be
-expect road_output_parent_not_dir 1 "glsroad: error: cannot create the parent directories of $t/afile/out: Not a directory" -- \
+expect road_output_parent_not_dir 1 "glsroad: error: cannot use $t/afile/out: Not a directory" -- \
     "$R" examples/road/demo.road -o "$t/afile/out"
 
 # --camera-at: the camera file with R, T composed; the rest kept
