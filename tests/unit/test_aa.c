@@ -97,6 +97,7 @@ static void test_accum_limit_gauss(void)
     gls_aa_opts o = gls_aa_defaults();
     o.n = 4096;
     o.filter = GLS_AA_GAUSS;
+    o.pattern = GLS_AA_GRID; /* the N x N window (the lattice's would be 25 x 4096^2) */
     gls_aa_plan p;
     CHECK(gls_aa_plan_init(&p, &o, err, sizeof err) == 0);
     CHECK(p.wsum <= (1ull << 52) && p.wsum > (1ull << 52) - p.count);
@@ -168,13 +169,16 @@ static void test_gauss_weights_sum(void)
 /* --subpixel: the smallest N whose step is at most the accuracy. */
 static void test_subpixel_rule(void)
 {
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1.0 / 256) == 256);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 0.1) == 10);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 0.3) == 4);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1) == 1);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_GAUSS, 0.5, 1.0 / 256) == 768);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1.0 / 4096) == 4096);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1.0 / 5000) == 0);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1.0 / 256) == 256);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 0.1) == 10);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 0.3) == 4);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1) == 1);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_GAUSS, GLS_AA_GRID, 0.5, 1.0 / 256) == 768);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1.0 / 4096) == 4096);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1.0 / 5000) == 0);
+    /* the lattice's samples are per pixel area whatever the filter */
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_GAUSS, GLS_AA_LATTICE, 0.5, 1.0 / 256) == 256);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_LATTICE, 0.5, 1.0 / 16) == 16);
 }
 
 /* ---- rendering ------------------------------------------------------ */

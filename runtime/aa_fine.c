@@ -1,0 +1,114 @@
+/* Fine framebuffer geometry (aa_fine.h).  All exact integer arithmetic;
+ * positions in units of 1/q px. */
+#include <stdlib.h>
+#include <string.h>
+#include "aa_fine.h"
+
+int gls_aa_fine_ok(const gls_aa_plan *p)
+{
+    return p->m > 1 && (p->o.pattern == GLS_AA_LATTICE || (p->o.pattern == GLS_AA_GRID && p->o.filter == GLS_AA_BOX));
+}
+
+/* K for n things split into parts of at most max_l (see aa_fine.h);
+ * divides(d) says whether d is a valid K. */
+static uint64_t choose_k(uint64_t n, uint64_t max_l, uint64_t (*ok)(uint64_t, uint64_t), uint64_t arg)
+{
+    if (n <= max_l)
+        return 1;
+    uint64_t need = (n + max_l - 1) / max_l, k = need;
+    while (k < n && !ok(arg, k))
+        k++;
+    if (k > 4 * need)
+        for (k = need; k > 1 && !ok(arg, k); k--)
+            ;
+    return k;
+}
+
+static uint64_t divides(uint64_t m, uint64_t d) { return m % d == 0; }
+/* grid: K = k^2 with k dividing N (arg); d here is K */
+static uint64_t square_divides(uint64_t n, uint64_t d)
+{
+    uint64_t k = 1;
+    while (k * k < d)
+        k++;
+    return k * k == d && n % k == 0;
+}
+
+int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l)
+{
+    memset(f, 0, sizeof *f);
+    if (!gls_aa_fine_ok(p))
+        return -1;
+    if (max_l < 1)
+        max_l = 1;
+    f->p = p;
+    if (p->o.pattern == GLS_AA_GRID) {
+        uint64_t n = p->o.n, K = choose_k(n * n, max_l, square_divides, n), k = 1;
+        while (k * k < K)
+            k++;
+        f->gk = k;
+        f->k = k * k;
+        f->l = (n / k) * (n / k);
+        f->q = 2 * n;
+        f->a[0][0] = f->a[1][1] = (int64_t)(n / k);
+        return 0;
+    }
+    uint64_t m = p->m;
+    f->k = choose_k(m, max_l, divides, m);
+    f->l = m / f->k;
+    f->q = p->lat.q;
+    /* points i = r + j K: (j / L, j a / L) + (r / M, r a / M), so the pass
+     * lattice has L points and generator a mod L */
+    gls_lattice sub;
+    if (gls_lattice_make(f->l, p->lat.a % f->l, 0, 0, &sub))
+        return -1;
+    f->e1 = sub.e1, f->e2 = sub.e2;
+    /* A = L E^-1 = adj(E) for E = (e1 e2), det E = L */
+    f->a[0][0] = sub.e2.y, f->a[0][1] = -sub.e2.x;
+    f->a[1][0] = -sub.e1.y, f->a[1][1] = sub.e1.x;
+    return 0;
+}
+
+void gls_aa_fine_pass(const gls_aa_fine *f, uint64_t r, int64_t shift[2], int64_t (*pos)[2], int64_t (*c)[2])
+{
+    const gls_aa_plan *p = f->p;
+    if (p->o.pattern == GLS_AA_GRID) {
+        uint64_t k = f->gk, n = p->o.n / k, rx = r % k, ry = r / k;
+        shift[0] = (int64_t)(2 * rx + 1), shift[1] = (int64_t)(2 * ry + 1);
+        for (uint64_t j = 0; j < f->l; j++) {
+            uint64_t i = j % n, jj = j / n;
+            pos[j][0] = (int64_t)(2 * (rx + k * i) + 1);
+            pos[j][1] = (int64_t)(2 * (ry + k * jj) + 1);
+            c[j][0] = (int64_t)i, c[j][1] = (int64_t)jj;
+        }
+        return;
+    }
+    const gls_lattice *l = &p->lat;
+    uint64_t ra = (uint64_t)(((unsigned __int128)r * l->a) % l->m);
+    shift[0] = l->t.x + GLS_LATTICE_SHIFT_DEN * (int64_t)r;
+    shift[1] = l->t.y + GLS_LATTICE_SHIFT_DEN * (int64_t)ra;
+    int64_t q = (int64_t)f->q;
+    for (uint64_t j = 0; j < f->l; j++) {
+        int64_t x, y;
+        gls_lattice_point(l, r + j * f->k, &x, &y);
+        pos[j][0] = x, pos[j][1] = y;
+        __int128 dx = x - shift[0], dy = y - shift[1];
+        /* exact: (dx, dy) / q is a point of the pass lattice */
+        c[j][0] = (int64_t)((f->a[0][0] * dx + f->a[0][1] * dy) / q);
+        c[j][1] = (int64_t)((f->a[1][0] * dx + f->a[1][1] * dy) / q);
+    }
+}
+
+void gls_aa_fine_map(const gls_aa_fine *f, const int64_t shift[2], int64_t ox, int64_t oy, double m[6])
+{
+    /* window = A (p + (1/2, 1/2) - shift / q) + (1/2, 1/2) - origin; the
+     * constant's integer part A (q - 2 shift) / (2 q) is formed exactly */
+    __int128 q = (__int128)f->q;
+    for (int row = 0; row < 2; row++) {
+        __int128 num = f->a[row][0] * (q - 2 * (__int128)shift[0]) + f->a[row][1] * (q - 2 * (__int128)shift[1]);
+        __int128 whole = num / (2 * q), rem = num % (2 * q);
+        m[3 * row] = (double)f->a[row][0];
+        m[3 * row + 1] = (double)f->a[row][1];
+        m[3 * row + 2] = (double)(whole - (row ? oy : ox)) + (double)rem / (double)(2 * q) + 0.5;
+    }
+}
