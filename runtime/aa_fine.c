@@ -60,7 +60,7 @@ int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l)
     /* points i = r + j K: (j / L, j a / L) + (r / M, r a / M), so the pass
      * lattice has L points and generator a mod L */
     gls_lattice sub;
-    if (gls_lattice_make(f->l, p->lat.a % f->l, 0, 0, &sub))
+    if (gls_lattice_make(f->l, p->lat.a % f->l, &sub))
         return -1;
     f->e1 = sub.e1, f->e2 = sub.e2;
     /* A = L E^-1 = adj(E) for E = (e1 e2), det E = L */
@@ -85,8 +85,9 @@ void gls_aa_fine_pass(const gls_aa_fine *f, uint64_t r, int64_t shift[2], int64_
     }
     const gls_lattice *l = &p->lat;
     uint64_t ra = (uint64_t)(((unsigned __int128)r * l->a) % l->m);
-    shift[0] = l->t.x + GLS_LATTICE_SHIFT_DEN * (int64_t)r;
-    shift[1] = l->t.y + GLS_LATTICE_SHIFT_DEN * (int64_t)ra;
+    /* the plan's point r, the pass lattice's point 0 */
+    shift[0] = GLS_LATTICE_UNIT * (int64_t)r + 1;
+    shift[1] = GLS_LATTICE_UNIT * (int64_t)ra + 1;
     int64_t q = (int64_t)f->q;
     for (uint64_t j = 0; j < f->l; j++) {
         int64_t x, y;

@@ -41,7 +41,7 @@ int gls_aa_fine_ok(const gls_aa_plan *p);
 int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l);
 
 /* Pass r (0 <= r < K): its shift (units 1/q px: the position in the
- * pixel square of the pass lattice's point 0 before wrapping), and for
+ * pixel square of the pass lattice's point 0, the plan's point r), and for
  * each of its l samples j the position in the pixel square (units 1/q,
  * in [0, q)^2) and the fine offset c_j.  Sample j of pass r is sample
  * r + j K of the plan (lattice) or grid sample (rx + k i, ry + k j). */

@@ -76,9 +76,10 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         if (p.o.filter == GLS_AA_GAUSS)
             fprintf(out, " (sigma %g px, window +-%g sigma)", p.o.sigma, GLS_AA_GAUSS_SPAN);
         if (p.o.pattern == GLS_AA_LATTICE) {
-            fprintf(out, ", lattice pattern: generator a = %llu, shift (%.6f, %.6f) px, closest samples %.4f px apart",
-                    (unsigned long long)p.lat.a, (double)p.lat.t.x / (double)p.lat.q,
-                    (double)p.lat.t.y / (double)p.lat.q, p.lat.mindist);
+            fprintf(out, ", lattice pattern: generator a = %llu, closest samples %.4f px apart, %llu and %llu "
+                         "samples a position across 45 and 135 degree edges",
+                    (unsigned long long)p.lat.a, p.lat.mindist, (unsigned long long)p.lat.g45,
+                    (unsigned long long)p.lat.g135);
             if (gls_aa_weighted(&p))
                 fprintf(out, ", %llu of them in the window (cells -%u..%u)", (unsigned long long)p.count, p.radius,
                         p.radius);

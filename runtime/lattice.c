@@ -1,28 +1,31 @@
 /* Rank-1 lattice patterns (lattice.h, spec/antialiasing.md "The lattice").
  *
- * The criterion.  An edge parallel to a lattice vector v sees the samples
- * of a row collapse onto few distinct positions: projected onto the edge
- * normal, the lattice becomes the 1D lattice h Z + phase with
- * h = 1 / (M |v|) (|v| in pixels).  The per-row coverage error of a box
- * filter is then a sawtooth of step h: over random edge offsets its RMS is
- *     h sqrt(1/12 + (f - 1/2)^2),
- * f in [0, 1) the phase of the shifted lattice in units of h (f = 1/2:
- * the sawtooth is centred, no bias; f = 0: a bias of h/2).  Short
- * vectors are the bad directions; every lattice has them (the shortest is
- * at most sqrt(2 / (sqrt(3) M)) long).  The pattern is chosen to make the
- * worst of them as good as possible, treating all directions alike:
- *  1. candidates: generators a <= M/2 coprime to M (a and M - a are
- *     mirror images) whose shortest vector is within 5% of the longest
- *     shortest vector any generator has, the 64 best;
- *  2. for each, the shift t = (alpha e1 + beta e2) / 24 over
- *     alpha, beta in 0..23 (e1, e2 the reduced basis) and the primitive
- *     vectors v = m e1 + n e2 with |v| <= 2 |e1| (beyond that the error
- *     is at most half the shortest vector's): minimise the largest
- *     h_v sqrt(1/12 + (f_v - 1/2)^2), f_v = frac(m beta - n alpha);
- *  3. ties (to 2^-40) by the smaller a, then alpha, then beta.
- * The listed angles of the benchmark play no part.  The value is exact at
- * the exact directions of those vectors; edges a little off them can do
- * somewhat worse (make bench-aa measures a dense sweep). */
+ * Why the generator matters.  A straight edge crossing a row of pixels
+ * covers, per row, the samples whose projection along the edge onto the
+ * row lies left of it.  With the pattern centred (its points' mean is the
+ * pixel centre: one point centred in each 1/M strip of x and of y) the
+ * per-row error has zero mean over edge offsets whatever the direction;
+ * its RMS is set by how evenly the M projections spread.  An edge
+ * parallel to a lattice vector v sees them collapse onto 1/(M |v|)-spaced
+ * positions, an RMS of 1/(M |v| sqrt 12): short vectors are the bad
+ * directions, and every lattice has them (the shortest is at most
+ * sqrt(2 / (sqrt 3 M)) px).  What a generator chooses is how short the
+ * shortest is and where the bad directions lie.
+ *
+ * The criterion (deterministic, independent of any benchmark's angles):
+ *  1. candidates: generators a (1 <= a < M, gcd(a, M) = 1) whose shortest
+ *     vector is within 5% of the longest shortest vector any generator
+ *     has (Lagrange-Gauss reduction of (1, a), (0, M));
+ *  2. among them, the smallest worst RMS over edges at 0, 45, 90 and 135
+ *     degrees, the directions most common in real scenes (axis-aligned
+ *     and diagonal edges, calibration boards): 0 and 90 always see M
+ *     distinct positions, 45 sees gcd(a - 1, M) points on each and 135
+ *     gcd(a + 1, M), so the worst is max(1, gcd(a - 1, M), gcd(a + 1, M))
+ *     / (M sqrt 12) px.  For M a power of two one diagonal always has at
+ *     least 4 points a position (the lattice contains (1/2, 1/2)), the
+ *     other at least 2;
+ *  3. then the longer shortest vector, then the smaller a.
+ * The whole search is O(M log M); for M = 4096^2 it takes about a second. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,120 +75,71 @@ static void basis(uint64_t m, uint64_t a, gls_iv2 *e1, gls_iv2 *e2)
         e2->x = -e2->x, e2->y = -e2->y;
 }
 
-double gls_lattice_criterion(uint64_t m, gls_iv2 e1, gls_iv2 e2, uint32_t alpha, uint32_t beta)
+/* max(1, gcd(a - 1, m), gcd(a + 1, m)): step 2's measure in units of
+ * 1/(m sqrt 12) px */
+static uint64_t diag(uint64_t m, uint64_t a)
 {
-    double lim = 4.0 * (double)dot(e1, e1) * (1 + 1e-12), worst = 0;
-    (void)m;
-    for (int n = 0; n <= 4; n++)
-        for (int k = -4; k <= 4; k++) {
-            if ((n == 0 && k != 1) || gcd((uint64_t)abs(k), (uint64_t)n) != 1)
-                continue;
-            gls_iv2 v = {k * e1.x + n * e2.x, k * e1.y + n * e2.y};
-            double l2 = (double)dot(v, v);
-            if (l2 > lim)
-                continue;
-            /* |v| in units of 1/m: h = 1 / (m |v|_px) = 1 / |v| */
-            double h = 1 / sqrt(l2);
-            int64_t num = (int64_t)k * beta - (int64_t)n * alpha; /* phase, units 1/24 */
-            int64_t fr = ((num % GLS_LATTICE_SHIFT_DEN) + GLS_LATTICE_SHIFT_DEN) % GLS_LATTICE_SHIFT_DEN;
-            double f = (double)fr / GLS_LATTICE_SHIFT_DEN - 0.5;
-            double r = h * sqrt(1.0 / 12 + f * f);
-            if (r > worst)
-                worst = r;
-        }
-    return worst;
+    uint64_t g1 = gcd((a + m - 1) % m, m), g2 = gcd((a + 1) % m, m);
+    uint64_t g = g1 > g2 ? g1 : g2;
+    return g > 1 ? g : 1;
 }
 
-int gls_lattice_make(uint64_t m, uint64_t a, uint32_t alpha, uint32_t beta, gls_lattice *l)
+int gls_lattice_make(uint64_t m, uint64_t a, gls_lattice *l)
 {
-    if (m < 1 || m > GLS_LATTICE_MAX_M || gcd(a % m, m) != 1 || alpha >= GLS_LATTICE_SHIFT_DEN ||
-        beta >= GLS_LATTICE_SHIFT_DEN)
+    if (m < 1 || m > GLS_LATTICE_MAX_M || gcd(a % m, m) != 1)
         return -1;
     memset(l, 0, sizeof *l);
     l->m = m;
     l->a = a % m;
-    l->q = GLS_LATTICE_SHIFT_DEN * m;
-    l->alpha = alpha, l->beta = beta;
+    l->q = GLS_LATTICE_UNIT * m;
     basis(m, l->a, &l->e1, &l->e2);
     l->mindist = sqrt((double)dot(l->e1, l->e1)) / (double)m;
-    l->worst = gls_lattice_criterion(m, l->e1, l->e2, alpha, beta);
-    /* t in units of 1/q = 1/(24 m): alpha e1 + beta e2 (e in units 1/m) */
-    int64_t q = (int64_t)l->q;
-    int64_t tx = (int64_t)alpha * l->e1.x + (int64_t)beta * l->e2.x;
-    int64_t ty = (int64_t)alpha * l->e1.y + (int64_t)beta * l->e2.y;
-    l->t.x = ((tx % q) + q) % q;
-    l->t.y = ((ty % q) + q) % q;
+    l->g45 = gcd((l->a + m - 1) % m, m);
+    l->g135 = gcd((l->a + 1) % m, m);
+    l->axis_diag = (double)diag(m, l->a) / ((double)m * sqrt(12.0));
     return 0;
 }
-
-typedef struct {
-    int64_t d2; /* |e1|^2, units 1/m^2 */
-    uint64_t a;
-} cand;
-
-/* better candidate first: longer shortest vector, then smaller a */
-static int cand_better(const cand *x, const cand *y) { return x->d2 > y->d2 || (x->d2 == y->d2 && x->a < y->a); }
 
 int gls_lattice_choose(uint64_t m, gls_lattice *l)
 {
     if (m < 1 || m > GLS_LATTICE_MAX_M)
         return -1;
-    if (m == 1) /* one sample: the pixel centre, as a plain pass */
-        return gls_lattice_make(1, 0, GLS_LATTICE_SHIFT_DEN / 2, GLS_LATTICE_SHIFT_DEN / 2, l) ? -1 : 0;
-    cand top[GLS_LATTICE_CANDIDATES];
-    int ntop = 0;
-    for (uint64_t a = 1; a <= m / 2; a++) {
+    if (m <= 2) /* one point at the centre; two on the diagonal */
+        return gls_lattice_make(m, m == 1 ? 0 : 1, l);
+    /* pass 1: the longest shortest vector (|e1|^2, units 1/m^2) */
+    int64_t best = 0;
+    for (uint64_t a = 1; a < m; a++) {
         if (gcd(a, m) != 1)
             continue;
         gls_iv2 e1, e2;
         basis(m, a, &e1, &e2);
-        cand c = {dot(e1, e1), a};
-        if (ntop == GLS_LATTICE_CANDIDATES && !cand_better(&c, &top[ntop - 1]))
+        if (dot(e1, e1) > best)
+            best = dot(e1, e1);
+    }
+    /* pass 2: among those within 5%, the axis/diagonal measure, then the
+     * longer shortest vector, then the smaller a */
+    double lim = GLS_LATTICE_MINDIST_TOL * GLS_LATTICE_MINDIST_TOL * (double)best;
+    uint64_t ba = 0, bd = 0;
+    int64_t bl = 0;
+    for (uint64_t a = 1; a < m; a++) {
+        if (gcd(a, m) != 1)
             continue;
-        int i = ntop < GLS_LATTICE_CANDIDATES ? ntop++ : ntop - 1;
-        while (i > 0 && cand_better(&c, &top[i - 1])) {
-            top[i] = top[i - 1];
-            i--;
-        }
-        top[i] = c;
-    }
-    if (!ntop) /* m = 2: a = 1 */
-        top[ntop++] = (cand){0, 1};
-    double best = 0, lim = GLS_LATTICE_MINDIST_TOL * GLS_LATTICE_MINDIST_TOL * (double)top[0].d2;
-    int found = 0;
-    gls_lattice bl;
-    memset(&bl, 0, sizeof bl);
-    for (int c = 0; c < ntop; c++) {
-        if ((double)top[c].d2 < lim)
-            break;
         gls_iv2 e1, e2;
-        basis(m, top[c].a, &e1, &e2);
-        for (uint32_t al = 0; al < GLS_LATTICE_SHIFT_DEN; al++)
-            for (uint32_t be = 0; be < GLS_LATTICE_SHIFT_DEN; be++) {
-                double w = gls_lattice_criterion(m, e1, e2, al, be);
-                /* quantised so that ties are decided by the order, not by
-                 * rounding noise */
-                double wq = nearbyint(ldexp(w, 40));
-                gls_lattice cl;
-                if (!found || wq < best ||
-                    (wq == best && (top[c].a < bl.a || (top[c].a == bl.a && (al < bl.alpha ||
-                                                                             (al == bl.alpha && be < bl.beta)))))) {
-                    if (gls_lattice_make(m, top[c].a, al, be, &cl))
-                        return -1;
-                    bl = cl;
-                    best = wq;
-                    found = 1;
-                }
-            }
+        basis(m, a, &e1, &e2);
+        int64_t d2 = dot(e1, e1);
+        if ((double)d2 < lim)
+            continue;
+        uint64_t d = diag(m, a);
+        if (!ba || d < bd || (d == bd && d2 > bl)) {
+            ba = a, bd = d, bl = d2;
+        }
     }
-    *l = bl;
-    return found ? 0 : -1;
+    return gls_lattice_make(m, ba, l);
 }
 
 void gls_lattice_point(const gls_lattice *l, uint64_t i, int64_t *x, int64_t *y)
 {
-    int64_t q = (int64_t)l->q;
     uint64_t ia = (uint64_t)(((unsigned __int128)i * l->a) % l->m);
-    *x = (l->t.x + GLS_LATTICE_SHIFT_DEN * (int64_t)i) % q;
-    *y = (l->t.y + GLS_LATTICE_SHIFT_DEN * (int64_t)ia) % q;
+    *x = GLS_LATTICE_UNIT * (int64_t)i + 1;
+    *y = GLS_LATTICE_UNIT * (int64_t)ia + 1;
 }

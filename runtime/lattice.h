@@ -1,25 +1,24 @@
 /* Rank-1 lattice sample patterns (spec/antialiasing.md "The lattice").
  *
  * M points in the unit pixel square, point i at
- *     frac(t + (i, i*a mod M) / M)
- * with a generator a coprime to M and a shift t.  The pattern repeats
+ *     ((i + 1/2) / M, ((i*a mod M) + 1/2) / M)
+ * with a generator a coprime to M: one point in each 1/M strip in x and
+ * in y, centred in it, so that the points' mean is the pixel centre.  The pattern repeats
  * from pixel to pixel, so the samples of a whole image form one 2D
  * lattice; a reduced basis of it gives an integer map A from image
  * pixels to a "fine" framebuffer whose pixel centres are exactly the
  * sample points (the one-pass renderer, aa_onepass.h).
  *
  * Everything here is exact integer arithmetic: positions are integers in
- * units of 1/Q of a pixel (Q = GLS_LATTICE_SHIFT_DEN * M), so wrapping a
- * point into the pixel and mapping it to the fine framebuffer never
- * rounds.  No GL. */
+ * units of 1/q of a pixel (q = 2 M), so mapping a point to the fine
+ * framebuffer never rounds.  No GL. */
 #ifndef GLS_LATTICE_H
 #define GLS_LATTICE_H
 
 #include <stdint.h>
 
-/* The shift t is a multiple of 1/GLS_LATTICE_SHIFT_DEN of the reduced
- * basis vectors (the search grid of the shift). */
-#define GLS_LATTICE_SHIFT_DEN 24
+/* Positions are in units of 1/(GLS_LATTICE_UNIT M) px. */
+#define GLS_LATTICE_UNIT 2
 /* Largest M: 4096^2. */
 #define GLS_LATTICE_MAX_M (4096ull * 4096ull)
 /* Generators whose shortest vector is within this factor of the best are
@@ -37,28 +36,25 @@ void gls_lattice_reduce(gls_iv2 *b1, gls_iv2 *b2);
 
 typedef struct {
     uint64_t m, a;       /* points per pixel, generator                  */
-    uint64_t q;          /* position unit: 1/q px, q = 24 m              */
+    uint64_t q;          /* position unit: 1/q px, q = 2 m               */
     gls_iv2 e1, e2;      /* reduced basis, units 1/m px, det(e1, e2) = m  */
-    gls_iv2 t;           /* shift, units 1/q px, in [0, q)^2             */
-    uint32_t alpha, beta;/* t = (alpha e1 + beta e2) / 24, before wrapping */
     double mindist;      /* |e1| / m: shortest distance between points, px */
-    double worst;        /* the criterion's value: worst RMS edge error over
-                            the short-vector directions, px (see .c)      */
+    uint64_t g45, g135;  /* gcd(a - 1, m), gcd(a + 1, m): the points'
+                            spacing across 45 and 135 degree edges, 1/m px */
+    double axis_diag;    /* the criterion: worst RMS edge error over edges
+                            at 0, 45, 90, 135 degrees, px (lattice.c)    */
 } gls_lattice;
 
 /* The pattern for m points (1 <= m <= GLS_LATTICE_MAX_M): generator and
  * shift by the documented criterion (lattice.c).  Deterministic. */
 int gls_lattice_choose(uint64_t m, gls_lattice *l);
 
-/* The lattice for a given generator (gcd(a, m) = 1) and shift index
- * (alpha, beta in 0..23); for tests and the K-pass split. */
-int gls_lattice_make(uint64_t m, uint64_t a, uint32_t alpha, uint32_t beta, gls_lattice *l);
+/* The lattice for a given generator (gcd(a, m) = 1); for tests and the
+ * K-pass split. */
+int gls_lattice_make(uint64_t m, uint64_t a, gls_lattice *l);
 
-/* Point i (0 <= i < m) in units of 1/q px, in [0, q)^2. */
+/* Point i (0 <= i < m) in units of 1/q px, in [0, q)^2: (2 i + 1,
+ * 2 (i a mod m) + 1). */
 void gls_lattice_point(const gls_lattice *l, uint64_t i, int64_t *x, int64_t *y);
-
-/* The worst-direction criterion for generator a and shift (alpha, beta)
- * (exposed for tests and the bench). */
-double gls_lattice_criterion(uint64_t m, gls_iv2 e1, gls_iv2 e2, uint32_t alpha, uint32_t beta);
 
 #endif

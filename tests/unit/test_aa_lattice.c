@@ -57,7 +57,7 @@ static void test_lattice_points(void)
         uint64_t m = ms[t];
         gls_lattice l;
         CHECK(gls_lattice_choose(m, &l) == 0);
-        CHECK(l.m == m && l.q == GLS_LATTICE_SHIFT_DEN * m && gcd64(l.a, m) == 1);
+        CHECK(l.m == m && l.q == GLS_LATTICE_UNIT * m && gcd64(l.a, m) == 1);
         uint8_t *sx = calloc(m, 1), *sy = calloc(m, 1);
         int bad = 0;
         for (uint64_t i = 0; i < m; i++) {
@@ -65,8 +65,10 @@ static void test_lattice_points(void)
             gls_lattice_point(&l, i, &x, &y);
             bad += x < 0 || y < 0 || x >= (int64_t)l.q || y >= (int64_t)l.q;
             if (!bad) {
-                sx[x / GLS_LATTICE_SHIFT_DEN]++;
-                sy[y / GLS_LATTICE_SHIFT_DEN]++;
+                /* centred in its strip: 2 i + 1 */
+                bad += x % GLS_LATTICE_UNIT != 1 || y % GLS_LATTICE_UNIT != 1;
+                sx[x / GLS_LATTICE_UNIT]++;
+                sy[y / GLS_LATTICE_UNIT]++;
             }
         }
         for (uint64_t i = 0; i < m; i++)
@@ -80,17 +82,17 @@ static void test_lattice_points(void)
             double best = 0;
             for (uint64_t a = 1; a < m; a++) {
                 gls_lattice o;
-                if (gcd64(a, m) == 1 && gls_lattice_make(m, a, 0, 0, &o) == 0 && o.mindist > best)
+                if (gcd64(a, m) == 1 && gls_lattice_make(m, a, &o) == 0 && o.mindist > best)
                     best = o.mindist;
             }
             CHECK_MSG(l.mindist >= GLS_LATTICE_MINDIST_TOL * best - 1e-12, "M %llu: %.6f < 0.95 * %.6f",
                       (unsigned long long)m, l.mindist, best);
-            printf("  M %5llu: a = %llu, closest points %.5f px = %.3f / sqrt(M) (best %.3f), criterion %.6f px\n",
+            printf("  M %5llu: a = %llu, closest points %.5f px = %.3f / sqrt(M) (best %.3f), 0/45/90/135: %.6f px\n",
                    (unsigned long long)m, (unsigned long long)l.a, l.mindist, l.mindist * sqrt((double)m),
-                   best * sqrt((double)m), l.worst);
+                   best * sqrt((double)m), l.axis_diag);
         }
     }
-    static const uint64_t gen[][2] = {{16, 3}, {64, 19}, {256, 71}, {4096, 231}};
+    static const uint64_t gen[][2] = {{16, 3}, {64, 19}, {256, 19}, {4096, 475}};
     for (int i = 0; i < 4; i++) {
         gls_lattice l;
         CHECK(gls_lattice_choose(gen[i][0], &l) == 0 && l.a == gen[i][1]);
@@ -103,6 +105,51 @@ static void test_lattice_points(void)
     gls_lattice_point(&big, GLS_LATTICE_MAX_M - 1, &x1, &y1);
     gls_lattice_point(&big, 0, &x0, &y0);
     CHECK(x1 >= 0 && x1 < (int64_t)big.q && y1 >= 0 && y1 < (int64_t)big.q && x1 != x0);
+}
+
+/* Worst per-row RMS edge error at 0, 45, 90 and 135 degrees of lattice l,
+ * computed from its points by bench/aa_scene.h (independently of the
+ * gcd formula the criterion uses). */
+static double axis_diag_measured(const gls_lattice *l)
+{
+    double *x = malloc(l->m * sizeof *x), *y = malloc(l->m * sizeof *y), *s = malloc(l->m * sizeof *s), w = 0;
+    for (uint64_t i = 0; i < l->m; i++) {
+        int64_t X, Y;
+        gls_lattice_point(l, i, &X, &Y);
+        x[i] = (double)X / (double)l->q, y[i] = (double)Y / (double)l->q;
+    }
+    for (int d = 0; d < 4; d++)
+        w = fmax(w, as_pattern_rms(x, y, (long)l->m, 45.0 * d, s));
+    free(x), free(y), free(s);
+    return w;
+}
+
+/* The criterion, checked by brute force: no generator within 5% of the
+ * best minimum distance does better at 0/45/90/135 degrees (measured from
+ * the points), and the chosen one's value is the formula's. */
+static void test_lattice_criterion(void)
+{
+    static const uint64_t ms[] = {16, 64, 100, 256, 1000, 1024};
+    for (size_t t = 0; t < sizeof ms / sizeof ms[0]; t++) {
+        uint64_t m = ms[t];
+        gls_lattice l;
+        CHECK(gls_lattice_choose(m, &l) == 0);
+        double mine = axis_diag_measured(&l), best = 1e9, bestd = 0;
+        CHECK_MSG(fabs(mine - l.axis_diag) < 1e-9, "M %llu: measured %.9f, formula %.9f", (unsigned long long)m, mine,
+                  l.axis_diag);
+        for (uint64_t a = 1; a < m; a++) {
+            gls_lattice o;
+            if (gcd64(a, m) == 1 && gls_lattice_make(m, a, &o) == 0 && o.mindist > bestd)
+                bestd = o.mindist;
+        }
+        for (uint64_t a = 1; a < m; a++) {
+            gls_lattice o;
+            if (gcd64(a, m) == 1 && gls_lattice_make(m, a, &o) == 0 && o.mindist >= GLS_LATTICE_MINDIST_TOL * bestd)
+                best = fmin(best, axis_diag_measured(&o));
+        }
+        CHECK_MSG(mine <= best + 1e-12, "M %llu: a = %llu gives %.6f, another %.6f", (unsigned long long)m,
+                  (unsigned long long)l.a, mine, best);
+    }
 }
 
 /* ---- basis reduction and the fine map -------------------------------- */
@@ -610,6 +657,7 @@ int main(void)
         return 1;
     }
     RUN(test_lattice_points);
+    RUN(test_lattice_criterion);
     RUN(test_basis_and_map);
     RUN(test_gather_constant);
     RUN(test_gather_halfplane);
