@@ -76,7 +76,7 @@ grep -q "anti-aliasing: 8x8 = 64 samples per pixel, Gaussian" "$t/stdout" && gre
 # the lattice is the default; any M; the plan names the generator, the
 # passes, the tiles and the memory
 run aa_explain_lattice $PLAY $S --explain --samples 256 --outputs image
-grep -q "anti-aliasing: 16x16 = 256 samples per pixel, box filter, lattice pattern: generator a = 71, " "$t/stdout" &&
+grep -q "anti-aliasing: 16x16 = 256 samples per pixel, box filter, lattice pattern: generator a = 19, closest samples 0.0618 px apart, 2 and 4 samples a position across 45 and 135 degree edges" "$t/stdout" &&
     grep -q "passes: one fine framebuffer whose pixel centres are the samples" "$t/stdout" &&
     grep -q "^  anti-aliasing: 1 pass of 256 samples per pixel; fine framebuffer [0-9]*x[0-9]* (A = \[" "$t/stdout" &&
     grep -q "^  tiles: [0-9]* per pass of [0-9]*x[0-9]* (at most; those no pixel needs are skipped), [0-9.]* MiB of framebuffer and read-backs (--aa-memory 256 MiB)" "$t/stdout" &&
