@@ -30,6 +30,32 @@ static void kernel_free(kernel *k)
     memset(k, 0, sizeof *k);
 }
 
+typedef struct {
+    int64_t c[2];
+    uint64_t w;
+} entry;
+
+static int cmp_entry(const void *a, const void *b)
+{
+    const entry *x = a, *y = b;
+    if (x->c[1] != y->c[1])
+        return x->c[1] < y->c[1] ? -1 : 1;
+    return x->c[0] < y->c[0] ? -1 : x->c[0] > y->c[0];
+}
+
+static void sort_kernel(kernel *k)
+{
+    entry *e = malloc((k->n ? k->n : 1) * sizeof *e);
+    if (!e)
+        return; /* unsorted is correct, only slower */
+    for (uint64_t i = 0; i < k->n; i++)
+        e[i].c[0] = k->c[i][0], e[i].c[1] = k->c[i][1], e[i].w = k->w[i];
+    qsort(e, k->n, sizeof *e, cmp_entry);
+    for (uint64_t i = 0; i < k->n; i++)
+        k->c[i][0] = e[i].c[0], k->c[i][1] = e[i].c[1], k->w[i] = e[i].w;
+    free(e);
+}
+
 /* Kernel of pass r: the box's l samples, or the Gaussian's window points
  * with nonzero weight (cells -radius..radius around the pixel). */
 static int kernel_make(const gls_aa_fine *f, uint64_t r, kernel *k, int64_t shift[2])
@@ -68,6 +94,13 @@ static int kernel_make(const gls_aa_fine *f, uint64_t r, kernel *k, int64_t shif
                 k->lo[1] = y < k->lo[1] ? y : k->lo[1], k->hi[1] = y > k->hi[1] ? y : k->hi[1];
             }
     free(pos), free(c);
+    /* in memory order (rows, then columns), so that a pixel's gather
+     * walks its footprint row by row */
+    for (uint64_t i = 1; i < k->n; i++)
+        if (k->c[i][1] < k->c[i - 1][1] || (k->c[i][1] == k->c[i - 1][1] && k->c[i][0] < k->c[i - 1][0])) {
+            sort_kernel(k);
+            break;
+        }
     return 0;
 }
 
@@ -180,27 +213,38 @@ static void gather(gather_ctx *g, const uint8_t *buf, int64_t X0, int64_t Y0, ui
             int have = acc->mixed && g->seen[pix], mixed = 0;
             if (have)
                 first = acc->first[pix];
-            for (uint64_t e = 0; e < k->n; e++) {
-                if (!full) {
-                    int64_t x = bx + k->c[e][0], y = by + k->c[e][1];
-                    if (x < 0 || y < 0 || x >= (int64_t)tw || y >= (int64_t)th)
-                        continue;
+            if (full && !acc->weighted && !acc->mixed) {
+                /* the common case, kept free of branches: box, whole
+                 * kernel in this tile, no mask; at most 2^24 samples of
+                 * 255 fit in 32 bits */
+                uint32_t r = 0, gr = 0, bl = 0;
+                for (uint64_t e = 0; e < k->n; e++) {
+                    const uint8_t *q = base + g->off[e];
+                    r += q[0], gr += q[1], bl += q[2];
                 }
-                const uint8_t *q = base + g->off[e];
-                if (acc->weighted) {
-                    uint64_t w = k->w[e];
-                    s[0] += w * q[0], s[1] += w * q[1], s[2] += w * q[2];
-                } else {
-                    s[0] += q[0], s[1] += q[1], s[2] += q[2];
+                s[0] = r, s[1] = gr, s[2] = bl;
+            } else
+                for (uint64_t e = 0; e < k->n; e++) {
+                    if (!full) {
+                        int64_t x = bx + k->c[e][0], y = by + k->c[e][1];
+                        if (x < 0 || y < 0 || x >= (int64_t)tw || y >= (int64_t)th)
+                            continue;
+                    }
+                    const uint8_t *q = base + g->off[e];
+                    if (acc->weighted) {
+                        uint64_t w = k->w[e];
+                        s[0] += w * q[0], s[1] += w * q[1], s[2] += w * q[2];
+                    } else {
+                        s[0] += q[0], s[1] += q[1], s[2] += q[2];
+                    }
+                    if (acc->mixed) {
+                        uint32_t col = (uint32_t)q[0] | (uint32_t)q[1] << 8 | (uint32_t)q[2] << 16;
+                        if (!have)
+                            first = col, have = 1;
+                        else
+                            mixed |= col != first;
+                    }
                 }
-                if (acc->mixed) {
-                    uint32_t col = (uint32_t)q[0] | (uint32_t)q[1] << 8 | (uint32_t)q[2] << 16;
-                    if (!have)
-                        first = col, have = 1;
-                    else
-                        mixed |= col != first;
-                }
-            }
             if (acc->weighted)
                 for (int ch = 0; ch < 3; ch++)
                     acc->sum64[4 * pix + ch] += s[ch];
