@@ -168,11 +168,12 @@ $(B)/bench/play_bench: bench/play_bench.c bench/play_scene.h tests/unit/player_s
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
 
-# bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
-$(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+# bench-aa (runtime owner): cost and edge accuracy of anti-aliasing; the
+# plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
+$(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h bench/play_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
-bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
+bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB) $(B)/textures.stamp
 	@sh bench/aa.sh $(B)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
 # -O3 vectorises them (gcc 12's -O2 leaves loops with remainders scalar).

@@ -34,6 +34,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "../tests/unit/player_scene.h"
+#include "aa_onepass.h"
 
 #define AS_PI 3.14159265358979323846
 #define AS_MAXSQ 512
@@ -84,7 +85,9 @@ static inline int as_layout_angles(as_scene *s, uint32_t w, uint32_t h, const do
     if (n > AS_MAXSQ)
         return 0;
     int nx = (int)ceil(sqrt((double)n * w / h)), ny = (n + nx - 1) / nx;
-    double cw = (double)w / nx, ch = (double)h / ny, side = fmin(cw, ch) / 1.45; /* corners stay inside the cell */
+    /* corners stay 4 px inside the cell whatever the angle, so that no
+     * row measured near one square reaches into the next */
+    double cw = (double)w / nx, ch = (double)h / ny, side = (fmin(cw, ch) - 8) / 1.415;
     for (int k = 0; k < n; k++) {
         int i = k % nx, j = k / nx;
         double a = ang[k % nang] * AS_PI / 180;
@@ -338,6 +341,63 @@ static inline double as_dir_rms(const as_scene *s, const double *img, double dir
     return n ? sqrt(sum2 / (double)n) : 0;
 }
 
+/* ---- llvmpipe's vertex snapping through the fine framebuffer ---------- */
+
+/* A vertical edge swept across the sample column at x0 = 1 - 1/2 + (i +
+ * 1/2) / N of pixel 1 in steps of 1/(4096 N) px: the counted samples
+ * change where the rasteriser puts the edge.  The largest distance
+ * between that and the exact crossing, for the plain pass (N = 1) and
+ * the grid's fine framebuffer (fine pixels 1/N px). */
+static inline double as_snap_worst(gls_glctx *ctx, uint32_t N)
+{
+    char err[256];
+    double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, T[3] = {0, 0, 0}, worst = 0;
+    gls_camera c = tb_camera(4, 2, 100, 100, 1.5, 0.5, 0, R, T, 0.5, 100);
+    gls_aa_plan p;
+    gls_aa_opts o = gls_aa_defaults();
+    o.samples = (uint64_t)N * N;
+    o.pattern = GLS_AA_GRID;
+    if (N > 1 && gls_aa_plan_init(&p, &o, err, sizeof err))
+        return -1;
+    double xs = 0.5 + (N / 2 + 0.5) / N; /* a sample column of pixel 1 */
+    for (int k = -40; k <= 40; k++) {
+        double x = xs + k / (4096.0 * N);
+        tb t;
+        tb_init(&t);
+        tb_object(&t, "e", 1);
+        tb_color(&t, 1, 1, 1, 1);
+        tb_rect_z(&t, -1, -1, (x - c.cx) * 5 / c.fx, 1, 5);
+        gls_bundle *b = tb_finish(&t);
+        gls_scene sc;
+        gls_renderer *r = NULL;
+        if (gls_scene_flatten(b, &sc, err, sizeof err) || !(r = gls_renderer_create(ctx, b, &sc, err, sizeof err)) ||
+            gls_renderer_set_size(r, 4, 2, err, sizeof err))
+            return -1;
+        long got, want = 0;
+        if (N == 1) {
+            uint8_t rgba[4 * 2 * 4];
+            gls_render_pass(r, &c, 0, 0);
+            gls_render_read_rgba(r, rgba);
+            got = rgba[4] == 255;
+            want = 1 < x;
+        } else {
+            gls_accum a;
+            if (gls_accum_init(&a, 4, 2, 0, 0) || gls_aa_render_fine(r, &c, &p, NULL, &a, NULL, err, sizeof err))
+                return -1;
+            got = a.sum32[4] / 255;
+            for (uint32_t i = 0; i < N; i++)
+                want += (0.5 + (i + 0.5) / N < x) * (long)N;
+            gls_accum_free(&a);
+        }
+        if (got != want && fabs(x - xs) > worst)
+            worst = fabs(x - xs);
+        gls_renderer_destroy(r);
+        gls_scene_free(&sc);
+        gls_bundle_free(b);
+    }
+    return worst;
+}
+
 /* ---- the analytic per-row error of a sample pattern ------------------ */
 
 static int as_cmp_double(const void *a, const void *b)
@@ -349,26 +409,31 @@ static int as_cmp_double(const void *a, const void *b)
 /* RMS over uniformly random edge offsets of the per-row coverage error of
  * a straight edge in direction dir (degrees) for the box filter over the
  * m sample points (x, y) in [0, 1)^2 of a pixel (the pattern repeats from
- * pixel to pixel).  A row of pixels crossed by a steep edge counts the
- * samples left of it: projected along the edge onto a row, sample i sits
- * at p_i = x_i - y_i cot(dir) (mod 1), and the row's error for an edge at
- * offset c is E(c) = #{p_i < c} / m - c.  Its mean square over c is
- * integrated exactly between the sorted p_i (bias included).  Flat edges:
- * the same per column with x and y swapped.  scratch: room for m doubles. */
+ * pixel to pixel).  A row of pixels crossed by a steep edge x = c + y cot
+ * (dir) counts, per pixel u, the samples with u + x_i - y_i cot < c: with
+ * p_i = x_i - y_i cot = P_i + f_i (P_i integer, f_i in [0, 1)) the row's
+ * count less the covered area is
+ *     E(c) = #{f_i < c} / m - c - (mean P_i + cot / 2),   c in [0, 1),
+ * whose mean over c is (1/2 - mean x) - cot (1/2 - mean y): zero for a
+ * pattern centred on the pixel.  Its mean square is integrated exactly
+ * between the sorted f_i.  Flat edges: the same per column, x and y
+ * swapped.  p: room for m doubles. */
 static inline double as_pattern_rms(const double *x, const double *y, long m, double dir, double *p)
 {
     double t = dir * AS_PI / 180;
     int steep = fabs(sin(t)) >= fabs(cos(t));
-    double sl = steep ? cos(t) / sin(t) : sin(t) / cos(t);
+    double sl = steep ? cos(t) / sin(t) : sin(t) / cos(t), P = 0;
     for (long i = 0; i < m; i++) {
-        double v = steep ? x[i] - sl * y[i] : y[i] - sl * x[i];
-        p[i] = v - floor(v);
+        double v = steep ? x[i] - sl * y[i] : y[i] - sl * x[i], fl = floor(v);
+        P += fl;
+        p[i] = v - fl;
     }
+    double K = P / (double)m + sl / 2;
     qsort(p, (size_t)m, sizeof *p, as_cmp_double);
-    /* E(c) = k/m - c on [p_k-1, p_k) (p_-1 = 0, p_m = 1) */
+    /* E(c) = k/m - K - c on [p_k-1, p_k) (p_-1 = 0, p_m = 1) */
     double sum = 0, prev = 0;
     for (long k = 0; k <= m; k++) {
-        double a = prev, b = k < m ? p[k] : 1, f = (double)k / (double)m;
+        double a = prev, b = k < m ? p[k] : 1, f = (double)k / (double)m - K;
         sum += ((f - a) * (f - a) * (f - a) - (f - b) * (f - b) * (f - b)) / 3;
         prev = b;
     }

@@ -648,6 +648,78 @@ static void test_onepass_vs_multipass(void)
     gls_bundle_free(b);
 }
 
+/* ---- accuracy -------------------------------------------------------- */
+
+/* The default pattern's per-row edge error through the renderer agrees
+ * with the error computed from the sample positions alone (the
+ * rasteriser adds nothing measurable at M = 256: its snapping is 1/256 of
+ * a fine pixel): straight edges at the issue's listed angles, 6 squares
+ * each, 640x480, one pass, float.  Within 20% per angle (45 degrees
+ * excepted: all rows of one edge share one offset there, so 12 edges
+ * sample 12 offsets), and the worst within 20% of the analytic worst.
+ * The issue's target, 1/256 px at every listed angle with 256 samples, is
+ * NOT met by this pattern (worst about 0.0064 px, at 3 degrees: the
+ * lattice has a short vector near there); spec/antialiasing.md and
+ * docs/aa_cost.txt give the figures, so no test claims it. */
+static void test_accuracy_matches_analytic(void)
+{
+    static const double ang[] = {0.5, 1, 3, 10, 22.5, 30, 45, 60, 80};
+    static as_scene sc;
+    CHECK(as_layout_angles(&sc, 640, 480, ang, 9, 6));
+    gls_camera c = as_camera(&sc, 1, 100);
+    gls_bundle *b = as_bundle(&sc, &c);
+    rig g;
+    CHECK(rig_open(&g, b) == 0);
+    gls_aa_opts o = gls_aa_defaults();
+    o.samples = 256;
+    gls_accum a;
+    CHECK(fine(&g, &c, &o, 0, 0, &a, NULL) == 0);
+    size_t n = 640 * 480;
+    float *f = malloc(n * 12);
+    double *img = malloc(n * sizeof *img);
+    gls_accum_rgbf(&a, f);
+    for (size_t k = 0; k < n; k++)
+        img[k] = f[3 * k];
+    gls_aa_plan p;
+    char err[128];
+    CHECK(gls_aa_plan_init(&p, &o, err, sizeof err) == 0);
+    double x[256], y[256], scratch[256], wr = 0, wa = 0;
+    for (uint64_t k = 0; k < 256; k++) {
+        double du, dv;
+        uint64_t w;
+        gls_aa_sample(&p, k, &du, &dv, &w);
+        x[k] = du + 0.5, y[k] = dv + 0.5;
+    }
+    for (int i = 0; i < 9; i++) {
+        double r = as_dir_rms(&sc, img, ang[i], NULL), an = as_pattern_rms(x, y, 256, ang[i], scratch);
+        printf("  %4g deg: renderer %.6f px, analytic %.6f px\n", ang[i], r, an);
+        if (ang[i] != 45)
+            CHECK_MSG(fabs(r - an) <= 0.2 * an, "%g deg: renderer %.6f, analytic %.6f", ang[i], r, an);
+        wr = fmax(wr, r), wa = fmax(wa, an);
+    }
+    CHECK_MSG(wr <= 1.2 * wa, "worst: renderer %.6f, analytic %.6f", wr, wa);
+    free(f), free(img);
+    gls_accum_free(&a);
+    rig_close(&g);
+    gls_bundle_free(b);
+}
+
+/* llvmpipe snaps vertices to 1/256 of a framebuffer pixel; in the fine
+ * framebuffer that is 1/256 of a fine pixel, so an edge's displacement by
+ * snapping shrinks with the fine pixel: at most half a step, 1/512 px for
+ * a plain pass and 1/(512 N) px through the grid's fine framebuffer of
+ * N x N (bench/aa_scene.h as_snap_worst sweeps an edge across a sample in
+ * 1/(4096 N) px steps). */
+static void test_snapping_fine(void)
+{
+    static const uint32_t ns[] = {1, 4, 16};
+    for (int i = 0; i < 3; i++) {
+        double w = as_snap_worst(ctx, ns[i]);
+        printf("  N %2u: largest displacement by snapping %.7f px (bound %.7f)\n", ns[i], w, 1.0 / (512.0 * ns[i]));
+        CHECK_MSG(w >= 0 && w <= 1.0 / (512.0 * ns[i]) + 1e-12, "N %u: %g px", ns[i], w);
+    }
+}
+
 int main(void)
 {
     char err[256];
@@ -664,6 +736,8 @@ int main(void)
     RUN(test_tiles_straddle);
     RUN(test_kpass_split);
     RUN(test_onepass_vs_multipass);
+    RUN(test_accuracy_matches_analytic);
+    RUN(test_snapping_fine);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
 }
