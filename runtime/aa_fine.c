@@ -9,29 +9,23 @@ int gls_aa_fine_ok(const gls_aa_plan *p)
     return p->m > 1 && (p->o.pattern == GLS_AA_LATTICE || (p->o.pattern == GLS_AA_GRID && p->o.filter == GLS_AA_BOX));
 }
 
-/* K for n things split into parts of at most max_l (see aa_fine.h);
- * divides(d) says whether d is a valid K. */
-static uint64_t choose_k(uint64_t n, uint64_t max_l, uint64_t (*ok)(uint64_t, uint64_t), uint64_t arg)
+/* The fewest parts K, a divisor of n (valid(k): k is one), with n / K <=
+ * max_l; if that K is more than 4 times ceil(n / max_l), the largest
+ * divisor below ceil(n / max_l) instead (aa_fine.h). */
+static uint64_t choose_k(uint64_t n, uint64_t max_l)
 {
     if (n <= max_l)
         return 1;
-    uint64_t need = (n + max_l - 1) / max_l, k = need;
-    while (k < n && !ok(arg, k))
+    uint64_t need = (n + max_l - 1) / max_l, k = need, below = need;
+    while (k < n && n % k)
         k++;
-    if (k > 4 * need)
-        for (k = need; k > 1 && !ok(arg, k); k--)
-            ;
+    while (below > 1 && n % below)
+        below--;
+    /* far more passes than needed, and a divisor below that keeps L
+     * within 16 max_l: that one (fewer, larger passes) */
+    if (k > 4 * need && n / below <= 16 * max_l)
+        k = below;
     return k;
-}
-
-static uint64_t divides(uint64_t m, uint64_t d) { return m % d == 0; }
-/* grid: K = k^2 with k dividing N (arg); d here is K */
-static uint64_t square_divides(uint64_t n, uint64_t d)
-{
-    uint64_t k = 1;
-    while (k * k < d)
-        k++;
-    return k * k == d && n % k == 0;
 }
 
 int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l)
@@ -43,9 +37,22 @@ int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l)
         max_l = 1;
     f->p = p;
     if (p->o.pattern == GLS_AA_GRID) {
-        uint64_t n = p->o.n, K = choose_k(n * n, max_l, square_divides, n), k = 1;
-        while (k * k < K)
+        /* k x k passes of (N/k)^2: k divides N, (N/k)^2 <= max_l */
+        uint64_t n = p->o.n, k = 1;
+        while ((n / k) * (n / k) > max_l) {
             k++;
+            while (n % k)
+                k++;
+        }
+        /* no divisor near: the largest below the need, if it keeps L
+         * within 16 max_l (aa_fine.h) */
+        uint64_t need = 1, below;
+        while ((n + need - 1) / need * ((n + need - 1) / need) > max_l)
+            need++;
+        for (below = need; below > 1 && n % below; below--)
+            ;
+        if (k > 4 * need && (n / below) * (n / below) <= 16 * max_l)
+            k = below;
         f->gk = k;
         f->k = k * k;
         f->l = (n / k) * (n / k);
@@ -54,7 +61,7 @@ int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l)
         return 0;
     }
     uint64_t m = p->m;
-    f->k = choose_k(m, max_l, divides, m);
+    f->k = choose_k(m, max_l);
     f->l = m / f->k;
     f->q = p->lat.q;
     /* points i = r + j K: (j / L, j a / L) + (r / M, r a / M), so the pass

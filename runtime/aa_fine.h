@@ -36,8 +36,10 @@ int gls_aa_fine_ok(const gls_aa_plan *p);
  * samples per pixel: the fewest passes K (K divides M; for the grid
  * K = k^2, k divides N) with L = M / K <= max_l; but if that K is more
  * than 4 times ceil(M / max_l) (M has no divisor near), the largest
- * divisor K below ceil(M / max_l) instead (L a little above max_l: tiles
- * still bound the memory).  -1 if p is not a fine-framebuffer plan. */
+ * divisor K below ceil(M / max_l) instead when that keeps L within
+ * 16 max_l (tiles still bound the memory).  So a prime M far above max_l
+ * is M passes of one sample each.  -1 if p is not a fine-framebuffer
+ * plan. */
 int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l);
 
 /* Pass r (0 <= r < K): its shift (units 1/q px: the position in the

@@ -125,9 +125,10 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             char mem[32], budget[32];
             gls_fmt_bytes(mem, sizeof mem, lay.bytes);
             gls_fmt_bytes(budget, sizeof budget, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
-            fprintf(out, "  anti-aliasing: %llu pass%s of %llu samples per pixel; fine framebuffer %lldx%lld "
+            fprintf(out, "  anti-aliasing: %llu pass%s of %llu sample%s per pixel; fine framebuffer %lldx%lld "
                          "(A = [%lld %lld; %lld %lld]: image pixel (1, 0) -> (%lld, %lld) fine pixels)\n",
                     (unsigned long long)lay.f.k, lay.f.k == 1 ? "" : "es", (unsigned long long)lay.f.l,
+                    lay.f.l == 1 ? "" : "s",
                     (long long)lay.fw, (long long)lay.fh, (long long)lay.f.a[0][0], (long long)lay.f.a[0][1],
                     (long long)lay.f.a[1][0], (long long)lay.f.a[1][1], (long long)lay.f.a[0][0],
                     (long long)lay.f.a[1][0]);

@@ -240,6 +240,35 @@ static void test_basis_and_map(void)
     }
 }
 
+/* How many passes: the fewest with L <= max_l (K dividing M; for the grid
+ * K = k^2 with k dividing N); a divisor below the need only while L stays
+ * within 16 max_l, so a prime M far above max_l (or a grid of prime N) is
+ * M passes of one sample, never one pass whose pixels each span millions
+ * of fine pixels. */
+static void test_pass_split_choice(void)
+{
+    static const struct {
+        gls_aa_pattern pat;
+        uint64_t m, max_l, k;
+    } cases[] = {{GLS_AA_LATTICE, 256, 65536, 1},          {GLS_AA_LATTICE, 262144, 65536, 4},
+                 {GLS_AA_LATTICE, 65537, 65536, 1},        {GLS_AA_LATTICE, 16777213, 65536, 16777213},
+                 {GLS_AA_LATTICE, 16777216, 65536, 256},   {GLS_AA_GRID, 4093ull * 4093, 65536, 4093ull * 4093},
+                 {GLS_AA_GRID, 4096ull * 4096, 65536, 256}, {GLS_AA_GRID, 64, 16, 4}};
+    char err[128];
+    for (size_t t = 0; t < sizeof cases / sizeof cases[0]; t++) {
+        gls_aa_opts o = gls_aa_defaults();
+        o.samples = cases[t].m;
+        o.pattern = cases[t].pat;
+        gls_aa_plan p;
+        gls_aa_fine f;
+        CHECK(gls_aa_plan_init(&p, &o, err, sizeof err) == 0);
+        CHECK(gls_aa_fine_init(&f, &p, cases[t].max_l) == 0);
+        CHECK_MSG(f.k == cases[t].k && f.k * f.l == cases[t].m, "M %llu: K %llu L %llu, expected K %llu",
+                  (unsigned long long)cases[t].m, (unsigned long long)f.k, (unsigned long long)f.l,
+                  (unsigned long long)cases[t].k);
+    }
+}
+
 /* ---- rendering helpers ---------------------------------------------- */
 
 typedef struct {
@@ -731,6 +760,7 @@ int main(void)
     RUN(test_lattice_points);
     RUN(test_lattice_criterion);
     RUN(test_basis_and_map);
+    RUN(test_pass_split_choice);
     RUN(test_gather_constant);
     RUN(test_gather_halfplane);
     RUN(test_tiles_straddle);
