@@ -17,7 +17,7 @@ W=${AA_W:-640}
 H=${AA_H:-480}
 MS=${AA_MS:-"16 64 256 4096"}
 PATTERNS=${AA_PATTERNS:-"lattice grid stratified"}
-REPS=${AA_REPS:-3}
+REPS=${AA_REPS:-5}
 mkdir -p docs
 # llvmpipe allocates and frees large buffers per pass; fixed malloc
 # thresholds keep page faults out of the timings (bench/play.sh)
