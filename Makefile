@@ -162,7 +162,7 @@ clean:
 $(B)/bench/play_floor: bench/play_floor.c bench/play_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
-$(B)/bench/play_bench: bench/play_bench.c bench/play_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/bench/play_bench: bench/play_bench.c bench/play_scene.h bench/play_bundle.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
@@ -170,7 +170,7 @@ bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing; the
 # plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
-$(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h bench/play_scene.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
+$(B)/bench/aa_bench: bench/aa_bench.c bench/aa_scene.h bench/play_scene.h bench/play_bundle.h tests/unit/player_scene.h $(B)/libglsruntime.a $(B)/libglsformat.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -Ibench $(LDFLAGS) $< -o $@ $(B)/libglsruntime.a $(B)/libglsformat.a $(LDLIBS) $(GL_LIBS)
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB) $(B)/textures.stamp

@@ -31,7 +31,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "aa_scene.h"
-#include "play_scene.h"
+#include "play_bundle.h"
 
 static double now(void)
 {
@@ -293,24 +293,7 @@ static int accuracy(uint32_t W, uint32_t H, const char *pat, uint64_t m)
 static int scene(const char *dir)
 {
     char path[1024];
-    tb t;
-    tb_init(&t);
-    tb_object(&t, "terrain", 1);
-    gls_vec4 *pp = malloc(2 * (PS_N + 1) * sizeof *pp);
-    gls_rgba *c = malloc(2 * (PS_N + 1) * sizeof *c);
-    for (int i = 0; i < PS_N; i++) {
-        for (int j = 0; j <= PS_N; j++)
-            for (int s = 0; s < 2; s++) {
-                double q[3];
-                float col[4];
-                ps_vertex(i + s, j, q, col);
-                pp[2 * j + s] = (gls_vec4){q[0], q[1], q[2], 1};
-                c[2 * j + s] = (gls_rgba){col[0], col[1], col[2], col[3]};
-            }
-        tb_prim4(&t, GLS_PRIM_QSTRIP, 2 * (PS_N + 1), pp, c, NULL);
-    }
-    free(pp), free(c);
-    gls_bundle *b = tb_finish(&t);
+    gls_bundle *b = ps_bundle();
     snprintf(path, sizeof path, "%s/terrain.glsb", dir);
     int rc = tb_write(b, path);
     gls_bundle_free(b);
