@@ -129,6 +129,14 @@ long_render() { # NAME UNITS COUNT_RE PLAY_OPTIONS...
 }
 long_render aa_estimate_before_long_render passes 16777216 --pattern stratified
 long_render aa_estimate_before_long_render_lattice tiles '[0-9]*'
+# --resume knows the samples: a frame rendered with 16 samples is complete
+# for --samples 16, not for --samples 64, nor for the grid's 16
+resume() { "$PLAY" $S -o "$t/res" --outputs image --resume "$@" 2>&1 >/dev/null | grep -o '[0-9]* of 1 frame complete'; }
+$PLAY $S -o "$t/res" --outputs image --samples 16 2>/dev/null
+[ "$(resume --samples 16)" = "1 of 1 frame complete" ] && ok aa_resume_same_samples || fail aa_resume_same_samples "$(resume --samples 16)"
+[ "$(resume --samples 64)" = "0 of 1 frame complete" ] && ok aa_resume_other_samples || fail aa_resume_other_samples "$(resume --samples 64)"
+$PLAY $S -o "$t/res" --outputs image --samples 16 2>/dev/null
+[ "$(resume --aa 4 --pattern grid)" = "0 of 1 frame complete" ] && ok aa_resume_other_pattern || fail aa_resume_other_pattern "$(resume --aa 4 --pattern grid)"
 # progress only on a terminal: stderr to a file stays empty
 $PLAY $S -o "$t/q" --aa 16 --outputs image 2>"$t/err"
 [ ! -s "$t/err" ] && ok aa_no_progress_when_not_tty || fail aa_no_progress_when_not_tty "$(cat "$t/err")"
