@@ -64,8 +64,10 @@ int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l)
     f->k = choose_k(m, max_l);
     f->l = m / f->k;
     f->q = p->lat.q;
-    /* points i = r + j K: (j / L, j a / L) + (r / M, r a / M), so the pass
-     * lattice has L points and generator a mod L */
+    /* points i = r + j K: (j / L, j a / L) + (r / M, r a / M) mod 1, so
+     * the pass lattice has L points and generator a mod L (any gcd with
+     * L, 0 included: only its basis is used here, the positions are the
+     * plan's, so its own centring offset plays no part) */
     gls_lattice sub;
     if (gls_lattice_make(f->l, p->lat.a % f->l, &sub))
         return -1;
@@ -91,10 +93,8 @@ void gls_aa_fine_pass(const gls_aa_fine *f, uint64_t r, int64_t shift[2], int64_
         return;
     }
     const gls_lattice *l = &p->lat;
-    uint64_t ra = (uint64_t)(((unsigned __int128)r * l->a) % l->m);
     /* the plan's point r, the pass lattice's point 0 */
-    shift[0] = GLS_LATTICE_UNIT * (int64_t)r + 1;
-    shift[1] = GLS_LATTICE_UNIT * (int64_t)ra + 1;
+    gls_lattice_point(l, r, &shift[0], &shift[1]);
     int64_t q = (int64_t)f->q;
     for (uint64_t j = 0; j < f->l; j++) {
         int64_t x, y;

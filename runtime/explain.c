@@ -76,10 +76,13 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         if (p.o.filter == GLS_AA_GAUSS)
             fprintf(out, " (sigma %g px, window +-%g sigma)", p.o.sigma, GLS_AA_GAUSS_SPAN);
         if (p.o.pattern == GLS_AA_LATTICE) {
-            fprintf(out, ", lattice pattern: generator a = %llu, closest samples %.4f px apart, %llu and %llu "
-                         "samples a position across 45 and 135 degree edges",
-                    (unsigned long long)p.lat.a, p.lat.mindist, (unsigned long long)p.lat.g45,
-                    (unsigned long long)p.lat.g135);
+            /* the criterion's keys (lattice.c): the closest distance, then
+             * the points per position across axis and diagonal edges */
+            fprintf(out, ", lattice pattern: generator a = %llu, closest samples %.4f px apart; samples a position "
+                         "across 0, 45 and 135 degree edges: %llu, %llu and %llu (gcd(a, M), gcd(a - 1, M), "
+                         "gcd(a + 1, M); positions g/%llu px apart)",
+                    (unsigned long long)p.lat.a, p.lat.mindist, (unsigned long long)p.lat.g0,
+                    (unsigned long long)p.lat.g45, (unsigned long long)p.lat.g135, (unsigned long long)p.m);
             if (gls_aa_weighted(&p))
                 fprintf(out, ", %llu of them in the window (cells -%u..%u)", (unsigned long long)p.count, p.radius,
                         p.radius);

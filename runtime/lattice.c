@@ -3,29 +3,39 @@
  * Why the generator matters.  A straight edge crossing a row of pixels
  * covers, per row, the samples whose projection along the edge onto the
  * row lies left of it.  With the pattern centred (its points' mean is the
- * pixel centre: one point centred in each 1/M strip of x and of y) the
- * per-row error has zero mean over edge offsets whatever the direction;
- * its RMS is set by how evenly the M projections spread.  An edge
- * parallel to a lattice vector v sees them collapse onto 1/(M |v|)-spaced
- * positions, an RMS of 1/(M |v| sqrt 12): short vectors are the bad
- * directions, and every lattice has them (the shortest is at most
- * sqrt(2 / (sqrt 3 M)) px).  What a generator chooses is how short the
- * shortest is and where the bad directions lie.
+ * pixel centre) the per-row error has zero mean over edge offsets
+ * whatever the direction; its RMS is set by how evenly the M projections
+ * spread.  An edge parallel to a lattice vector v sees them collapse onto
+ * 1/(M |v|)-spaced positions, an RMS of 1/(M |v| sqrt 12): short vectors
+ * are the bad directions, and every lattice has them (the shortest is at
+ * most sqrt(2 / (sqrt 3 M)) px, so some direction has an RMS of about
+ * 0.27 / sqrt(M) px whatever the generator).  What a generator chooses is
+ * how short the shortest vector is and where the bad directions lie.
  *
  * The criterion (deterministic, independent of any benchmark's angles):
- *  1. candidates: generators a (1 <= a < M, gcd(a, M) = 1) whose shortest
- *     vector is within 5% of the longest shortest vector any generator
- *     has (Lagrange-Gauss reduction of (1, a), (0, M));
- *  2. among them, the smallest worst RMS over edges at 0, 45, 90 and 135
- *     degrees, the directions most common in real scenes (axis-aligned
- *     and diagonal edges, calibration boards): 0 and 90 always see M
- *     distinct positions, 45 sees gcd(a - 1, M) points on each and 135
- *     gcd(a + 1, M), so the worst is max(1, gcd(a - 1, M), gcd(a + 1, M))
- *     / (M sqrt 12) px.  For M a power of two one diagonal always has at
- *     least 4 points a position (the lattice contains (1/2, 1/2)), the
- *     other at least 2;
- *  3. then the longer shortest vector, then the smaller a.
- * The whole search is O(M log M); for M = 4096^2 it takes about a second. */
+ *  1. candidates: every generator a in 1..M-1 (not only those coprime to
+ *     M); only those attaining the longest shortest vector, compared
+ *     exactly as the integer |e1|^2 after Lagrange-Gauss reduction of
+ *     (1, a), (0, M).  The largest minimum distance keeps the short
+ *     vectors, the bad directions, as long as any lattice allows;
+ *  2. among them the smallest axis/diagonal measure
+ *     g = max(gcd(a, M), gcd(a - 1, M), gcd(a + 1, M)): edges at 0, 45
+ *     and 135 degrees see the points g_h = gcd(a, M), gcd(a - 1, M) and
+ *     gcd(a + 1, M) at each position (RMS g / (M sqrt 12) px), edges at
+ *     90 degrees always see M distinct positions.  These are the
+ *     directions most common in real scenes (axis-aligned and diagonal
+ *     edges, calibration boards);
+ *  3. then the smaller a.
+ * For M a power of two an a coprime to M always puts at least 4 points a
+ * position on one diagonal (the lattice contains (1/2, 1/2)); the
+ * largest-minimum-distance generators there are even (g_h = 2: 256 -> 30,
+ * 4096 -> 70), with both diagonals at 1 point a position.  The search is
+ * one pass over a, O(M log M): about a second for M = 4096^2.
+ *
+ * Centring.  With g_h > 1 the values i a mod M are the multiples of g_h,
+ * each g_h times, so ((i a mod M) + 1/2) / M would have its mean
+ * (g_h - 1) / (2 M) above the centre: a systematic shift of every edge
+ * not at 90 degrees.  The offset g_h / 2 centres them exactly. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,25 +85,27 @@ static void basis(uint64_t m, uint64_t a, gls_iv2 *e1, gls_iv2 *e2)
         e2->x = -e2->x, e2->y = -e2->y;
 }
 
-/* max(1, gcd(a - 1, m), gcd(a + 1, m)): step 2's measure in units of
- * 1/(m sqrt 12) px */
+/* max(gcd(a, m), gcd(a - 1, m), gcd(a + 1, m)) (gcd(0, m) = m): step 2's
+ * measure, in units of 1/(m sqrt 12) px */
 static uint64_t diag(uint64_t m, uint64_t a)
 {
-    uint64_t g1 = gcd((a + m - 1) % m, m), g2 = gcd((a + 1) % m, m);
-    uint64_t g = g1 > g2 ? g1 : g2;
-    return g > 1 ? g : 1;
+    uint64_t g0 = gcd(a % m, m), g1 = gcd((a + m - 1) % m, m), g2 = gcd((a + 1) % m, m);
+    uint64_t g = g0 > g1 ? g0 : g1;
+    return g > g2 ? g : g2;
 }
 
 int gls_lattice_make(uint64_t m, uint64_t a, gls_lattice *l)
 {
-    if (m < 1 || m > GLS_LATTICE_MAX_M || gcd(a % m, m) != 1)
+    if (m < 1 || m > GLS_LATTICE_MAX_M)
         return -1;
     memset(l, 0, sizeof *l);
     l->m = m;
     l->a = a % m;
     l->q = GLS_LATTICE_UNIT * m;
     basis(m, l->a, &l->e1, &l->e2);
-    l->mindist = sqrt((double)dot(l->e1, l->e1)) / (double)m;
+    l->len2 = dot(l->e1, l->e1);
+    l->mindist = sqrt((double)l->len2) / (double)m;
+    l->g0 = gcd(l->a, m);
     l->g45 = gcd((l->a + m - 1) % m, m);
     l->g135 = gcd((l->a + 1) % m, m);
     l->axis_diag = (double)diag(m, l->a) / ((double)m * sqrt(12.0));
@@ -104,35 +116,22 @@ int gls_lattice_choose(uint64_t m, gls_lattice *l)
 {
     if (m < 1 || m > GLS_LATTICE_MAX_M)
         return -1;
-    if (m <= 2) /* one point at the centre; two on the diagonal */
-        return gls_lattice_make(m, m == 1 ? 0 : 1, l);
-    /* pass 1: the longest shortest vector (|e1|^2, units 1/m^2) */
-    int64_t best = 0;
-    for (uint64_t a = 1; a < m; a++) {
-        if (gcd(a, m) != 1)
-            continue;
-        gls_iv2 e1, e2;
-        basis(m, a, &e1, &e2);
-        if (dot(e1, e1) > best)
-            best = dot(e1, e1);
-    }
-    /* pass 2: among those within 5%, the axis/diagonal measure, then the
-     * longer shortest vector, then the smaller a */
-    double lim = GLS_LATTICE_MINDIST_TOL * GLS_LATTICE_MINDIST_TOL * (double)best;
+    if (m == 1) /* one point at the centre */
+        return gls_lattice_make(1, 0, l);
+    /* one pass: the longest shortest vector (exact |e1|^2, units 1/m^2),
+     * then the smaller axis/diagonal measure, then the smaller a (the
+     * loop runs upwards, so a tie keeps the first) */
     uint64_t ba = 0, bd = 0;
-    int64_t bl = 0;
+    int64_t bl = -1;
     for (uint64_t a = 1; a < m; a++) {
-        if (gcd(a, m) != 1)
-            continue;
         gls_iv2 e1, e2;
         basis(m, a, &e1, &e2);
         int64_t d2 = dot(e1, e1);
-        if ((double)d2 < lim)
+        if (d2 < bl)
             continue;
         uint64_t d = diag(m, a);
-        if (!ba || d < bd || (d == bd && d2 > bl)) {
+        if (d2 > bl || d < bd)
             ba = a, bd = d, bl = d2;
-        }
     }
     return gls_lattice_make(m, ba, l);
 }
@@ -141,5 +140,6 @@ void gls_lattice_point(const gls_lattice *l, uint64_t i, int64_t *x, int64_t *y)
 {
     uint64_t ia = (uint64_t)(((unsigned __int128)i * l->a) % l->m);
     *x = GLS_LATTICE_UNIT * (int64_t)i + 1;
-    *y = GLS_LATTICE_UNIT * (int64_t)ia + 1;
+    /* (i a mod m) + g0/2 in units of 1/(2m): centred (lattice.c) */
+    *y = GLS_LATTICE_UNIT * (int64_t)ia + (int64_t)l->g0;
 }

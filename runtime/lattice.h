@@ -1,11 +1,13 @@
 /* Rank-1 lattice sample patterns (spec/antialiasing.md "The lattice").
  *
  * M points in the unit pixel square, point i at
- *     ((i + 1/2) / M, ((i*a mod M) + 1/2) / M)
- * with a generator a coprime to M: one point in each 1/M strip in x and
- * in y, centred in it, so that the points' mean is the pixel centre.  The pattern repeats
- * from pixel to pixel, so the samples of a whole image form one 2D
- * lattice; a reduced basis of it gives an integer map A from image
+ *     ((i + 1/2) / M, ((i*a mod M) + g_h/2) / M),   g_h = gcd(a, M),
+ * for a generator a in 0..M-1: one point centred in each 1/M strip in x;
+ * in y the values i*a mod M are the multiples of g_h, each taken g_h
+ * times, and the offset g_h/2 centres them, so that the points' mean is
+ * the pixel centre (no systematic edge shift, lattice.c).  The pattern
+ * repeats from pixel to pixel, so the samples of a whole image form one
+ * 2D lattice; a reduced basis of it gives an integer map A from image
  * pixels to a "fine" framebuffer whose pixel centres are exactly the
  * sample points (the one-pass renderer, aa_onepass.h).
  *
@@ -21,10 +23,6 @@
 #define GLS_LATTICE_UNIT 2
 /* Largest M: 4096^2. */
 #define GLS_LATTICE_MAX_M (4096ull * 4096ull)
-/* Generators whose shortest vector is within this factor of the best are
- * candidates (and at most GLS_LATTICE_CANDIDATES of them). */
-#define GLS_LATTICE_MINDIST_TOL 0.95
-#define GLS_LATTICE_CANDIDATES 64
 
 typedef struct {
     int64_t x, y;
@@ -38,23 +36,26 @@ typedef struct {
     uint64_t m, a;       /* points per pixel, generator                  */
     uint64_t q;          /* position unit: 1/q px, q = 2 m               */
     gls_iv2 e1, e2;      /* reduced basis, units 1/m px, det(e1, e2) = m  */
+    int64_t len2;        /* |e1|^2, units 1/m^2: the criterion's first key */
     double mindist;      /* |e1| / m: shortest distance between points, px */
-    uint64_t g45, g135;  /* gcd(a - 1, m), gcd(a + 1, m): the points'
-                            spacing across 45 and 135 degree edges, 1/m px */
-    double axis_diag;    /* the criterion: worst RMS edge error over edges
-                            at 0, 45, 90, 135 degrees, px (lattice.c)    */
+    uint64_t g0, g45, g135; /* gcd(a, m), gcd(a - 1, m), gcd(a + 1, m):
+                            the points a position across 0, 45 and 135
+                            degree edges (positions g/m px apart); 90
+                            degree edges always see m positions          */
+    double axis_diag;    /* max(g0, g45, g135) / (m sqrt 12): the worst
+                            RMS edge error at 0, 45, 90, 135 degrees, px */
 } gls_lattice;
 
-/* The pattern for m points (1 <= m <= GLS_LATTICE_MAX_M): generator and
- * shift by the documented criterion (lattice.c).  Deterministic. */
+/* The pattern for m points (1 <= m <= GLS_LATTICE_MAX_M): the generator
+ * by the documented criterion (lattice.c).  Deterministic. */
 int gls_lattice_choose(uint64_t m, gls_lattice *l);
 
-/* The lattice for a given generator (gcd(a, m) = 1); for tests and the
- * K-pass split. */
+/* The lattice for a given generator a (any a, reduced mod m; m = 1 has
+ * a = 0); for tests and the K-pass split. */
 int gls_lattice_make(uint64_t m, uint64_t a, gls_lattice *l);
 
 /* Point i (0 <= i < m) in units of 1/q px, in [0, q)^2: (2 i + 1,
- * 2 (i a mod m) + 1). */
+ * 2 (i a mod m) + g0). */
 void gls_lattice_point(const gls_lattice *l, uint64_t i, int64_t *x, int64_t *y);
 
 #endif

@@ -73,10 +73,12 @@ fi
 run aa_explain $PLAY $S --explain --aa 8 --filter gauss --outputs image
 grep -q "anti-aliasing: 8x8 = 64 samples per pixel, Gaussian" "$t/stdout" && grep -q "accumulator: uint64" "$t/stdout" &&
     ok aa_explain_plan || fail aa_explain_plan "$(cat "$t/stdout")"
-# the lattice is the default; any M; the plan names the generator, the
-# passes, the tiles and the memory
+# the lattice is the default; any M; the plan names the generator (256
+# samples: a = 30, gcd(a, 256) = 2, spec/antialiasing.md), the points a
+# position across axis and diagonal edges, the passes, the tiles and the
+# memory
 run aa_explain_lattice $PLAY $S --explain --samples 256 --outputs image
-grep -q "anti-aliasing: 16x16 = 256 samples per pixel, box filter, lattice pattern: generator a = 19, closest samples 0.0618 px apart, 2 and 4 samples a position across 45 and 135 degree edges" "$t/stdout" &&
+grep -qF "anti-aliasing: 16x16 = 256 samples per pixel, box filter, lattice pattern: generator a = 30, closest samples 0.0650 px apart; samples a position across 0, 45 and 135 degree edges: 2, 1 and 1 (gcd(a, M), gcd(a - 1, M), gcd(a + 1, M); positions g/256 px apart)" "$t/stdout" &&
     grep -q "passes: one fine framebuffer whose pixel centres are the samples" "$t/stdout" &&
     grep -q "^  anti-aliasing: 1 pass of 256 samples per pixel; fine framebuffer [0-9]*x[0-9]* (A = \[" "$t/stdout" &&
     grep -q "^  tiles: [0-9]* per pass of [0-9]*x[0-9]* (at most; those no pixel needs are skipped), [0-9.]* MiB of framebuffer and read-backs (--aa-memory 256 MiB)" "$t/stdout" &&
@@ -85,7 +87,7 @@ run aa_explain_kpass $PLAY $S --explain --samples 262144 --outputs image
 grep -q "^  anti-aliasing: 4 passes of 65536 samples per pixel" "$t/stdout" &&
     ok aa_explain_kpass_plan || fail aa_explain_kpass_plan "$(grep -A1 '^  anti-aliasing' "$t/stdout")"
 run aa_explain_default $PLAY $S --explain --aa 4 --outputs image
-grep -q "lattice pattern: generator a = 3," "$t/stdout" && ok aa_default_is_lattice || fail aa_default_is_lattice "$(grep anti-al "$t/stdout")"
+grep -q "lattice pattern: generator a = 4," "$t/stdout" && ok aa_default_is_lattice || fail aa_default_is_lattice "$(grep anti-al "$t/stdout")"
 run aa_samples_prime $PLAY $S -o "$t/p17" --samples 17 --outputs image
 [ -s "$t/p17/proj/image_000000.png" ] && ok aa_samples_prime_image || fail aa_samples_prime_image "no image"
 run aa_explain_one $PLAY $S --explain --aa 1

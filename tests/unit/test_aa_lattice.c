@@ -26,76 +26,83 @@ static uint64_t gcd64(uint64_t a, uint64_t b)
     return a;
 }
 
-/* Smallest distance between two points of the pattern, pixels repeating
- * (torus distance), by brute force over all pairs. */
-static double brute_mindist(const gls_lattice *l)
+/* Smallest squared distance between two points of the pattern, pixels
+ * repeating (torus distance), by brute force over all pairs; exact
+ * integer, units of 1/m^2 px^2 (the positions are in units of 1/(2m)). */
+static int64_t brute_len2(const gls_lattice *l)
 {
-    double best = 1e9, q = (double)l->q;
+    int64_t best = INT64_MAX, q = (int64_t)l->q;
     int64_t *x = malloc(l->m * sizeof *x), *y = malloc(l->m * sizeof *y);
     for (uint64_t i = 0; i < l->m; i++)
         gls_lattice_point(l, i, &x[i], &y[i]);
     for (uint64_t i = 0; i < l->m; i++)
         for (uint64_t j = i + 1; j < l->m; j++) {
-            double dx = fabs((double)(x[i] - x[j])) / q, dy = fabs((double)(y[i] - y[j])) / q;
-            dx = fmin(dx, 1 - dx), dy = fmin(dy, 1 - dy);
-            double d = sqrt(dx * dx + dy * dy);
-            if (d < best)
-                best = d;
+            int64_t dx = llabs(x[i] - x[j]), dy = llabs(y[i] - y[j]);
+            dx = dx < q - dx ? dx : q - dx, dy = dy < q - dy ? dy : q - dy;
+            if (dx * dx + dy * dy < best)
+                best = dx * dx + dy * dy;
         }
     free(x), free(y);
-    return best;
+    return best / (GLS_LATTICE_UNIT * GLS_LATTICE_UNIT);
 }
 
-/* M points, exactly one in each 1/M strip in x and in y, the documented
+/* M points: exactly one in each 1/M strip in x, centred in it; in y the
+ * multiples of g_h = gcd(a, M) (units 1/M), each g_h times, offset by
+ * g_h / 2; the points' mean exactly the pixel centre; the documented
  * minimum distance (the reduced basis' shortest vector, checked by brute
- * force), within 5% of the best any generator gives, and the documented
- * generators. */
+ * force over the pairs); and the documented generators. */
 static void test_lattice_points(void)
 {
-    static const uint64_t ms[] = {1, 2, 3, 5, 16, 17, 64, 100, 256, 1000, 4096};
+    static const uint64_t ms[] = {1, 2, 3, 4, 5, 16, 17, 64, 100, 256, 1000, 4096};
     for (size_t t = 0; t < sizeof ms / sizeof ms[0]; t++) {
         uint64_t m = ms[t];
         gls_lattice l;
         CHECK(gls_lattice_choose(m, &l) == 0);
-        CHECK(l.m == m && l.q == GLS_LATTICE_UNIT * m && gcd64(l.a, m) == 1);
-        uint8_t *sx = calloc(m, 1), *sy = calloc(m, 1);
+        CHECK(l.m == m && l.q == GLS_LATTICE_UNIT * m && l.g0 == gcd64(l.a, m));
+        uint64_t g = l.g0;
+        uint8_t *sx = calloc(m, 1);
+        uint64_t *sy = calloc(m, sizeof *sy);
         int bad = 0;
+        int64_t sumx = 0, sumy = 0;
         for (uint64_t i = 0; i < m; i++) {
             int64_t x, y;
             gls_lattice_point(&l, i, &x, &y);
-            bad += x < 0 || y < 0 || x >= (int64_t)l.q || y >= (int64_t)l.q;
-            if (!bad) {
-                /* centred in its strip: 2 i + 1 */
-                bad += x % GLS_LATTICE_UNIT != 1 || y % GLS_LATTICE_UNIT != 1;
-                sx[x / GLS_LATTICE_UNIT]++;
-                sy[y / GLS_LATTICE_UNIT]++;
+            sumx += x, sumy += y;
+            if (x < 0 || y < 0 || x >= (int64_t)l.q || y >= (int64_t)l.q) {
+                bad++;
+                continue;
             }
+            /* x: 2 i + 1; y: 2 k g + g */
+            bad += x % GLS_LATTICE_UNIT != 1 || (y - (int64_t)g) % (GLS_LATTICE_UNIT * (int64_t)g) != 0;
+            sx[x / GLS_LATTICE_UNIT]++;
+            sy[y / GLS_LATTICE_UNIT]++;
         }
         for (uint64_t i = 0; i < m; i++)
-            bad += sx[i] != 1 || sy[i] != 1;
-        CHECK_MSG(bad == 0, "M %llu: %d points outside or strips not hit once", (unsigned long long)m, bad);
+            bad += sx[i] != 1 || sy[i] != (i % g == g / 2 ? g : 0);
+        CHECK_MSG(bad == 0, "M %llu: %d points outside, off their strips or strips not hit as documented",
+                  (unsigned long long)m, bad);
+        /* mean (units 1/q) = q / 2 = m: the pixel centre, exactly */
+        CHECK_MSG(sumx == (int64_t)(m * m) && sumy == (int64_t)(m * m), "M %llu: mean (%g, %g) px, not centred",
+                  (unsigned long long)m, (double)sumx / (double)(m * l.q), (double)sumy / (double)(m * l.q));
         free(sx), free(sy);
         if (m > 1) {
-            double bd = brute_mindist(&l);
-            CHECK_MSG(fabs(bd - l.mindist) < 1e-12, "M %llu: mindist %.9f, brute force %.9f", (unsigned long long)m,
-                      l.mindist, bd);
-            double best = 0;
-            for (uint64_t a = 1; a < m; a++) {
-                gls_lattice o;
-                if (gcd64(a, m) == 1 && gls_lattice_make(m, a, &o) == 0 && o.mindist > best)
-                    best = o.mindist;
-            }
-            CHECK_MSG(l.mindist >= GLS_LATTICE_MINDIST_TOL * best - 1e-12, "M %llu: %.6f < 0.95 * %.6f",
-                      (unsigned long long)m, l.mindist, best);
-            printf("  M %5llu: a = %llu, closest points %.5f px = %.3f / sqrt(M) (best %.3f), 0/45/90/135: %.6f px\n",
+            int64_t bd = brute_len2(&l);
+            CHECK_MSG(bd == l.len2 && fabs(l.mindist - sqrt((double)bd) / (double)m) < 1e-15,
+                      "M %llu: |e1|^2 %lld, brute force %lld", (unsigned long long)m, (long long)l.len2, (long long)bd);
+            printf("  M %5llu: a = %llu, closest points %.5f px = %.4f / sqrt(M), points a position at 0/45/135 "
+                   "degrees %llu/%llu/%llu: %.6f px\n",
                    (unsigned long long)m, (unsigned long long)l.a, l.mindist, l.mindist * sqrt((double)m),
-                   best * sqrt((double)m), l.axis_diag);
+                   (unsigned long long)l.g0, (unsigned long long)l.g45, (unsigned long long)l.g135, l.axis_diag);
         }
     }
-    static const uint64_t gen[][2] = {{16, 3}, {64, 19}, {256, 19}, {4096, 475}};
-    for (int i = 0; i < 4; i++) {
+    /* spec/antialiasing.md's table */
+    static const uint64_t gen[][2] = {{16, 4},    {64, 28},      {256, 30},
+                                      {1024, 271}, {4096, 70},    {65536, 25962},
+                                      {4096ull * 4096, 7605516}};
+    for (int i = 0; i < 7; i++) {
         gls_lattice l;
-        CHECK(gls_lattice_choose(gen[i][0], &l) == 0 && l.a == gen[i][1]);
+        CHECK_MSG(gls_lattice_choose(gen[i][0], &l) == 0 && l.a == gen[i][1], "M %llu: a = %llu, documented %llu",
+                  (unsigned long long)gen[i][0], (unsigned long long)l.a, (unsigned long long)gen[i][1]);
     }
     /* the largest M: the search stays exact (no overflow) */
     gls_lattice big;
@@ -124,31 +131,88 @@ static double axis_diag_measured(const gls_lattice *l)
     return w;
 }
 
-/* The criterion, checked by brute force: no generator within 5% of the
- * best minimum distance does better at 0/45/90/135 degrees (measured from
- * the points), and the chosen one's value is the formula's. */
+/* The criterion, checked by brute force over every a in 1..M-1 (not only
+ * those coprime to M): the chosen generator has the longest shortest
+ * vector (from the pairs of points for M <= 256, from the reduction
+ * above), no generator with that length does better at 0/45/90/135
+ * degrees (measured from the points) or as well with a smaller a, and
+ * the chosen one's value is the formula's.  256 -> 30 and 4096 -> 70 are
+ * cross-checked here. */
 static void test_lattice_criterion(void)
 {
-    static const uint64_t ms[] = {16, 64, 100, 256, 1000, 1024};
+    static const uint64_t ms[] = {16, 64, 100, 256, 1000, 1024, 4096};
     for (size_t t = 0; t < sizeof ms / sizeof ms[0]; t++) {
         uint64_t m = ms[t];
         gls_lattice l;
         CHECK(gls_lattice_choose(m, &l) == 0);
-        double mine = axis_diag_measured(&l), best = 1e9, bestd = 0;
+        double mine = axis_diag_measured(&l), best = 1e9;
         CHECK_MSG(fabs(mine - l.axis_diag) < 1e-9, "M %llu: measured %.9f, formula %.9f", (unsigned long long)m, mine,
                   l.axis_diag);
+        int64_t bestd = 0;
+        uint64_t besta = 0;
         for (uint64_t a = 1; a < m; a++) {
             gls_lattice o;
-            if (gcd64(a, m) == 1 && gls_lattice_make(m, a, &o) == 0 && o.mindist > bestd)
-                bestd = o.mindist;
+            CHECK(gls_lattice_make(m, a, &o) == 0);
+            int64_t d = m <= 256 ? brute_len2(&o) : o.len2;
+            bestd = d > bestd ? d : bestd;
         }
         for (uint64_t a = 1; a < m; a++) {
             gls_lattice o;
-            if (gcd64(a, m) == 1 && gls_lattice_make(m, a, &o) == 0 && o.mindist >= GLS_LATTICE_MINDIST_TOL * bestd)
-                best = fmin(best, axis_diag_measured(&o));
+            if (gls_lattice_make(m, a, &o) == 0 && o.len2 == bestd) {
+                double e = axis_diag_measured(&o);
+                if (e < best - 1e-12)
+                    best = e, besta = a;
+            }
         }
-        CHECK_MSG(mine <= best + 1e-12, "M %llu: a = %llu gives %.6f, another %.6f", (unsigned long long)m,
-                  (unsigned long long)l.a, mine, best);
+        CHECK_MSG(l.len2 == bestd && fabs(mine - best) < 1e-12 && l.a == besta,
+                  "M %llu: a = %llu (|e1|^2 %lld, %.6f px), brute force a = %llu (|e1|^2 %lld, %.6f px)",
+                  (unsigned long long)m, (unsigned long long)l.a, (long long)l.len2, mine, (unsigned long long)besta,
+                  (long long)bestd, best);
+        if (m == 256)
+            CHECK(besta == 30);
+        if (m == 4096)
+            CHECK(besta == 70);
+    }
+}
+
+/* The mean per-row edge displacement over edge offsets, computed directly
+ * (not from the points' mean): a row of pixels u = -3..3 crossed by an
+ * edge x = c + y cot(theta) (steep; flat edges per column, x and y
+ * swapped), the samples left of it counted, the exact covered area
+ * c + cot / 2 + 3 subtracted; over c uniform in [0, 1) sample i of pixel
+ * u counts with probability 1 - clamp(u + x_i - y_i cot, 0, 1). */
+static double mean_row_displacement(const gls_lattice *l, double deg)
+{
+    double t = deg * AS_PI / 180, q = (double)l->q;
+    int steep = fabs(sin(t)) >= fabs(cos(t));
+    double sl = steep ? cos(t) / sin(t) : sin(t) / cos(t);
+    long double count = 0;
+    for (uint64_t i = 0; i < l->m; i++) {
+        int64_t X, Y;
+        gls_lattice_point(l, i, &X, &Y);
+        double x = (double)X / q, y = (double)Y / q, p = steep ? x - y * sl : y - x * sl;
+        for (int u = -3; u <= 3; u++)
+            count += 1 - fmin(fmax(u + p, 0), 1);
+    }
+    return (double)(count / (long double)l->m) - (0.5 + sl / 2 + 3);
+}
+
+/* Centring: no systematic edge shift at any direction, for generators
+ * with gcd(a, M) = 1, 2 and 4 (with the offset 1/2 instead of g_h / 2
+ * the mean is off by up to (g_h - 1) / (2 M) px). */
+static void test_lattice_centred(void)
+{
+    static const uint64_t cases[][2] = {{256, 19}, {256, 30}, {256, 76}, {4096, 475}, {4096, 70},
+                                        {4096, 1100}, {1000, 3}, {1000, 302}, {1000, 212}, {64, 28}};
+    static const double dirs[] = {0, 45, 90, 135, 30};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        gls_lattice l;
+        CHECK(gls_lattice_make(cases[c][0], cases[c][1], &l) == 0);
+        for (int d = 0; d < 5; d++) {
+            double mean = mean_row_displacement(&l, dirs[d]);
+            CHECK_MSG(fabs(mean) < 1e-12, "M %llu a %llu (gcd %llu) at %g deg: mean displacement %.3g px",
+                      (unsigned long long)l.m, (unsigned long long)l.a, (unsigned long long)l.g0, dirs[d], mean);
+        }
     }
 }
 
@@ -186,7 +250,8 @@ static void test_basis_and_map(void)
     } cases[] = {{GLS_AA_LATTICE, 16, 0, GLS_AA_BOX},   {GLS_AA_LATTICE, 256, 0, GLS_AA_BOX},
                  {GLS_AA_LATTICE, 1000, 0, GLS_AA_BOX}, {GLS_AA_LATTICE, 256, 64, GLS_AA_BOX},
                  {GLS_AA_LATTICE, 17, 0, GLS_AA_GAUSS}, {GLS_AA_GRID, 64, 0, GLS_AA_BOX},
-                 {GLS_AA_GRID, 64, 16, GLS_AA_BOX},     {GLS_AA_LATTICE, 4096, 0, GLS_AA_BOX}};
+                 {GLS_AA_GRID, 64, 16, GLS_AA_BOX},     {GLS_AA_LATTICE, 4096, 0, GLS_AA_BOX},
+                 {GLS_AA_LATTICE, 16, 4, GLS_AA_BOX},   {GLS_AA_LATTICE, 4096, 64, GLS_AA_BOX}};
     for (size_t t = 0; t < sizeof cases / sizeof cases[0]; t++) {
         gls_aa_opts o = gls_aa_defaults();
         o.samples = cases[t].m;
@@ -525,8 +590,9 @@ static void test_gather_halfplane(void)
  * the map's constant), so a sample within float rounding of an edge may
  * fall either way; the exact gather across tiles is test_gather_halfplane
  * (tiles of 3 and 7).  Here: the sums agree except for such samples, at
- * most 2 per pixel and in under 3% of the pixels (measured: up to 18 of
- * 1728 pixels, 0.63 of a sample, with tiles of 3). */
+ * most 2 per pixel and in under 3% of the pixels (measured, printed: up
+ * to 2 of 1728 pixels, by 1 sample, box, M = 64, a = 28; none for the
+ * Gaussian at M = 9). */
 static void test_tiles_straddle(void)
 {
     as_scene s;
@@ -558,6 +624,8 @@ static void test_tiles_straddle(void)
                 worst = fmax(worst, d);
                 diff += d > 0;
             }
+            printf("  %s, tiles of %u: %ld of %zu pixels differ from automatic tiles, by at most %.2f samples\n",
+                   fl ? "gauss" : "box", sides[i], diff, n, worst);
             CHECK_MSG(worst <= 2 && diff * 100 < 3 * (long)n, "filter %d tiles %u: %ld pixels differ, %.2f samples",
                       fl, sides[i], diff, worst);
             gls_accum_free(&a);
@@ -577,28 +645,37 @@ static int cmp_pair(const void *a, const void *b)
 }
 
 /* The K passes' samples are exactly the plan's (as sets of exact
- * positions), and a scene whose edges keep clear of every sample renders
- * bit for bit the same with K = 1 and K = 4 (16 for the grid). */
+ * positions), also where the pass lattice's generator a mod L shares a
+ * factor with L or is 0 (M = 16, a = 4, L = 4), and a scene whose edges
+ * keep clear of every sample renders bit for bit the same with K = 1 and
+ * K = 4 (16 for the grid). */
 static void test_kpass_split(void)
 {
     char err[128];
-    for (int pat = 0; pat < 2; pat++) {
+    static const struct {
+        gls_aa_pattern pat;
+        uint64_t m, max_l, k;
+    } sets[] = {{GLS_AA_LATTICE, 256, 64, 4}, {GLS_AA_GRID, 256, 16, 16},   {GLS_AA_LATTICE, 16, 4, 4},
+                {GLS_AA_LATTICE, 4096, 64, 64}, {GLS_AA_LATTICE, 1000, 100, 10}, {GLS_AA_LATTICE, 1000, 1, 1000}};
+    for (size_t t = 0; t < sizeof sets / sizeof sets[0]; t++) {
+        uint64_t m = sets[t].m;
         gls_aa_opts o = gls_aa_defaults();
-        o.samples = 256;
-        o.pattern = pat ? GLS_AA_GRID : GLS_AA_LATTICE;
+        o.samples = m;
+        o.pattern = sets[t].pat;
         gls_aa_plan p;
-        gls_aa_fine f1, f4;
+        gls_aa_fine f1, fk;
         CHECK(gls_aa_plan_init(&p, &o, err, sizeof err) == 0);
         CHECK(gls_aa_fine_init(&f1, &p, 65536) == 0 && f1.k == 1);
-        CHECK(gls_aa_fine_init(&f4, &p, pat ? 16 : 64) == 0 && f4.k == (pat ? 16u : 4u));
-        int64_t(*all)[2] = malloc(256 * sizeof *all), (*un)[2] = malloc(256 * sizeof *un), (*c)[2] = malloc(256 * sizeof *c);
+        CHECK(gls_aa_fine_init(&fk, &p, sets[t].max_l) == 0 && fk.k == sets[t].k);
+        int64_t(*all)[2] = malloc(m * sizeof *all), (*un)[2] = malloc(m * sizeof *un), (*c)[2] = malloc(m * sizeof *c);
         int64_t sh[2];
         gls_aa_fine_pass(&f1, 0, sh, all, c);
-        for (uint64_t r = 0; r < f4.k; r++)
-            gls_aa_fine_pass(&f4, r, sh, un + r * f4.l, c);
-        qsort(all, 256, sizeof *all, cmp_pair);
-        qsort(un, 256, sizeof *un, cmp_pair);
-        CHECK(memcmp(all, un, 256 * sizeof *all) == 0);
+        for (uint64_t r = 0; r < fk.k; r++)
+            gls_aa_fine_pass(&fk, r, sh, un + r * fk.l, c);
+        qsort(all, m, sizeof *all, cmp_pair);
+        qsort(un, m, sizeof *un, cmp_pair);
+        CHECK_MSG(memcmp(all, un, m * sizeof *all) == 0, "M %llu (a = %llu), K = %llu: the passes' samples differ",
+                  (unsigned long long)m, (unsigned long long)p.lat.a, (unsigned long long)fk.k);
         free(all), free(un), free(c);
     }
     /* the image: a half-plane at 0.7 rad whose edge keeps clear of all
@@ -687,10 +764,15 @@ static void test_onepass_vs_multipass(void)
  * each, 640x480, one pass, float.  Within 20% per angle (45 degrees
  * excepted: all rows of one edge share one offset there, so 12 edges
  * sample 12 offsets), and the worst within 20% of the analytic worst.
- * The issue's target, 1/256 px at every listed angle with 256 samples, is
- * NOT met by this pattern (worst about 0.0064 px, at 3 degrees: the
- * lattice has a short vector near there); spec/antialiasing.md and
- * docs/aa_cost.txt give the figures, so no test claims it. */
+ * The issue's target at these angles, 1/256 px with 256 samples, is met
+ * (a = 30: analytic worst 0.003715 px at 30 degrees, rendered 0.00373):
+ * asserted with a 2% margin, below 0.98 / 256 = 0.00383 px (the rendered
+ * worst over 16 sub-pixel placements of this scene: 0.00363 to 0.00379
+ * px).  Not asserted, because not met with a margin or not met at all:
+ * the mirror images 180 - theta (rendered up to 0.00387 px over those
+ * placements, at 157.5 degrees), 4096 samples (0.0047 px at 30 degrees,
+ * target 1/2048) and the worst over all directions (about 0.27 / sqrt(M)
+ * px for any lattice); spec/antialiasing.md "Accuracy". */
 static void test_accuracy_matches_analytic(void)
 {
     static const double ang[] = {0.5, 1, 3, 10, 22.5, 30, 45, 60, 80};
@@ -728,6 +810,9 @@ static void test_accuracy_matches_analytic(void)
         wr = fmax(wr, r), wa = fmax(wa, an);
     }
     CHECK_MSG(wr <= 1.2 * wa, "worst: renderer %.6f, analytic %.6f", wr, wa);
+    printf("  worst: renderer %.6f px, analytic %.6f px; target 1/256 = %.6f px, asserted below %.6f px\n", wr, wa,
+           1 / 256.0, 0.98 / 256);
+    CHECK_MSG(wr <= 0.98 / 256, "256 samples, listed angles: worst %.6f px, not 2%% below 1/256 px", wr);
     free(f), free(img);
     gls_accum_free(&a);
     rig_close(&g);
@@ -760,6 +845,7 @@ int main(void)
     }
     RUN(test_lattice_points);
     RUN(test_lattice_criterion);
+    RUN(test_lattice_centred);
     RUN(test_basis_and_map);
     RUN(test_pass_split_choice);
     RUN(test_gather_constant);
