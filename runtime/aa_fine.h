@@ -9,7 +9,9 @@
  * of one smaller lattice (same A, same c_j, another shift).
  *
  * The grid pattern (box) is the case A = N I; the rank-1 lattice is
- * A = adj(E) for the reduced basis E of the pass lattice (lattice.h).
+ * A = adj(E) for the reduced basis E of the pass lattice (lattice.h),
+ * turned by 90 degrees where that makes image rows run along fine rows
+ * (aa_fine.c).
  * No GL here: aa_onepass.c renders. */
 #ifndef GLS_AA_FINE_H
 #define GLS_AA_FINE_H

@@ -262,6 +262,8 @@ static void test_basis_and_map(void)
         CHECK(gls_aa_plan_init(&p, &o, err, sizeof err) == 0);
         CHECK(gls_aa_fine_init(&f, &p, cases[t].max_l ? cases[t].max_l : 65536) == 0);
         CHECK(f.k * f.l == p.m && f.a[0][0] * f.a[1][1] - f.a[0][1] * f.a[1][0] == (int64_t)f.l);
+        /* image rows run along fine rows (aa_fine.c: the gather's order) */
+        CHECK(llabs(f.a[1][0]) <= llabs(f.a[0][0]));
         int64_t(*pos)[2] = malloc(f.l * sizeof *pos), (*c)[2] = malloc(f.l * sizeof *c);
         int bad_exact = 0, bad_float = 0, dup = 0;
         double worst = 0;
