@@ -1,13 +1,16 @@
 /* make bench-aa: what sub-pixel accuracy costs (bench/aa.sh drives it).
  *
  *   aa_bench accuracy W H PATTERN M       box filter, M samples: per-row
- *        RMS edge error of straight edges at the listed angles and over a
- *        sweep of directions, against the exact answer, and seconds per
- *        frame; float output for every pattern, also 8- and 16-bit for the
- *        lattice (one line each, see the header it prints)
+ *        RMS edge error of straight edges at the listed angles, at their
+ *        mirror images (180 - theta, and 0 and 90: both diagonals and both
+ *        axes) and over a sweep of directions, against the exact answer,
+ *        and seconds per frame; float output for every pattern, also 8-
+ *        and 16-bit for the lattice (one line each: pattern M output
+ *        seconds, then worst and its angle for listed, listed + mirrored
+ *        and sweep, then the listed and the mirrored angles' errors)
  *   aa_bench analytic PATTERN M           the same errors computed from the
- *        sample positions alone (no renderer): the listed angles and a
- *        dense sweep of [0, 180) degrees in 0.05-degree steps
+ *        sample positions alone (no renderer): the listed and mirrored
+ *        angles and a dense sweep of [0, 180) degrees in 0.05-degree steps
  *   aa_bench scene DIR                    write the 100k-triangle bench
  *        scene (bench/play_scene.h) as DIR/terrain.glsb and DIR/cam.cam,
  *        for timing whole glsplay runs
@@ -43,6 +46,15 @@ static double now(void)
 /* The angles of the target (degrees). */
 static const double listed[] = {0.5, 1, 3, 10, 22.5, 30, 45, 60, 80};
 #define NLISTED (sizeof listed / sizeof listed[0])
+/* Their mirror images 180 - theta (45 -> 135: the other diagonal), and
+ * both axes.  A lattice is not symmetric under the mirror: an edge at
+ * 180 - theta may see another error than one at theta. */
+static const double mirrored[] = {179.5, 179, 177, 170, 157.5, 150, 135, 120, 100, 0, 90};
+#define NMIRRORED (sizeof mirrored / sizeof mirrored[0])
+/* The mirrored scene's squares: a square at angle b has edges at b and
+ * b + 90, so 180 - theta for each listed theta, and 0 (0 and 90). */
+static const double mirrored_squares[] = {179.5, 179, 177, 170, 157.5, 150, 135, 120, 100, 0};
+#define NMIRSQ (sizeof mirrored_squares / sizeof mirrored_squares[0])
 
 static int parse_pattern(const char *s, gls_aa_pattern *p)
 {
@@ -104,20 +116,29 @@ static int analytic(const char *pat, uint64_t m)
     double *x = malloc(m * sizeof *x), *y = malloc(m * sizeof *y), *s = malloc(m * sizeof *s);
     positions(&p, x, y);
     printf("# analytic per-row RMS edge error (box, exact sample positions, no rasteriser)\n");
-    printf("# pattern M listed_worst at_deg sweep_worst at_deg at 0.5 1 3 10 22.5 30 45 60 80 | 0 90 135\n");
-    worst wl = {0, 0};
-    double e[NLISTED];
+    printf("# pattern M listed_worst at_deg listed+mirrored_worst at_deg sweep_worst at_deg, then at 0.5 1 3 10 "
+           "22.5 30 45 60 80, then at 179.5 179 177 170 157.5 150 135 120 100 0 90\n");
+    worst wl = {0, 0}, wm;
+    double e[NLISTED], em[NMIRRORED];
     for (size_t i = 0; i < NLISTED; i++) {
         e[i] = as_pattern_rms(x, y, (long)m, listed[i], s);
         if (e[i] > wl.worst)
             wl.worst = e[i], wl.at = listed[i];
     }
+    wm = wl;
+    for (size_t i = 0; i < NMIRRORED; i++) {
+        em[i] = as_pattern_rms(x, y, (long)m, mirrored[i], s);
+        if (em[i] > wm.worst)
+            wm.worst = em[i], wm.at = mirrored[i];
+    }
     worst ws = analytic_sweep(x, y, (long)m, 0.05, s);
-    printf("%s %llu %.6f %g %.6f %g", pat, (unsigned long long)m, wl.worst, wl.at, ws.worst, ws.at);
+    printf("%s %llu %.6f %g %.6f %g %.6f %g", pat, (unsigned long long)m, wl.worst, wl.at, wm.worst, wm.at, ws.worst,
+           ws.at);
     for (size_t i = 0; i < NLISTED; i++)
         printf(" %.6f", e[i]);
-    printf(" | %.6f %.6f %.6f\n", as_pattern_rms(x, y, (long)m, 0, s), as_pattern_rms(x, y, (long)m, 90, s),
-           as_pattern_rms(x, y, (long)m, 135, s));
+    for (size_t i = 0; i < NMIRRORED; i++)
+        printf(" %.6f", em[i]);
+    printf("\n");
     free(x), free(y), free(s);
     return 0;
 }
@@ -256,32 +277,41 @@ static int accuracy(uint32_t W, uint32_t H, const char *pat, uint64_t m)
             if (!dup)
                 sdirs[nsd++] = d;
         }
-    static as_scene ls, ss;
-    if (!as_layout_angles(&ls, W, H, listed, (int)NLISTED, 6) || !as_layout_angles(&ss, W, H, sweep, ns, 2)) {
+    static as_scene ls, ms, ss;
+    if (!as_layout_angles(&ls, W, H, listed, (int)NLISTED, 6) ||
+        !as_layout_angles(&ms, W, H, mirrored_squares, (int)NMIRSQ, 6) || !as_layout_angles(&ss, W, H, sweep, ns, 2)) {
         fprintf(stderr, "aa_bench: too many squares\n");
         return 1;
     }
     size_t n = (size_t)W * H;
-    double *img = malloc(n * sizeof *img), per[NLISTED];
-    gls_accum al, as;
-    double t = render(ctx, &ls, &p, &al), ts = t < 0 ? -1 : render(ctx, &ss, &p, &as);
-    if (t < 0 || ts < 0)
+    double *img = malloc(n * sizeof *img), per[NLISTED], perm[NMIRRORED];
+    gls_accum al, am, as;
+    double t = render(ctx, &ls, &p, &al), tm = t < 0 ? -1 : render(ctx, &ms, &p, &am),
+           ts = tm < 0 ? -1 : render(ctx, &ss, &p, &as);
+    if (t < 0 || tm < 0 || ts < 0)
         return 1;
     int nout = p.o.pattern == GLS_AA_LATTICE ? 3 : 1;
     static const char *oname[] = {"pfm", "png16", "png8"};
     for (int out = 0; out < nout; out++) {
         double tc = convert(&al, out, img);
         worst wl = scene_worst(&ls, img, per, listed, NLISTED);
+        convert(&am, out, img);
+        worst wm = scene_worst(&ms, img, perm, mirrored, NMIRRORED);
+        if (wl.worst >= wm.worst)
+            wm = wl;
         convert(&as, out, img);
         worst ws = scene_worst(&ss, img, NULL, sdirs, nsd);
-        printf("%s %llu %s %.4f %.6f %g %.6f %g", pat, (unsigned long long)m, oname[out], t + tc, wl.worst, wl.at,
-               ws.worst, ws.at);
+        printf("%s %llu %s %.4f %.6f %g %.6f %g %.6f %g", pat, (unsigned long long)m, oname[out], t + tc, wl.worst,
+               wl.at, wm.worst, wm.at, ws.worst, ws.at);
         for (size_t i = 0; i < NLISTED; i++)
             printf(" %.6f", per[i]);
+        for (size_t i = 0; i < NMIRRORED; i++)
+            printf(" %.6f", perm[i]);
         printf("\n");
         fflush(stdout);
     }
     gls_accum_free(&al);
+    gls_accum_free(&am);
     gls_accum_free(&as);
     free(img);
     gls_glctx_destroy(ctx);

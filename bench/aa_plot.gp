@@ -1,7 +1,9 @@
 # make bench-aa's plot (bench/aa.sh): edge error against seconds per
 # frame, log-log, one line per pattern and output; solid: the worst of the
-# listed angles, dashed: the worst over the sweep of directions.
-# raw: "pattern M output s listed_worst at sweep_worst at ..." (aa.sh)
+# listed angles (lattice also: listed and mirrored, dotted), dashed: the
+# worst over the sweep of directions.
+# raw: "pattern M output s listed_worst at mirrored_worst at sweep_worst at
+# ..." (aa.sh)
 set terminal svg size 820,520 font "sans,12" background rgb "white"
 set output out
 set logscale xy
@@ -19,11 +21,12 @@ set label "1/2048 px" at graph 0.01, first 1.0/2048 * 1.15 tc rgb "#666666"
 sel(p, o) = sprintf("< awk '$1 == \"%s\" && $3 == \"%s\"' %s | sort -k2,2n", p, o, raw)
 plot \
   sel("lattice", "pfm") u 4:5 w lp lw 2 pt 7 lc rgb "#1f77b4" t "lattice, float: listed angles", \
-  sel("lattice", "pfm") u 4:7 w lp lw 2 dt 2 pt 6 lc rgb "#1f77b4" t "lattice, float: sweep", \
+  sel("lattice", "pfm") u 4:7 w lp lw 1 dt 4 pt 4 lc rgb "#1f77b4" t "lattice, float: listed + mirrored", \
+  sel("lattice", "pfm") u 4:9 w lp lw 2 dt 2 pt 6 lc rgb "#1f77b4" t "lattice, float: sweep", \
   sel("lattice", "png16") u 4:5 w lp lw 1 pt 5 lc rgb "#17becf" t "lattice, 16-bit: listed", \
   sel("lattice", "png8") u 4:5 w lp lw 1 pt 9 lc rgb "#9467bd" t "lattice, 8-bit: listed", \
   sel("grid", "pfm") u 4:5 w lp lw 2 pt 7 lc rgb "#d62728" t "grid, float: listed angles", \
-  sel("grid", "pfm") u 4:7 w lp lw 2 dt 2 pt 6 lc rgb "#d62728" t "grid, float: sweep", \
+  sel("grid", "pfm") u 4:9 w lp lw 2 dt 2 pt 6 lc rgb "#d62728" t "grid, float: sweep", \
   sel("stratified", "pfm") u 4:5 w lp lw 2 pt 7 lc rgb "#2ca02c" t "stratified, float: listed angles", \
-  sel("stratified", "pfm") u 4:7 w lp lw 2 dt 2 pt 6 lc rgb "#2ca02c" t "stratified, float: sweep", \
+  sel("stratified", "pfm") u 4:9 w lp lw 2 dt 2 pt 6 lc rgb "#2ca02c" t "stratified, float: sweep", \
   sel("lattice", "pfm") u 4:5:2 w labels offset 0.8,0.6 font ",9" tc rgb "#1f77b4" notitle
