@@ -269,6 +269,7 @@ bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
+# the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <time.h>
 #include "player_scene.h"
-#include "play_scene.h"
+#include "play_bundle.h"
 
 int main(void)
 {
@@ -16,24 +16,7 @@ int main(void)
         fprintf(stderr, "play_bench: %s\n", err);
         return 1;
     }
-    tb t;
-    tb_init(&t);
-    tb_object(&t, "terrain", 1);
-    gls_vec4 *p = malloc(2 * (PS_N + 1) * sizeof *p);
-    gls_rgba *c = malloc(2 * (PS_N + 1) * sizeof *c);
-    for (int i = 0; i < PS_N; i++) {
-        for (int j = 0; j <= PS_N; j++)
-            for (int s = 0; s < 2; s++) {
-                double q[3];
-                float col[4];
-                ps_vertex(i + s, j, q, col);
-                p[2 * j + s] = (gls_vec4){q[0], q[1], q[2], 1};
-                c[2 * j + s] = (gls_rgba){col[0], col[1], col[2], col[3]};
-            }
-        tb_prim4(&t, GLS_PRIM_QSTRIP, 2 * (PS_N + 1), p, c, NULL);
-    }
-    free(p), free(c);
-    gls_bundle *b = tb_finish(&t);
+    gls_bundle *b = ps_bundle();
     gls_scene sc;
     if (gls_scene_flatten(b, &sc, err, sizeof err)) {
         fprintf(stderr, "play_bench: %s\n", err);

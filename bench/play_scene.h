@@ -55,7 +55,7 @@ static gls_camera ps_camera(int k)
 
 /* BENCH_DUMP=FILE: the last frame as raw RGBA, for comparing the player's
  * image with the floor's. */
-static void ps_dump(const uint8_t *rgba)
+static inline void ps_dump(const uint8_t *rgba)
 {
     const char *path = getenv("BENCH_DUMP");
     FILE *df = path ? fopen(path, "wb") : NULL;

@@ -11,8 +11,9 @@
 # `make demo` renders):
 #   EXAMPLES_LOOK_AA=N   anti-aliasing of the examples where it is only for
 #                        looks (stereo, grouping, lane, signs; default 4);
-#                        calibration (--aa 8) and dense_stereo (--aa 4) keep
-#                        theirs: their tests measure with them
+#                        calibration (--aa 8 --pattern grid, the paper's) and
+#                        dense_stereo (--aa 4) keep theirs: their tests
+#                        measure with them
 #   EXAMPLES_OUTPUTS=L   glsplay --outputs (default image,depth,points;
 #                        calibration never writes points)
 #   EXAMPLES_DEPTH_VIEW=0  skip the colour depth views (no depth2png needed)
@@ -48,7 +49,7 @@ example() {
     echo "$name: $OUT/$name"
 }
 
-example calibration Calibration view05 --aa 8 --outputs "$(echo "$OUTPUTS" | sed 's/,*points//')"
+example calibration Calibration view05 --aa 8 --pattern grid --outputs "$(echo "$OUTPUTS" | sed 's/,*points//')"
 example stereo Stereo bino_left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY
 example dense_stereo DenseStereo left --aa 4 --outputs "$OUTPUTS"
 example grouping Grouping left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY

@@ -12,23 +12,31 @@ gls_aa_opts gls_aa_defaults(void)
     o.n = 1;
     o.filter = GLS_AA_BOX;
     o.sigma = GLS_AA_DEFAULT_SIGMA;
-    o.pattern = GLS_AA_GRID;
+    o.pattern = GLS_AA_LATTICE;
     return o;
 }
 
-static double span_of(gls_aa_filter f, double sigma)
+const char *gls_aa_pattern_name(gls_aa_pattern p)
 {
-    return f == GLS_AA_GAUSS ? 2 * GLS_AA_GAUSS_SPAN * sigma : 1.0;
+    return p == GLS_AA_GRID ? "grid" : p == GLS_AA_STRATIFIED ? "stratified" : "lattice";
 }
 
-uint32_t gls_aa_n_for_accuracy(gls_aa_filter f, double sigma, double a)
+/* Width of the square the plan's N x N offsets spread over: the pixel
+ * (box), the +-3 sigma window (Gaussian, grid and stratified).  The
+ * lattice's points are per pixel area whatever the filter. */
+static double span_of(gls_aa_filter f, gls_aa_pattern pat, double sigma)
+{
+    return f == GLS_AA_GAUSS && pat != GLS_AA_LATTICE ? 2 * GLS_AA_GAUSS_SPAN * sigma : 1.0;
+}
+
+uint32_t gls_aa_n_for_accuracy(gls_aa_filter f, gls_aa_pattern pat, double sigma, double a)
 {
     if (!(a > 0) || !(sigma > 0))
         return 0;
-    double n = ceil(span_of(f, sigma) / a);
+    double span = span_of(f, pat, sigma), n = ceil(span / a);
     /* ceil of a quotient that is an integer up to rounding (1 / (1/256))
      * must not round up to the next N */
-    if (n > 1 && span_of(f, sigma) / (n - 1) <= a * (1 + 1e-12))
+    if (n > 1 && span / (n - 1) <= a * (1 + 1e-12))
         n -= 1;
     return n >= 1 && n <= GLS_AA_MAX_N ? (uint32_t)n : 0;
 }
@@ -64,10 +72,33 @@ static void offset(const gls_aa_plan *p, uint64_t k, double *du, double *dv)
     *dv = p->span * (((double)j + fy) / (double)n - 0.5);
 }
 
+static double gauss_raw(const gls_aa_plan *p, double du, double dv);
+static int in_window(const gls_aa_plan *p, double du, double dv);
+static void lattice_offset(const gls_aa_plan *p, uint64_t k, double *du, double *dv, double *raw);
+
+/* Offset and raw Gaussian weight of sample k, any pattern. */
+static void raw_sample(const gls_aa_plan *p, uint64_t k, double *du, double *dv, double *g)
+{
+    if (p->o.pattern == GLS_AA_LATTICE) {
+        lattice_offset(p, k, du, dv, g);
+        return;
+    }
+    offset(p, k, du, dv);
+    *g = gauss_raw(p, *du, *dv);
+}
+
 static double gauss_raw(const gls_aa_plan *p, double du, double dv)
 {
     double s = p->o.sigma;
     return exp(-(du * du + dv * dv) / (2 * s * s));
+}
+
+/* Lattice Gaussian: inside the window [-3 sigma, 3 sigma) per axis (the
+ * half-open square the grid's offsets fill). */
+static int in_window(const gls_aa_plan *p, double du, double dv)
+{
+    double h = GLS_AA_GAUSS_SPAN * p->o.sigma;
+    return du >= -h && du < h && dv >= -h && dv < h;
 }
 
 /* Integer weight of a sample with raw Gaussian weight g: floor of its
@@ -79,11 +110,53 @@ static uint64_t quantise(const gls_aa_plan *p, double g)
     return (uint64_t)floor(g / p->gsum * 0x1.0p52);
 }
 
+void gls_aa_lattice_sample(const gls_aa_plan *p, int64_t x, int64_t y, int cx, int cy, double *du, double *dv,
+                           uint64_t *w)
+{
+    double q = (double)p->lat.q;
+    *du = (double)cx + (double)x / q - 0.5;
+    *dv = (double)cy + (double)y / q - 0.5;
+    if (p->o.filter == GLS_AA_BOX || p->m == 1)
+        *w = 1;
+    else
+        *w = in_window(p, *du, *dv) ? (uint64_t)floor(gauss_raw(p, *du, *dv) / p->gsum * 0x1.0p52) : 0;
+}
+
+/* Sample k of a lattice plan: point k % M of cell k / M.  raw: the
+ * Gaussian's double weight (0 outside the window). */
+static void lattice_offset(const gls_aa_plan *p, uint64_t k, double *du, double *dv, double *raw)
+{
+    uint64_t i = k % p->m, cell = k / p->m, side = 2 * (uint64_t)p->radius + 1;
+    int cx = (int)(cell % side) - (int)p->radius, cy = (int)(cell / side) - (int)p->radius;
+    int64_t x, y;
+    gls_lattice_point(&p->lat, i, &x, &y);
+    double q = (double)p->lat.q;
+    *du = (double)cx + (double)x / q - 0.5;
+    *dv = (double)cy + (double)y / q - 0.5;
+    *raw = in_window(p, *du, *dv) ? gauss_raw(p, *du, *dv) : 0;
+}
+
 int gls_aa_plan_init(gls_aa_plan *p, const gls_aa_opts *o, char *err, size_t errlen)
 {
     memset(p, 0, sizeof *p);
-    if (o->n < 1 || o->n > GLS_AA_MAX_N) {
+    uint64_t m = o->samples ? o->samples : (uint64_t)o->n * o->n;
+    if (!o->samples && (o->n < 1 || o->n > GLS_AA_MAX_N)) {
         snprintf(err, errlen, "anti-aliasing window %u is outside 1..%u", o->n, GLS_AA_MAX_N);
+        return -1;
+    }
+    if (m < 1 || m > GLS_AA_MAX_SAMPLES) {
+        snprintf(err, errlen, "%llu samples per pixel is outside 1..%llu", (unsigned long long)m,
+                 (unsigned long long)GLS_AA_MAX_SAMPLES);
+        return -1;
+    }
+    uint64_t n = (uint64_t)sqrt((double)m);
+    while (n * n > m)
+        n--;
+    while ((n + 1) * (n + 1) <= m)
+        n++;
+    if (o->pattern != GLS_AA_LATTICE && n * n != m) {
+        snprintf(err, errlen, "the %s pattern needs a square number of samples (N x N), not %llu; "
+                 "the lattice takes any number", gls_aa_pattern_name(o->pattern), (unsigned long long)m);
         return -1;
     }
     if (o->filter == GLS_AA_GAUSS && !(o->sigma >= 0.01 && o->sigma <= 16)) {
@@ -91,9 +164,29 @@ int gls_aa_plan_init(gls_aa_plan *p, const gls_aa_opts *o, char *err, size_t err
         return -1;
     }
     p->o = *o;
-    p->count = (uint64_t)o->n * o->n;
-    p->span = span_of(o->filter, o->sigma);
-    if (o->filter == GLS_AA_BOX || o->n == 1) {
+    p->o.n = (uint32_t)(n * n == m ? n : 0);
+    p->m = m;
+    p->count = m;
+    p->span = span_of(o->filter, o->pattern, o->sigma);
+    if (o->pattern == GLS_AA_LATTICE) {
+        if (gls_lattice_choose(m, &p->lat)) {
+            snprintf(err, errlen, "no lattice for %llu samples", (unsigned long long)m);
+            return -1;
+        }
+        if (o->filter == GLS_AA_GAUSS && m > 1) {
+            /* the cells whose points can fall in [-3 sigma, 3 sigma) */
+            p->radius = (uint32_t)ceil(GLS_AA_GAUSS_SPAN * o->sigma + 0.5);
+            uint64_t side = 2 * (uint64_t)p->radius + 1;
+            if (m > GLS_AA_MAX_WINDOW / (side * side)) {
+                snprintf(err, errlen, "a Gaussian of sigma %g over %llu samples per pixel needs %llu samples "
+                         "(more than %llu); lower --samples or sigma", o->sigma, (unsigned long long)m,
+                         (unsigned long long)(m * side * side), (unsigned long long)GLS_AA_MAX_WINDOW);
+                return -1;
+            }
+            p->count = m * side * side;
+        }
+    }
+    if (o->filter == GLS_AA_BOX || m == 1) {
         /* box, and any filter at N = 1: equal weights, one unit each */
         p->wsum = p->count;
         p->gsum = (double)p->count;
@@ -105,18 +198,18 @@ int gls_aa_plan_init(gls_aa_plan *p, const gls_aa_opts *o, char *err, size_t err
      * ~log2(16M) = 24 bits of the 53. */
     double s = 0, c = 0;
     for (uint64_t k = 0; k < p->count; k++) {
-        double du, dv;
-        offset(p, k, &du, &dv);
-        double y = gauss_raw(p, du, dv) - c, t = s + y;
+        double du, dv, g;
+        raw_sample(p, k, &du, &dv, &g);
+        double y = g - c, t = s + y;
         c = (t - s) - y;
         s = t;
     }
     p->gsum = s;
     uint64_t w = 0;
     for (uint64_t k = 0; k < p->count; k++) {
-        double du, dv;
-        offset(p, k, &du, &dv);
-        w += quantise(p, gauss_raw(p, du, dv));
+        double du, dv, g;
+        raw_sample(p, k, &du, &dv, &g);
+        w += quantise(p, g);
     }
     p->wsum = w;
     return 0;
@@ -124,24 +217,25 @@ int gls_aa_plan_init(gls_aa_plan *p, const gls_aa_opts *o, char *err, size_t err
 
 void gls_aa_sample(const gls_aa_plan *p, uint64_t k, double *du, double *dv, uint64_t *w)
 {
-    offset(p, k, du, dv);
-    if (p->o.n == 1)
+    double g;
+    raw_sample(p, k, du, dv, &g);
+    if (p->m == 1)
         *du = *dv = 0; /* one sample: the pixel centre, whatever the filter */
-    *w = p->o.filter == GLS_AA_BOX || p->o.n == 1 ? 1 : quantise(p, gauss_raw(p, *du, *dv));
+    *w = p->o.filter == GLS_AA_BOX || p->m == 1 ? 1 : quantise(p, g);
 }
 
 double gls_aa_weight_exact(const gls_aa_plan *p, uint64_t k)
 {
-    double du, dv;
-    offset(p, k, &du, &dv);
-    if (p->o.filter == GLS_AA_BOX || p->o.n == 1)
+    double du, dv, g;
+    raw_sample(p, k, &du, &dv, &g);
+    if (p->o.filter == GLS_AA_BOX || p->m == 1)
         return 1.0 / (double)p->count;
-    return gauss_raw(p, du, dv) / p->gsum;
+    return g / p->gsum;
 }
 
 /* ---- accumulator ---------------------------------------------------- */
 
-int gls_aa_weighted(const gls_aa_plan *p) { return p->o.filter != GLS_AA_BOX && p->o.n > 1; }
+int gls_aa_weighted(const gls_aa_plan *p) { return p->o.filter != GLS_AA_BOX && p->m > 1; }
 
 int gls_accum_init(gls_accum *a, uint32_t width, uint32_t height, int weighted, int track_mixed)
 {

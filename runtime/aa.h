@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "lattice.h"
 
 #define GLS_AA_MAX_N 4096u
 /* Gaussian support: the window spans +-GLS_AA_GAUSS_SPAN sigma per axis. */
@@ -23,10 +24,17 @@
 #define GLS_AA_WEIGHT_BITS 52
 
 typedef enum { GLS_AA_BOX = 0, GLS_AA_GAUSS = 1 } gls_aa_filter;
-typedef enum { GLS_AA_GRID = 0, GLS_AA_STRATIFIED = 1 } gls_aa_pattern;
+typedef enum { GLS_AA_GRID = 0, GLS_AA_STRATIFIED = 1, GLS_AA_LATTICE = 2 } gls_aa_pattern;
+/* Most samples per pixel (M): 4096^2. */
+#define GLS_AA_MAX_SAMPLES (4096ull * 4096ull)
+/* Most samples a lattice Gaussian window may hold (M times its cells). */
+#define GLS_AA_MAX_WINDOW (1ull << 28)
 
 typedef struct {
-    uint32_t n;             /* N: N x N samples per pixel, 1..4096         */
+    uint32_t n;             /* N: N x N samples per pixel, 1..4096 (when
+                               samples is 0)                               */
+    uint64_t samples;       /* M samples per pixel, 1..4096^2; 0: N * N.
+                               grid and stratified need a square          */
     gls_aa_filter filter;
     double sigma;           /* Gaussian sigma in pixels (> 0)              */
     gls_aa_pattern pattern;
@@ -34,20 +42,31 @@ typedef struct {
 } gls_aa_opts;
 
 typedef struct {
-    gls_aa_opts o;
-    uint64_t count;         /* N * N samples                               */
+    gls_aa_opts o;          /* o.n is sqrt(M) for grid and stratified      */
+    uint64_t m;             /* M: samples per pixel (lattice: per pixel
+                               area, also for the Gaussian)                */
+    uint64_t count;         /* samples of the plan: M, except the lattice
+                               Gaussian: M * cells^2, the lattice points
+                               of the cells around the pixel (those outside
+                               the +-3 sigma window have weight 0)        */
+    gls_lattice lat;        /* the lattice pattern (pattern lattice)        */
+    uint32_t radius;        /* lattice Gaussian: cells -radius..radius      */
     double span;            /* window width in pixels: 1 (box), 6 sigma    */
     double gsum;            /* Gaussian: sum of the raw double weights     */
     uint64_t wsum;          /* exact sum of the integer weights            */
 } gls_aa_plan;
 
-/* Default options: N = 1, box, grid, sigma 0.5, seed 0. */
+/* Default options: N = 1, box, lattice, sigma 0.5, seed 0. */
 gls_aa_opts gls_aa_defaults(void);
 
 /* Window size for a requested accuracy a (pixels, 0 < a <= 1): the
- * smallest N whose grid step span / N is at most a.  0 if N would exceed
- * GLS_AA_MAX_N. */
-uint32_t gls_aa_n_for_accuracy(gls_aa_filter f, double sigma, double a);
+ * smallest N whose grid step span / N is at most a (span 1 for the
+ * lattice, whose samples are per pixel area whatever the filter).  0 if N
+ * would exceed GLS_AA_MAX_N. */
+uint32_t gls_aa_n_for_accuracy(gls_aa_filter f, gls_aa_pattern pat, double sigma, double a);
+
+/* Pattern name ("grid", "stratified", "lattice"). */
+const char *gls_aa_pattern_name(gls_aa_pattern p);
 
 /* Check the options and prepare the plan (for the Gaussian this makes
  * one pass over all samples to get the normalisation).  -1 with a message
@@ -55,8 +74,16 @@ uint32_t gls_aa_n_for_accuracy(gls_aa_filter f, double sigma, double a);
 int gls_aa_plan_init(gls_aa_plan *p, const gls_aa_opts *o, char *err, size_t errlen);
 
 /* Sample k (0 <= k < count): offset in pixels from the pixel centre and
- * integer weight.  Deterministic: the same plan gives the same samples. */
+ * integer weight (0: outside the window, not a sample of the pixel).
+ * Deterministic: the same plan gives the same samples. */
 void gls_aa_sample(const gls_aa_plan *p, uint64_t k, double *du, double *dv, uint64_t *w);
+
+/* Lattice: offset from the pixel centre of the point at (x, y) (units of
+ * 1/lat.q px, in the pixel's square) in the cell (cx, cy) pixels away,
+ * and its integer weight (0 outside the Gaussian window).  Sample k of
+ * the plan is point k % M in cell k / M (row-major from -radius). */
+void gls_aa_lattice_sample(const gls_aa_plan *p, int64_t x, int64_t y, int cx, int cy, double *du, double *dv,
+                           uint64_t *w);
 
 /* Normalised double weight of sample k (w / wsum before quantisation),
  * for tests. */

@@ -54,22 +54,6 @@ static void accumulate(gls_accum *acc, const batch *b, uint32_t kx, uint32_t w, 
     gls_accum_add_tiles(acc, tile, stride, b->n, b->w);
 }
 
-static void progress(const gls_aa_run_opts *ro, uint64_t done, uint64_t total, double t0, double *last, int final)
-{
-    if (!ro->progress)
-        return;
-    double t = gls_now();
-    if (!final && t - *last < 0.5)
-        return;
-    *last = t;
-    double el = t - t0, left = done ? el * (double)(total - done) / (double)done : 0;
-    fprintf(ro->progress, "\rglsplay: %s: %llu/%llu samples (%.0f%%), %.0f s %s   ", ro->label ? ro->label : "",
-            (unsigned long long)done, (unsigned long long)total, 100.0 * (double)done / (double)total,
-            final ? el : left, final ? "taken" : "left");
-    if (final)
-        fputc('\n', ro->progress);
-    fflush(ro->progress);
-}
 
 int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_run_opts *ro,
                   gls_accum *acc, gls_aa_stats *st, char *err, size_t errlen)
@@ -102,16 +86,21 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
     int cur = 0, pending = 0;
     for (uint64_t k = 0; k < p->count;) {
         batch *nb = &b[cur];
-        nb->n = (uint32_t)(p->count - k < T ? p->count - k : T);
-        for (uint32_t t = 0; t < nb->n; t++) {
+        nb->n = 0;
+        while (k < p->count && nb->n < T) {
             double ou, ov;
-            gls_aa_sample(p, k + t, &ou, &ov, &nb->w[t]);
+            gls_aa_sample(p, k++, &ou, &ov, &nb->w[nb->n]);
+            if (!nb->w[nb->n])
+                continue; /* outside a lattice Gaussian's window */
             /* The principal point moves by -offset: the image content
              * moves by -offset, so pixel (u, v) shows the scene at
              * (u + ou, v + ov), the sample's position. */
-            du[t] = -ou;
-            dv[t] = -ov;
+            du[nb->n] = -ou;
+            dv[nb->n] = -ov;
+            nb->n++;
         }
+        if (!nb->n)
+            break;
         double ta = gls_now();
         gls_render_tiles(r, c, nb->n, du, dv);
         if (ro->serial) {
@@ -138,9 +127,8 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
             pending = 1;
             cur ^= 1;
         }
-        k += nb->n;
         s.passes++;
-        progress(ro, k, p->count, t0, &last, 0);
+        gls_progress_steps(ro->progress, ro->label, "samples", k, p->count, t0, &last, 0);
         if (ro->on_pass)
             ro->on_pass(ro->ctx, s.passes, (p->count + T - 1) / T, gls_now() - t0);
     }
@@ -152,7 +140,7 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
     s.samples = p->count;
     s.total_s = gls_now() - t0;
     if (s.total_s > 2)
-        progress(ro, p->count, p->count, t0, &last, 1);
+        gls_progress_steps(ro->progress, ro->label, "samples", p->count, p->count, t0, &last, 1);
     rc = gls_renderer_set_mosaic(r, W, H, 1, 1, err, errlen);
 out:
     for (int i = 0; i < 2; i++)

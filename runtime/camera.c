@@ -260,6 +260,25 @@ void gls_camera_projection(const gls_camera *c, double du, double dv, double P[1
     P[14] = -1;
 }
 
+void gls_camera_projection_map(const gls_camera *c, const double m[6], double vw, double vh, double P[16])
+{
+    /* with Zc = -ze: u Zc = fx xe - skew ye - cx ze, v Zc = -fy ye - cy ze;
+     * x_clip = (2 / vw) (m0 u Zc + m1 v Zc + m2 Zc) - Zc, and y alike */
+    double n = c->near, f = c->far;
+    memset(P, 0, 16 * sizeof *P);
+    const double size[2] = {vw, vh};
+    for (int row = 0; row < 2; row++) {
+        const double *r = m + 3 * row;
+        double s = 2 / size[row];
+        P[4 * row + 0] = s * r[0] * c->fx;
+        P[4 * row + 1] = s * (-r[0] * c->skew - r[1] * c->fy);
+        P[4 * row + 2] = s * (-r[0] * c->cx - r[1] * c->cy - r[2]) + 1;
+    }
+    P[10] = n / (f - n);
+    P[11] = n * f / (f - n);
+    P[14] = -1;
+}
+
 void gls_camera_modelview(const gls_camera *c, const double a[3], double MV[16])
 {
     const double *R = c->R;

@@ -61,6 +61,14 @@ int gls_camera_depth_range(double near, double far, double *near_min, double *ne
  * glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)). */
 void gls_camera_projection(const gls_camera *c, double du, double dv, double P[16]);
 
+/* Projection for a 2D affine map of the image: image (u, v) goes to GL
+ * window (m[0] u + m[1] v + m[2], m[3] u + m[4] v + m[5]) in a viewport
+ * (0, 0, vw, vh); depth as above.  gls_camera_projection is the map
+ * (1, 0, du + 1/2; 0, 1, dv + 1/2) with the camera's size (computed
+ * there with its own rounding, which plain images keep).  The one-pass
+ * anti-aliasing renders a fine framebuffer this way (aa_fine.h). */
+void gls_camera_projection_map(const gls_camera *c, const double m[6], double vw, double vh, double P[16]);
+
 /* Modelview, row-major, for geometry stored as offsets from anchor (world
  * coordinates): eye = diag(1,-1,-1) * (R * (anchor + off) + T).  The
  * translation R*anchor + T is formed in double, so it is small whenever the

@@ -2,6 +2,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include "aa_onepass.h"
 #include "frame_record.h"
 #include "numfmt.h"
 #include "readfile.h"
@@ -21,18 +23,24 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
         gls_fmt_float(bg[i], sizeof bg[i], o->background[i]);
     unsigned out = o->outputs;
     int image = (out & GLS_OUT_IMAGE) != 0;
-    /* the anti-aliasing that shapes the image and mask: nothing but N when
-     * N is 1, nothing at all when neither is written (depth and points
-     * come from the unjittered pass) */
-    char aa[128];
-    uint32_t n = o->aa.n ? o->aa.n : 1;
-    if (n == 1 || !(out & (GLS_OUT_IMAGE | GLS_OUT_MASK)))
+    /* the anti-aliasing that shapes the image and mask: nothing but M when
+     * M is 1, nothing at all when neither is written (depth and points
+     * come from the unjittered pass); the one-pass patterns also name the
+     * tile memory, which sets the tiles and so GL's rounding */
+    char aa[160];
+    uint64_t m = o->aa.samples ? o->aa.samples : (uint64_t)(o->aa.n ? o->aa.n : 1) * (o->aa.n ? o->aa.n : 1);
+    int onepass = o->aa.pattern == GLS_AA_LATTICE || (o->aa.pattern == GLS_AA_GRID && o->aa.filter == GLS_AA_BOX);
+    char mem[48] = "";
+    if (onepass)
+        snprintf(mem, sizeof mem, " memory %llu",
+                 (unsigned long long)(o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY));
+    if (m == 1 || !(out & (GLS_OUT_IMAGE | GLS_OUT_MASK)))
         snprintf(aa, sizeof aa, "1");
     else
-        snprintf(aa, sizeof aa, "%u %s%s%s %s %llu", n, o->aa.filter == GLS_AA_GAUSS ? "gauss" : "box",
-                 o->aa.filter == GLS_AA_GAUSS ? ":" : "", o->aa.filter == GLS_AA_GAUSS ? sigma : "",
-                 o->aa.pattern == GLS_AA_STRATIFIED ? "stratified" : "grid",
-                 (unsigned long long)(o->aa.pattern == GLS_AA_STRATIFIED ? o->aa.seed : 0));
+        snprintf(aa, sizeof aa, "%llu %s%s%s %s %llu%s", (unsigned long long)m,
+                 o->aa.filter == GLS_AA_GAUSS ? "gauss" : "box", o->aa.filter == GLS_AA_GAUSS ? ":" : "",
+                 o->aa.filter == GLS_AA_GAUSS ? sigma : "", gls_aa_pattern_name(o->aa.pattern),
+                 (unsigned long long)(o->aa.pattern == GLS_AA_STRATIFIED ? o->aa.seed : 0), mem);
     int k = snprintf(buf, len,
                      "glsplay frame record 1\n"
                      "frame %u\n"

@@ -1,6 +1,7 @@
 /* glsplay: render a compiled glscene bundle through OpenCV pinhole
  * cameras.  Argument parsing only; the work is gls_play() (player.c). */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,17 +41,25 @@ static const char usage_text[] =
     "                         same outputs and settings, and every file is there\n"
     "anti-aliasing (spec/antialiasing.md):\n"
     "  --aa N                 NxN samples per pixel, N in 1..4096 (default 1: one pass)\n"
+    "  --samples M            M samples per pixel, M in 1..16777216 (lattice: any M;\n"
+    "                         grid and stratified: a square)\n"
     "  --subpixel A           the N whose sample step is at most A pixels (A as 1/256 or\n"
-    "                         0.004): N = ceil(1/A) box, ceil(6 sigma/A) Gaussian\n"
+    "                         0.004): N = ceil(1/A); grid and stratified Gaussian:\n"
+    "                         ceil(6 sigma/A)\n"
     "  --filter box|gauss[:SIGMA]  box: plain average over the pixel (default);\n"
     "                         gauss: Gaussian weights, SIGMA px (default 0.5), window\n"
     "                         +-3 SIGMA\n"
-    "  --pattern grid|stratified   sample offsets on a regular grid (default) or one\n"
-    "                         per grid cell with deterministic jitter\n"
+    "  --pattern lattice|grid|stratified   sample points: a rank-1 lattice (default;\n"
+    "                         drawn in one pass as a fine framebuffer), a regular grid\n"
+    "                         (one pass with the box filter), or one per grid cell\n"
+    "                         with deterministic jitter (one GL pass per sample)\n"
     "  --seed S               jitter seed for stratified (default 0)\n"
     "  --image-format F       png8 (default), png16 (16-bit PNG) or pfm (float32 RGB,\n"
     "                         image_F.pfm); 8 bits limit edges to ~1/256 px\n"
-    "  --aa-tiles K           samples per GL pass (default: automatic)\n"
+    "  --aa-tiles K           stratified and grid Gaussian: samples per GL pass\n"
+    "                         (default: automatic)\n"
+    "  --aa-memory MB         one-pass patterns: memory for the fine framebuffer's tiles\n"
+    "                         and read-backs, MB in 16..1048576 (default 256)\n"
     "progress and time:\n"
     "  on a terminal, stderr shows progress: frames done, frames/s and time left for a\n"
     "  sequence, samples done for a long anti-aliased camera frame\n"
@@ -166,7 +175,7 @@ int main(int argc, char **argv)
     o.aa = gls_aa_defaults();
     o.progress = isatty(2);
     double subpixel = 0;
-    int have_aa = 0;
+    int have_aa = 0, have_samples = 0;
     const char **cams = calloc((size_t)argc, sizeof *cams);
     if (!cams)
         return 1;
@@ -222,6 +231,23 @@ int main(int argc, char **argv)
             o.aa.n = (uint32_t)v;
             have_aa = 1;
             i++;
+        } else if (strcmp(a, "--samples") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 1, GLS_AA_MAX_SAMPLES, &v)) {
+                rc = usage_error("--samples needs M in 1..16777216, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.aa.samples = v;
+            have_samples = 1;
+            i++;
+        } else if (strcmp(a, "--aa-memory") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 16, 1048576, &v)) {
+                rc = usage_error("--aa-memory needs MB in 16..1048576, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.aa_memory = (uint64_t)v << 20;
+            i++;
         } else if (strcmp(a, "--subpixel") == 0) {
             if (!has_val || parse_pos(argv[i + 1], &subpixel) || subpixel > 1) {
                 rc = usage_error("--subpixel needs an accuracy in pixels, 0 < A <= 1 (e.g. 1/256), got '%s'",
@@ -240,8 +266,10 @@ int main(int argc, char **argv)
                 o.aa.pattern = GLS_AA_GRID;
             else if (has_val && strcmp(argv[i + 1], "stratified") == 0)
                 o.aa.pattern = GLS_AA_STRATIFIED;
+            else if (has_val && strcmp(argv[i + 1], "lattice") == 0)
+                o.aa.pattern = GLS_AA_LATTICE;
             else {
-                rc = usage_error("--pattern needs grid or stratified, got '%s'", has_val ? argv[i + 1] : "");
+                rc = usage_error("--pattern needs lattice, grid or stratified, got '%s'", has_val ? argv[i + 1] : "");
                 goto done;
             }
             i++;
@@ -329,19 +357,31 @@ int main(int argc, char **argv)
             goto done;
         }
     }
-    if (subpixel > 0) {
-        if (have_aa) {
-            rc = usage_error("%s--aa and --subpixel both choose the window; give one", "");
+    if (have_aa + have_samples + (subpixel > 0) > 1) {
+        rc = usage_error("%s--aa, --samples and --subpixel all choose the samples; give one", "");
+        goto done;
+    }
+    if (have_samples && o.aa.pattern != GLS_AA_LATTICE) {
+        unsigned long long r = (unsigned long long)sqrt((double)o.aa.samples);
+        if (r * r != o.aa.samples) {
+            char m[32];
+            snprintf(m, sizeof m, "%llu", (unsigned long long)o.aa.samples);
+            rc = usage_error(o.aa.pattern == GLS_AA_GRID
+                                 ? "--pattern grid needs a square --samples (N x N), got %s; the lattice takes any M"
+                                 : "--pattern stratified needs a square --samples (N x N), got %s; the lattice takes any M",
+                             m);
             goto done;
         }
-        o.aa.n = gls_aa_n_for_accuracy(o.aa.filter, o.aa.sigma, subpixel);
+    }
+    if (subpixel > 0) {
+        o.aa.n = gls_aa_n_for_accuracy(o.aa.filter, o.aa.pattern, o.aa.sigma, subpixel);
         if (!o.aa.n) {
             rc = usage_error("--subpixel %s needs a window larger than 4096x4096", "given");
             goto done;
         }
     }
     /* one sample per pixel: no pixel is mixed, the mask would be all 0 */
-    if ((o.outputs & GLS_OUT_MASK) && o.aa.n <= 1) {
+    if ((o.outputs & GLS_OUT_MASK) && (o.aa.samples ? o.aa.samples : (uint64_t)o.aa.n * o.aa.n) <= 1) {
         rc = usage_error("%s--outputs mask needs anti-aliasing, --aa N with N > 1", "");
         goto done;
     }

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "aa_onepass.h"
 #include "aa_render.h"
 #include "atomic_write.h"
 #include "frame_record.h"
@@ -98,6 +99,16 @@ static void estimate_from_passes(void *ctx, uint64_t done, uint64_t total, doubl
     gls_estimate_report(s->errs, elapsed, done, total, s->views);
 }
 
+/* The same for the one-pass renderer, whose steps are tiles. */
+static void estimate_from_tiles(void *ctx, uint64_t done, uint64_t total, double elapsed)
+{
+    session *s = ctx;
+    if (s->estimated || s->views_done || done >= total || elapsed < ESTIMATE_AA_S)
+        return;
+    s->estimated = 1;
+    gls_estimate_report_units(s->errs, elapsed, done, total, s->views, "tiles");
+}
+
 static void view_done(session *s)
 {
     s->views_done++;
@@ -141,7 +152,8 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
  * Anti-aliased (N > 1): the image (and mask) come from the accumulated
- * jittered samples; depth and points come from one extra unjittered pass
+ * samples (one fine framebuffer for the lattice and grid, jittered passes
+ * for stratified); depth and points come from one extra unjittered pass
  * (the geometry at each pixel centre, never averaged across an edge),
  * drawn only when they are asked for; the points' colours come from that
  * pass too, so each point has the colour of the surface it lies on. */
@@ -185,16 +197,30 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_MASK) != 0))
             goto oom;
-        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name, estimate_from_passes, s};
-        if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
-            uint32_t kx, ky;
-            gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
-            if (kx * ky > 1)
-                fprintf(errs, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)\n", name, err,
-                        kx * ky);
-            else
-                fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
-            goto out;
+        if (gls_aa_fine_ok(plan)) {
+            /* lattice and grid: the samples are the pixels of a fine
+             * framebuffer drawn in tiles (aa_onepass.h) */
+            gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress ? errs : NULL, name, estimate_from_tiles, s};
+            if (gls_aa_render_fine(r, c, plan, &fo, &acc, NULL, err, sizeof err)) {
+                char mem[32];
+                gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
+                fprintf(errs, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)\n", name, err, mem);
+                goto out;
+            }
+        } else {
+            /* stratified, grid Gaussian: one jittered pass per sample,
+             * several per GL pass (aa_render.h) */
+            gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name, estimate_from_passes, s};
+            if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
+                uint32_t kx, ky;
+                gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
+                if (kx * ky > 1)
+                    fprintf(errs, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)\n", name,
+                            err, kx * ky);
+                else
+                    fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
+                goto out;
+            }
         }
     }
     if (o->outputs & GLS_OUT_IMAGE) {

@@ -35,6 +35,8 @@ typedef struct {
     gls_aa_opts aa;              /* anti-aliasing; n = 0 is taken as 1   */
     gls_image_format image_format;
     uint32_t aa_tiles;           /* samples per GL pass, 0 = automatic   */
+    uint64_t aa_memory;          /* one-pass anti-aliasing: bytes for the
+                                    fine framebuffer's tiles, 0 = default */
     uint32_t anisotropy;         /* anisotropic texture filtering up to N x;
                                     0 or 1 = off (the fast default)     */
     int progress;                /* progress lines on errs               */

@@ -33,7 +33,31 @@ double gls_estimate_total(double elapsed, uint64_t done, uint64_t per_view, uint
     return elapsed / (double)done * (double)per_view * (double)views;
 }
 
+void gls_progress_steps(FILE *f, const char *label, const char *units, uint64_t done, uint64_t total, double t0,
+                        double *last, int final)
+{
+    if (!f)
+        return;
+    double t = gls_now();
+    if (!final && t - *last < 0.5)
+        return;
+    *last = t;
+    double el = t - t0, left = done ? el * (double)(total - done) / (double)done : 0;
+    fprintf(f, "\rglsplay: %s: %llu/%llu %s (%.0f%%), %.0f s %s   ", label ? label : "", (unsigned long long)done,
+            (unsigned long long)total, units, 100.0 * (double)done / (double)total, final ? el : left,
+            final ? "taken" : "left");
+    if (final)
+        fputc('\n', f);
+    fflush(f);
+}
+
 int gls_estimate_report(FILE *f, double elapsed, uint64_t done, uint64_t per_view, uint64_t views)
+{
+    return gls_estimate_report_units(f, elapsed, done, per_view, views, "passes");
+}
+
+int gls_estimate_report_units(FILE *f, double elapsed, uint64_t done, uint64_t per_view, uint64_t views,
+                              const char *units)
 {
     double total = gls_estimate_total(elapsed, done, per_view, views);
     if (!(total > GLS_ESTIMATE_THRESHOLD_S))
@@ -42,10 +66,10 @@ int gls_estimate_report(FILE *f, double elapsed, uint64_t done, uint64_t per_vie
     gls_fmt_duration(tt, sizeof tt, total);
     gls_fmt_duration(tu, sizeof tu, elapsed / (double)done);
     if (per_view > 1)
-        fprintf(f, "glsplay: note: estimated render time %s: %llu camera frame%s x %llu anti-aliasing passes x %s "
-                   "(measured on the first %llu passes; --explain shows the plan)\n",
-                tt, (unsigned long long)views, views == 1 ? "" : "s", (unsigned long long)per_view, tu,
-                (unsigned long long)done);
+        fprintf(f, "glsplay: note: estimated render time %s: %llu camera frame%s x %llu anti-aliasing %s x %s "
+                   "(measured on the first %llu %s; --explain shows the plan)\n",
+                tt, (unsigned long long)views, views == 1 ? "" : "s", (unsigned long long)per_view, units, tu,
+                (unsigned long long)done, units);
     else
         fprintf(f, "glsplay: note: estimated render time %s: %llu camera frames x %s (measured on the first %llu)\n",
                 tt, (unsigned long long)views, tu, (unsigned long long)done);

@@ -21,6 +21,13 @@ double gls_now(void);
  * "\rglsplay: 500 frames in 2 min 41 s, 3.10 frames/s" and a newline. */
 void gls_progress_frames(FILE *f, uint64_t done, uint64_t total, double elapsed, int final);
 
+/* An anti-aliased camera frame's progress line, at most every 0.5 s
+ * (*last: when it was last printed; final: always, with a newline):
+ * "\rglsplay: NAME: 12/256 samples (5%), 3 s left   " (units "samples",
+ * or "tiles" for the one-pass renderer).  Nothing if f is NULL. */
+void gls_progress_steps(FILE *f, const char *label, const char *units, uint64_t done, uint64_t total, double t0,
+                        double *last, int final);
+
 /* The projected time of a whole render from a measurement: `elapsed`
  * seconds for the first `done` units (anti-aliasing passes, or whole
  * camera frames), `per_view` units in each camera frame, `views` camera
@@ -31,5 +38,9 @@ double gls_estimate_total(double elapsed, uint64_t done, uint64_t per_view, uint
  * GLS_ESTIMATE_THRESHOLD_S; 1 if printed.
  * per_view > 1: the units are anti-aliasing passes; 1: whole camera frames. */
 int gls_estimate_report(FILE *f, double elapsed, uint64_t done, uint64_t per_view, uint64_t views);
+/* The same with the anti-aliasing steps named: "passes" (jittered GL
+ * passes), "tiles" (tiles of the one-pass fine framebuffer). */
+int gls_estimate_report_units(FILE *f, double elapsed, uint64_t done, uint64_t per_view, uint64_t views,
+                              const char *units);
 
 #endif

@@ -57,6 +57,7 @@ struct gls_renderer {
     uint32_t kx, ky;        /* mosaic: kx x ky tiles in the framebuffer */
     int aniso;
     float zc_a, zc_b;      /* projection [2][2], [2][3] as GL got them */
+    uint32_t nnear;        /* near chunks prepared by gls_render_prepare */
     float *dbuf;           /* depth read-back scratch */
     char gl_name[128], gl_version[128];
 };
@@ -248,8 +249,16 @@ static int alloc_failed(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx, ui
 int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx, uint32_t ky, char *err,
                             size_t errlen)
 {
-    if (r->fbo && r->width == w && r->height == h && r->kx == kx && r->ky == ky)
+    if (r->fbo && r->width == w && r->height == h && r->kx == kx && r->ky == ky) {
+        /* same framebuffer; a fine-framebuffer pass may have left its
+         * viewport and scissor */
+        glViewport(0, 0, (GLsizei)w, (GLsizei)h);
+        if (kx * ky > 1)
+            glEnable(GL_SCISSOR_TEST);
+        else
+            glDisable(GL_SCISSOR_TEST);
         return 0;
+    }
     uint32_t maxrb = gls_renderer_max_dim(r);
     if (kx < 1 || ky < 1 || w > maxrb / kx || h > maxrb / ky) {
         snprintf(err, errlen, "image size %ux%u (mosaic %ux%u) exceeds the GL limit %u", w, h, kx, ky, maxrb);
@@ -400,8 +409,9 @@ static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double 
     return nnear;
 }
 
-/* Draw every chunk with the current projection and viewport. */
-static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear)
+/* Draw every chunk (those with vis[i] != 0; NULL: all) with the current
+ * projection and viewport. */
+static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear, const uint8_t *vis)
 {
     const gls_scene *s = r->scene;
     const gls_drawkey *prev = NULL;
@@ -414,7 +424,8 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
             k++;
             continue;
         }
-        draw_chunk(r, c, ch, ch->anchor, ch->first, &prev);
+        if (!vis || vis[i])
+            draw_chunk(r, c, ch, ch->anchor, ch->first, &prev);
     }
     if (!nnear)
         return;
@@ -423,7 +434,8 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
     size_t at = 0;
     for (k = 0; k < nnear; k++) {
         const gls_chunk *ch = &s->chunks[r->near_list[k]];
-        draw_chunk(r, c, ch, C, (uint32_t)at, &prev);
+        if (!vis || vis[r->near_list[k]])
+            draw_chunk(r, c, ch, C, (uint32_t)at, &prev);
         at += ch->count;
     }
 }
@@ -457,8 +469,81 @@ void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const do
             glScissor(x, y, (GLsizei)r->width, (GLsizei)r->height);
         }
         load_projection(r, c, du[t], dv[t]);
-        draw_all(r, c, C, nnear);
+        draw_all(r, c, C, nnear, NULL);
     }
+}
+
+uint32_t gls_renderer_nchunks(const gls_renderer *r) { return r->scene->nchunks; }
+
+uint32_t gls_render_chunk_bounds(const gls_renderer *r, const gls_camera *c, double (*b)[4])
+{
+    const gls_scene *s = r->scene;
+    for (uint32_t i = 0; i < s->nchunks; i++) {
+        const gls_chunk *ch = &s->chunks[i];
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        int nearer = 0, beyond = 0;
+        for (int k = 0; k < 8; k++) {
+            double P[3] = {k & 1 ? ch->hi[0] : ch->lo[0], k & 2 ? ch->hi[1] : ch->lo[1], k & 4 ? ch->hi[2] : ch->lo[2]};
+            double u, v, z = gls_camera_project(c, P, &u, &v);
+            if (!(z >= c->near)) {
+                nearer++;
+                continue;
+            }
+            beyond += z > c->far;
+            lo[0] = fmin(lo[0], u), lo[1] = fmin(lo[1], v);
+            hi[0] = fmax(hi[0], u), hi[1] = fmax(hi[1], v);
+        }
+        if (nearer == 8 || beyond == 8) { /* wholly clipped: nowhere */
+            b[i][0] = b[i][1] = INFINITY;
+            b[i][2] = b[i][3] = -INFINITY;
+        } else if (nearer || !isfinite(lo[0] + lo[1] + hi[0] + hi[1])) { /* crosses the near plane */
+            b[i][0] = b[i][1] = -INFINITY;
+            b[i][2] = b[i][3] = INFINITY;
+        } else {
+            /* corners in front of the camera: the box projects inside their
+             * convex hull; a pixel of margin for rounding */
+            b[i][0] = lo[0] - 1, b[i][1] = lo[1] - 1;
+            b[i][2] = hi[0] + 1, b[i][3] = hi[1] + 1;
+        }
+    }
+    return s->nchunks;
+}
+
+void gls_render_prepare(gls_renderer *r, const gls_camera *c)
+{
+    double C[3];
+    gls_camera_centre(c, C);
+    r->nnear = prepare_near(r, c, C);
+}
+
+void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], uint32_t vw, uint32_t vh,
+                       const uint32_t sc[4], const uint8_t *vis)
+{
+    double C[3], P[16];
+    float f[16];
+    gls_camera_centre(c, C);
+    glViewport(0, 0, (GLsizei)vw, (GLsizei)vh);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor((GLint)sc[0], (GLint)sc[1], (GLsizei)sc[2], (GLsizei)sc[3]);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gls_camera_projection_map(c, m, vw, vh, P);
+    gls_mat_to_gl(P, f);
+    r->zc_a = f[10];
+    r->zc_b = f[14];
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(f);
+    glMatrixMode(GL_MODELVIEW);
+    draw_all(r, c, C, r->nnear, vis);
+}
+
+void gls_render_read_rect(gls_renderer *r, uint32_t width, const uint32_t sc[4], uint8_t *rgba)
+{
+    (void)r;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ROW_LENGTH, (GLint)width);
+    glReadPixels((GLint)sc[0], (GLint)sc[1], (GLsizei)sc[2], (GLsizei)sc[3], GL_RGBA, GL_UNSIGNED_BYTE,
+                 rgba + ((size_t)sc[1] * width + sc[0]) * 4);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
 }
 
 void gls_render_flush(gls_renderer *r)

@@ -58,6 +58,27 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
  * with n = 1. */
 void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv);
 
+/* Fine-framebuffer passes (one-pass anti-aliasing, aa_onepass.c).
+ * Image-space bounds of every chunk for camera c, b[i] = {u0, v0, u1,
+ * v1}: the bounding box of its box's projected corners; {-inf, -inf,
+ * inf, inf} when the box reaches nearer than the near plane (it may be
+ * anywhere), {inf, inf, -inf, -inf} when it is wholly nearer than near or
+ * beyond far (nowhere).  Returns the number of chunks. */
+uint32_t gls_render_chunk_bounds(const gls_renderer *r, const gls_camera *c, double (*b)[4]);
+uint32_t gls_renderer_nchunks(const gls_renderer *r);
+/* Upload what camera c needs before gls_render_mapped (the re-anchored
+ * near chunks). */
+void gls_render_prepare(gls_renderer *r, const gls_camera *c);
+/* Clear and draw the chunks with vis[i] != 0 (NULL: all) through camera
+ * c with the image -> window map m (gls_camera_projection_map) in the
+ * viewport (0, 0, vw, vh), only inside the scissor rectangle sc = {x, y,
+ * w, h} (the framebuffer, from gls_renderer_set_size, may be larger). */
+void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], uint32_t vw, uint32_t vh,
+                       const uint32_t sc[4], const uint8_t *vis);
+/* Read back the rectangle sc = {x, y, w, h}: RGBA8 into an image of rows
+ * of `width` pixels (framebuffer row 0 first) at its place (x, y). */
+void gls_render_read_rect(gls_renderer *r, uint32_t width, const uint32_t sc[4], uint8_t *rgba);
+
 /* Start the rasteriser on what was drawn (glFlush) without waiting, so
  * the CPU can accumulate the previous read-back meanwhile. */
 void gls_render_flush(gls_renderer *r);

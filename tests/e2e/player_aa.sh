@@ -31,6 +31,7 @@ run aa_pfm $PLAY $S -o "$t/pf" --subpixel 1/8 --image-format pfm --outputs image
 # the same samples as a16, written as float: png16 must agree with it
 run aa_16_pfm $PLAY $S -o "$t/a16pf" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format pfm --outputs image
 [ -s "$t/pf/proj/image_000000.pfm" ] && head -c 3 "$t/pf/proj/image_000000.pfm" | grep -q '^PF' && ok aa_pfm_header || fail aa_pfm_header "no PF file"
+run aa_lattice_mask $PLAY $S -o "$t/lat" --aa 4 --image-format pfm --outputs image,mask
 if [ -x $PY ] && $PY -c 'import cv2' 2>/dev/null; then
     $PY - "$t" <<'PYEOF'
 import sys, cv2, numpy as np
@@ -58,6 +59,13 @@ res('aa_mask_edges', 0 < (mask > 0).sum() < mask.size // 4, '%d mixed' % (mask >
 # the mask marks exactly the pixels whose anti-aliased value is not a plain colour
 inner = (a16.astype(float) / 65535)
 res('aa_mask_where_blended', np.abs(inner - plain)[~flat].max() > 0.01, 'mask marks nothing blended')
+# the same through the lattice's one pass (the default)
+lat = cv2.imread(t + '/lat/proj/image_000000.pfm', cv2.IMREAD_UNCHANGED)
+lmask = cv2.imread(t + '/lat/proj/mask_000000.png', cv2.IMREAD_UNCHANGED)
+lflat = lmask == 0
+res('aa_lattice_matches_plain', lat is not None and np.abs(lat - plain)[lflat].max() < 1e-6 and 0 < (~lflat).sum() < lmask.size // 4,
+    'differs away from edges')
+res('aa_lattice_mask_where_blended', np.abs(lat - plain)[~lflat].max() > 0.01, 'mask marks nothing blended')
 PYEOF
 else
     fail player_aa_opencv "no OpenCV under $PY"
@@ -65,6 +73,23 @@ fi
 run aa_explain $PLAY $S --explain --aa 8 --filter gauss --outputs image
 grep -q "anti-aliasing: 8x8 = 64 samples per pixel, Gaussian" "$t/stdout" && grep -q "accumulator: uint64" "$t/stdout" &&
     ok aa_explain_plan || fail aa_explain_plan "$(cat "$t/stdout")"
+# the lattice is the default; any M; the plan names the generator (256
+# samples: a = 30, gcd(a, 256) = 2, spec/antialiasing.md), the points a
+# position across axis and diagonal edges, the passes, the tiles and the
+# memory
+run aa_explain_lattice $PLAY $S --explain --samples 256 --outputs image
+grep -qF "anti-aliasing: 16x16 = 256 samples per pixel, box filter, lattice pattern: generator a = 30, closest samples 0.0650 px apart; samples a position across 0, 45 and 135 degree edges: 2, 1 and 1 (gcd(a, M), gcd(a - 1, M), gcd(a + 1, M); positions g/256 px apart)" "$t/stdout" &&
+    grep -q "passes: one fine framebuffer whose pixel centres are the samples" "$t/stdout" &&
+    grep -q "^  anti-aliasing: 1 pass of 256 samples per pixel; fine framebuffer [0-9]*x[0-9]* (A = \[" "$t/stdout" &&
+    grep -q "^  tiles: [0-9]* per pass of [0-9]*x[0-9]* (at most; those no pixel needs are skipped), [0-9.]* MiB of framebuffer and read-backs (--aa-memory 256 MiB)" "$t/stdout" &&
+    ok aa_explain_lattice_plan || fail aa_explain_lattice_plan "$(cat "$t/stdout")"
+run aa_explain_kpass $PLAY $S --explain --samples 262144 --outputs image
+grep -q "^  anti-aliasing: 4 passes of 65536 samples per pixel" "$t/stdout" &&
+    ok aa_explain_kpass_plan || fail aa_explain_kpass_plan "$(grep -A1 '^  anti-aliasing' "$t/stdout")"
+run aa_explain_default $PLAY $S --explain --aa 4 --outputs image
+grep -q "lattice pattern: generator a = 4," "$t/stdout" && ok aa_default_is_lattice || fail aa_default_is_lattice "$(grep anti-al "$t/stdout")"
+run aa_samples_prime $PLAY $S -o "$t/p17" --samples 17 --outputs image
+[ -s "$t/p17/proj/image_000000.png" ] && ok aa_samples_prime_image || fail aa_samples_prime_image "no image"
 run aa_explain_one $PLAY $S --explain --aa 1
 grep -q "no accumulator" "$t/stdout" && ok aa_explain_one_pass || fail aa_explain_one_pass "$(grep passes "$t/stdout")"
 usage aa_usage_zero $PLAY $S -o "$t/x" --aa 0
@@ -73,17 +98,47 @@ usage aa_usage_both $PLAY $S -o "$t/x" --aa 4 --subpixel 1/4
 usage aa_usage_filter $PLAY $S -o "$t/x" --filter tent
 usage aa_usage_format $PLAY $S -o "$t/x" --image-format jpg
 usage aa_usage_subpixel $PLAY $S -o "$t/x" --subpixel 1/5000
+# exact () {NAME LINE -- command}: exit 2 and stderr exactly LINE
+exact2() { name=$1 line=$2; shift 3; "$@" >/dev/null 2>"$t/stderr"; rc=$?
+    [ $rc -eq 2 ] && [ "$(cat "$t/stderr")" = "$line" ] && ok "$name" || fail "$name" "exit $rc: $(cat "$t/stderr")"; }
+exact2 aa_usage_samples_zero "glsplay: error: --samples needs M in 1..16777216, got '0' (try glsplay --help)" -- \
+    $PLAY $S -o "$t/x" --samples 0
+exact2 aa_usage_samples_big "glsplay: error: --samples needs M in 1..16777216, got '16777217' (try glsplay --help)" -- \
+    $PLAY $S -o "$t/x" --samples 16777217
+exact2 aa_usage_samples_and_aa "glsplay: error: --aa, --samples and --subpixel all choose the samples; give one (try glsplay --help)" -- \
+    $PLAY $S -o "$t/x" --aa 4 --samples 16
+exact2 aa_usage_grid_square "glsplay: error: --pattern grid needs a square --samples (N x N), got 17; the lattice takes any M (try glsplay --help)" -- \
+    $PLAY $S -o "$t/x" --samples 17 --pattern grid
+exact2 aa_usage_pattern "glsplay: error: --pattern needs lattice, grid or stratified, got 'hex' (try glsplay --help)" -- \
+    $PLAY $S -o "$t/x" --pattern hex
+exact2 aa_usage_memory "glsplay: error: --aa-memory needs MB in 16..1048576, got '8' (try glsplay --help)" -- \
+    $PLAY $S -o "$t/x" --aa-memory 8
 # a render projected beyond a minute says so first: 4096 x 4096 samples at
-# 640x480 are 16.7 million passes, hours at any speed; the projection is
-# made after 2 s of passes, and the render is stopped once it is there
-$PLAY $S -o "$t/long" --aa 4096 --size 640x480 --outputs image 2>"$t/err" &
-pid=$!
-i=0
-while [ $i -lt 240 ] && ! grep -q "estimated render time" "$t/err"; do sleep 0.25; i=$((i + 1)); done
-kill "$pid" 2>/dev/null
-wait "$pid" 2>/dev/null
-grep -q '^glsplay: note: estimated render time [0-9a-z ]*: 1 camera frame x 16777216 anti-aliasing passes x [0-9.]* [mu]*s (measured on the first [0-9]* passes; --explain shows the plan)$' \
-    "$t/err" && ok aa_estimate_before_long_render || fail aa_estimate_before_long_render "$(cat "$t/err")"
+# 640x480 are 16.7 million passes with stratified jitter (hours at any
+# speed), and millions of tiles of the lattice's fine framebuffer; the
+# projection is made after 2 s, and the render is stopped once it is there
+long_render() { # NAME UNITS COUNT_RE PLAY_OPTIONS...
+    name=$1 units=$2 count=$3
+    shift 3
+    $PLAY $S -o "$t/long" --aa 4096 --size 640x480 --outputs image "$@" 2>"$t/err" &
+    pid=$!
+    i=0
+    while [ $i -lt 240 ] && ! grep -q "estimated render time" "$t/err"; do sleep 0.25; i=$((i + 1)); done
+    kill "$pid" 2>/dev/null
+    wait "$pid" 2>/dev/null
+    grep -q "^glsplay: note: estimated render time [0-9a-z ]*: 1 camera frame x $count anti-aliasing $units x [0-9.]* [mu]*s (measured on the first [0-9]* $units; --explain shows the plan)\$" \
+        "$t/err" && ok "$name" || fail "$name" "$(cat "$t/err")"
+}
+long_render aa_estimate_before_long_render passes 16777216 --pattern stratified
+long_render aa_estimate_before_long_render_lattice tiles '[0-9]*'
+# --resume knows the samples: a frame rendered with 16 samples is complete
+# for --samples 16, not for --samples 64, nor for the grid's 16
+resume() { "$PLAY" $S -o "$t/res" --outputs image --resume "$@" 2>&1 >/dev/null | grep -o '[0-9]* of 1 frame complete'; }
+$PLAY $S -o "$t/res" --outputs image --samples 16 2>/dev/null
+[ "$(resume --samples 16)" = "1 of 1 frame complete" ] && ok aa_resume_same_samples || fail aa_resume_same_samples "$(resume --samples 16)"
+[ "$(resume --samples 64)" = "0 of 1 frame complete" ] && ok aa_resume_other_samples || fail aa_resume_other_samples "$(resume --samples 64)"
+$PLAY $S -o "$t/res" --outputs image --samples 16 2>/dev/null
+[ "$(resume --aa 4 --pattern grid)" = "0 of 1 frame complete" ] && ok aa_resume_other_pattern || fail aa_resume_other_pattern "$(resume --aa 4 --pattern grid)"
 # progress only on a terminal: stderr to a file stays empty
 $PLAY $S -o "$t/q" --aa 16 --outputs image 2>"$t/err"
 [ ! -s "$t/err" ] && ok aa_no_progress_when_not_tty || fail aa_no_progress_when_not_tty "$(cat "$t/err")"

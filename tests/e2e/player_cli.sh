@@ -141,7 +141,7 @@ if [ "$GLS_SANITIZED" != 1 ]; then
     exact player_err_mosaic_memory 1 \
         "glsplay: error: camera proj: cannot allocate a 16000x16000 framebuffer, 16x16 tiles of 1000x1000 images (1.9 GiB of memory); lower --aa-tiles (256 tiles a pass now)" -- \
         sh -c 'ulimit -v 1500000; exec "$@"' sh $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/mem" \
-        --size 1000x1000 --aa 16 --aa-tiles 256 --outputs image
+        --size 1000x1000 --aa 16 --aa-tiles 256 --pattern stratified --outputs image
     exact player_err_image_memory 1 \
         "glsplay: error: camera proj: cannot allocate a 16384x16384 framebuffer (3.0 GiB of memory); lower --size (or the camera's width and height)" -- \
         sh -c 'ulimit -v 1500000; exec "$@"' sh $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/mem" \

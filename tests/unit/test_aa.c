@@ -98,6 +98,7 @@ static void test_accum_limit_gauss(void)
     gls_aa_opts o = gls_aa_defaults();
     o.n = 4096;
     o.filter = GLS_AA_GAUSS;
+    o.pattern = GLS_AA_GRID; /* the N x N window (the lattice's would be 25 x 4096^2) */
     gls_aa_plan p;
     CHECK(gls_aa_plan_init(&p, &o, err, sizeof err) == 0);
     CHECK(p.wsum <= (1ull << 52) && p.wsum > (1ull << 52) - p.count);
@@ -169,13 +170,16 @@ static void test_gauss_weights_sum(void)
 /* --subpixel: the smallest N whose step is at most the accuracy. */
 static void test_subpixel_rule(void)
 {
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1.0 / 256) == 256);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 0.1) == 10);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 0.3) == 4);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1) == 1);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_GAUSS, 0.5, 1.0 / 256) == 768);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1.0 / 4096) == 4096);
-    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, 0.5, 1.0 / 5000) == 0);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1.0 / 256) == 256);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 0.1) == 10);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 0.3) == 4);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1) == 1);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_GAUSS, GLS_AA_GRID, 0.5, 1.0 / 256) == 768);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1.0 / 4096) == 4096);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_GRID, 0.5, 1.0 / 5000) == 0);
+    /* the lattice's samples are per pixel area whatever the filter */
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_GAUSS, GLS_AA_LATTICE, 0.5, 1.0 / 256) == 256);
+    CHECK(gls_aa_n_for_accuracy(GLS_AA_BOX, GLS_AA_LATTICE, 0.5, 1.0 / 16) == 16);
 }
 
 /* ---- rendering ------------------------------------------------------ */
@@ -313,7 +317,7 @@ static void test_edge_error_falls(void)
 }
 
 /* llvmpipe snaps vertices to 1/2^GL_SUBPIXEL_BITS of a pixel (8 bits
- * here).  Sweep a vertical edge across column 8's centre in 1/4096-px
+ * here).  Sweep a vertical edge across pixel 1's centre in 1/4096-px
  * steps with one plain pass each: where the pixel turns on is the edge's
  * snapped position; its distance from the exact crossing is at most half
  * a snap step, 1/512 px, below the 1/256 bound.  (The anti-aliased edge
@@ -324,32 +328,11 @@ static void test_snapping_bias(void)
 {
     GLint bits = 0;
     glGetIntegerv(GL_SUBPIXEL_BITS, &bits);
-    gls_camera c = simple_camera(16, 2);
-    char err[128];
-    double worst = 0;
-    int steps = 0;
-    for (int k = -40; k <= 40; k++) {
-        double x = 8 + k / 4096.0; /* edge position, px: lit iff 8 < x */
-        tb t;
-        tb_init(&t);
-        tb_object(&t, "e", 1);
-        tb_color(&t, 1, 1, 1, 1);
-        tb_rect_z(&t, -100, -100, (x - c.cx) * 5 / c.fx, 100, 5);
-        gls_bundle *b = tb_finish(&t);
-        uint8_t rgba[16 * 2 * 4];
-        if (tb_render(ctx, b, &c, 0, 0, rgba, NULL))
-            CHECK(0);
-        int lit = rgba[4 * 8] == 255, exact = 8 < x;
-        if (lit != exact && fabs(x - 8) > worst)
-            worst = fabs(x - 8);
-        steps++;
-        gls_bundle_free(b);
-    }
-    (void)err;
+    /* bench/aa_scene.h: 81 positions of the edge, 1/4096 px apart */
+    double worst = as_snap_worst(ctx, 1);
     printf("  GL_SUBPIXEL_BITS %d: largest edge displacement by snapping %.6f px (bound %.6f)\n", bits, worst,
            bits > 0 ? 0.5 / (1 << bits) : 0.0);
-    CHECK(steps == 81);
-    CHECK_MSG(worst <= 1.0 / 512 + 1e-9, "snapping moved the edge by %g px", worst);
+    CHECK_MSG(worst >= 0 && worst <= 1.0 / 512 + 1e-9, "snapping moved the edge by %g px", worst);
 }
 
 /* Hard cases: no NaN, no crash, values in [0, 1]; where the answer is
