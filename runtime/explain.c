@@ -1,6 +1,8 @@
 /* glsplay --explain: the rendering plan, derived from the bundle's
  * feature bits (which the reader has checked against the content). */
+#include "aa_onepass.h"
 #include "aa_render.h"
+#include "units.h"
 #include "player.h"
 
 /* The GL effect each feature switches on, by feature bit; the asserts keep
@@ -65,20 +67,43 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     if (!aa) {
         fprintf(out, "passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0); no accumulator\n");
     } else {
-        fprintf(out, "anti-aliasing: %ux%u = %llu samples per pixel, %s filter", p.o.n, p.o.n,
-                (unsigned long long)p.count, p.o.filter == GLS_AA_BOX ? "box" : "Gaussian");
+        if (p.o.n)
+            fprintf(out, "anti-aliasing: %ux%u = %llu samples per pixel, %s filter", p.o.n, p.o.n,
+                    (unsigned long long)p.m, p.o.filter == GLS_AA_BOX ? "box" : "Gaussian");
+        else
+            fprintf(out, "anti-aliasing: %llu samples per pixel, %s filter", (unsigned long long)p.m,
+                    p.o.filter == GLS_AA_BOX ? "box" : "Gaussian");
         if (p.o.filter == GLS_AA_GAUSS)
             fprintf(out, " (sigma %g px, window +-%g sigma)", p.o.sigma, GLS_AA_GAUSS_SPAN);
-        fprintf(out, ", %s offsets", p.o.pattern == GLS_AA_GRID ? "grid" : "stratified");
-        if (p.o.pattern == GLS_AA_STRATIFIED)
-            fprintf(out, " (seed %llu)", (unsigned long long)p.o.seed);
-        fprintf(out, ", step %.6g px\n", p.span / p.o.n);
+        if (p.o.pattern == GLS_AA_LATTICE) {
+            /* the criterion's keys (lattice.c): the closest distance, then
+             * the points per position across axis and diagonal edges */
+            fprintf(out, ", lattice pattern: generator a = %llu, closest samples %.4f px apart; samples a position "
+                         "across 0, 45 and 135 degree edges: %llu, %llu and %llu (gcd(a, M), gcd(a - 1, M), "
+                         "gcd(a + 1, M); positions g/%llu px apart)",
+                    (unsigned long long)p.lat.a, p.lat.mindist, (unsigned long long)p.lat.g0,
+                    (unsigned long long)p.lat.g45, (unsigned long long)p.lat.g135, (unsigned long long)p.m);
+            if (gls_aa_weighted(&p))
+                fprintf(out, ", %llu of them in the cells -%u..%u around the pixel (those outside the window weigh 0)",
+                        (unsigned long long)p.count, p.radius, p.radius);
+            fprintf(out, "\n");
+        } else {
+            fprintf(out, ", %s offsets", p.o.pattern == GLS_AA_GRID ? "grid" : "stratified");
+            if (p.o.pattern == GLS_AA_STRATIFIED)
+                fprintf(out, " (seed %llu)", (unsigned long long)p.o.seed);
+            fprintf(out, ", step %.6g px\n", p.span / p.o.n);
+        }
         fprintf(out, "  accumulator: %s, exact (no rounding until the one final division)\n",
                 gls_aa_weighted(&p) ? "uint64 per channel, integer weights summing to ~2^52"
                                     : "uint32 per channel, unit weights");
-        fprintf(out, "  passes: samples drawn %s per GL pass (a mosaic of jittered viewports, one clear, "
-                     "one read-back of colour only)%s\n",
-                o->aa_tiles ? "a fixed number" : "several", centre ? "; plus 1 unjittered pass for depth/points" : "");
+        if (gls_aa_fine_ok(&p))
+            fprintf(out, "  passes: one fine framebuffer whose pixel centres are the samples, drawn in tiles "
+                         "(geometry culled per tile), read back (RGBA8) and gathered%s\n",
+                    centre ? "; plus 1 unjittered pass for depth/points" : "");
+        else
+            fprintf(out, "  passes: samples drawn %s per GL pass (a mosaic of jittered viewports, one clear, "
+                         "one read-back of colour only)%s\n",
+                    o->aa_tiles ? "a fixed number" : "several", centre ? "; plus 1 unjittered pass for depth/points" : "");
     }
     if (!n) {
         fprintf(out, "cameras: none given\n");
@@ -97,7 +122,24 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         else
             fprintf(out, "  pose: world (%s): R and T map the world into the camera\n",
                     c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
-        if (aa) {
+        gls_aa_fine_layout lay;
+        gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
+        if (aa && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
+            char mem[32], budget[32];
+            gls_fmt_bytes(mem, sizeof mem, lay.bytes);
+            gls_fmt_bytes(budget, sizeof budget, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
+            fprintf(out, "  anti-aliasing: %llu pass%s of %llu sample%s per pixel; fine framebuffer %lldx%lld "
+                         "(A = [%lld %lld; %lld %lld]: image pixel (1, 0) -> (%lld, %lld) fine pixels)\n",
+                    (unsigned long long)lay.f.k, lay.f.k == 1 ? "" : "es", (unsigned long long)lay.f.l,
+                    lay.f.l == 1 ? "" : "s",
+                    (long long)lay.fw, (long long)lay.fh, (long long)lay.f.a[0][0], (long long)lay.f.a[0][1],
+                    (long long)lay.f.a[1][0], (long long)lay.f.a[1][1], (long long)lay.f.a[0][0],
+                    (long long)lay.f.a[1][0]);
+            fprintf(out, "  tiles: %llu per pass of %ux%u (at most; those no pixel needs are skipped), %s of "
+                         "framebuffer and read-backs (--aa-memory %s); %llu gather entries per pixel and pass\n",
+                    (unsigned long long)lay.tiles, lay.tw, lay.th, mem, budget, (unsigned long long)lay.kernel);
+            fprintf(out, "  reads back: colour (RGBA8) per tile\n");
+        } else if (aa) {
             uint32_t kx, ky;
             gls_aa_mosaic_shape(NULL, c->width, c->height, p.count, o->aa_tiles, &kx, &ky);
             fprintf(out, "  anti-aliasing: %llu samples in %llu passes of %ux%u tiles (%ux%u framebuffer)\n",
