@@ -93,6 +93,7 @@ SEES_test_bundle := format
 SEES_test_compile := compiler
 SEES_test_lex := compiler
 SEES_test_aa := bench
+SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
 SEES_test_progress := runtime

@@ -11,7 +11,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "check.h"
-#include "../../bench/aa_scene.h"
+#include "aa_scene.h"
 
 static gls_glctx *ctx;
 
