@@ -33,7 +33,7 @@ typedef struct {
 static int setup(bench *b, uint32_t w, uint32_t h)
 {
     char err[256];
-    b->ctx = gls_glctx_create(1, 1, err, sizeof err);
+    b->ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     if (!b->ctx) {
         fprintf(stderr, "aa_bench: %s\n", err);
         return -1;
