@@ -74,6 +74,13 @@ static void *egl_proc(void *state, const char *name)
     return v;
 }
 
+/* A display's EGL_VENDOR, never NULL. */
+static const char *vendor(EGLDisplay dpy)
+{
+    const char *v = eglQueryString(dpy, EGL_VENDOR);
+    return v ? v : "unknown";
+}
+
 /* An EGL extension function by name, as its own pointer type. */
 #define EGL_LOAD(dst, name)                                                   \
     do {                                                                      \
@@ -141,8 +148,8 @@ static egl_state *open_display(EGLDisplay dpy, const char *client, const char *p
                             ? "EGL_KHR_get_all_proc_addresses"
                             : NULL;
     if (lacks) {
-        snprintf(err, errlen, "egl: %s: the display (EGL %d.%d, %s) lacks %s", platform, major, minor,
-                 eglQueryString(dpy, EGL_VENDOR), lacks);
+        snprintf(err, errlen, "egl: %s: the display (EGL %d.%d, %s) lacks %s", platform, major, minor, vendor(dpy),
+                 lacks);
         egl_destroy(s);
         return NULL;
     }
@@ -218,8 +225,11 @@ static egl_state *open_device(const egl_ext *x, const char *client, int software
         return NULL;
     }
     egl_state *s = NULL;
-    snprintf(err, errlen, "egl: %s: no %sdevice (%d device%s, all software)", platform, software ? "" : "GPU ", n,
-             n == 1 ? "" : "s");
+    if (n == 0)
+        snprintf(err, errlen, "egl: %s: eglQueryDevicesEXT finds no device", platform);
+    else
+        snprintf(err, errlen, "egl: %s: no GPU among the %d device%s (Mesa's software device is for --backend "
+                              "egl-device)", platform, (int)n, n == 1 ? "" : "s");
     for (int pass = 0; pass < 1 + software && !s; pass++)
         for (EGLint i = 0; i < n && !s; i++) {
             int sw = is_software(x, devs[i]);
@@ -237,7 +247,7 @@ static egl_state *open_device(const egl_ext *x, const char *client, int software
             const char *drv = driver_name(dpy);
             snprintf(s->device, sizeof s->device, "device %d of %d: %s%s%s%s, EGL vendor %s", (int)i, (int)n,
                      sw ? "software" : file ? file : "GPU", drv ? " (driver " : "", drv ? drv : "", drv ? ")" : "",
-                     eglQueryString(dpy, EGL_VENDOR));
+                     vendor(dpy));
         }
     free(devs);
     return s;
@@ -255,7 +265,7 @@ static egl_state *open_surfaceless(const egl_ext *x, const char *client, char *e
     if (s) {
         const char *drv = driver_name(dpy);
         snprintf(s->device, sizeof s->device, "%s%s%sEGL vendor %s", drv ? "driver " : "", drv ? drv : "",
-                 drv ? ", " : "", eglQueryString(dpy, EGL_VENDOR));
+                 drv ? ", " : "", vendor(dpy));
     }
     return s;
 }
