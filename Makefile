@@ -89,7 +89,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa units programs
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends units programs
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -290,6 +290,12 @@ $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 # bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
+
+# bench-backends: frames per second of each GL backend (spec/backends.md),
+# the road sequence and the 100k-triangle terrain, 1 and 256 samples a
+# pixel; writes docs/backends.txt.
+bench-backends: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
+	@sh bench/backends.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
