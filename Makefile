@@ -32,7 +32,8 @@ endif
 INC_base     := -Ibase
 INC_format   := -Iformat $(INC_base)
 INC_compiler := -Icompiler -I$(B)/gen $(INC_format)
-INC_runtime  := -Iruntime $(INC_format)
+# $(B)/gen/runtime: glctx_backends.h, which GL backends this build has (below)
+INC_runtime  := -Iruntime -I$(B)/gen/runtime $(INC_format)
 INC_roads    := -Iroads $(INC_base)
 # glsroad's main also reads camera files and trajectories (runtime/)
 INC_glsroad  := $(INC_roads) $(INC_runtime)
@@ -40,10 +41,29 @@ INC_glsroad  := $(INC_roads) $(INC_runtime)
 LAYER_INC = $(INC_$(firstword $(subst /, ,$*)))
 $(B)/roads/glsroad_main.o: LAYER_INC = $(INC_glsroad)
 
+# The GL backends (runtime/glctx_*.c, spec/backends.md): each is built when
+# pkg-config finds its library, and left out otherwise or when GLS_NO_EGL=1
+# or GLS_NO_OSMESA=1 says to build as if the library were absent
+# (tests/e2e/build_backends.sh).  At least one is needed.  Every GL call
+# goes through the backend (runtime/glcalls.h), so no GL library is linked:
+# only libEGL and/or libOSMesa.
+HAVE_EGL    := $(if $(filter 1,$(GLS_NO_EGL)),,$(shell pkg-config --exists egl 2>/dev/null && echo 1))
+HAVE_OSMESA := $(if $(filter 1,$(GLS_NO_OSMESA)),,$(shell pkg-config --exists osmesa 2>/dev/null && echo 1))
+GLCTX_LEFT_OUT := $(if $(HAVE_EGL),,runtime/glctx_egl.c) $(if $(HAVE_OSMESA),,runtime/glctx_osmesa.c)
+GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),$(shell pkg-config --libs osmesa)) -lspng
+$(B)/runtime/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
+$(B)/runtime/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
+# Which backends are in, for runtime/glctx.c: written when the Makefile is
+# read, and only when it changes, so that switching GLS_NO_EGL (or
+# installing libegl-dev) recompiles glctx.c and relinks, and nothing else.
+GLCTX_CONFIG := $(B)/gen/runtime/glctx_backends.h
+GLCTX_CONFIG_TEXT := /* written by the Makefile: the GL backends of this build */\n\#define GLS_HAVE_EGL $(if $(HAVE_EGL),1,0)\n\#define GLS_HAVE_OSMESA $(if $(HAVE_OSMESA),1,0)\n
+$(shell mkdir -p $(B)/gen/runtime && { printf '$(GLCTX_CONFIG_TEXT)' | cmp -s - $(GLCTX_CONFIG) || printf '$(GLCTX_CONFIG_TEXT)' >$(GLCTX_CONFIG); })
+
 BASE_SRC     := $(wildcard base/*.c)
 FORMAT_SRC   := $(wildcard format/*.c)
 COMPILER_SRC := $(filter-out compiler/glsc_main.c compiler/glsdis_main.c,$(wildcard compiler/*.c))
-RUNTIME_SRC  := $(filter-out runtime/glsplay_main.c,$(wildcard runtime/*.c))
+RUNTIME_SRC  := $(filter-out runtime/glsplay_main.c $(GLCTX_LEFT_OUT),$(wildcard runtime/*.c))
 
 BASE_OBJ     := $(BASE_SRC:%.c=$(B)/%.o)
 FORMAT_OBJ   := $(FORMAT_SRC:%.c=$(B)/%.o)
@@ -61,8 +81,6 @@ TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay $(B)/glsroad
 # the scene library: textures, the library directory, precompiled library bundle
 SCENELIB := $(B)/textures.stamp $(B)/scenelib.stamp $(B)/scenelib.glsb
 
-GL_LIBS := -lOSMesa -lGL -lspng
-
 UNIT_SRC := $(wildcard tests/unit/*.c)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # The helper programs (benchmarks, image tools, fuzz seed writer): built by
@@ -71,10 +89,15 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa units programs
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends units programs
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
+
+# No backend: say what to install (the #error in glctx.c is the fallback).
+$(B)/runtime/glctx.o: $(GLCTX_CONFIG) | gl-backend-check
+gl-backend-check:
+	@[ -n "$(HAVE_EGL)$(HAVE_OSMESA)" ] || { echo "glscene: no GL backend to build: pkg-config finds neither egl (Debian: libegl-dev) nor osmesa (libosmesa6-dev)$(if $(filter 1,$(GLS_NO_EGL) $(GLS_NO_OSMESA)),; GLS_NO_EGL=1 / GLS_NO_OSMESA=1 left out what it finds)" >&2; exit 1; }
 
 # The README's test command: install what is missing, build, run everything.
 test:
@@ -268,6 +291,12 @@ $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 # bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
+
+# bench-backends: frames per second of each GL backend (spec/backends.md),
+# the road sequence and the 100k-triangle terrain, 1 and 256 samples a
+# pixel; writes docs/backends.txt.
+bench-backends: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
+	@sh bench/backends.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.

@@ -42,7 +42,7 @@ old=docs/aa_cost.txt
 [ -f "$old" ] && cp "$old" "$tmp/old.txt"
 out="$tmp/aa_cost.txt"
 {
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), OSMesa llvmpipe"
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), Mesa llvmpipe; GL backend: --backend auto (section 2 names the one it picked)"
 echo "load average before the run: $(cut -d' ' -f1-3 /proc/loadavg) (the machine is shared: timings are best of $REPS)"
 echo
 echo "## 1. Accuracy and time, box filter, ${W}x${H}"
@@ -127,6 +127,7 @@ echo "## 2. Cost: 100k triangles (bench/play_scene.h, 100352 triangles, per-vert
 echo
 echo "Whole glsplay process (load, GL start-up, render, gather, PNG write), best of $REPS, against one plain"
 echo "pass in the same run.  Targets: 16 samples within 2x, 256 within 10x."
+"$B/glsplay" "$tmp/terrain.glsb" --camera "$tmp/cam.cam" -o "$tmp/o" --explain 2>/dev/null | grep -E '^(backend|GL_RENDERER):'
 echo
 echo "| options | s | x plain |"
 echo "|---|---|---|"

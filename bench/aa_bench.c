@@ -249,7 +249,7 @@ static worst scene_worst(const as_scene *s, const double *img, double *per, cons
 static int accuracy(uint32_t W, uint32_t H, const char *pat, uint64_t m)
 {
     char err[256];
-    gls_glctx *ctx = gls_glctx_create(1, 1, err, sizeof err);
+    gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     gls_aa_plan p;
     if (!ctx || make_plan(pat, m, &p)) {
         fprintf(stderr, "aa_bench: %s\n", ctx ? "plan" : err);
@@ -350,7 +350,7 @@ static int texlod(const char *bundle, const char *camfile, uint64_t m)
 {
     char err[1024];
     gls_error ge;
-    gls_glctx *ctx = gls_glctx_create(1, 1, err, sizeof err);
+    gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     gls_bundle *b = gls_bundle_read_file(bundle, &ge);
     gls_camera cam;
     gls_scene sc;
@@ -413,7 +413,7 @@ static int texlod(const char *bundle, const char *camfile, uint64_t m)
 static int snap(void)
 {
     char err[256];
-    gls_glctx *ctx = gls_glctx_create(1, 1, err, sizeof err);
+    gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     if (!ctx)
         return 1;
     static const uint32_t ns[] = {1, 4, 16, 64};

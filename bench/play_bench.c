@@ -1,17 +1,71 @@
 /* bench-play, player side: the bench scene as a bundle (one qstrip per
  * grid column, per-vertex colours), flattened and drawn by the runtime
  * with the colour and depth read-backs of every frame (the player's
- * gls_render_read_z also converts depth to Zc).  Prints "player FPS". */
+ * gls_render_read_z also converts depth to Zc).  Prints "player FPS".
+ *
+ * usage: play_bench [--backend B]   render PS_FRAMES frames through GL
+ *                                   backend B (default auto)
+ *        play_bench --write DIR     write the scene for glsplay instead:
+ *                                   DIR/terrain.glsb, DIR/rig.cam (pose rig,
+ *                                   the identity) and DIR/trajectory.txt (the
+ *                                   camera path), for make bench-backends */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 #include "player_scene.h"
 #include "play_bundle.h"
 
-int main(void)
+/* The scene, a rig camera and the camera path as glsplay's inputs. */
+static int write_inputs(const char *dir)
+{
+    char path[4096];
+    gls_bundle *b = ps_bundle();
+    snprintf(path, sizeof path, "%s/terrain.glsb", dir);
+    int bad = tb_write(b, path);
+    gls_bundle_free(b);
+    gls_camera c = ps_camera(0);
+    static const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    memcpy(c.R, I, sizeof c.R);
+    c.T[0] = c.T[1] = c.T[2] = 0;
+    snprintf(path, sizeof path, "%s/rig.cam", dir);
+    FILE *f = NULL;
+    bad = bad || tb_write_camera(&c, path) || !(f = fopen(path, "a")) || fprintf(f, "pose rig\n") < 0;
+    if (f && fclose(f))
+        bad = 1;
+    snprintf(path, sizeof path, "%s/trajectory.txt", dir);
+    f = bad ? NULL : fopen(path, "w");
+    if (!f)
+        return -1;
+    fprintf(f, "# glsroad trajectory 1\n");
+    for (int k = 0; k < PS_FRAMES; k++) {
+        gls_camera ck = ps_camera(k);
+        fprintf(f, "%d %.17g", k, k / 25.0);
+        for (int i = 0; i < 9; i++)
+            fprintf(f, " %.17g", ck.R[i]);
+        fprintf(f, " %.17g %.17g %.17g\n", ck.T[0], ck.T[1], ck.T[2]);
+    }
+    return fclose(f);
+}
+
+int main(int argc, char **argv)
 {
     char err[256];
-    gls_glctx *ctx = gls_glctx_create(1, 1, err, sizeof err);
+    gls_backend backend = GLS_BACKEND_AUTO;
+    if (argc == 3 && strcmp(argv[1], "--write") == 0) {
+        if (write_inputs(argv[2])) {
+            fprintf(stderr, "play_bench: cannot write to %s\n", argv[2]);
+            return 1;
+        }
+        return 0;
+    }
+    if (argc == 3 && strcmp(argv[1], "--backend") == 0 && gls_backend_parse(argv[2], &backend) == 0)
+        argc -= 2;
+    if (argc != 1) {
+        fprintf(stderr, "usage: play_bench [--backend B] | --write DIR\n");
+        return 2;
+    }
+    gls_glctx *ctx = gls_glctx_create(backend, err, sizeof err);
     if (!ctx) {
         fprintf(stderr, "play_bench: %s\n", err);
         return 1;

@@ -5,6 +5,7 @@
  * player could skip, in the order that draws fastest.  Prints "floor FPS". */
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include "glcalls.h"
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,7 +24,7 @@ typedef struct {
 int main(void)
 {
     char err[256];
-    gls_glctx *ctx = gls_glctx_create(1, 1, err, sizeof err);
+    gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     if (!ctx) {
         fprintf(stderr, "play_floor: %s\n", err);
         return 1;

@@ -23,8 +23,22 @@ static const char *const effect[32] = {
     [7] = "none: alpha is not blended, surfaces are drawn opaque (outputs are RGB)",
 };
 
+/* The backend asked for and what it gave (spec/backends.md). */
+static void explain_backend(FILE *out, const gls_play_opts *o, const gls_glctx *ctx)
+{
+    const gls_glctx_info *gi = gls_glctx_describe(ctx);
+    fprintf(out, "backend: %s (--backend %s", gi->backend, gls_backend_name(o->backend));
+    if (gi->fallback[0])
+        fprintf(out, "; EGL gave no context: %s", gi->fallback);
+    else if (o->backend == GLS_BACKEND_AUTO)
+        fprintf(out, ": EGL first, OSMesa if EGL fails");
+    fprintf(out, "), platform: %s, device: %s\n", gi->platform, gi->device);
+    fprintf(out, "GL_RENDERER: %s; GL_VERSION: %s\n", gi->renderer, gi->version);
+}
+
 void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
-                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o)
+                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o,
+                 const gls_glctx *ctx)
 {
     unsigned outputs = o->outputs;
     gls_aa_opts ao = o->aa;
@@ -44,6 +58,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     if (s->dropped)
         fprintf(out, ", %llu triangles dropped (a vertex beyond 2^50 units from the origin, or at infinity)", (unsigned long long)s->dropped);
     fprintf(out, "\n");
+    explain_backend(out, o, ctx);
     fprintf(out, "always on: reversed-Z depth test (GL_DEPTH_COMPONENT32F, cleared to 0, GL_GREATER, "
                  "glClipControl GL_ZERO_TO_ONE); FBO with RGBA8 colour; clear colour black\n");
     fprintf(out, "features (bundle bits %#x):\n", b->features);

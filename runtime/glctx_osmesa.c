@@ -1,26 +1,43 @@
 /* OSMesa backend of glctx.h: Mesa's software rasteriser (llvmpipe), no
  * display or GPU needed.  The compatibility profile keeps fixed-function
- * GL available (see render.c for why the renderer uses it). */
+ * GL available (see render.c for why the renderer uses it).  Mesa 25.1
+ * removed OSMesa; glctx_egl.c is its successor (spec/backends.md). */
 #include <GL/osmesa.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "glctx.h"
+#include "glctx_backend.h"
 
-struct gls_glctx {
+/* OSMesa needs a default framebuffer to make a context current; the
+ * renderer never draws into it (it has its own FBO), so 1x1 will do. */
+typedef struct {
     OSMesaContext ctx;
-    int width, height;
-    unsigned char *buf; /* the default framebuffer OSMesa renders into */
-};
+    unsigned char buf[4];
+} osmesa_state;
 
-gls_glctx *gls_glctx_create(int width, int height, char *err, size_t errlen)
+static int osmesa_make_current(void *state)
 {
-    if (width < 1 || height < 1) {
-        snprintf(err, errlen, "osmesa: invalid context size %dx%d", width, height);
-        return NULL;
-    }
-    gls_glctx *c = calloc(1, sizeof *c);
-    if (!c) {
+    osmesa_state *s = state;
+    return OSMesaMakeCurrent(s->ctx, s->buf, GL_UNSIGNED_BYTE, 1, 1) ? 0 : -1;
+}
+
+static void osmesa_destroy(void *state)
+{
+    osmesa_state *s = state;
+    if (!s)
+        return;
+    if (s->ctx)
+        OSMesaDestroyContext(s->ctx);
+    free(s);
+}
+
+static void *osmesa_create(gls_backend b, gls_glctx_info *info, char *err, size_t errlen)
+{
+    (void)b;
+    info->platform = "none";
+    info->device = "none (software: Mesa's OSMesa)";
+    osmesa_state *s = calloc(1, sizeof *s);
+    if (!s) {
         snprintf(err, errlen, "osmesa: out of memory");
         return NULL;
     }
@@ -34,52 +51,27 @@ gls_glctx *gls_glctx_create(int width, int height, char *err, size_t errlen)
         OSMESA_CONTEXT_MINOR_VERSION, 5,
         0,
     };
-    c->ctx = OSMesaCreateContextAttribs(attribs, NULL);
-    if (!c->ctx) {
+    s->ctx = OSMesaCreateContextAttribs(attribs, NULL);
+    if (!s->ctx) {
         snprintf(err, errlen, "osmesa: cannot create a GL 4.5 compatibility context");
-        free(c);
+        free(s);
         return NULL;
     }
-    c->width = width;
-    c->height = height;
-    c->buf = calloc((size_t)width * (size_t)height, 4);
-    if (!c->buf || gls_glctx_make_current(c)) {
+    if (osmesa_make_current(s)) {
         snprintf(err, errlen, "osmesa: cannot make the context current");
-        gls_glctx_destroy(c);
+        osmesa_destroy(s);
         return NULL;
     }
-    return c;
+    return s;
 }
 
-int gls_glctx_make_current(gls_glctx *c)
+static void *osmesa_proc(void *state, const char *name)
 {
-    return OSMesaMakeCurrent(c->ctx, c->buf, GL_UNSIGNED_BYTE, c->width, c->height) ? 0 : -1;
-}
-
-void *gls_glctx_proc(gls_glctx *c, const char *name)
-{
-    (void)c;
-    /* OSMesaGetProcAddress returns a function pointer as OSMESAproc; the
-     * conversion to void * is what dlsym does too (POSIX guarantees it). */
+    (void)state;
     OSMESAproc p = OSMesaGetProcAddress(name);
     void *v;
-    _Static_assert(sizeof p == sizeof v, "function and object pointers differ in size");
-    memcpy(&v, &p, sizeof v);
+    GLS_PROC_AS_VOIDP(p, v);
     return v;
 }
 
-const char *gls_glctx_backend(const gls_glctx *c)
-{
-    (void)c;
-    return "osmesa";
-}
-
-void gls_glctx_destroy(gls_glctx *c)
-{
-    if (!c)
-        return;
-    if (c->ctx)
-        OSMesaDestroyContext(c->ctx);
-    free(c->buf);
-    free(c);
-}
+const gls_glctx_ops gls_glctx_osmesa_ops = {osmesa_create, osmesa_make_current, osmesa_proc, osmesa_destroy};

@@ -29,6 +29,11 @@ static const char usage_text[] =
     "  --anisotropic N        anisotropic texture filtering up to N x, N in 1..16\n"
     "                         (default 1: off; sharper textures at grazing angles, but\n"
     "                         llvmpipe takes minutes per frame with it: make bench-aa)\n"
+    "  --backend B            GL backend (spec/backends.md): auto (default: EGL where\n"
+    "                         it gives a context, else OSMesa), egl (a GPU through\n"
+    "                         EGL's device platform, else Mesa's surfaceless one),\n"
+    "                         egl-device or egl-surfaceless (that platform only),\n"
+    "                         osmesa; --explain says which one renders\n"
     "sequences (spec/road.md, \"Trajectory file\"):\n"
     "  --trajectory FILE      render every frame of FILE (e.g. from glsroad); each camera\n"
     "                         file then gives that camera's pose relative to the rig\n"
@@ -296,6 +301,21 @@ int main(int argc, char **argv)
                 goto done;
             }
             o.anisotropy = (uint32_t)v;
+            i++;
+        } else if (strcmp(a, "--backend") == 0) {
+            if (!has_val || gls_backend_parse(argv[i + 1], &o.backend)) {
+                rc = usage_error("--backend needs auto, egl, egl-device, egl-surfaceless or osmesa, got '%s'",
+                                 has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            /* asked for by name but not in this build: said before any
+               input is read, like an option this glsplay lacks */
+            if (!gls_backend_built(o.backend)) {
+                fprintf(stderr, "glsplay: error: --backend %s: this glsplay was built without %s: %s\n", argv[i + 1],
+                        o.backend == GLS_BACKEND_OSMESA ? "OSMesa" : "EGL", gls_backend_missing(o.backend));
+                rc = 2;
+                goto done;
+            }
             i++;
         } else if (strcmp(a, "--image-format") == 0) {
             const char *f = has_val ? argv[i + 1] : "";

@@ -518,8 +518,14 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, err);
         goto out;
     }
+    /* the context before the plan, which reports it */
+    ctx = gls_glctx_create(o->backend, err, sizeof err);
+    if (!ctx) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        goto out;
+    }
     if (o->explain)
-        gls_explain(out, o->bundle, b, &scene, cams, (const char *const *)names, o->ncameras, o);
+        gls_explain(out, o->bundle, b, &scene, cams, (const char *const *)names, o->ncameras, o, ctx);
     if (!o->outdir) {
         rc = 0;
         goto out;
@@ -534,11 +540,6 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                     k < 0 || (size_t)k >= sizeof dir ? "path too long" : strerror(errno));
             goto out;
         }
-    }
-    ctx = gls_glctx_create(1, 1, err, sizeof err);
-    if (!ctx) {
-        fprintf(errs, "glsplay: error: %s\n", err);
-        goto out;
     }
     r = gls_renderer_create(ctx, b, &scene, err, sizeof err);
     if (!r) {

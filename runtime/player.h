@@ -8,6 +8,7 @@
 #include "aa.h"
 #include "bundle.h"
 #include "camera.h"
+#include "glctx.h"
 #include "scene.h"
 
 /* mask: the mixed-pixel mask of an anti-aliased image (spec/antialiasing.md) */
@@ -40,17 +41,20 @@ typedef struct {
     uint32_t anisotropy;         /* anisotropic texture filtering up to N x;
                                     0 or 1 = off (the fast default)     */
     int progress;                /* progress lines on errs               */
+    gls_backend backend;         /* GL backend (glctx.h); 0 = auto       */
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,
  * the plan to out.  Returns the exit status: 0 done, 1 input error. */
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs);
 
-/* Print the plan (explain.c): which GL effects are on and why, passes,
- * anti-aliasing, read-backs.  cams/names may be empty (n = 0); o gives
- * the outputs, the anti-aliasing and the image format. */
+/* Print the plan (explain.c): the GL backend and context, which GL
+ * effects are on and why, passes, anti-aliasing, read-backs.  cams/names
+ * may be empty (n = 0); o gives the outputs, the anti-aliasing, the image
+ * format and the backend asked for; ctx is the context made for it. */
 void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
-                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o);
+                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o,
+                 const gls_glctx *ctx);
 
 /* Output file name: OUTDIR/NAME/KIND_%06u.EXT (frame numbers grow past
  * six digits without breaking).  Returns 0, -1 if it does not fit. */

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "glcalls.h"
 #include "render.h"
 #include "units.h"
 

@@ -13,6 +13,7 @@
 #include "aa_render.h"
 #include "check.h"
 #include <GL/gl.h>
+#include "glcalls.h"
 #include "aa_scene.h"
 
 static gls_glctx *ctx;
@@ -469,7 +470,7 @@ static void test_mosaic_same_as_single(void)
 int main(void)
 {
     char err[256];
-    ctx = gls_glctx_create(1, 1, err, sizeof err);
+    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     if (!ctx) {
         printf("FAIL test_aa: no GL context: %s\n", err);
         return 1;

@@ -840,7 +840,7 @@ static void test_snapping_fine(void)
 int main(void)
 {
     char err[256];
-    ctx = gls_glctx_create(1, 1, err, sizeof err);
+    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     if (!ctx) {
         printf("FAIL test_aa_lattice: no GL context: %s\n", err);
         return 1;

@@ -823,10 +823,20 @@ static int write_scenes(const char *dir)
     return tb_write_camera(&r, path);
 }
 
+/* usage: test_player [--backend B] [--write DIR]; the backend is auto
+ * unless given (tests/e2e/backends.sh runs the tests through each). */
 int main(int argc, char **argv)
 {
     char err[256];
-    ctx = gls_glctx_create(1, 1, err, sizeof err);
+    gls_backend backend = GLS_BACKEND_AUTO;
+    if (argc >= 3 && strcmp(argv[1], "--backend") == 0) {
+        if (gls_backend_parse(argv[2], &backend)) {
+            printf("FAIL test_player: unknown backend %s\n", argv[2]);
+            return 1;
+        }
+        argc -= 2, argv += 2;
+    }
+    ctx = gls_glctx_create(backend, err, sizeof err);
     if (!ctx) {
         printf("FAIL test_player: no GL context: %s\n", err);
         return 1;

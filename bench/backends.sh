@@ -1,0 +1,111 @@
+#!/bin/sh
+# make bench-backends: frames per second of each GL backend this build has
+# (spec/backends.md), for two sequences rendered by glsplay at 640x480,
+# image output only:
+#   road     examples/road/demo.road as glsroad writes it (the road and its
+#            objects, textured, no vehicles), left rig camera, frames from 0
+#   terrain  bench/play_scene.h's height field, 100,352 triangles with
+#            per-vertex colours (play_bench --write), its camera path
+# each single pass (--aa 1) and with 256 lattice samples a pixel (--aa 16,
+# a 16x16 grid).  Frames per second = frames / wall time of the whole
+# glsplay run (start-up, context, upload, PNG writing included); the best
+# of BB_REPEAT runs (default 3), the backends interleaved, since the
+# machine may be shared.  Also the renderer alone (bench/play_bench: 200
+# frames of the terrain, colour and depth read back, no files).  Writes
+# docs/backends.txt.  Not a pass/fail test.
+#   BB_FRAMES (default 36) single-pass frames; BB_AA_FRAMES (default 3)
+#   frames at 256 samples; BB_BACKENDS (default: "egl osmesa", those built)
+B=${1:-build}
+FRAMES=${BB_FRAMES:-36}
+AA_FRAMES=${BB_AA_FRAMES:-3}
+REPEAT=${BB_REPEAT:-3}
+OUT=docs/backends.txt
+t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
+export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+
+backends=""
+for be in ${BB_BACKENDS:-egl osmesa}; do
+    if "$B/glsplay" --backend "$be" --help >/dev/null 2>&1; then backends="$backends $be"
+    else echo "note: this glsplay has no $be backend"; fi
+done
+[ -n "$backends" ] || { echo "bench-backends: no backend to measure" >&2; exit 1; }
+
+# the inputs
+"$B/glsroad" examples/road/demo.road -o "$t/road" >/dev/null &&
+    "$B/glsc" -I "$B/scenelib.glsb" -I "$t/road" -o "$t/road.glsb" "$t/road/road.scene" &&
+    "$B/bench/play_bench" --write "$t" || exit 1
+ROAD="$t/road.glsb --camera examples/road/rig/left.cam --trajectory $t/road/trajectory.txt --background 0.55,0.7,0.9"
+TERRAIN="$t/terrain.glsb --camera $t/rig.cam --trajectory $t/trajectory.txt"
+
+now() { date +%s.%N; }
+# fps BACKEND FRAMES SCENE-ARGS...: frames per second of one glsplay run
+fps() {
+    be=$1 n=$2
+    shift 2
+    rm -rf "$t/out"
+    t0=$(now)
+    # shellcheck disable=SC2068
+    "$B/glsplay" $@ --frames "0:$n" --outputs image --backend "$be" -o "$t/out" 2>"$t/err" ||
+        { cat "$t/err" >&2; exit 1; }
+    t1=$(now)
+    awk -v n="$n" -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", n / (b - a) }'
+}
+# row NAME FRAMES ARGS...: a table row, the best of REPEAT runs of each
+# backend, interleaved
+row() {
+    name=$1 n=$2
+    shift 2
+    for be in $backends; do eval "best_$be=0"; done
+    i=0
+    while [ $i -lt "$REPEAT" ]; do
+        for be in $backends; do
+            f=$(fps "$be" "$n" "$@") || exit 1
+            eval "b=\$best_$be"
+            eval "best_$be=$(awk -v x="$f" -v y="$b" 'BEGIN { print (x > y ? x : y) }')"
+        done
+        i=$((i + 1))
+    done
+    printf '| %s |' "$name"
+    for be in $backends; do eval "printf ' %s |' \"\$best_$be\""; done
+    printf '\n'
+}
+
+load0=$(cut -d' ' -f1 /proc/loadavg)
+{
+echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(uname -sr)"
+for be in $backends; do
+    "$B/glsplay" $TERRAIN --explain --backend "$be" >"$t/plan" 2>/dev/null
+    grep -E '^(backend|GL_RENDERER):' "$t/plan"
+done
+echo "GPU: none on this machine (no device platform GPU; EGL renders with Mesa's llvmpipe through the"
+echo "surfaceless platform); no GPU figures are given"
+echo "date: $(date -u +%Y-%m-%d)"
+echo
+echo "glsplay frames per second, 640x480, image output only, best of $REPEAT runs"
+echo "(whole glsplay run: start-up, upload and PNG writing included):"
+echo
+printf '| sequence, samples a pixel |'
+for be in $backends; do printf ' %s |' "$be"; done
+printf '\n|---|'
+for be in $backends; do printf -- '---|'; done
+printf '\n'
+row "road, $FRAMES frames, 1 (single pass)" "$FRAMES" $ROAD
+row "road, $AA_FRAMES frames, 256 (--aa 16)" "$AA_FRAMES" $ROAD --aa 16
+row "terrain 100,352 triangles, $FRAMES frames, 1" "$FRAMES" $TERRAIN
+row "terrain 100,352 triangles, $AA_FRAMES frames, 256 (--aa 16)" "$AA_FRAMES" $TERRAIN --aa 16
+echo
+echo "renderer alone (bench/play_bench: terrain, 200 frames, colour + depth read-back, no files), best of $REPEAT:"
+for be in $backends; do
+    best=0
+    i=0
+    while [ $i -lt "$REPEAT" ]; do
+        f=$("$B/bench/play_bench" --backend "$be" | awk '{print $2}') || exit 1
+        best=$(awk -v x="$f" -v y="$best" 'BEGIN { print (x > y ? x : y) }')
+        i=$((i + 1))
+    done
+    echo "  $be: $best frames/s"
+done
+echo
+echo "load average (1 min, other work on the machine included): $load0 before, $(cut -d' ' -f1 /proc/loadavg) after"
+} >"$OUT"
+cat "$OUT"
