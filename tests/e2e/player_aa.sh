@@ -118,16 +118,18 @@ exact2 aa_usage_memory "glsplay: error: --aa-memory needs MB in 16..1048576, got
 # speed), and millions of tiles of the lattice's fine framebuffer; the
 # projection is made after 2 s, and the render is stopped once it is there
 long_render() { # NAME UNITS COUNT_RE PLAY_OPTIONS...
+    # each run its own file: a killed run still writing (seen under load)
+    # must not put its note into the next run's
     name=$1 units=$2 count=$3
     shift 3
-    $PLAY $S -o "$t/long" --aa 4096 --size 640x480 --outputs image "$@" 2>"$t/err" &
+    $PLAY $S -o "$t/long" --aa 4096 --size 640x480 --outputs image "$@" 2>"$t/err_$name" &
     pid=$!
     i=0
-    while [ $i -lt 240 ] && ! grep -q "estimated render time" "$t/err"; do sleep 0.25; i=$((i + 1)); done
+    while [ $i -lt 240 ] && ! grep -q "estimated render time" "$t/err_$name"; do sleep 0.25; i=$((i + 1)); done
     kill "$pid" 2>/dev/null
     wait "$pid" 2>/dev/null
     grep -q "^glsplay: note: estimated render time [0-9a-z ]*: 1 camera frame x $count anti-aliasing $units x [0-9.]* [mu]*s (measured on the first [0-9]* $units; --explain shows the plan)\$" \
-        "$t/err" && ok "$name" || fail "$name" "$(cat "$t/err")"
+        "$t/err_$name" && ok "$name" || fail "$name" "$(cat "$t/err_$name")"
 }
 long_render aa_estimate_before_long_render passes 16777216 --pattern stratified
 long_render aa_estimate_before_long_render_lattice tiles '[0-9]*'
