@@ -152,7 +152,9 @@ rv3 road_edge_point(const road_frame *f, const road_edge *e);
 long road_stations(const road_geo *g, double u0, double u1, const road_edge *edges, int nedges, double **st);
 
 /* Write the scene: DIR/road.scene and DIR/roadobj/ (Tree, Car).  Scene text
- * goes into the buffers given (the caller writes them atomically). */
+ * goes into the buffers given (the caller writes them atomically).  On
+ * error -1 and the message in err; the caller frees the buffers' text
+ * either way (what these functions free they leave NULL). */
 typedef struct {
     char *text;
     size_t len;

@@ -524,6 +524,7 @@ int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf
     if (n < 0) {
         fclose(f);
         free(scene->text);
+        scene->text = NULL; /* the caller frees the buffers after an error too */
         return -1;
     }
     fputs("// road surface\n", f);
@@ -620,6 +621,7 @@ int road_emit_lanes(const road_geo *g, road_buf *out, char *err, size_t errlen)
         if (n < 0) {
             fclose(f);
             free(out->text);
+            out->text = NULL;
             if (n == -2)
                 return too_fine(d, err, errlen, "the lane polylines (lanes.txt)");
             return snprintf(err, errlen, "%s: error: out of memory", d->file), -1;

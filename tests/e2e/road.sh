@@ -75,6 +75,10 @@ err_case trees "${P}${S}trees 1e-5 1\n" "6:1: error: the 'trees' lines place 3.0
 # millions of vertices (estimated from the curvature, refused at once)
 H=$(awk 'BEGIN { for (i = 0; i <= 800; i++) { a = i * 3.14159265 / 4; printf "point %.3f %.3f %.3f\\n", 40 * cos(a), i * 0.5, 40 * sin(a) } }')
 err_case tolerance "${H}${S}frames 2\ntolerance 1e-6\n" "804:1: error: 22668.535 m of road within tolerance 1e-06 m and max_segment 10 m need about 8.67e+06 vertices for its surface and lines, more than the 4194304 allowed; raise the tolerance"
+# over the vertex limit while tessellating (the estimate, from the centre
+# line, cannot see edges a billion metres out): an error, not a crash (the
+# scene's text was freed twice: glsroad aborted)
+err_case vertices_while_tessellating "${P}${S}verge 1\nlane_width 1e9\n" "1:1: error: the road's surface and lines within tolerance 0.001 m (max_segment 10 m) need more than 4194304 vertices; raise the tolerance or max_segment"
 S257=$(awk 'BEGIN { for (i = 0; i <= 256; i++) printf "speed_at time %d 10\\n", i }')
 err_case profile_points "${P}${S257}" "261:1: error: a profile has at most 256 points"
 V257=$(awk 'BEGIN { for (i = 0; i <= 256; i++) printf "vehicle v%d\\n", i }')
