@@ -3,6 +3,7 @@
  *
  *   glsroad ROAD.road -o DIR
  *   glsroad --camera-at FRAME TRAJECTORY CAMERA   (camera file on stdout)
+ *   glsroad --list-keys                           (the keys, as spec tables)
  */
 #include <errno.h>
 #include <stdio.h>
@@ -20,11 +21,13 @@
 static const char USAGE[] =
     "usage: glsroad ROAD.road -o DIR\n"
     "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"
+    "       glsroad --list-keys\n"
     "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n"
     "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt,\n"
     "replacing a previous output in DIR as a whole.\n"
     "The second prints CAMERA (a camera file relative to the rig) with R and T\n"
     "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"
+    "The third prints the keys of a road description, as spec/road.md's tables.\n"
     "See spec/road.md.\n";
 
 static int usage_error(const char *fmt, const char *arg)
@@ -187,6 +190,10 @@ int main(int argc, char **argv)
         if (argc != 5)
             return usage_error("%s takes FRAME TRAJECTORY CAMERA", "--camera-at");
         return camera_at(argv[2], argv[3], argv[4]);
+    }
+    if (argc == 2 && !strcmp(argv[1], "--list-keys")) {
+        road_list_keys(stdout);
+        return 0; /* main's exit check reports a failed write */
     }
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
