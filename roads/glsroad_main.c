@@ -17,26 +17,22 @@
 #include "stdout_check.h"
 #include "textfile.h"
 #include "trajectory.h"
+#include "usage.h"
 
-static const char USAGE[] =
-    "usage: glsroad ROAD.road -o DIR\n"
-    "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"
-    "       glsroad --list-keys\n"
-    "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n"
-    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt,\n"
-    "replacing a previous output in DIR as a whole.\n"
-    "The second prints CAMERA (a camera file relative to the rig) with R and T\n"
-    "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"
-    "The third prints the keys of a road description, as spec/road.md's tables.\n"
-    "See spec/road.md.\n";
+#define USAGE                                                                          \
+    "usage: glsroad ROAD.road -o DIR\n"                                                \
+    "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"                             \
+    "       glsroad --list-keys\n"                                                     \
+    "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n" \
+    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt,\n"    \
+    "replacing a previous output in DIR as a whole.\n"                                 \
+    "The second prints CAMERA (a camera file relative to the rig) with R and T\n"      \
+    "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"            \
+    "The third prints the keys of a road description, as spec/road.md's tables.\n"     \
+    "See spec/road.md.\n"
 
-static int usage_error(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "glsroad: error: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n%s", USAGE);
-    return 2;
-}
+/* a usage error: the message, then the usage text */
+#define usage_error(...) gls_usage_error("glsroad", "\n" USAGE, __VA_ARGS__)
 
 static int make_road(const char *in, const char *dir)
 {
