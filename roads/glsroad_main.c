@@ -162,11 +162,8 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
         } else if (key) {
             double *v = p[skip] == 'R' ? R : T;
             int m = p[skip] == 'R' ? 9 : 3;
-            printf("%c", p[skip]);
-            for (int i = 0; i < m; i++) {
-                printf(" ");
-                road_num(stdout, v[i]);
-            }
+            printf("%c ", p[skip]);
+            road_nums(stdout, v, m, " ");
             printf("\n");
         } else {
             fwrite(p, 1, n, stdout);

@@ -204,6 +204,8 @@ void road_quat_from_R(const double R[9], double q[4]);
 int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_buf *tum, road_buf *veh, char *err,
                      size_t errlen);
 
-/* Shortest round-trip number text. */
+/* Shortest round-trip number text (roads/road_text.c): v, and v[0..n)
+ * with sep between them. */
 void road_num(FILE *f, double v);
+void road_nums(FILE *f, const double *v, int n, const char *sep);
 #endif

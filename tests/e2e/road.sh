@@ -91,6 +91,15 @@ err_case option_trees "${P}${S}trees 10 2 middle\n" "6:12: error: 'trees': unexp
 # something missing, at the first word of the last line
 err_case missing_at_last_key "${P}  fps 25\n" "5:3: error: no speed profile: give at least one 'speed_at distance 0 SPEED' (m/s)"
 err_case across_at_key "  point 0 0 0\n  point 0 0 1\n${S}" "1:3: error: a curve of degree 3 needs at least 4 control points; there are 2"
+# the curve's own errors are located errors too, with the line and a caret
+printf '%b' "point 0 0 0\npoint 0 0 0\npoint 0 0 0\npoint 0 0 0\n${S}" >"$t/tangent.road"
+"$R" "$t/tangent.road" -o "$t/o_tangent" 2>"$t/stderr"
+if [ "$(head -1 "$t/stderr")" = "$t/tangent.road:1:1: error: the curve has a zero or undefined tangent near u = 0 (coincident control points?)" ] &&
+    [ "$(sed -n 2p "$t/stderr")" = "point 0 0 0" ] && [ "$(sed -n 3p "$t/stderr")" = "^" ]; then
+    ok road_error_tangent_excerpt
+else
+    fail road_error_tangent_excerpt "$(cat "$t/stderr")"
+fi
 err_case fold "degree 2\npoint 0 0 0\npoint 0 0 10\npoint -8 0 10 0.7071067811865476\npoint -8 0 0\nknots 0 0 0 0.5 1 1 1\nverge 0\n${S}" " error: the road folds over itself near distance 8.981 m: the curve radius there (3.921 m) is smaller than the lateral offset of an edge (4.000 m); widen the curve or narrow the road"
 
 
