@@ -89,7 +89,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends units programs
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -314,6 +314,11 @@ $(B)/libglsroad.a: $(ROAD_OBJ) roads
 	$(ARCHIVE)
 $(B)/glsroad: $(B)/roads/glsroad_main.o $(LIB_roads) $(LIB_runtime)
 	$(CC) $(LDFLAGS) $< $(LIB_roads) $(LIB_runtime) -o $@ $(LDLIBS)
+# spec/road.md's tables of keys, written from the parser's table
+# (roads/road_keys.c) by glsroad --list-keys; tests/e2e/road_keys.sh checks
+# that the spec holds them.
+spec-road-keys: $(B)/glsroad
+	sh tools/spec_road_keys.sh --write $(B)/glsroad spec/road.md
 $(B)/road_montage: $(B)/examples/road/montage.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 

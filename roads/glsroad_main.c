@@ -3,6 +3,7 @@
  *
  *   glsroad ROAD.road -o DIR
  *   glsroad --camera-at FRAME TRAJECTORY CAMERA   (camera file on stdout)
+ *   glsroad --list-keys                           (the keys, as spec tables)
  */
 #include <errno.h>
 #include <stdio.h>
@@ -16,24 +17,22 @@
 #include "stdout_check.h"
 #include "textfile.h"
 #include "trajectory.h"
+#include "usage.h"
 
-static const char USAGE[] =
-    "usage: glsroad ROAD.road -o DIR\n"
-    "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"
-    "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n"
-    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt,\n"
-    "replacing a previous output in DIR as a whole.\n"
-    "The second prints CAMERA (a camera file relative to the rig) with R and T\n"
-    "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"
-    "See spec/road.md.\n";
+#define USAGE                                                                          \
+    "usage: glsroad ROAD.road -o DIR\n"                                                \
+    "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"                             \
+    "       glsroad --list-keys\n"                                                     \
+    "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n" \
+    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt,\n"    \
+    "replacing a previous output in DIR as a whole.\n"                                 \
+    "The second prints CAMERA (a camera file relative to the rig) with R and T\n"      \
+    "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"            \
+    "The third prints the keys of a road description, as spec/road.md's tables.\n"     \
+    "See spec/road.md.\n"
 
-static int usage_error(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "glsroad: error: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n%s", USAGE);
-    return 2;
-}
+/* a usage error: the message, then the usage text */
+#define usage_error(...) gls_usage_error("glsroad", "\n" USAGE, __VA_ARGS__)
 
 static int make_road(const char *in, const char *dir)
 {
@@ -163,11 +162,8 @@ static int camera_at(const char *frame_s, const char *traj_path, const char *cam
         } else if (key) {
             double *v = p[skip] == 'R' ? R : T;
             int m = p[skip] == 'R' ? 9 : 3;
-            printf("%c", p[skip]);
-            for (int i = 0; i < m; i++) {
-                printf(" ");
-                road_num(stdout, v[i]);
-            }
+            printf("%c ", p[skip]);
+            road_nums(stdout, v, m, " ");
             printf("\n");
         } else {
             fwrite(p, 1, n, stdout);
@@ -187,6 +183,10 @@ int main(int argc, char **argv)
         if (argc != 5)
             return usage_error("%s takes FRAME TRAJECTORY CAMERA", "--camera-at");
         return camera_at(argv[2], argv[3], argv[4]);
+    }
+    if (argc == 2 && !strcmp(argv[1], "--list-keys")) {
+        road_list_keys(stdout);
+        return 0; /* main's exit check reports a failed write */
     }
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {

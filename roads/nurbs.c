@@ -388,13 +388,14 @@ void nurbs_free(nurbs *c)
     memset(c, 0, sizeof *c);
 }
 
-/* Index i of the table interval [tu[i], tu[i+1]] holding u. */
-static int tab_find_u(const nurbs *c, double u)
+/* Index i of the table interval [t[i], t[i+1]] holding x: the last entry
+   of t[0..n) at or below x (t increasing: the table's tu or ts). */
+static int tab_find(const double *t, int n, double x)
 {
-    int lo = 0, hi = c->ntab - 1;
+    int lo = 0, hi = n - 1;
     while (lo < hi) {
         int mid = (lo + hi + 1) / 2;
-        if (c->tu[mid] <= u)
+        if (t[mid] <= x)
             lo = mid;
         else
             hi = mid - 1;
@@ -408,7 +409,7 @@ double nurbs_s_of_u(const nurbs *c, double u)
         return 0;
     if (u >= nurbs_umax(c))
         return c->length;
-    int i = tab_find_u(c, u);
+    int i = tab_find(c->tu, c->ntab, u);
     /* table intervals never straddle a knot, so one rule suffices */
     return c->ts[i] + gl_arc(c, c->tu[i], u);
 }
@@ -419,14 +420,7 @@ double nurbs_u_of_s(const nurbs *c, double s)
         return nurbs_umin(c);
     if (s >= c->length)
         return nurbs_umax(c);
-    int lo = 0, hi = c->ntab - 1;
-    while (lo < hi) {
-        int mid = (lo + hi + 1) / 2;
-        if (c->ts[mid] <= s)
-            lo = mid;
-        else
-            hi = mid - 1;
-    }
+    int lo = tab_find(c->ts, c->ntab, s);
     double ua = c->tu[lo], ub = c->tu[lo + 1], sa = c->ts[lo], sb = c->ts[lo + 1];
     double a = ua, b = ub;
     double u = sb > sa ? ua + (ub - ua) * (s - sa) / (sb - sa) : ua;

@@ -37,7 +37,8 @@ enum { MARK_NONE, MARK_SOLID, MARK_DASHED, MARK_DOUBLE };
  * constant beyond the last point. */
 typedef struct {
     int by_time;       /* speed profiles: 1 = x is time (s), 0 = distance (m) */
-    int n, cap;
+    int n;
+    size_t cap;
     double *x, *v;
     int line;          /* first line that defined it, for messages */
 } road_profile;
@@ -64,7 +65,8 @@ typedef struct {
     const char *text;  /* the description, borrowed from road_parse's caller */
     size_t len;        /* (keep it while errors may be reported)             */
     /* curve */
-    int degree, npts, ncap;
+    int degree, npts;
+    size_t ncap;
     double *pts, *w;   /* 3 per point; 1 per point */
     int nknots;
     double *knots;     /* NULL: clamped uniform */
@@ -98,18 +100,24 @@ typedef struct {
     double body_freq, body_damping, accel_pitch, roughness, wheelbase;
     unsigned long seed;
     road_vehicle *veh;
-    int nveh, vcap;
+    int nveh;
+    size_t vcap;
 } road_desc;
 
-/* Parse a description.  On error: -1 and "file:line: error: message" in
- * err.  road_desc_free releases what it allocated.  d keeps pointing at
- * text (for errors found later): keep it alive as long as d. */
+/* Parse a description (the keys: roads/road_keys.c).  On error: -1 and
+ * "file:line:col: error: message", the line and a caret, in err.
+ * road_desc_free releases what it allocated.  d keeps pointing at text
+ * (for errors found later): keep it alive as long as d. */
 int road_parse(const char *text, size_t len, const char *fname, road_desc *d, char *err, size_t errlen);
 void road_desc_free(road_desc *d);
 /* "file:LINE:COL: error: message", COL that of the key on LINE, then the
- * line and a caret (LINE 0: the last line).  Returns -1. */
+ * line and a caret (LINE 0: the last line), through base's located error
+ * writer (gls_text_error).  Returns -1. */
 int road_error_at(const road_desc *d, int line, char *err, size_t errlen, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
+/* The keys a description may hold, as spec/road.md's Markdown tables
+ * (glsroad --list-keys; roads/road_keys_doc.c). */
+void road_list_keys(FILE *f);
 
 /* ---- geometry ----------------------------------------------------------- */
 
@@ -152,7 +160,9 @@ rv3 road_edge_point(const road_frame *f, const road_edge *e);
 long road_stations(const road_geo *g, double u0, double u1, const road_edge *edges, int nedges, double **st);
 
 /* Write the scene: DIR/road.scene and DIR/roadobj/ (Tree, Car).  Scene text
- * goes into the buffers given (the caller writes them atomically). */
+ * goes into the buffers given (the caller writes them atomically).  On
+ * error -1 and the message in err; the caller frees the buffers' text
+ * either way (what these functions free they leave NULL). */
 typedef struct {
     char *text;
     size_t len;
@@ -194,6 +204,8 @@ void road_quat_from_R(const double R[9], double q[4]);
 int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_buf *tum, road_buf *veh, char *err,
                      size_t errlen);
 
-/* Shortest round-trip number text. */
+/* Shortest round-trip number text (roads/road_text.c): v, and v[0..n)
+ * with sep between them. */
 void road_num(FILE *f, double v);
+void road_nums(FILE *f, const double *v, int n, const char *sep);
 #endif

@@ -358,15 +358,6 @@ typedef struct {
     double q_prev[4]; /* the last TUM quaternion, for continuity         */
 } outctx;
 
-static void nums(FILE *f, const double *v, int n)
-{
-    for (int i = 0; i < n; i++) {
-        if (i)
-            fputc(' ', f);
-        road_num(f, v[i]);
-    }
-}
-
 static int write_pose(void *vctx, const road_pose *p)
 {
     outctx *o = vctx;
@@ -374,9 +365,9 @@ static int write_pose(void *vctx, const road_pose *p)
     fprintf(o->traj, "%ld ", p->frame);
     road_num(o->traj, p->time);
     fputc(' ', o->traj);
-    nums(o->traj, p->R, 9);
+    road_nums(o->traj, p->R, 9, " ");
     fputc(' ', o->traj);
-    nums(o->traj, p->T, 3);
+    road_nums(o->traj, p->T, 3, " ");
     fputc('\n', o->traj);
     /* camera-to-world: Rw = R^T, position c = -R^T T */
     double Rw[9];
@@ -397,7 +388,7 @@ static int write_pose(void *vctx, const road_pose *p)
         double r[12] = {K[0], K[1], K[2], kt.x, K[3], K[4], K[5], kt.y, K[6], K[7], K[8], kt.z};
         memcpy(row, r, sizeof row);
     }
-    nums(o->kitti, row, 12);
+    road_nums(o->kitti, row, 12, " ");
     fputc('\n', o->kitti);
     /* TUM: q and -q are the same rotation; frame 0 takes w >= 0, every
        later frame the sign nearer the previous quaternion, so the sequence
@@ -409,7 +400,7 @@ static int write_pose(void *vctx, const road_pose *p)
             q[i] = -q[i];
     memcpy(o->q_prev, q, sizeof q);
     double tum[8] = {p->time, c.x, c.y, c.z, q[0], q[1], q[2], q[3]};
-    nums(o->tum, tum, 8);
+    road_nums(o->tum, tum, 8, " ");
     fputc('\n', o->tum);
     /* other vehicles at this time */
     for (int i = 0; i < d->nveh; i++) {
@@ -430,10 +421,10 @@ static int write_pose(void *vctx, const road_pose *p)
         fprintf(o->veh, "%ld ", p->frame);
         road_num(o->veh, p->time);
         fprintf(o->veh, " %s ", v->name);
-        nums(o->veh, M, 9);
+        road_nums(o->veh, M, 9, " ");
         double t3[3] = {P.x, P.y, P.z};
         fputc(' ', o->veh);
-        nums(o->veh, t3, 3);
+        road_nums(o->veh, t3, 3, " ");
         fputc('\n', o->veh);
     }
     return ferror(o->traj) || ferror(o->kitti) || ferror(o->tum) || ferror(o->veh) ? -1 : 0;

@@ -144,15 +144,11 @@ static int write_set(const char *tmp, const char *dir, const road_out_file *f, i
         char *p = join(tmp, f[i].name);
         if (!p)
             return fail(err, errlen, "out of memory");
-        if (slash) {
-            p[strlen(tmp) + 1 + (size_t)(slash - f[i].name)] = 0;
-            if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-                int e = errno;
-                free(p);
-                return fail(err, errlen, "cannot create directory %s/%.*s: %s", dir, (int)(slash - f[i].name),
-                            f[i].name, strerror(e));
-            }
-            p[strlen(tmp) + 1 + (size_t)(slash - f[i].name)] = '/';
+        if (slash && gls_mkdir_parents(p) != 0) { /* roadobj/ */
+            int e = errno;
+            free(p);
+            return fail(err, errlen, "cannot create directory %s/%.*s: %s", dir, (int)(slash - f[i].name),
+                        f[i].name, strerror(e));
         }
         int r = gls_write_file_atomic(p, f[i].data, f[i].len);
         int e = errno;

@@ -9,6 +9,7 @@
 #include "player.h"
 #include "stdout_check.h"
 #include "trajectory.h"
+#include "usage.h"
 
 static const char usage_text[] =
     "usage: glsplay BUNDLE.glsb --camera CAM [--camera CAM ...] -o OUTDIR [options]\n"
@@ -74,13 +75,7 @@ static const char usage_text[] =
     "  --help                 this text\n"
     "exit status: 0 success, 1 input error, 2 usage error\n";
 
-static int usage_error(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "glsplay: error: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, " (try glsplay --help)\n");
-    return 2;
-}
+#define usage_error(...) gls_usage_error("glsplay", " (try glsplay --help)\n", __VA_ARGS__)
 
 static int parse_outputs(const char *s, unsigned *bits)
 {

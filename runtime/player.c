@@ -1,6 +1,13 @@
 /* gls_play(): load, check everything, then render and write (player.h).
  * Every input is checked before the first pixel is drawn, so an error in
- * the last camera file leaves no output of the first camera behind. */
+ * the last camera file leaves no output of the first camera behind.
+ *
+ * Over 500 lines because it is one job, the order of a run: check every
+ * input, then for each camera (or each frame of a trajectory) render,
+ * write and record progress, all through one session's state.  What has a
+ * job of its own is elsewhere already (outputs.c, aa_render.c,
+ * frame_record.c, progress.c, trajectory.c); splitting the camera and the
+ * trajectory loops apart would cut through that shared state. */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>

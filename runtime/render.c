@@ -6,6 +6,11 @@
  * fixed-function state into the same LLVM code a GLSL shader would give,
  * and there is no shader source to embed, compile and diagnose.  Matrices
  * go in with glLoadMatrixf after being formed in double on the CPU.
+ *
+ * Over 500 lines because it is the one file that speaks GL (the context
+ * aside, glctx_*.c): textures, framebuffers, state per draw key, the
+ * near-chunk re-anchoring and the read-backs all share the renderer's GL
+ * objects, and keeping GL here keeps the rest of the runtime free of it.
  */
 #include <GL/gl.h>
 #include <GL/glext.h>

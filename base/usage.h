@@ -1,0 +1,10 @@
+/* The usage error of the tools (bad arguments): "TOOL: error: MESSAGE" on
+ * standard error, then what the tool adds (its usage text after a
+ * newline, or a hint on the same line), and exit status 2. */
+#ifndef GLS_USAGE_H
+#define GLS_USAGE_H
+
+/* Print "TOOL: error: " and the formatted message, then after (verbatim)
+ * to stderr.  Returns 2, the usage error's exit status. */
+int gls_usage_error(const char *tool, const char *after, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+#endif
