@@ -119,10 +119,13 @@ $(B)/%.o: %.c
 $(B)/gen/lexer.c: compiler/lexer.re $(B)/gen/grammar.h
 	@mkdir -p $(dir $@)
 	re2c --no-generation-date --no-version -W -o $@ $<
+# lemon leaves grammar.h alone when its content would not change: touch it,
+# or it stays older than grammar.y and the grammar is made again on every
+# run (and everything that includes grammar.h recompiled).
 $(B)/gen/grammar.c $(B)/gen/grammar.h: compiler/grammar.y
 	@mkdir -p $(B)/gen
 	cp compiler/grammar.y $(B)/gen/grammar.y
-	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y
+	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y && touch grammar.h
 $(B)/gen/%.o: $(B)/gen/%.c
 	$(CC) $(CFLAGS) $(INC_compiler) -Wno-unused-parameter -Wno-unused-variable $(DEPFLAGS) -c $< -o $@
 $(COMPILER_OBJ): | $(B)/gen/grammar.h
