@@ -45,34 +45,6 @@ uint32_t gls_add_source(gls_compiler *c, const char *path)
     return c->nsources++;
 }
 
-/* Compile a source file into a new unit named name. */
-gls_unit *gls_unit_from_file(gls_compiler *c, const char *name, const char *path, gls_loc loc)
-{
-    char why[512];
-    size_t len, mapped;
-    char *text = gls_load_source(path, GLS_MAX_INPUT_BYTES, &len, &mapped, why, sizeof why);
-    if (!text) {
-        gls_error_at(&c->diag, loc, "%s", why);
-        return NULL;
-    }
-    gls_unit *u = calloc(1, sizeof *u);
-    uint32_t sf = gls_add_source(c, path);
-    if (!u || !(u->name = strdup(name)) || sf == GLS_NONE) {
-        gls_release_file(text, mapped);
-        gls_unit_free(u);
-        gls_error_at(&c->diag, loc, "out of memory");
-        return NULL;
-    }
-    u->src.path = c->sources[sf];
-    u->src.text = text;
-    u->src.len = len;
-    u->src.mapped = mapped;
-    u->src_file = sf;
-    u->is_top = c->top_name && strcmp(name, c->top_name) == 0;
-    gls_compile_source(u, &c->diag);
-    return u;
-}
-
 int gls_register_unit(gls_compiler *c, gls_unit *u)
 {
     if (gls_push_ptr((void ***)&c->all, &c->nall, &c->allcap, u) || gls_strmap_put(&c->units, u->name, u)) {
@@ -82,27 +54,25 @@ int gls_register_unit(gls_compiler *c, gls_unit *u)
     return 0;
 }
 
-/* The unit called name: already loaded, or found through the roots. */
-gls_unit *gls_get_unit(gls_compiler *c, const char *name, gls_loc loc)
+/* What name stands for: already found, or found through the roots. */
+gls_tpl *gls_get_tpl(gls_compiler *c, const char *name, gls_loc loc)
 {
-    gls_unit *u = gls_strmap_get(&c->units, name);
-    if (u)
-        return u;
+    gls_tpl *t = gls_strmap_get(&c->templates, name);
+    if (t)
+        return t;
     for (size_t i = 0; i < c->nroots; i++) {
         gls_root *r = &c->roots[i];
         if (r->lib) {
-            uint32_t oi = gls_bundle_find_object(r->lib, name);
-            if (oi != GLS_NONE) {
-                u = gls_unit_from_lib(c, r->lib, oi, loc);
-                return u && gls_register_unit(c, u) == 0 ? u : NULL;
-            }
+            uint32_t oi = gls_bundle_find_object(r->lib, name), ti = gls_bundle_find_template(r->lib, name);
+            if (oi != GLS_NONE || ti != GLS_NONE)
+                return gls_tpl_from_lib(c, r->lib, name, oi, ti, loc);
             continue;
         }
         char *path = gls_name_to_path(r->path, name, ".scene");
         if (path && gls_is_file(path)) {
-            u = gls_unit_from_file(c, name, path, loc);
+            t = gls_tpl_from_file(c, name, path, loc);
             free(path);
-            return u && gls_register_unit(c, u) == 0 ? u : NULL;
+            return t;
         }
         free(path);
     }

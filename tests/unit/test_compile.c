@@ -1,11 +1,14 @@
 /* Unit tests of the compiler API: texture decoding orientation and alpha
- * binarisation, TGA channel counts, library override order, and the precision of far-away
- * coordinates through source text, compile, write and read. */
+ * binarisation, TGA channel counts, library override order, the precision of far-away
+ * coordinates through source text, compile, write and read, and the sine
+ * and cosine of angles in degrees. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "atomic_write.h"
 #include "check.h"
 #include "compile.h"
+#include "mathfn.h"
 
 static gls_bundle *compile(const char **roots, int nroots, const char *top)
 {
@@ -187,11 +190,36 @@ static void test_earlier_root_overrides_library(void)
     gls_bundle_free(b);
 }
 
+/* Angles are reduced exactly before any conversion to radians
+ * (spec/language.md 5.2): multiples of 90 degrees are exact, also far from
+ * 0, and so are 30, 45 and 60; a zero is +0; other angles agree with the
+ * C library's result in radians (which is off by more near its zeros, its
+ * angle in radians being rounded). */
+static void test_trig_degrees_exact(void)
+{
+    static const double s30[12] = {0, 0.5, 0.8660254037844386, 1, 0.8660254037844386, 0.5,
+                                   0, -0.5, -0.8660254037844386, -1, -0.8660254037844386, -0.5};
+    for (int k = -48; k <= 48; k++) {
+        int i = ((k % 12) + 12) % 12;
+        double a = 30.0 * k, s = gls_sin_deg(a), c = gls_cos_deg(a);
+        CHECK_MSG(s == s30[i] && !(s == 0 && signbit(s)), "sin(%g) = %.17g", a, s);
+        CHECK_MSG(c == s30[(i + 3) % 12] && !(c == 0 && signbit(c)), "cos(%g) = %.17g", a, c);
+    }
+    CHECK(gls_sin_deg(180) == 0 && gls_cos_deg(90) == 0 && gls_cos_deg(-90) == 0);
+    CHECK(gls_sin_deg(45) == gls_cos_deg(45) && gls_sin_deg(45) == 0.7071067811865476);
+    CHECK(gls_sin_deg(360.0 * 1e9 + 90) == 1 && gls_cos_deg(-360.0 * 1e9 + 180) == -1);
+    for (double a = -720; a <= 720; a += 7.25) {
+        double r = a * 3.141592653589793 / 180;
+        CHECK_MSG(fabs(gls_sin_deg(a) - sin(r)) <= 1e-14 && fabs(gls_cos_deg(a) - cos(r)) <= 1e-14, "angle %g", a);
+    }
+}
+
 int main(void)
 {
     RUN(test_texture_orientation_and_alpha);
     RUN(test_tga_rgb_and_grey);
     RUN(test_far_coordinates_exact_through_bundle);
     RUN(test_earlier_root_overrides_library);
+    RUN(test_trig_degrees_exact);
     CHECK_EXIT();
 }
