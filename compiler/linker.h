@@ -65,8 +65,8 @@ struct gls_compiler {
     gls_unit **stack;        /* DFS path, for cycle messages                */
     size_t depth, stackcap;
     const char *top_name;    /* the top object's name while it is loaded    */
-    const char *build_dir;   /* where the build generates the scene library
-                                (hint in "unknown" messages), or NULL      */
+    const char *build_dir;   /* where the build generates the scene library's
+                                textures (hint in "unknown texture"), or NULL */
 };
 
 /* Errors with no source position. */
