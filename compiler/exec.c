@@ -57,12 +57,13 @@ static void run_instr(gls_parse *ctx, const gls_stmt *s)
     ctx->nargs = 0;
     ctx->too_many_args = 0;
     for (const gls_expr *e = s->args.head; e; e = e->next) {
-        gls_val v = sema_eval(ctx, e);
         /* keep counting past the last slot, so the message says how many */
         if (ctx->nargs >= GLS_MAX_ARGS)
             ctx->too_many_args = 1;
+        else if (e->kind == EX_NUM) /* the common case, without a copy */
+            ctx->args[ctx->nargs] = (gls_val){.kind = VAL_NUM, .num = e->num, .line = e->tok.line, .col = e->tok.col};
         else
-            ctx->args[ctx->nargs] = v;
+            ctx->args[ctx->nargs] = sema_eval(ctx, e);
         ctx->nargs++;
     }
     sema_stmt(ctx, s->name, s->parens);

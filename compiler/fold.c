@@ -274,7 +274,7 @@ gls_val sema_eval(gls_parse *ctx, const gls_expr *e)
     case EX_CALL: return eval_fn(ctx, e);
     case EX_NAMED:
         v = sema_eval(ctx, e->a);
-        v.pname = e->tok;
+        v.pname = &e->tok;
         return v;
     case EX_ERR: return at(VAL_ERR, e->tok);
     }

@@ -240,13 +240,13 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     gls_unit *u = ctx->u;
     for (unsigned i = 1; i < n; i++) {
-        gls_tok p = a[i].pname;
+        gls_tok p = *a[i].pname;
         if (a[i].kind == VAL_ERR)
             return; /* already reported */
         if (!sema_need_number(ctx, &a[i]))
             return;
         for (unsigned j = 1; j < i; j++)
-            if (a[j].pname.len == p.len && memcmp(a[j].pname.p, p.p, p.len) == 0) {
+            if (a[j].pname->len == p.len && memcmp(a[j].pname->p, p.p, p.len) == 0) {
                 ERR(ctx, p.line, p.col, "parameter '%.*s' is given twice", (int)p.len, p.p);
                 return;
             }
@@ -259,7 +259,7 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     gls_ref *r = &u->refs[u->nrefs - 1];
     r->args = calloc(n - 1, sizeof *r->args);
     for (unsigned i = 1; r->args && i < n; i++) {
-        gls_tok p = a[i].pname;
+        gls_tok p = *a[i].pname;
         gls_named *g = &r->args[r->nargs];
         if (!(g->name = strndup(p.p, p.len)))
             break;

@@ -32,7 +32,7 @@ typedef struct {
     const char *s;   /* VAL_WORD / VAL_STR: points into the source */
     uint32_t len;
     unsigned line, col;
-    gls_tok pname;   /* a named argument's name; pname.p NULL otherwise */
+    const gls_tok *pname; /* a named argument's name (in its node), or NULL */
 } gls_val;
 
 /* What a name stands for while a file runs. */

@@ -70,11 +70,11 @@ static void describe_kind(const gls_val *v, char *buf, size_t n)
 static int positional(gls_parse *ctx, const sema_instr *ins, const gls_val *a, unsigned n)
 {
     unsigned k = 0;
-    while (k < n && !a[k].pname.p)
+    while (k < n && !a[k].pname)
         k++;
     int named = strcmp(ins->name, "call") == 0;
     if (k < n && (!named || k == 0)) {
-        gls_tok p = a[k].pname;
+        gls_tok p = *a[k].pname;
         if (named)
             ERR(ctx, p.line, p.col, "argument 1 of 'call' must be a quoted name, not a parameter value");
         else
@@ -83,7 +83,7 @@ static int positional(gls_parse *ctx, const sema_instr *ins, const gls_val *a, u
         return -1;
     }
     for (unsigned i = k; i < n; i++)
-        if (!a[i].pname.p) {
+        if (!a[i].pname) {
             ERR(ctx, a[i].line, a[i].col, "argument %u of 'call' must be a parameter value (NAME = value), like the one before it",
                 i + 1);
             return -1;
