@@ -181,6 +181,23 @@ int gls_tpl_object_name(gls_compiler *c, const gls_tpl *t, const double *values,
     return 0;
 }
 
+/* Does the text of a bundle's template declare the parameters and defaults
+ * its table lists?  A bundle made by glsc always does; a damaged or
+ * hostile one may not, and its objects would then be named for values it
+ * does not use. */
+static int tree_matches(const gls_tpl *t)
+{
+    if (t->tree.nparams != t->nparams)
+        return 0;
+    for (unsigned k = 0; k < t->nparams; k++) {
+        gls_tok p = t->tree.pnames[k];
+        if (p.len != strlen(t->pnames[k]) || memcmp(p.p, t->pnames[k], p.len) != 0 ||
+            memcmp(&t->tree.defaults[k], &t->defaults[k], sizeof(double)) != 0)
+            return 0;
+    }
+    return 1;
+}
+
 /* Make t's object for values, named name: import it from t's bundle root
  * when it is there, else run t's tree (parsed from the bundle's text the
  * first time) with the values. */
@@ -201,8 +218,15 @@ static gls_unit *make(gls_compiler *c, gls_tpl *t, const double *values, const c
     if (!t->have_tree) {
         if (t->lib_template == GLS_NONE)
             return NULL; /* a plain bundle object: only its defaults */
-        if (gls_parse_tree(&t->src, &c->diag, &t->tree))
+        int rc = gls_parse_tree(&t->src, &c->diag, &t->tree);
+        if (rc || !tree_matches(t)) {
+            if (!rc)
+                gls_error_at(&c->diag, loc, "the template of '%s' in a search root does not match its source text "
+                             "(other parameters or defaults): rebuild that bundle", t->name);
+            gls_tree_free(&t->tree);
+            t->lib_template = GLS_NONE; /* reported once: no other object is made from it */
             return NULL;
+        }
         t->have_tree = 1;
     }
     gls_named binding[GLS_MAX_PARAMS];
