@@ -34,17 +34,31 @@ static const char *const kind_word[] = {[NAME_CONST] = "constant", [NAME_PARAM] 
  * names are free: a function is only ever followed by '('. */
 static int reserved(gls_parse *ctx, int kind, gls_tok name)
 {
+    /* Which hash buckets hold a word of the language: a name in another
+       bucket is none of them, without comparing it with each (a constant
+       in a loop body is defined once per iteration).  Filled on first
+       use; the words never change. */
+    static unsigned char word_bucket[GLS_MAX_CONSTS_BUCKETS], filled;
+    if (!filled) {
+        for (size_t i = 0; i < sema_nwords; i++)
+            word_bucket[hash_name(sema_words[i], strlen(sema_words[i]))] = 1;
+        for (unsigned m = 0; m < GLS_MODE_COUNT; m++)
+            word_bucket[hash_name(gls_texmode_name[m], strlen(gls_texmode_name[m]))] = 1;
+        filled = 1;
+    }
     const char *what = kind_word[kind];
-    for (size_t i = 0; i < sema_nwords; i++)
-        if (sema_tok_is(name, sema_words[i])) {
-            ERR(ctx, name.line, name.col, "'%s' is an instruction name and cannot be a %s", sema_words[i], what);
-            return 1;
-        }
-    for (unsigned m = 0; m < GLS_MODE_COUNT; m++)
-        if (sema_tok_is(name, gls_texmode_name[m])) {
-            ERR(ctx, name.line, name.col, "'%s' is a texture mode and cannot be a %s", gls_texmode_name[m], what);
-            return 1;
-        }
+    if (word_bucket[hash_name(name.p, name.len)]) {
+        for (size_t i = 0; i < sema_nwords; i++)
+            if (sema_tok_is(name, sema_words[i])) {
+                ERR(ctx, name.line, name.col, "'%s' is an instruction name and cannot be a %s", sema_words[i], what);
+                return 1;
+            }
+        for (unsigned m = 0; m < GLS_MODE_COUNT; m++)
+            if (sema_tok_is(name, gls_texmode_name[m])) {
+                ERR(ctx, name.line, name.col, "'%s' is a texture mode and cannot be a %s", gls_texmode_name[m], what);
+                return 1;
+            }
+    }
     double v;
     if (gls_builtin_const(name.p, name.len, &v)) {
         ERR(ctx, name.line, name.col, "'%.*s' is built in and cannot be a %s", (int)name.len, name.p, what);
@@ -73,6 +87,12 @@ int sema_define(gls_parse *ctx, int kind, gls_tok name, double v)
     ctx->consts[h] = c;
     ctx->defined[ctx->ndefined++] = c;
     return 0;
+}
+
+void sema_set_value(gls_parse *ctx, size_t mark, double v)
+{
+    if (mark < ctx->ndefined)
+        ctx->defined[mark]->value = v;
 }
 
 size_t sema_scope_mark(const gls_parse *ctx)

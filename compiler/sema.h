@@ -56,6 +56,10 @@ int sema_need_number(gls_parse *ctx, const gls_val *a);
 /* Define name (a NAME_* kind) as v in the current scope: 0, or -1 after
  * reporting why not (reserved name, already defined). */
 int sema_define(gls_parse *ctx, int kind, gls_tok name, double v);
+/* Give the name defined at index mark (sema_scope_mark before its
+ * definition) the value v: a loop variable is defined once per loop and
+ * takes each iteration's value this way, without the checks again. */
+void sema_set_value(gls_parse *ctx, size_t mark, double v);
 /* Scopes: a loop body's names are undefined when an iteration ends. */
 size_t sema_scope_mark(const gls_parse *ctx);
 void sema_scope_end(gls_parse *ctx, size_t mark);

@@ -42,8 +42,12 @@ const size_t sema_naliases = sizeof sema_aliases / sizeof sema_aliases[0];
 
 int sema_tok_is(gls_tok t, const char *s)
 {
-    size_t n = strlen(s);
-    return t.len == n && memcmp(t.p, s, n) == 0;
+    /* stops at the first byte that differs, usually the first: defining a
+       name compares it with every word of the language */
+    for (uint32_t i = 0; i < t.len; i++)
+        if (t.p[i] != s[i] || !s[i])
+            return 0;
+    return s[t.len] == 0;
 }
 
 int sema_prim_kind(gls_tok t)
