@@ -78,8 +78,8 @@ LIB_runtime  := $(B)/libglsruntime.a $(LIB_format)
 LIB_roads    := $(B)/libglsroad.a $(LIB_base)
 
 TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay $(B)/glsroad
-# the scene library: textures, the library directory, precompiled library bundle
-SCENELIB := $(B)/textures.stamp $(B)/scenelib.stamp $(B)/scenelib.glsb
+# the scene library: textures, precompiled library bundle
+SCENELIB := $(B)/textures.stamp $(B)/scenelib.glsb
 
 UNIT_SRC := $(wildcard tests/unit/*.c)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
@@ -143,10 +143,13 @@ $(B)/%.o: %.c
 $(B)/gen/lexer.c: compiler/lexer.re $(B)/gen/grammar.h
 	@mkdir -p $(dir $@)
 	re2c --no-generation-date --no-version -W -o $@ $<
+# lemon leaves grammar.h alone when its content would not change: touch it,
+# or it stays older than grammar.y and the grammar is made again on every
+# run (and everything that includes grammar.h recompiled).
 $(B)/gen/grammar.c $(B)/gen/grammar.h: compiler/grammar.y
 	@mkdir -p $(B)/gen
 	cp compiler/grammar.y $(B)/gen/grammar.y
-	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y
+	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y && touch grammar.h
 $(B)/gen/%.o: $(B)/gen/%.c
 	$(CC) $(CFLAGS) $(INC_compiler) -Wno-unused-parameter -Wno-unused-variable $(DEPFLAGS) -c $< -o $@
 $(COMPILER_OBJ): | $(B)/gen/grammar.h
@@ -195,7 +198,7 @@ $(B)/tests/fuzz/rawseed.o: LAYER_INC = $(INC_format)
 
 # Texture generator for the scene library and the examples (no binary
 # textures are committed: they are made here, deterministically).
-# The generators see the base layer.
+# The generator sees the base layer.
 $(B)/gen_%.o: scenelib/gen/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(INC_base) $(DEPFLAGS) -c $< -o $@
@@ -204,27 +207,16 @@ $(B)/gen_textures: $(B)/gen_textures.o $(LIB_base)
 $(B)/textures.stamp: $(B)/gen_textures
 	$(B)/gen_textures $(B)/textures && touch $@
 
-# The scene library (scenelib/README.md) as one directory, $(B)/scenelib/:
-# the objects scenelib/gen/objects.c writes (they are not committed: git
-# holds what a person wrote) and links to the hand-written objects of
-# scenelib/, so that an edit there is seen at once.  It is made anew, never
-# updated in place, whenever the generator or the set of hand-written
-# objects (a directory's time) changes, so no generated file can go stale;
-# a generated object named like a hand-written one stops the build.
-# $(B)/scenelib.glsb is that directory precompiled, from $(B), so that its
-# source paths read scenelib/... whatever the build directory is called:
-# -I $(B)/scenelib.glsb stands for -I $(B)/scenelib -I $(B)/textures.
+# The scene library (scenelib/README.md) is the directory scenelib/, every
+# object written in the scene language (its parameterised objects included);
+# $(B)/scenelib.glsb is it precompiled with the textures, compiled from the
+# repository root so that its source paths read scenelib/...:
+# -I $(B)/scenelib.glsb stands for -I scenelib -I $(B)/textures.  It depends
+# on the directories too, so that adding or removing an object rebuilds it.
 SCENELIB_SRC := $(shell find scenelib -name '*.scene' 2>/dev/null)
 SCENELIB_DIRS := $(shell find scenelib -type d 2>/dev/null)
-$(B)/gen_objects: $(B)/gen_objects.o $(LIB_base)
-	$(CC) $(LDFLAGS) $< -o $@ $(LIB_base) -lm
-$(B)/scenelib.stamp: $(B)/gen_objects $(SCENELIB_DIRS)
-	rm -rf $(B)/scenelib
-	$(B)/gen_objects $(B)/scenelib >/dev/null
-	for f in $(SCENELIB_SRC); do mkdir -p $(B)/$${f%/*} && ln -sr $$f $(B)/$$f || exit 1; done
-	touch $@
-$(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(B)/scenelib.stamp $(SCENELIB_SRC)
-	cd $(B) && ./glsc -I textures --lib scenelib -o scenelib.glsb
+$(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC) $(SCENELIB_DIRS)
+	$(B)/glsc -I $(B)/textures --lib scenelib -o $@
 
 $(B)/depth2png: $(B)/tools/depth2png.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm

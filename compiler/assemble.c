@@ -16,6 +16,64 @@ static int cmp_tex(const void *a, const void *b)
     return strcmp((*(tex_entry *const *)a)->name, (*(tex_entry *const *)b)->name);
 }
 
+static int cmp_tpl(const void *a, const void *b)
+{
+    return strcmp((*(gls_tpl *const *)a)->name, (*(gls_tpl *const *)b)->name);
+}
+
+/* The template of every parameterised object in the bundle (units[0..nu)),
+ * sorted by name, with its source text: what a later compile needs to
+ * make its object for other values (spec/bundle.md 7.7).  0, or -1 when
+ * out of memory. */
+static int add_templates(gls_bundle *b, gls_unit **units, uint32_t nu)
+{
+    gls_tpl **ts = malloc((nu ? nu : 1) * sizeof *ts);
+    uint32_t nt = 0;
+    if (!ts)
+        return -1;
+    for (uint32_t i = 0; i < nu; i++) {
+        gls_tpl *t = units[i]->tpl;
+        if (t && t->nparams && !t->in_bundle) {
+            t->in_bundle = 1;
+            ts[nt++] = t;
+        }
+    }
+    qsort(ts, nt, sizeof *ts, cmp_tpl);
+    for (uint32_t i = 0; i < nt; i++)
+        ts[i]->in_bundle = 0;
+    b->templates = calloc(nt ? nt : 1, sizeof *b->templates);
+    if (!b->templates) {
+        free(ts);
+        return -1;
+    }
+    b->ntemplates = nt;
+    for (uint32_t i = 0; i < nt; i++) {
+        const gls_tpl *t = ts[i];
+        gls_template *o = &b->templates[i];
+        o->source = t->src_file;
+        o->nparams = t->nparams;
+        o->text_len = (uint32_t)t->src.len;
+        o->name = strdup(t->name);
+        o->params = calloc(t->nparams, sizeof *o->params);
+        o->defaults = malloc(t->nparams * sizeof *o->defaults);
+        o->text = malloc(t->src.len + 1);
+        if (!o->name || !o->params || !o->defaults || !o->text) {
+            free(ts);
+            return -1;
+        }
+        memcpy(o->text, t->src.text, t->src.len);
+        o->text[t->src.len] = 0;
+        memcpy(o->defaults, t->defaults, t->nparams * sizeof *o->defaults);
+        for (uint32_t k = 0; k < t->nparams; k++)
+            if (!(o->params[k] = strdup(t->pnames[k]))) {
+                free(ts);
+                return -1;
+            }
+    }
+    free(ts);
+    return 0;
+}
+
 /* Build the bundle from every unit with state 2 and every loaded texture
  * that a reachable unit uses (all loaded ones in library mode). */
 gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
@@ -102,7 +160,7 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
             for (uint32_t j = 0; j < gls_op[in.op].noperands; j++) {
                 uint32_t *v = &in.u[j];
                 switch ((gls_operand_kind)gls_op[in.op].kind[j]) {
-                case GLS_KIND_OBJECT: *v = ((gls_unit *)gls_strmap_get(&c->units, u->refs[*v].name))->final_index; break;
+                case GLS_KIND_OBJECT: *v = u->refs[*v].target->final_index; break;
                 case GLS_KIND_TEXTURE: *v = gls_bundle_find_texture(b, u->texrefs[*v].name); break;
                 case GLS_KIND_FIRST_POS: *v += p0; break;
                 case GLS_KIND_FIRST_COL: if (*v != GLS_NONE) *v += c0; break;
@@ -128,6 +186,8 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
     for (uint32_t i = 0; i < c->nsources; i++)
         if (!(b->sources[i] = strdup(c->sources[i])))
             goto oom;
+    if (add_templates(b, units, nu))
+        goto oom;
     b->features = gls_bundle_features(b);
     free(units);
     free(texs);

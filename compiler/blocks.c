@@ -1,6 +1,6 @@
 /* Primitive blocks (spec/language.md 8): the block's name, the state of
- * the open block that vert, col and tex fill in (instructions.c), and at
- * the closing brace the vertex-count check and the one PRIM instruction. */
+ * the open block that vert, col and tex fill in (instructions.c), and when
+ * it closes the vertex-count check and the one PRIM instruction. */
 #include "sema.h"
 
 void sema_block_open(gls_parse *ctx, gls_tok name)
@@ -35,9 +35,8 @@ void sema_block_open(gls_parse *ctx, gls_tok name)
     ctx->errors_at_block = ctx->d->errors;
 }
 
-void sema_block_close(gls_parse *ctx, gls_tok rbrace)
+void sema_block_close(gls_parse *ctx)
 {
-    (void)rbrace;
     if (ctx->in_prim > 1) {
         ctx->in_prim--;
         return;

@@ -16,10 +16,10 @@ int gls_compiler_add_root(gls_compiler *c, const char *path);
 /* Add the colon-separated roots of the environment variable GLSCENE_PATH. */
 int gls_compiler_add_env_roots(gls_compiler *c);
 /* The build directory (glsc: the directory it was run from, build/).  The
- * build generates the scene library's objects in DIR/scenelib and its
- * textures in DIR/textures; an unknown object or texture found there gets
- * "; the build generates it in DIR/...: add -I DIR/..." in its message
- * (spec/language.md 10).  dir is borrowed. */
+ * build generates the scene library's textures in DIR/textures; an unknown
+ * texture found there gets "; the build generates it in DIR/textures: add
+ * -I DIR/textures" in its message (spec/language.md 2.1).  dir is
+ * borrowed. */
 void gls_compiler_set_build_dir(gls_compiler *c, const char *dir);
 /* Where the build generates the scene library's textures (glsc: the
  * directory "textures" beside itself).  An unknown texture found there gets

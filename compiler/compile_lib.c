@@ -68,7 +68,7 @@ static int scan_dir(gls_compiler *c, const char *dir, const char *prefix, int de
             } else if (base && dot) {
                 *dot = 0;
                 if (strcmp(base, ".scene") == 0 && gls_valid_object_name(qual))
-                    gls_get_unit(c, qual, GLS_NOLOC);
+                    gls_get_unit(c, qual, NULL, 0, GLS_NOLOC);
                 else
                     for (size_t k = 0; k < sizeof gls_tex_exts / sizeof gls_tex_exts[0]; k++)
                         if (strcmp(base, gls_tex_exts[k]) == 0 && gls_valid_object_name(qual))

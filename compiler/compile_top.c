@@ -61,11 +61,11 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
         }
         char *spelt = gls_normalise_path(top);
         c->top_name = name;
-        u = spelt ? gls_unit_from_file(c, name, spelt, GLS_NOLOC) : NULL;
+        gls_tpl *t = spelt ? gls_tpl_from_file(c, name, spelt, GLS_NOLOC) : NULL;
         c->top_name = NULL;
         free(spelt);
         free(name);
-        if (!u || gls_register_unit(c, u))
+        if (!t || !(u = t->base))
             return -1;
     } else {
         if (!gls_valid_object_name(top)) {
@@ -73,7 +73,7 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
             return -1;
         }
         c->top_name = top;
-        u = gls_get_unit(c, top, GLS_NOLOC);
+        u = gls_get_unit(c, top, NULL, 0, GLS_NOLOC);
         c->top_name = NULL;
         if (!u)
             return -1;

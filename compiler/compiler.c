@@ -7,8 +7,10 @@
 gls_compiler *gls_compiler_new(FILE *diag_out)
 {
     gls_compiler *c = calloc(1, sizeof *c);
-    if (c)
+    if (c) {
         c->diag.out = diag_out;
+        c->diag.dedupe = 1;
+    }
     return c;
 }
 
@@ -35,6 +37,8 @@ void gls_compiler_free(gls_compiler *c)
         free(c->alltex[i]->tex.rgba);
         free(c->alltex[i]);
     }
+    for (size_t i = 0; i < c->nalltpl; i++)
+        gls_tpl_free(c->alltpl[i]);
     for (uint32_t i = 0; i < c->nsources; i++)
         free(c->sources[i]);
     gls_strmap_free(&c->units);
@@ -42,9 +46,12 @@ void gls_compiler_free(gls_compiler *c)
         free(c->missing.vals[i]); /* the key is the value: one strdup each */
     gls_strmap_free(&c->missing);
     gls_strmap_free(&c->textures);
+    gls_strmap_free(&c->templates);
+    gls_diag_free(&c->diag);
     free(c->roots);
     free(c->all);
     free(c->alltex);
+    free(c->alltpl);
     free(c->sources);
     free(c->stack);
     free(c);

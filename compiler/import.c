@@ -7,6 +7,7 @@
 #include <string.h>
 #include "buf.h"
 #include "linker.h"
+#include "specname.h"
 
 /* Append n elements of size elem from src to the array *arrp (a T **) of
  * *count elements and capacity *cap; returns the index of the first, or
@@ -23,6 +24,30 @@ static uint32_t append(void *arrp, uint32_t *count, size_t *cap, const void *src
     return first;
 }
 
+/* A call of b's object named nm, as the call that made it was written: its
+ * name without parameter values, and the values (format/specname.h).
+ * Returns the reference's index, or GLS_NONE when out of memory. */
+static uint32_t call_ref(gls_unit *u, const char *nm, gls_loc loc)
+{
+    gls_specarg args[GLS_MAX_PARAMS];
+    unsigned n;
+    long base = gls_specname_parse(nm, args, GLS_MAX_PARAMS, &n); /* validated at load */
+    uint32_t r = gls_unit_add_ref(&u->refs, &u->nrefs, &u->refs_cap, nm, (size_t)base, loc);
+    if (r == GLS_NONE || !n)
+        return r;
+    gls_ref *ref = &u->refs[r];
+    if (!(ref->args = calloc(n, sizeof *ref->args)))
+        return GLS_NONE;
+    for (unsigned k = 0; k < n; k++) {
+        if (!(ref->args[k].name = strndup(args[k].name, args[k].len)))
+            return GLS_NONE;
+        ref->args[k].value = args[k].value;
+        ref->args[k].loc = loc;
+        ref->nargs++;
+    }
+    return r;
+}
+
 /* Operand i of in, read from bundle b, made unit-local in u: object and
  * texture indices become by-name references, vertex indices point at
  * copies of the vertices in u.  Returns -1 when out of memory. */
@@ -34,8 +59,7 @@ static int import_operand(gls_unit *u, const gls_bundle *b, gls_insn *in, uint32
     const char *nm;
     switch ((gls_operand_kind)gls_op[in->op].kind[i]) {
     case GLS_KIND_OBJECT:
-        nm = b->objects[*v].name;
-        *v = gls_unit_add_ref(&u->refs, &u->nrefs, &u->refs_cap, nm, strlen(nm), loc);
+        *v = call_ref(u, b->objects[*v].name, loc);
         break;
     case GLS_KIND_TEXTURE:
         nm = b->textures[*v].name;

@@ -232,13 +232,45 @@ static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     sema_emit(ctx, &in, name.line);
 }
 
+/* call("name", p = v, ...): the parameter values, checked (numbers, each
+ * parameter once; the grammar allows no string there) and kept with the
+ * reference, to be matched with the
+ * callee's parameters when it is linked (template.c). */
 static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
-    (void)n;
     gls_unit *u = ctx->u;
+    for (unsigned i = 1; i < n; i++) {
+        gls_tok p = *a[i].pname;
+        if (a[i].kind == VAL_ERR)
+            return; /* already reported */
+        if (!sema_need_number(ctx, &a[i]))
+            return;
+        for (unsigned j = 1; j < i; j++)
+            if (a[j].pname->len == p.len && memcmp(a[j].pname->p, p.p, p.len) == 0) {
+                ERR(ctx, p.line, p.col, "parameter '%.*s' is given twice", (int)p.len, p.p);
+                return;
+            }
+    }
     if (emit_ref(ctx, name, a, "object", &u->refs, &u->nrefs, &u->refs_cap, GLS_OP_CALL, GLS_ARG_CALL_OBJECT))
         return;
     gls_texuse_call(&ctx->texuse);
+    if (n < 2)
+        return;
+    gls_ref *r = &u->refs[u->nrefs - 1];
+    r->args = calloc(n - 1, sizeof *r->args);
+    for (unsigned i = 1; r->args && i < n; i++) {
+        gls_tok p = *a[i].pname;
+        gls_named *g = &r->args[r->nargs];
+        if (!(g->name = strndup(p.p, p.len)))
+            break;
+        g->value = a[i].num;
+        g->loc = gls_tok_loc(ctx, p.line, p.col);
+        r->nargs++;
+    }
+    if (r->nargs != n - 1) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        ctx->stop = 1;
+    }
 }
 
 /* The instructions (sema.h says what each field means). */

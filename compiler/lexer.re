@@ -54,6 +54,8 @@ int gls_lex(gls_lexer *lx, gls_tok *t)
             continue;
         }
         "const"         { TOKEN(CONST); }
+        "param"         { TOKEN(PARAM); }
+        "repeat"        { TOKEN(REPEAT); }
         ident           { TOKEN(IDENT); }
         number          { TOKEN(NUMBER); }
         number [A-Za-z_0-9.]+ { INVALID(GLS_LEX_MALFORMED_NUMBER); }

@@ -1,11 +1,17 @@
-/* Shared by the semantic actions of the scene language, which the lemon
- * grammar calls as it reduces (parse.h declares them):
+/* Shared by the semantic actions of the scene language.  The lemon grammar
+ * calls the tree builders as it reduces (parse.h declares them); running a
+ * statement calls the rest:
+ *   tree.c         building the tree, and running statements as they are
+ *                  parsed (outside loops)
+ *   syntax.c       syntax errors, a missing ';'
+ *   exec.c         running statements: instructions' arguments, blocks,
+ *                  constants, parameters, repeat loops and their budget
  *   statements.c   instruction names: lookup, "did you mean", and the checks
  *                  every instruction shares (placement, count, kinds)
  *   instructions.c each instruction's own checks and the code it emits
  *   blocks.c       primitive blocks: their names, vertex counts, PRIM
- *   fold.c         numbers, named constants, expression folding
- *   syntax.c       syntax errors, a missing ';', argument collection */
+ *   fold.c         numbers, names and their scopes, expression evaluation
+ *   mathfn.c       the functions of expressions */
 #ifndef GLS_SEMA_H
 #define GLS_SEMA_H
 #include "parse.h"
@@ -32,7 +38,41 @@ extern const size_t sema_ninstrs;
 /* Append instruction in to the unit, attributed to line. */
 void sema_emit(gls_parse *ctx, gls_insn *in, unsigned line);
 
+/* exec.c */
+/* Run statement s (a block whole, a loop all its iterations). */
+void sema_run(gls_parse *ctx, const gls_stmt *s);
+
+/* blocks.c: a primitive block opened (its statements run next) and closed */
+void sema_block_open(gls_parse *ctx, gls_tok name);
+void sema_block_close(gls_parse *ctx);
+
+/* fold.c */
+/* The value of e now (constants, parameters and loop variables as they
+ * are); errors are reported and give VAL_ERR. */
+gls_val sema_eval(gls_parse *ctx, const gls_expr *e);
+/* Report "unknown constant" for a word where a number is needed, "a
+ * string ..." for a string; 1 if a is a number. */
+int sema_need_number(gls_parse *ctx, const gls_val *a);
+/* Define name (a NAME_* kind) as v in the current scope: 0, or -1 after
+ * reporting why not (reserved name, already defined). */
+int sema_define(gls_parse *ctx, int kind, gls_tok name, double v);
+/* Give the name defined at index mark (sema_scope_mark before its
+ * definition) the value v: a loop variable is defined once per loop and
+ * takes each iteration's value this way, without the checks again. */
+void sema_set_value(gls_parse *ctx, size_t mark, double v);
+/* Scopes: a loop body's names are undefined when an iteration ends. */
+size_t sema_scope_mark(const gls_parse *ctx);
+void sema_scope_end(gls_parse *ctx, size_t mark);
+void sema_names_free(gls_parse *ctx);
+/* The number a NUMBER token stands for: 0 and *v, or -1 after reporting
+ * a value that is not finite (1 for a malformed number, reported by the
+ * lexer). */
+int sema_parse_number(gls_parse *ctx, gls_tok t, double *v);
+
 /* statements.c */
+/* Instruction name with its arguments evaluated in ctx->args: checked and
+ * compiled. */
+void sema_stmt(gls_parse *ctx, gls_tok name, int parens);
 /* every word with a meaning: instructions, primitives, "const" */
 extern const char *const sema_words[];
 extern const size_t sema_nwords;

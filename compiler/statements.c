@@ -9,7 +9,7 @@
 
 const char *const sema_words[] = {"vert",  "col", "tex",   "color",     "texmode", "texture", "notexture",
                                   "trans", "rot", "scale", "transform", "push",    "pop",     "call",
-                                  "poly",  "qstrip", "tstrip", "tfan",  "const"};
+                                  "poly",  "qstrip", "tstrip", "tfan",  "const",   "param",   "repeat"};
 const size_t sema_nwords = sizeof sema_words / sizeof sema_words[0];
 
 /* Names people bring from OpenGL and other scene languages, for "did you
@@ -30,6 +30,8 @@ const gls_alias sema_aliases[] = {
     {"multmatrix", "transform"}, {"matrix", "transform"},
     {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},
     {"define", "const"},        {"let", "const"},           {"var", "const"},
+    {"for", "repeat"},          {"loop", "repeat"},         {"while", "repeat"},           {"times", "repeat"},
+    {"parameter", "param"},     {"arg", "param"},
     {"begin", "poly"},          {"polygon", "poly"},        {"triangle", "poly"},          {"triangles", "poly"},
     {"quad", "poly"},           {"quads", "poly"},
     {"quadstrip", "qstrip"},    {"quad_strip", "qstrip"},
@@ -40,8 +42,12 @@ const size_t sema_naliases = sizeof sema_aliases / sizeof sema_aliases[0];
 
 int sema_tok_is(gls_tok t, const char *s)
 {
-    size_t n = strlen(s);
-    return t.len == n && memcmp(t.p, s, n) == 0;
+    /* stops at the first byte that differs, usually the first: defining a
+       name compares it with every word of the language */
+    for (uint32_t i = 0; i < t.len; i++)
+        if (t.p[i] != s[i] || !s[i])
+            return 0;
+    return s[t.len] == 0;
 }
 
 int sema_prim_kind(gls_tok t)
@@ -60,6 +66,33 @@ static void describe_kind(const gls_val *v, char *buf, size_t n)
         snprintf(buf, n, "the word '%.*s'", (int)v->len, v->s);
     else
         snprintf(buf, n, "a number");
+}
+
+/* Named arguments (NAME = value) are call's parameter values and come
+ * after its quoted name; any other instruction takes none.  Returns how
+ * many arguments come before the first named one, or -1 after an error. */
+static int positional(gls_parse *ctx, const sema_instr *ins, const gls_val *a, unsigned n)
+{
+    unsigned k = 0;
+    while (k < n && !a[k].pname)
+        k++;
+    int named = strcmp(ins->name, "call") == 0;
+    if (k < n && (!named || k == 0)) {
+        gls_tok p = *a[k].pname;
+        if (named)
+            ERR(ctx, p.line, p.col, "argument 1 of 'call' must be a quoted name, not a parameter value");
+        else
+            ERR(ctx, p.line, p.col, "'%s' takes no named arguments ('%.*s = ...' gives a parameter value to call)",
+                ins->name, (int)p.len, p.p);
+        return -1;
+    }
+    for (unsigned i = k; i < n; i++)
+        if (!a[i].pname) {
+            ERR(ctx, a[i].line, a[i].col, "argument %u of 'call' must be a parameter value (NAME = value), like the one before it",
+                i + 1);
+            return -1;
+        }
+    return (int)k;
 }
 
 void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
@@ -99,10 +132,25 @@ void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
         ERR(ctx, name.line, name.col, "'%s' is not allowed inside a primitive block", ins->name);
         return;
     }
+    const gls_val *a = ctx->args;
     int is_scale = strcmp(ins->name, "scale") == 0; /* 1 or 3 arguments, not 2 */
-    if (too_many || n < ins->min || n > ins->max || (is_scale && n == 2)) {
+    int is_call = strcmp(ins->name, "call") == 0;
+    if (is_call && too_many) {
+        ERR(ctx, name.line, name.col, "'call' passes at most %u parameter values, got %u", GLS_MAX_PARAMS, n - 1);
+        return;
+    }
+    unsigned npos = n;
+    if (!too_many) {
+        int k = positional(ctx, ins, a, n);
+        if (k < 0)
+            return;
+        npos = (unsigned)k;
+    }
+    if (too_many || npos < ins->min || npos > ins->max || (is_scale && npos == 2)) {
         if (is_scale)
             ERR(ctx, name.line, name.col, "'scale' takes 1 or 3 arguments, got %u", n);
+        else if (is_call && npos > 1)
+            ERR(ctx, a[1].line, a[1].col, "argument 2 of 'call' must be a parameter value (NAME = value)");
         else if (ins->min == ins->max)
             ERR(ctx, name.line, name.col, "'%s' takes %u argument%s, got %u", ins->name, ins->min,
                 ins->min == 1 ? "" : "s", n);
@@ -110,8 +158,7 @@ void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
             ERR(ctx, name.line, name.col, "'%s' takes %u to %u arguments, got %u", ins->name, ins->min, ins->max, n);
         return;
     }
-    const gls_val *a = ctx->args;
-    for (unsigned i = 0; i < n; i++) {
+    for (unsigned i = 0; i < npos; i++) {
         char want = ins->kinds[i];
         if (a[i].kind == VAL_ERR)
             return; /* already reported */

@@ -5,19 +5,23 @@
 #include "buf.h"
 #include "fileio.h"
 #include "grammar.h"
-#include "parse.h"
+#include "sema.h"
 
 void gls_unit_free(gls_unit *u)
 {
     if (!u)
         return;
     free(u->name);
-    if (u->src.text)
+    if (u->src.text && !u->src_borrowed)
         gls_release_file(u->src.text, u->src.mapped);
     free(u->code.data);
     free(u->lines);
-    for (uint32_t i = 0; i < u->nrefs; i++)
+    for (uint32_t i = 0; i < u->nrefs; i++) {
         free(u->refs[i].name);
+        for (unsigned k = 0; k < u->refs[i].nargs; k++)
+            free(u->refs[i].args[k].name);
+        free(u->refs[i].args);
+    }
     for (uint32_t i = 0; i < u->ntexrefs; i++)
         free(u->texrefs[i].name);
     free(u->refs);
@@ -47,8 +51,7 @@ uint32_t gls_unit_add_ref(gls_ref **arr, uint32_t *n, size_t *cap, const char *n
     char *s = strndup(name, len); /* a valid name: no NUL inside */
     if (!s)
         return GLS_NONE;
-    (*arr)[*n].name = s;
-    (*arr)[*n].loc = loc;
+    (*arr)[*n] = (gls_ref){.name = s, .loc = loc};
     return (*n)++;
 }
 
@@ -77,26 +80,64 @@ static int next_token(gls_lexer *lx, gls_tok *t, gls_parse *ctx)
     return code;
 }
 
-int gls_compile_source(gls_unit *u, gls_diag *d)
+static void out_of_memory(gls_diag *d, const gls_source *src)
+{
+    gls_error_at(d, (gls_loc){src, 0, 0}, "out of memory");
+}
+
+/* A new context ready to run statements into u; NULL after reporting
+ * that there is no memory for it. */
+static gls_parse *run_begin(gls_unit *u, gls_diag *d, uint64_t *total)
 {
     gls_parse *ctx = calloc(1, sizeof *ctx);
     if (!ctx) {
-        gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");
-        return -1;
+        out_of_memory(d, &u->src);
+        return NULL;
     }
     ctx->u = u;
+    ctx->src = &u->src;
     ctx->d = d;
     ctx->errors_at_start = d->errors;
+    ctx->total_unrolled = total;
     gls_texuse_init(&ctx->texuse, u->is_top);
-    unsigned errors0 = d->errors;
-    void *parser = glsParseAlloc(malloc, ctx);
-    if (!parser) {
-        free(ctx);
-        gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");
-        return -1;
+    return ctx;
+}
+
+/* The end of the object: every push must have been popped (unless error
+ * recovery dropped statements or the loop budget cut the object short,
+ * which would make this a false alarm), the
+ * texture warnings, END at end_line. */
+static void run_end(gls_parse *ctx, unsigned end_line)
+{
+    gls_diag *d = ctx->d;
+    for (unsigned i = 0; i < ctx->depth && !ctx->in_prim && !ctx->syntax_errors && !ctx->unroll_over; i++) {
+        gls_tok p = ctx->push_tok[i];
+        gls_error_at(d, gls_tok_loc(ctx, p.line, p.col), "'push' without a matching 'pop' before the end of the object");
     }
+    gls_texuse_finish(&ctx->texuse, d);
+    gls_insn end = {.op = GLS_OP_END};
+    if (gls_unit_emit(ctx->u, &end, end_line))
+        gls_error_at(d, (gls_loc){ctx->src, 0, 0}, "out of memory");
+    sema_names_free(ctx);
+}
+
+/* Feed the scanner's tokens to the parser: the grammar's actions build the
+ * tree and run what is complete (tree.c).  Returns the line count plus 1
+ * (the line of the end), or 0 when out of memory. */
+static unsigned parse(gls_parse *ctx, gls_arena *arena)
+{
+    const gls_source *src = ctx->src;
+    ctx->arena = arena;
+    ctx->leading_params = 1;
+    /* a first allocation, so that releasing to the file's mark keeps a chunk */
+    if (!gls_arena_alloc(arena, 1))
+        return 0;
+    ctx->file_mark = gls_arena_get_mark(arena);
+    void *parser = glsParseAlloc(malloc, ctx);
+    if (!parser)
+        return 0;
     gls_lexer lx;
-    gls_lexer_init(&lx, u->src.text, u->src.len);
+    gls_lexer_init(&lx, src->text, src->len);
     gls_tok t;
     int code;
     do {
@@ -105,24 +146,93 @@ int gls_compile_source(gls_unit *u, gls_diag *d)
         ctx->last = t;
         ctx->cur_major = code;
         glsParse(parser, code, t);
-    } while (code != 0 && !ctx->stop && !d->stopped);
+    } while (code != 0 && !ctx->stop && !ctx->d->stopped);
     glsParseFree(parser, free);
+    return lx.line;
+}
 
-    /* end of the object: every push must have been popped (unless error
-       recovery dropped statements, which would make this a false alarm) */
-    for (unsigned i = 0; i < ctx->depth && !ctx->in_prim && !ctx->syntax_errors; i++) {
-        gls_tok p = ctx->push_tok[i];
-        gls_error_at(d, gls_tok_loc(ctx, p.line, p.col), "'push' without a matching 'pop' before the end of the object");
+/* Move what a parameterised file's later runs need into keep. */
+static void keep_tree(gls_parse *ctx, gls_arena *arena, unsigned end_line, gls_tree *keep)
+{
+    keep->arena = *arena;
+    *arena = (gls_arena){0};
+    keep->top = ctx->file.body;
+    keep->syntax_errors = ctx->syntax_errors;
+    keep->end_line = end_line;
+    keep->nparams = ctx->nparams;
+    for (unsigned i = 0; i < ctx->nparams; i++) {
+        keep->pnames[i] = ctx->pnames[i];
+        keep->defaults[i] = ctx->pvalues[i];
     }
-    gls_texuse_finish(&ctx->texuse, d);
-    gls_insn end = {.op = GLS_OP_END};
-    if (gls_unit_emit(u, &end, lx.line))
-        gls_error_at(d, (gls_loc){&u->src, 0, 0}, "out of memory");
-    for (unsigned h = 0; h < GLS_MAX_CONSTS_BUCKETS; h++)
-        for (gls_const *c = ctx->consts[h], *next; c; c = next) {
-            next = c->next;
-            free(c);
-        }
+}
+
+int gls_compile_source_keep(gls_unit *u, gls_diag *d, gls_tree *keep, uint64_t *total)
+{
+    unsigned errors0 = d->errors;
+    gls_parse *ctx = run_begin(u, d, total);
+    if (!ctx)
+        return -1;
+    gls_arena arena = {0};
+    unsigned end_line = parse(ctx, &arena);
+    if (!end_line)
+        out_of_memory(d, &u->src);
+    run_end(ctx, end_line);
+    if (keep && ctx->keep_tree && ctx->nparams)
+        keep_tree(ctx, &arena, end_line, keep);
+    gls_arena_free(&arena);
     free(ctx);
     return d->errors == errors0 ? 0 : -1;
+}
+
+int gls_compile_source(gls_unit *u, gls_diag *d)
+{
+    return gls_compile_source_keep(u, d, NULL, NULL);
+}
+
+int gls_parse_tree(const gls_source *src, gls_diag *d, gls_tree *out)
+{
+    unsigned errors0 = d->errors;
+    gls_unit scratch = {.src = *src};
+    gls_parse *ctx = run_begin(&scratch, d, NULL);
+    if (!ctx)
+        return -1;
+    ctx->no_run = 1;
+    gls_arena arena = {0};
+    unsigned end_line = parse(ctx, &arena);
+    if (!end_line)
+        out_of_memory(d, src);
+    /* the parameters' defaults: their statements come first */
+    ctx->no_run = 0;
+    for (const gls_stmt *s = ctx->file.body; s && s->kind == ST_PARAM; s = s->next)
+        sema_run(ctx, s);
+    sema_names_free(ctx);
+    gls_texuse_finish(&ctx->texuse, d);
+    keep_tree(ctx, &arena, end_line, out);
+    free(ctx);
+    return d->errors == errors0 ? 0 : -1;
+}
+
+int gls_run_tree(gls_unit *u, gls_diag *d, const gls_tree *t, const gls_named *binding, unsigned nbinding,
+                 uint64_t *total)
+{
+    unsigned errors0 = d->errors;
+    gls_parse *ctx = run_begin(u, d, total);
+    if (!ctx)
+        return -1;
+    ctx->binding = binding;
+    ctx->nbinding = nbinding;
+    ctx->syntax_errors = t->syntax_errors;
+    for (const gls_stmt *s = t->top; s && !ctx->stop && !d->stopped; s = s->next)
+        sema_run(ctx, s);
+    if (ctx->in_prim) /* a block left open by a syntax error */
+        sema_block_close(ctx);
+    run_end(ctx, t->end_line);
+    free(ctx);
+    return d->errors == errors0 ? 0 : -1;
+}
+
+void gls_tree_free(gls_tree *t)
+{
+    gls_arena_free(&t->arena);
+    t->top = NULL;
 }

@@ -15,7 +15,7 @@
 #include "buf.h"
 #include "opcodes.h"
 
-#define GLS_FORMAT_VERSION 1u
+#define GLS_FORMAT_VERSION 2u
 
 /* Feature flags: which effects a bundle's content uses.  Computed from the
  * content by gls_bundle_features(), never set by hand, so they cannot lie. */
@@ -50,6 +50,8 @@ extern const char *const gls_feature_why[32];
 #define GLS_MAX_PUSH_DEPTH        64u            /* per object            */
 #define GLS_MAX_CALL_DEPTH        256u           /* nested calls          */
 #define GLS_MAX_NAME_BYTES        1024u
+#define GLS_MAX_PARAMS            32u            /* per template          */
+#define GLS_MAX_TEMPLATE_TEXT     (1u << 30)     /* source text, bytes    */
 /* Vertices the top-level object draws once every call is unrolled: calls
  * share objects, so a small bundle can describe an exponentially large
  * scene (A calls B twice, B calls C twice, ...).  2^26 vertices is about
@@ -92,6 +94,19 @@ typedef struct {
                               binary (0 or 255)                           */
 } gls_texture;
 
+/* A parameterised object's source (spec/bundle.md 7.7): what the compiler
+ * needs to make it for parameter values no object of the bundle has. */
+typedef struct {
+    char *name;            /* the object's name, without parameter values */
+    uint32_t source;       /* index into sources[]: the file of the text  */
+    uint32_t nparams;      /* 1..GLS_MAX_PARAMS                           */
+    char **params;         /* parameter names, in declaration order       */
+    double *defaults;      /* their default values, finite                */
+    char *text;            /* text_len bytes of source, no NUL inside; the
+                              reader adds a NUL after them                */
+    uint32_t text_len;
+} gls_template;
+
 typedef struct {
     uint32_t version;      /* format version the bundle was read as       */
     uint32_t features;     /* GLS_FEAT_* bits                              */
@@ -101,6 +116,8 @@ typedef struct {
     gls_object *objects;   /* sorted by name (strcmp), names unique       */
     gls_texture *textures; /* sorted by name                              */
     char **sources;        /* source file paths for gls_srcloc.file       */
+    uint32_t ntemplates;
+    gls_template *templates; /* sorted by name                            */
 
     uint32_t npos, ncol, ntex;
     gls_vec4 *pos;         /* vertex positions                             */
@@ -167,6 +184,7 @@ uint32_t gls_bundle_features(const gls_bundle *b);
 /* Find an object or texture by name (binary search); GLS_NONE if absent. */
 uint32_t gls_bundle_find_object(const gls_bundle *b, const char *name);
 uint32_t gls_bundle_find_texture(const gls_bundle *b, const char *name);
+uint32_t gls_bundle_find_template(const gls_bundle *b, const char *name);
 
 void gls_bundle_free(gls_bundle *b);
 

@@ -75,6 +75,10 @@ static int cmp_name(const char *key, const char *name) { return strcmp(key, name
 
 uint32_t gls_bundle_find_object(const gls_bundle *b, const char *name) { BSEARCH(b->objects, b->nobjects, name); }
 uint32_t gls_bundle_find_texture(const gls_bundle *b, const char *name) { BSEARCH(b->textures, b->ntextures, name); }
+uint32_t gls_bundle_find_template(const gls_bundle *b, const char *name)
+{
+    BSEARCH(b->templates, b->ntemplates, name);
+}
 
 void gls_bundle_free(gls_bundle *b)
 {
@@ -91,6 +95,16 @@ void gls_bundle_free(gls_bundle *b)
     }
     for (uint32_t i = 0; b->sources && i < b->nsources; i++)
         free(b->sources[i]);
+    for (uint32_t i = 0; b->templates && i < b->ntemplates; i++) {
+        gls_template *t = &b->templates[i];
+        for (uint32_t k = 0; t->params && k < t->nparams; k++)
+            free(t->params[k]);
+        free(t->name);
+        free(t->params);
+        free(t->defaults);
+        free(t->text);
+    }
+    free(b->templates);
     free(b->objects);
     free(b->textures);
     free(b->sources);

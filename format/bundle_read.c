@@ -230,6 +230,56 @@ fail:
     return -1;
 }
 
+/* TEMPLATES (format version 2): entries of at least 28 bytes (a name's
+ * length, source, nparams, one parameter's name length and default, the
+ * text's length). */
+static int read_templates(gls_bundle *b, cursor *c, gls_error *err)
+{
+    uint32_t n = get_u32(c);
+    if (n > GLS_MAX_OBJECTS || !count_fits(c, n, 28))
+        FAIL("template table: %u templates do not fit in the section", n);
+    b->templates = calloc(n ? n : 1, sizeof *b->templates);
+    if (!b->templates)
+        FAIL("out of memory");
+    b->ntemplates = n;
+    for (uint32_t i = 0; i < n; i++) {
+        gls_template *t = &b->templates[i];
+        t->name = get_str(c);
+        t->source = get_u32(c);
+        t->nparams = get_u32(c);
+        if (!t->name || c->bad)
+            FAIL("template table: entry %u is truncated or malformed", i);
+        if (t->nparams == 0 || t->nparams > GLS_MAX_PARAMS)
+            FAIL("template %s: %u parameters, not 1..%u", t->name, t->nparams, GLS_MAX_PARAMS);
+        t->params = calloc(t->nparams, sizeof *t->params);
+        t->defaults = calloc(t->nparams, sizeof *t->defaults);
+        if (!t->params || !t->defaults)
+            FAIL("out of memory");
+        for (uint32_t k = 0; k < t->nparams; k++) {
+            t->params[k] = get_str(c);
+            const uint8_t *q = take(c, 8);
+            if (!t->params[k] || !q)
+                FAIL("template %s: parameter %u is truncated or malformed", t->name, k);
+            t->defaults[k] = gls_le_get_f64(q);
+        }
+        t->text_len = get_u32(c);
+        if (t->text_len > GLS_MAX_TEMPLATE_TEXT)
+            FAIL("template %s: %u bytes of text, more than %u", t->name, t->text_len, GLS_MAX_TEMPLATE_TEXT);
+        const uint8_t *q = take(c, t->text_len);
+        if (!q)
+            FAIL("template %s: text is truncated", t->name);
+        if (!(t->text = malloc((size_t)t->text_len + 1)))
+            FAIL("out of memory");
+        memcpy(t->text, q, t->text_len);
+        t->text[t->text_len] = 0; /* the compiler's scanner needs the sentinel */
+    }
+    if (c->pos != c->len)
+        FAIL("template table: %zu stray bytes at its end", c->len - c->pos);
+    return 0;
+fail:
+    return -1;
+}
+
 /* The checks that need only the first bytes of a bundle (have of them, at
  * least the header when there is one) and its length: magic, version,
  * declared file size.  The file reader runs them on the header alone,

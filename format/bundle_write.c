@@ -106,6 +106,27 @@ static int sec_texcoords(const gls_bundle *bd, uint32_t feat, gls_buf *b)
     return put_u32(b, bd->ntex) || put_planes(b, bd->tc, bd->ntex, sizeof *bd->tc, 2, 4);
 }
 
+static int sec_templates(const gls_bundle *bd, uint32_t feat, gls_buf *b)
+{
+    (void)feat;
+    if (put_u32(b, bd->ntemplates))
+        return -1;
+    for (uint32_t i = 0; i < bd->ntemplates; i++) {
+        const gls_template *t = &bd->templates[i];
+        if (put_str(b, t->name) || put_u32(b, t->source) || put_u32(b, t->nparams))
+            return -1;
+        for (uint32_t k = 0; k < t->nparams; k++) {
+            uint8_t d[8];
+            gls_le_put_f64(d, t->defaults[k]);
+            if (put_str(b, t->params[k]) || gls_buf_put(b, d, 8))
+                return -1;
+        }
+        if (put_u32(b, t->text_len) || gls_buf_put(b, t->text, t->text_len))
+            return -1;
+    }
+    return 0;
+}
+
 /* feat: the content's feature flags, computed once per write */
 typedef int (*sec_fn)(const gls_bundle *, uint32_t feat, gls_buf *);
 

@@ -110,13 +110,29 @@ void gls_disassemble(const gls_bundle *b, FILE *out, int with_source)
         fputs("top: none (library bundle)\n", out);
     else
         fprintf(out, "top: %s\n", b->objects[b->top].name);
-    fprintf(out, "objects: %u, textures: %u, vertices: %u\n", b->nobjects, b->ntextures, b->npos);
+    fprintf(out, "objects: %u, textures: %u, templates: %u, vertices: %u\n", b->nobjects, b->ntextures,
+            b->ntemplates, b->npos);
 
     for (uint32_t i = 0; i < b->ntextures; i++) {
         const gls_texture *t = &b->textures[i];
         uLong crc = crc32_z(crc32(0L, Z_NULL, 0), t->rgba, (size_t)t->width * t->height * 4);
         fprintf(out, "\ntexture %s %ux%u rgba8%s crc32=%08lx\n", t->name, t->width, t->height,
                 (t->flags & GLS_TEX_ALPHA_HOLES) ? " alpha-holes" : "", (unsigned long)crc);
+    }
+    /* a template: its parameters with their defaults, and what its text is */
+    for (uint32_t i = 0; i < b->ntemplates; i++) {
+        const gls_template *t = &b->templates[i];
+        fprintf(out, "\ntemplate %s", t->name);
+        for (uint32_t k = 0; k < t->nparams; k++) {
+            char num[40];
+            gls_fmt_double(num, sizeof num, t->defaults[k]);
+            fprintf(out, "%s%s=%s", k ? "," : "(", t->params[k], num);
+        }
+        uLong crc = crc32_z(crc32(0L, Z_NULL, 0), (const Bytef *)t->text, t->text_len);
+        fprintf(out, ") text %u bytes crc32=%08lx", t->text_len, (unsigned long)crc);
+        if (with_source)
+            fprintf(out, "  ; %s", b->sources[t->source]);
+        fputc('\n', out);
     }
     for (uint32_t i = 0; i < b->nobjects; i++) {
         const gls_object *o = &b->objects[i];

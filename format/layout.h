@@ -39,14 +39,16 @@
 /* The sections, in id and file order:  X(ID, name, content).  Section ID
  * is GLS_SEC_ID, numbered from 1; bundle_write.c writes each with
  * sec_<name>() and bundle_read.c reads it with read_<name>(), in this
- * order (SOURCES needs the objects read before it). */
+ * order (SOURCES needs the objects read before it).  TEMPLATES came with
+ * format version 2. */
 #define GLS_SECTIONS(X)                                                              \
     X(OBJECTS,   objects,   "names, instruction counts, bytecode")                 \
     X(SOURCES,   sources,   "source file names and per-instruction lines")         \
     X(TEXTURES,  textures,  "texture names, sizes, flags, then texels")            \
     X(POSITIONS, positions, "vertex positions, float64, delta+byte planes")        \
     X(COLORS,    colors,    "vertex colours, float32, delta+byte planes")          \
-    X(TEXCOORDS, texcoords, "texture coordinates, float32, delta+byte planes")
+    X(TEXCOORDS, texcoords, "texture coordinates, float32, delta+byte planes")     \
+    X(TEMPLATES, templates, "parameterised objects: names, parameters, source text")
 
 enum {
     GLS_SEC_BEFORE_FIRST_ = 0,

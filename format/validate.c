@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "bundle.h"
+#include "specname.h"
 
 void gls_fail(gls_error *err, int line, const char *fmt, ...);
 #define FAIL(...) do { gls_fail(err, __LINE__, __VA_ARGS__); goto fail; } while (0)
@@ -32,14 +33,96 @@ int gls_valid_name(const char *s, size_t n)
     return !start;
 }
 
+/* Templates (spec/bundle.md 7.7): names sorted, a source, 1..32
+ * parameters with distinct identifiers and finite defaults, text without
+ * NUL. */
+static int check_templates(const gls_bundle *b, gls_error *err)
+{
+    if (b->ntemplates > GLS_MAX_OBJECTS)
+        FAIL("too many templates");
+    for (uint32_t i = 0; i < b->ntemplates; i++) {
+        const gls_template *t = &b->templates[i];
+        if (!t->name || !gls_valid_name(t->name, strlen(t->name)))
+            FAIL("template %u: invalid name", i);
+        if (i && strcmp(b->templates[i - 1].name, t->name) >= 0)
+            FAIL("template table not sorted or has a duplicate at %s", t->name);
+        if (t->source >= b->nsources)
+            FAIL("template %s: source index %u out of range", t->name, t->source);
+        if (t->nparams == 0 || t->nparams > GLS_MAX_PARAMS)
+            FAIL("template %s: %u parameters, not 1..%u", t->name, t->nparams, GLS_MAX_PARAMS);
+        for (uint32_t k = 0; k < t->nparams; k++) {
+            const char *p = t->params[k];
+            if (!p || !gls_valid_name(p, strlen(p)) || strchr(p, '.'))
+                FAIL("template %s: parameter %u is not an identifier", t->name, k);
+            for (uint32_t j = 0; j < k; j++)
+                if (strcmp(t->params[j], p) == 0)
+                    FAIL("template %s: parameter %s declared twice", t->name, p);
+            if (!isfinite(t->defaults[k]))
+                FAIL("template %s: the default of %s is not finite", t->name, p);
+        }
+        if (t->text_len > GLS_MAX_TEMPLATE_TEXT || !t->text || memchr(t->text, 0, t->text_len))
+            FAIL("template %s: its text is too long or has a NUL byte", t->name);
+    }
+    return 0;
+fail:
+    return -1;
+}
+
+/* An object's name: a valid name, or a specialised one (spec/bundle.md
+ * 2): its base has a template, its values are for exactly the template's
+ * parameters in order, and they are not all the defaults (that object has
+ * the plain name). */
+static int check_object_name(const gls_bundle *b, const char *n, uint32_t i, gls_error *err)
+{
+    gls_specarg args[GLS_MAX_PARAMS];
+    unsigned na;
+    long base = n ? gls_specname_parse(n, args, GLS_MAX_PARAMS, &na) : -1;
+    if (base < 0 || !gls_valid_name(n, (size_t)base))
+        FAIL("object %u: invalid name", i);
+    if (!na)
+        return 0;
+    char key[GLS_MAX_NAME_BYTES + 1];
+    memcpy(key, n, (size_t)base);
+    key[base] = 0;
+    uint32_t ti = gls_bundle_find_template(b, key);
+    if (ti == GLS_NONE)
+        FAIL("object %s: parameter values, but no template %s", n, key);
+    const gls_template *t = &b->templates[ti];
+    int all_default = na == t->nparams;
+    for (unsigned k = 0; k < na; k++) {
+        if (k >= t->nparams || strlen(t->params[k]) != args[k].len ||
+            memcmp(t->params[k], args[k].name, args[k].len) != 0)
+            FAIL("object %s: its parameters are not those of template %s", n, key);
+        all_default &= memcmp(&args[k].value, &t->defaults[k], sizeof(double)) == 0;
+    }
+    if (na != t->nparams)
+        FAIL("object %s: its parameters are not those of template %s", n, key);
+    if (all_default)
+        FAIL("object %s: every value is the default, so its name is %s", n, key);
+    return 0;
+fail:
+    return -1;
+}
+
 static int check_names(const gls_bundle *b, gls_error *err)
 {
     for (uint32_t i = 0; i < b->nobjects; i++) {
         const char *n = b->objects[i].name;
-        if (!n || !gls_valid_name(n, strlen(n)))
-            FAIL("object %u: invalid name", i);
+        if (check_object_name(b, n, i, err))
+            return -1;
         if (i && strcmp(b->objects[i - 1].name, n) >= 0)
             FAIL("object table not sorted or has a duplicate at %s", n);
+    }
+    /* every template is of some object: the plain one or one with values,
+       which sort right after the plain name's place */
+    for (uint32_t i = 0, o = 0; i < b->ntemplates; i++) {
+        const char *tn = b->templates[i].name;
+        size_t len = strlen(tn);
+        while (o < b->nobjects && strcmp(b->objects[o].name, tn) < 0)
+            o++;
+        const char *on = o < b->nobjects ? b->objects[o].name : "";
+        if (strncmp(on, tn, len) != 0 || (on[len] != 0 && on[len] != '('))
+            FAIL("template %s: no object of it", tn);
     }
     for (uint32_t i = 0; i < b->ntextures; i++) {
         const char *n = b->textures[i].name;
@@ -331,7 +414,7 @@ int gls_bundle_validate(const gls_bundle *b, gls_error *err)
         FAIL("too many objects or textures");
     if (b->top != GLS_NONE && b->top >= b->nobjects)
         FAIL("top-level object index %u >= %u objects", b->top, b->nobjects);
-    if (check_names(b, err) || check_textures(b, err) || check_vertices(b, err))
+    if (check_templates(b, err) || check_names(b, err) || check_textures(b, err) || check_vertices(b, err))
         return -1;
     for (uint32_t i = 0; i < b->nobjects; i++)
         if (check_code(b, i, err))

@@ -173,7 +173,7 @@ static void test_version_mismatch_names_both(void)
     gls_error err;
     gls_bundle *r = gls_bundle_read(data, len, &err);
     CHECK(r == NULL);
-    CHECK_MSG(strstr(err.msg, "version 7") && strstr(err.msg, "version 1"), "%s", err.msg);
+    CHECK_MSG(strstr(err.msg, "version 7") && strstr(err.msg, "version 2"), "%s", err.msg);
     gls_bundle_free(b);
     free(data);
 }
@@ -261,6 +261,100 @@ static void test_validator_rejects(void)
     b->objects[0].name = b->objects[1].name;
     b->objects[1].name = t;
     expect_invalid(b, "not sorted");
+}
+
+/* make_bundle() with a.Tri made for a parameter value: the object
+ * "a.Tri(size=2)" and the template a.Tri (size, default 1) with its text. */
+static gls_bundle *make_param_bundle(void)
+{
+    gls_bundle *b = make_bundle();
+    free(b->objects[1].name);
+    b->objects[1].name = strdup("a.Tri(size=2)");
+    b->nsources = 1;
+    b->sources = calloc(1, sizeof *b->sources);
+    b->sources[0] = strdup("lib/a/Tri.scene");
+    b->ntemplates = 1;
+    b->templates = calloc(1, sizeof *b->templates);
+    gls_template *t = &b->templates[0];
+    t->name = strdup("a.Tri");
+    t->source = 0;
+    t->nparams = 1;
+    t->params = calloc(1, sizeof *t->params);
+    t->params[0] = strdup("size");
+    t->defaults = calloc(1, sizeof *t->defaults);
+    t->defaults[0] = 1;
+    t->text = strdup("param size = 1;\ntfan { vert(0); vert(size); vert(0, size); }\n");
+    t->text_len = (uint32_t)strlen(t->text);
+    return b;
+}
+
+static void rename_object(gls_bundle *b, uint32_t i, const char *name)
+{
+    free(b->objects[i].name);
+    b->objects[i].name = strdup(name);
+}
+
+/* Templates (spec/bundle.md 7.7) survive a round trip; the validator
+ * checks them and the names of specialised objects (12.2). */
+static void test_templates(void)
+{
+    gls_bundle *b = make_param_bundle();
+    gls_error err;
+    CHECK_MSG(gls_bundle_validate(b, &err) == 0, "%s", err.msg);
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    gls_bundle *r = data ? gls_bundle_read(data, len, &err) : NULL;
+    CHECK_MSG(r != NULL, "%s", err.msg);
+    if (r) {
+        const gls_template *t = &r->templates[0];
+        CHECK(r->ntemplates == 1 && strcmp(t->name, "a.Tri") == 0 && t->nparams == 1 &&
+              strcmp(t->params[0], "size") == 0 && t->defaults[0] == 1 && t->source == 0);
+        CHECK(t->text_len == b->templates[0].text_len && memcmp(t->text, b->templates[0].text, t->text_len) == 0 &&
+              t->text[t->text_len] == 0);
+        CHECK(gls_bundle_find_template(r, "a.Tri") == 0 && gls_bundle_find_template(r, "a.Top") == GLS_NONE);
+        size_t len2;
+        uint8_t *again = write_it(r, &len2);
+        CHECK(again && len2 == len && memcmp(again, data, len) == 0);
+        free(again);
+    }
+    gls_bundle_free(r);
+    gls_bundle_free(b);
+    free(data);
+
+    b = make_param_bundle();
+    rename_object(b, 1, "a.Tri(size=2.0)"); /* not the shortest spelling */
+    expect_invalid(b, "object 1: invalid name");
+    b = make_param_bundle();
+    rename_object(b, 1, "a.Tri(size=2");
+    expect_invalid(b, "object 1: invalid name");
+    b = make_param_bundle();
+    rename_object(b, 1, "a.Tri(sise=2)");
+    expect_invalid(b, "its parameters are not those of template a.Tri");
+    b = make_param_bundle();
+    rename_object(b, 1, "a.Tri(size=2,more=1)");
+    expect_invalid(b, "its parameters are not those of template a.Tri");
+    b = make_param_bundle();
+    rename_object(b, 1, "a.Tri(size=1)");
+    expect_invalid(b, "every value is the default, so its name is a.Tri");
+    b = make_param_bundle();
+    rename_object(b, 1, "a.Trj(size=2)");
+    expect_invalid(b, "parameter values, but no template a.Trj");
+    b = make_param_bundle();
+    rename_object(b, 1, "a.Tri2"); /* the template's object is gone */
+    expect_invalid(b, "template a.Tri: no object of it");
+    b = make_param_bundle();
+    b->templates[0].text[3] = 0;
+    expect_invalid(b, "template a.Tri: its text is too long or has a NUL byte");
+    b = make_param_bundle();
+    b->templates[0].source = 1;
+    expect_invalid(b, "template a.Tri: source index 1 out of range");
+    b = make_param_bundle();
+    b->templates[0].defaults[0] = 1.0 / 0.0;
+    expect_invalid(b, "template a.Tri: the default of size is not finite");
+    b = make_param_bundle();
+    free(b->templates[0].params[0]);
+    b->templates[0].params[0] = strdup("a.b");
+    expect_invalid(b, "template a.Tri: parameter 0 is not an identifier");
 }
 
 /* Object oi's code becomes the n instructions of in, then END. */
@@ -415,6 +509,7 @@ int main(void)
     RUN(test_declared_size_checked_before_allocating);
     RUN(test_validator_rejects);
     RUN(test_validator_operand_messages);
+    RUN(test_templates);
     RUN(test_opcode_table);
     RUN(test_expansion_bomb_refused);
     CHECK_EXIT();

@@ -1,11 +1,14 @@
 /* Unit tests of the compiler API: texture decoding orientation and alpha
- * binarisation, TGA channel counts, library override order, and the precision of far-away
- * coordinates through source text, compile, write and read. */
+ * binarisation, TGA channel counts, library override order, the precision of far-away
+ * coordinates through source text, compile, write and read, and the sine
+ * and cosine of angles in degrees. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "atomic_write.h"
 #include "check.h"
 #include "compile.h"
+#include "mathfn.h"
 
 static gls_bundle *compile(const char **roots, int nroots, const char *top)
 {
@@ -187,11 +190,115 @@ static void test_earlier_root_overrides_library(void)
     gls_bundle_free(b);
 }
 
+/* Compile library directory dir, let edit change the bundle, write it to
+ * dir/lib.glsb; then compile a scene (text, in a directory of its own)
+ * against it alone: the diagnostics into msg (NULL bundle), or the
+ * bundle. */
+static gls_bundle *via_edited_library(const char *dir, void (*edit)(gls_bundle *), const char *text, char *msg,
+                                      size_t msglen)
+{
+    FILE *diag = tmpfile();
+    gls_compiler *c = gls_compiler_new(diag);
+    gls_bundle *lb = NULL, *b = NULL;
+    CHECK(gls_compile_lib(c, dir, &lb) == 0);
+    gls_compiler_free(c);
+    fclose(diag);
+    char libfile[300], top[300], topdir[] = "/tmp/glstestXXXXXX";
+    CHECK(mkdtemp(topdir) != NULL); /* not in dir: the next library would hold it */
+    snprintf(libfile, sizeof libfile, "%s/lib.glsb", dir);
+    snprintf(top, sizeof top, "%s/Top.scene", topdir);
+    uint8_t *bytes = NULL;
+    size_t len = 0;
+    gls_error err;
+    if (lb)
+        edit(lb);
+    CHECK(lb && gls_bundle_write(lb, &bytes, &len, &err) == 0);
+    CHECK(gls_write_file_atomic(libfile, bytes, len) == 0);
+    free(bytes);
+    gls_bundle_free(lb);
+    write_text(top, text);
+    diag = tmpfile();
+    c = gls_compiler_new(diag);
+    gls_compiler_add_root(c, libfile);
+    msg[0] = 0;
+    if (gls_compile_top(c, top, &b) != 0) {
+        rewind(diag);
+        size_t n = fread(msg, 1, msglen - 1, diag);
+        msg[n] = 0;
+    }
+    gls_compiler_free(c);
+    fclose(diag);
+    return b;
+}
+
+static void other_default(gls_bundle *b)
+{
+    uint32_t t = gls_bundle_find_template(b, "Sized");
+    CHECK(t != GLS_NONE);
+    if (t != GLS_NONE)
+        b->templates[t].defaults[0] = 5;
+}
+
+static void broken_text(gls_bundle *b)
+{
+    uint32_t t = gls_bundle_find_template(b, "Sized");
+    CHECK(t != GLS_NONE);
+    if (t != GLS_NONE)
+        b->templates[t].text_len = 22; /* "param size = 1;\npoly {" */
+}
+
+/* A library bundle's template is made for new values from its text
+ * (spec/bundle.md 13): a text that does not declare the parameters and
+ * defaults its table lists is refused, and errors in the text are
+ * reported in it, at its source path. */
+static void test_library_template_checked(void)
+{
+    char dir[] = "/tmp/glstestXXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char p[256], msg[4096];
+    snprintf(p, sizeof p, "%s/Sized.scene", dir);
+    write_text(p, "param size = 1;\npoly { vert(0); vert(size); vert(0, size); }\n");
+    gls_bundle *b = via_edited_library(dir, other_default, "call(\"Sized\", size = 3);\n", msg, sizeof msg);
+    CHECK_MSG(!b && strstr(msg, "error: the template of 'Sized' in a search root does not match its source text "
+                                "(other parameters or defaults): rebuild that bundle"), "%s", msg);
+    gls_bundle_free(b);
+    b = via_edited_library(dir, broken_text, "call(\"Sized\", size = 3);\n", msg, sizeof msg);
+    CHECK_MSG(!b && strstr(msg, "Sized.scene:2:1: error: syntax error: 'poly' block is not closed with '}'"), "%s",
+              msg);
+    gls_bundle_free(b);
+}
+
+/* Angles are reduced exactly before any conversion to radians
+ * (spec/language.md 5.2): multiples of 90 degrees are exact, also far from
+ * 0, and so are 30, 45 and 60; a zero is +0; other angles agree with the
+ * C library's result in radians (which is off by more near its zeros, its
+ * angle in radians being rounded). */
+static void test_trig_degrees_exact(void)
+{
+    static const double s30[12] = {0, 0.5, 0.8660254037844386, 1, 0.8660254037844386, 0.5,
+                                   0, -0.5, -0.8660254037844386, -1, -0.8660254037844386, -0.5};
+    for (int k = -48; k <= 48; k++) {
+        int i = ((k % 12) + 12) % 12;
+        double a = 30.0 * k, s = gls_sin_deg(a), c = gls_cos_deg(a);
+        CHECK_MSG(s == s30[i] && !(s == 0 && signbit(s)), "sin(%g) = %.17g", a, s);
+        CHECK_MSG(c == s30[(i + 3) % 12] && !(c == 0 && signbit(c)), "cos(%g) = %.17g", a, c);
+    }
+    CHECK(gls_sin_deg(180) == 0 && gls_cos_deg(90) == 0 && gls_cos_deg(-90) == 0);
+    CHECK(gls_sin_deg(45) == gls_cos_deg(45) && gls_sin_deg(45) == 0.7071067811865476);
+    CHECK(gls_sin_deg(360.0 * 1e9 + 90) == 1 && gls_cos_deg(-360.0 * 1e9 + 180) == -1);
+    for (double a = -720; a <= 720; a += 7.25) {
+        double r = a * 3.141592653589793 / 180;
+        CHECK_MSG(fabs(gls_sin_deg(a) - sin(r)) <= 1e-14 && fabs(gls_cos_deg(a) - cos(r)) <= 1e-14, "angle %g", a);
+    }
+}
+
 int main(void)
 {
     RUN(test_texture_orientation_and_alpha);
     RUN(test_tga_rgb_and_grey);
     RUN(test_far_coordinates_exact_through_bundle);
     RUN(test_earlier_root_overrides_library);
+    RUN(test_trig_degrees_exact);
+    RUN(test_library_template_checked);
     CHECK_EXIT();
 }
