@@ -9,22 +9,23 @@
 #include "compile.h"
 #include "mkdirs.h"
 #include "stdout_check.h"
+#include "usage.h"
 
-static const char usage[] =
-    "usage: glsc [-I ROOT]... [-o OUT.glsb] TOP\n"
-    "       glsc [-I ROOT]... --lib DIR -o LIB.glsb\n"
-    "\n"
-    "Compile the top-level object TOP (a .scene file or a dotted name such as\n"
-    "road.scenes.Demo) and everything it calls into one bundle; or, with --lib,\n"
-    "every object and texture under DIR into a library bundle.\n"
-    "\n"
-    "  -I ROOT     search root: a directory or a library bundle (repeatable,\n"
-    "              searched in order, then the roots in $GLSCENE_PATH)\n"
-    "  -o FILE     output bundle (default: the top object's last name + .glsb)\n"
-    "  --lib DIR   compile a library bundle\n"
-    "  --help      this text\n"
-    "\n"
-    "Exit status: 0 success, 1 compile error, 2 usage error.\n";
+#define USAGE \
+    "usage: glsc [-I ROOT]... [-o OUT.glsb] TOP\n" \
+    "       glsc [-I ROOT]... --lib DIR -o LIB.glsb\n" \
+    "\n" \
+    "Compile the top-level object TOP (a .scene file or a dotted name such as\n" \
+    "road.scenes.Demo) and everything it calls into one bundle; or, with --lib,\n" \
+    "every object and texture under DIR into a library bundle.\n" \
+    "\n" \
+    "  -I ROOT     search root: a directory or a library bundle (repeatable,\n" \
+    "              searched in order, then the roots in $GLSCENE_PATH)\n" \
+    "  -o FILE     output bundle (default: the top object's last name + .glsb)\n" \
+    "  --lib DIR   compile a library bundle\n" \
+    "  --help      this text\n" \
+    "\n" \
+    "Exit status: 0 success, 1 compile error, 2 usage error.\n"
 
 /* The directory of the glsc being run (the build puts glsc, textures/ and
    scenelib/ in build/), as the user would type it: from argv[0] when it
@@ -44,11 +45,7 @@ static char *build_dir_of(const char *argv0)
     return strndup(self, (size_t)(slash - self));
 }
 
-static int usage_error(const char *msg, const char *arg)
-{
-    fprintf(stderr, "glsc: error: %s%s\n%s", msg, arg ? arg : "", usage);
-    return 2;
-}
+#define usage_error(msg, arg) gls_usage_error("glsc", "\n" USAGE, "%s%s", msg, (arg) ? (arg) : "")
 
 int main(int argc, char **argv)
 {
@@ -67,7 +64,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            fputs(usage, stdout);
+            fputs(USAGE, stdout);
             free(roots);
             return 0;
         } else if (strcmp(a, "-I") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--lib") == 0) {

@@ -3,14 +3,16 @@
 #include <string.h>
 #include "disasm.h"
 #include "stdout_check.h"
+#include "usage.h"
 
-static const char usage[] =
-    "usage: glsdis [--source] BUNDLE.glsb\n"
-    "\n"
-    "Print the bundle as text: header and features, textures (size and content\n"
-    "hash), then each object's instructions and vertices.  --source appends the\n"
-    "file:line each instruction came from.\n"
-    "Exit status: 0 success, 1 unreadable or invalid bundle, 2 usage error.\n";
+#define USAGE \
+    "usage: glsdis [--source] BUNDLE.glsb\n" \
+    "\n" \
+    "Print the bundle as text: header and features, textures (size and content\n" \
+    "hash), then each object's instructions and vertices.  --source appends the\n" \
+    "file:line each instruction came from.\n" \
+    "Exit status: 0 success, 1 unreadable or invalid bundle, 2 usage error.\n"
+#define usage_error(...) gls_usage_error("glsdis", "\n" USAGE, __VA_ARGS__)
 
 int main(int argc, char **argv)
 {
@@ -21,20 +23,17 @@ int main(int argc, char **argv)
         if (strcmp(argv[i], "--source") == 0)
             with_source = 1;
         else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(usage, stdout);
+            fputs(USAGE, stdout);
             return 0;
         } else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "glsdis: error: unknown option %s\n%s", argv[i], usage);
-            return 2;
+            return usage_error("unknown option %s", argv[i]);
         } else if (path) {
-            fprintf(stderr, "glsdis: error: more than one bundle given\n%s", usage);
-            return 2;
+            return usage_error("%s", "more than one bundle given");
         } else
             path = argv[i];
     }
     if (!path) {
-        fprintf(stderr, "glsdis: error: no bundle given\n%s", usage);
-        return 2;
+        return usage_error("%s", "no bundle given");
     }
     gls_error err;
     gls_bundle *b = gls_bundle_read_file(path, &err);

@@ -125,6 +125,20 @@ if [ $rc -eq 1 ] && grep -q 'corrupted' "$tmp/err"; then ok corrupted_bundle_ref
 "$BIN/glsdis" >/dev/null 2>&1; r3=$?
 "$BIN/glsc" --help >/dev/null 2>&1; r4=$?
 if [ $r1 -eq 2 ] && [ $r2 -eq 2 ] && [ $r3 -eq 2 ] && [ $r4 -eq 0 ]; then ok usage_exit_status; else fail usage_exit_status "$r1 $r2 $r3 $r4"; fi
+# The usage errors' first lines, verbatim (base/usage.c prints them; the
+# usage text follows on the next lines).
+usage_line() { # NAME EXPECTED_FIRST_LINE TOOL ARGS...
+    name=$1 want=$2
+    shift 2
+    "$BIN/$@" >/dev/null 2>"$tmp/err"; rc=$?
+    if [ $rc -eq 2 ] && [ "$(head -1 "$tmp/err")" = "$want" ] && grep -q "^usage: $1 " "$tmp/err"; then ok "$name"
+    else fail "$name" "rc=$rc $(head -2 "$tmp/err")"; fi
+}
+usage_line usage_glsc_unknown_option "glsc: error: unknown option --bogus" glsc --bogus x
+usage_line usage_glsc_missing_argument "glsc: error: missing argument after -I" glsc -I
+usage_line usage_glsdis_no_bundle "glsdis: error: no bundle given" glsdis
+usage_line usage_glsdis_unknown_option "glsdis: error: unknown option -x" glsdis -x
+usage_line usage_glsdis_two_bundles "glsdis: error: more than one bundle given" glsdis a b
 
 # -o creates the directories it needs, as glsplay -o does.
 if "$BIN/glsc" -I tests/compiler/paper -o "$tmp/new/sub/x.glsb" road.tex.roads.Curve400m 2>"$tmp/err" &&
