@@ -3,7 +3,8 @@
 # Prints "ok NAME" / "FAIL NAME: why".  Needs the build products of `make`
 # in $GLS_BIN (default build): glsc, glsdis, glsplay, gen_textures,
 # textures/ and scenelib.glsb; runs from the repository root, where the
-# library directory is scenelib/.
+# library directory is scenelib/.  Long on purpose: one block per claim of
+# scenelib/README.md, each independent of the others.
 #   - no object is generated: every one is written in the scene language;
 #   - the texture generator is deterministic and matches $GLS_BIN/textures;
 #   - every object compiles alone without any diagnostic, is documented

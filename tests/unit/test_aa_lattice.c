@@ -3,7 +3,8 @@
  * the fine map, the gather (constant colour, exact half-plane coverage,
  * tiles straddled by pixels), the K-pass split, one pass against the
  * multi-pass path of the same pattern, the accuracy of the default, and
- * the rasteriser's snapping in the fine framebuffer. */
+ * the rasteriser's snapping in the fine framebuffer.  Long on purpose: a
+ * list of independent tests, one function each, over one small rig. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>

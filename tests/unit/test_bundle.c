@@ -1,6 +1,7 @@
 /* Unit tests of the bundle format: write/read round trip, refusal of every
  * truncation and every flipped header byte, validator rejections, and the
- * precision requirement for coordinates far from the origin. */
+ * precision requirement for coordinates far from the origin.  Long on
+ * purpose: one function per rule of spec/bundle.md, each read on its own. */
 #include <stdlib.h>
 #include <string.h>
 #include "bundle.h"
