@@ -16,6 +16,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "atomic_write.h"
+#include "calib_write.h"
 #include "frame_record.h"
 #include "glctx.h"
 #include "mkdirs.h"
@@ -572,9 +573,11 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                 if (play_camera(&ses, &cams[i], names[i], o->frame))
                     goto out;
         rc = 0;
-        goto out;
-    }
-    rc = play_trajectory(&ses, cams, (const char *const *)names);
+    } else
+        rc = play_trajectory(&ses, cams, (const char *const *)names);
+    /* after the render: every frame in the range was read and checked */
+    if (rc == 0 && o->write_calib)
+        rc = gls_calib_write(o, cams, (const char *const *)names, errs);
 out:
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);
