@@ -36,14 +36,21 @@ int gls_output_path(char *buf, size_t len, const char *outdir, const char *name,
     return k < 0 || (size_t)k >= len ? -1 : 0;
 }
 
-/* Camera name: the file name without directory and without ".cam". */
+/* Camera name: the file name without directory and without ".cam" (or
+ * ".yml", ".yaml": an OpenCV camera file). */
 static char *camera_name(const char *path)
 {
     const char *base = strrchr(path, '/');
     base = base ? base + 1 : path;
     size_t n = strlen(base);
-    if (n > 4 && strcmp(base + n - 4, ".cam") == 0)
-        n -= 4;
+    static const char *const ext[] = {".cam", ".yml", ".yaml"};
+    for (size_t i = 0; i < 3; i++) {
+        size_t e = strlen(ext[i]);
+        if (n > e && strcmp(base + n - e, ext[i]) == 0) {
+            n -= e;
+            break;
+        }
+    }
     char *s = malloc(n + 1);
     if (s) {
         memcpy(s, base, n);

@@ -1,7 +1,9 @@
 #!/bin/sh
 # glsplay --write-calib (spec/outputs.md "Calibration files"): the files
 # read back with cv2.FileStorage, numpy, yaml and json against geometry
-# computed in tests/py/check_calib.py; usage and write errors here.
+# computed in tests/py/check_calib.py; cameras written by cv2.FileStorage
+# read by glsplay (spec/camera.md "OpenCV camera files"); usage and write
+# errors here.
 # Prints "ok NAME" / "FAIL NAME: why".
 BIN=${GLS_BIN:-build}
 PY=/usr/bin/python3
@@ -11,6 +13,8 @@ ok() { echo "ok $1"; }
 fail() { echo "FAIL $1: $2"; }
 if $PY -c 'import cv2, numpy, yaml' 2>/dev/null; then
     $PY tests/py/check_calib.py export "$BIN" "$t" || echo "FAIL calib_export: check_calib.py exited with status $?"
+    mkdir "$t/import"
+    $PY tests/py/check_calib.py import "$BIN" "$t/import" || echo "FAIL calib_import: check_calib.py exited with status $?"
 else
     fail calib_export "no cv2, numpy and yaml under $PY"
 fi

@@ -4,6 +4,7 @@
 (spec/outputs.md "Calibration files").  Prints "ok NAME" / "FAIL NAME: why".
 
   check_calib.py export BIN DIR   the exported files (OpenCV, KITTI, ROS, JSON)
+  check_calib.py import BIN DIR   cameras written by cv2.FileStorage, rendered and exported again
 """
 import json
 import math
@@ -201,6 +202,13 @@ def export(bin_dir, t):
     run([bin_dir + '/glsplay', t + '/wall.glsb', *cams, '--frame', '7', '--write-calib', '-o', t + '/single'])
     check_static('calib', t + '/single', CAMS)
     check_frame('calib', t + '/single', 7, CAMS)
+    # an exported file is a camera glsplay reads: the same bytes again
+    import filecmp
+    run([bin_dir + '/glsplay', t + '/wall.glsb', '--camera', t + '/single/up/calib_000007.yml', '--frame', '7',
+         '-o', t + '/again'])
+    result('calib_export_reimport', all(filecmp.cmp('%s/single/up/%s_000007.%s' % (t, k, e),
+                                                    '%s/again/calib_000007/%s_000007.%s' % (t, k, e), shallow=False)
+                                        for k, e in (('image', 'png'), ('depth', 'pfm'), ('points', 'ply'))))
     # a trajectory: the rig moves 0.5 forward and turns a little each frame;
     # the camera files give the poses relative to the rig
     traj = []
@@ -229,7 +237,78 @@ def export(bin_dir, t):
     result('calib_traj_kitti_static', same, 'calib.txt differs between the single render and the sequence')
 
 
+def fs_write(path, c, rvec=None, extra=True):
+    """a camera as cv2.FileStorage writes it: a calibration's keys, R and T
+    (or rvec and tvec), and glsplay's near and far"""
+    fs = cv2.FileStorage(path, cv2.FILE_STORAGE_WRITE)
+    if extra:  # what a calibration also writes, which glsplay skips
+        fs.write('calibration_time', 'Mon Jan  1 00:00:00 2024')
+        fs.write('nr_of_frames', 12)
+        fs.write('avg_reprojection_error', 0.25)
+        fs.write('per_view_reprojection_errors', np.arange(12, dtype=np.float32).reshape(12, 1) / 7)
+    fs.write('image_width', c['W'])
+    fs.write('image_height', c['H'])
+    fs.write('camera_matrix', K_of(c))
+    fs.write('distortion_coefficients', np.zeros((1, 5)))
+    if rvec is None:
+        fs.write('R', c['R'])
+        fs.write('T', c['T'].reshape(3, 1))
+    else:
+        fs.write('rvec', rvec)
+        fs.write('tvec', c['T'].reshape(3, 1))
+    fs.write('near', c['near'])
+    fs.write('far', c['far'])
+    fs.release()
+
+
+def same_files(a, b, name):
+    import filecmp
+    files = ('image_000000.png', 'depth_000000.pfm', 'points_000000.ply')
+    return all(filecmp.cmp('%s/%s/%s' % (a, name, f), '%s/%s/%s' % (b, name, f), shallow=False) for f in files)
+
+
+def import_(bin_dir, t):
+    import os
+    with open(t + '/Wall.scene', 'w') as f:
+        f.write(SCENE)
+    run([bin_dir + '/glsc', '-I', t, '-o', t + '/wall.glsb', 'Wall'])
+    for d in ('yml', 'cam', 'rvec', 'rvecyml', 'rcam'):
+        os.makedirs('%s/%s' % (t, d), exist_ok=True)
+    # R and T: the cv2 file and the equivalent .cam render the same bytes
+    fs_write(t + '/yml/cv.yml', UP)
+    write_cam(t + '/cam/cv.cam', UP)
+    play = [bin_dir + '/glsplay', t + '/wall.glsb', '--camera']
+    run(play + [t + '/yml/cv.yml', '--write-calib', '-o', t + '/o_yml'])
+    run(play + [t + '/cam/cv.cam', '-o', t + '/o_cam'])
+    result('calib_import_yml_renders_as_cam', same_files(t + '/o_yml', t + '/o_cam', 'cv'))
+    # cv2 -> glsplay -> export -> cv2: the same values, exactly
+    d = fs_read(t + '/o_yml/cv/calib_000000.yml')
+    good = d is not None and np.array_equal(d['camera_matrix'], K_of(UP)) and np.array_equal(d['R'], UP['R']) and \
+        np.array_equal(d['T'], UP['T'].reshape(3, 1)) and np.array_equal(d['distortion_coefficients'], np.zeros((1, 5))) \
+        and (d['W'], d['H'], d['near'], d['far']) == (UP['W'], UP['H'], UP['near'], UP['far'])
+    result('calib_import_roundtrip_exact', good, str(d))
+    # rvec and tvec: R is cv2.Rodrigues(rvec), a .cam with K and rvec renders
+    # the same bytes as the cv2 file
+    rvec = np.array([[0.3], [-0.2], [0.05]])
+    fs_write(t + '/rvecyml/rv.yml', LEFT, rvec, extra=False)
+    with open(t + '/rvec/rv.cam', 'w') as f:
+        f.write('width %d\nheight %d\nK %s\nrvec %s\nT %s\nnear %r\nfar %r\n' % (
+            LEFT['W'], LEFT['H'], fmt(K_of(LEFT)), fmt(rvec), fmt(LEFT['T']), LEFT['near'], LEFT['far']))
+    run(play + [t + '/rvecyml/rv.yml', '--write-calib', '-o', t + '/o_rvecyml'])
+    run(play + [t + '/rvec/rv.cam', '-o', t + '/o_rvec'])
+    result('calib_import_rvec_renders_as_cam', same_files(t + '/o_rvecyml', t + '/o_rvec', 'rv'))
+    d = fs_read(t + '/o_rvecyml/rv/calib_000000.yml')
+    Rcv = cv2.Rodrigues(rvec)[0]
+    err = np.max(np.abs(d['R'] - Rcv))
+    result('calib_import_rvec_is_rodrigues', err < 1e-15 and np.array_equal(d['T'], LEFT['T'].reshape(3, 1)),
+           'R differs from cv2.Rodrigues by %.3g' % err)
+    # and the exported R, given as R in a .cam, renders the same bytes again
+    write_cam(t + '/rcam/rv.cam', dict(LEFT, R=d['R']))
+    run(play + [t + '/rcam/rv.cam', '-o', t + '/o_rcam'])
+    result('calib_import_rvec_renders_as_r', same_files(t + '/o_rvecyml', t + '/o_rcam', 'rv'))
+
+
 if __name__ == '__main__':
     mode, bin_dir, t = sys.argv[1:4]
-    {'export': export}[mode](bin_dir, t)
+    {'export': export, 'import': import_}[mode](bin_dir, t)
     sys.exit(0 if OK else 1)
