@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "camera.h"
+#include "camera_keys.h"
 #include "numfmt.h"
 #include "rotation.h"
 #include "srcline.h"
@@ -16,10 +17,27 @@
 #include "textfile.h"
 #include "vec.h"
 
-enum { K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE, K_COUNT };
-static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy",
-                                              "skew", "R", "T", "near", "far", "pose"};
-static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1}; /* pose: a word */
+static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy", "skew",
+                                              "R", "T", "near", "far", "pose", "K", "rvec"};
+static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1, 9, 3}; /* pose: a word */
+
+/* The key that gives the same thing as key k (K: fx fy cx cy skew; rvec:
+ * R) and was seen already, or -1. */
+static int given_already(int k, const unsigned *seen)
+{
+    if (k == K_K) {
+        for (int j = K_FX; j <= K_SKEW; j++)
+            if (seen[j])
+                return j;
+    } else if (k >= K_FX && k <= K_SKEW && seen[K_K]) {
+        return K_K;
+    } else if (k == K_RVEC && seen[K_R]) {
+        return K_R;
+    } else if (k == K_R && seen[K_RVEC]) {
+        return K_RVEC;
+    }
+    return -1;
+}
 
 static const char *suggest(const char *word)
 {
@@ -51,11 +69,14 @@ static void fmt_limit(char *buf, size_t n, double v, int dir)
 int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes, gls_camera *cam,
                      char *err, size_t errlen)
 {
-    gls_pose pose = GLS_POSE_UNDECLARED;
-    double val[K_COUNT][9];
-    unsigned seen[K_COUNT] = {0}; /* line where each key was given, 0 = absent */
-    unsigned vcol[K_COUNT] = {0}; /* column of its first value              */
-    unsigned last = 0;            /* last line holding a key               */
+    if (gls_camera_is_opencv(text, len))
+        return gls_camera_parse_opencv(text, len, fname, use, notes, cam, err, errlen);
+    static gls_camera_keys zero;
+    gls_camera_keys keys = zero;
+    double (*val)[9] = keys.val;
+    unsigned *seen = keys.seen; /* line where each key was given, 0 = absent */
+    unsigned *vcol = keys.vcol; /* column of its first value              */
+    unsigned last = 0;          /* last line holding a key               */
     gls_text_lines it = {text, len, 0, 0};
     size_t n;
     int got;
@@ -89,12 +110,21 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
             else
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
-                     "unknown key '%s' (keys: width height fx fy cx cy skew R T near far pose)", tok[0]);
+                     "unknown key '%s' (keys: width height fx fy cx cy skew K R rvec T near far pose)", tok[0]);
             return -1;
         }
         if (seen[k]) {
             gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' given twice (first on line %u)", key_name[k],
                  seen[k]);
+            return -1;
+        }
+        int other = given_already(k, seen);
+        if (other >= 0) {
+            gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
+                           "key '%s' and key '%s' (line %u) both give the %s: give %s", key_name[k], key_name[other],
+                           seen[other], k == K_R || k == K_RVEC ? "rotation" : "intrinsics",
+                           k == K_R || k == K_RVEC ? "R or rvec, not both"
+                                                   : "K, or fx fy cx cy and optionally skew, not both");
             return -1;
         }
         if (k == K_POSE) {
@@ -103,7 +133,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
                      nt > MAX_TOKENS ? "more than " : "", nt - 1);
                 return -1;
             }
-            pose = strcmp(tok[1], "world") == 0 ? GLS_POSE_WORLD : strcmp(tok[1], "rig") == 0 ? GLS_POSE_RIG
+            gls_pose pose = strcmp(tok[1], "world") == 0 ? GLS_POSE_WORLD : strcmp(tok[1], "rig") == 0 ? GLS_POSE_RIG
                                                                                             : GLS_POSE_UNDECLARED;
             if (!pose) {
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[1]),
@@ -111,6 +141,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
                      "rig, with a trajectory)", tok[1]);
                 return -1;
             }
+            keys.pose = pose;
             seen[k] = line;
             vcol[k] = COL(tok[1]);
             last = line;
@@ -132,6 +163,8 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
             return -1;
         }
         for (int j = 0; j < key_arity[k]; j++) {
+            keys.eline[k][j] = line;
+            keys.ecol[k][j] = COL(tok[1 + j]);
             const char *why = gls_parse_double(tok[1 + j], &val[k][j]);
             if (why) {
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[1 + j]), "key '%s': '%s' %s", key_name[k],
@@ -144,12 +177,64 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         last = line;
 #undef COL
     }
-    for (int k = 0; k < K_COUNT; k++)
-        if (!seen[k] && k != K_SKEW && k != K_POSE) {
+    for (int k = 0; k < K_COUNT; k++) {
+        /* optional: skew, pose; K and rvec stand for what they give */
+        int optional = k == K_SKEW || k == K_POSE || k == K_K || k == K_RVEC ||
+                       (k >= K_FX && k <= K_CY && seen[K_K]) || (k == K_R && seen[K_RVEC]);
+        if (!seen[k] && !optional) {
             gls_text_error(err, errlen, text, len, fname, last ? last : 1, 1,
-                 "missing key '%s' (required: width height fx fy cx cy R T near far)", key_name[k]);
+                 "missing key '%s' (required: width height fx fy cx cy (or K) R (or rvec) T near far)", key_name[k]);
             return -1;
         }
+    }
+    return gls_camera_from_keys(&keys, key_name, text, len, fname, use, notes, cam, err, errlen);
+}
+
+/* "fx" or, when K gave it, "fx (K[0][0])" */
+static const char *label(char *buf, size_t n, const gls_camera_keys *k, const char *const *names, int key, int entry)
+{
+    if (!k->seen[K_K])
+        return names[key];
+    snprintf(buf, n, "%s (%s[%d][%d])", names[key], names[K_K], entry / 3, entry % 3);
+    return buf;
+}
+
+int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const char *text, size_t len,
+                         const char *fname, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen)
+{
+    double (*val)[9] = keys->val;
+    unsigned *seen = keys->seen, *vcol = keys->vcol;
+    gls_pose pose = keys->pose;
+    char lab[64];
+    /* K = [[fx, skew, cx], [0, fy, cy], [0, 0, 1]]: the intrinsics keys
+       from it, each located at its entry */
+    if (seen[K_K]) {
+        static const int at[3][2] = {{1, 0}, {2, 0}, {2, 1}};
+        for (int i = 0; i < 4; i++) {
+            int e = i < 3 ? 3 * at[i][0] + at[i][1] : 8;
+            double want = i < 3 ? 0 : 1;
+            if (val[K_K][e] != want) {
+                char num[40];
+                gls_fmt_double(num, sizeof num, val[K_K][e]);
+                gls_text_error(err, errlen, text, len, fname, keys->eline[K_K][e], keys->ecol[K_K][e],
+                               "%s[%d][%d] is %s, must be %g: the camera matrix is [[fx, skew, cx], [0, fy, cy], "
+                               "[0, 0, 1]]", names[K_K], e / 3, e % 3, num, want);
+                return -1;
+            }
+        }
+        static const int from[5][2] = {{K_FX, 0}, {K_FY, 4}, {K_CX, 2}, {K_CY, 5}, {K_SKEW, 1}};
+        for (int i = 0; i < 5; i++) {
+            int key = from[i][0], e = from[i][1];
+            val[key][0] = val[K_K][e];
+            seen[key] = keys->eline[K_K][e];
+            vcol[key] = keys->ecol[K_K][e];
+        }
+    }
+    if (seen[K_RVEC]) {
+        gls_rotation_rodrigues(val[K_RVEC], val[K_R]);
+        seen[K_R] = seen[K_RVEC];
+        vcol[K_R] = vcol[K_RVEC];
+    }
     static const int dims[2] = {K_WIDTH, K_HEIGHT};
     for (int i = 0; i < 2; i++) {
         double v = val[dims[i]][0];
@@ -157,27 +242,29 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
             char num[40];
             gls_fmt_double(num, sizeof num, v);
             gls_text_error(err, errlen, text, len, fname, seen[dims[i]], vcol[dims[i]], "%s %s must be a whole number in 1..%u",
-                 key_name[dims[i]], num, GLS_CAMERA_MAX_DIM);
+                 names[dims[i]], num, GLS_CAMERA_MAX_DIM);
             return -1;
         }
     }
     if (!(val[K_FX][0] > 0)) {
-        gls_text_error(err, errlen, text, len, fname, seen[K_FX], vcol[K_FX], "fx must be > 0 (focal length in pixels)");
+        gls_text_error(err, errlen, text, len, fname, seen[K_FX], vcol[K_FX], "%s must be > 0 (focal length in pixels)",
+                       label(lab, sizeof lab, keys, names, K_FX, 0));
         return -1;
     }
     if (!(val[K_FY][0] > 0)) {
-        gls_text_error(err, errlen, text, len, fname, seen[K_FY], vcol[K_FY], "fy must be > 0 (focal length in pixels)");
+        gls_text_error(err, errlen, text, len, fname, seen[K_FY], vcol[K_FY], "%s must be > 0 (focal length in pixels)",
+                       label(lab, sizeof lab, keys, names, K_FY, 4));
         return -1;
     }
     if (!(val[K_NEAR][0] > 0)) {
-        gls_text_error(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR], "near must be > 0");
+        gls_text_error(err, errlen, text, len, fname, seen[K_NEAR], vcol[K_NEAR], "%s must be > 0", names[K_NEAR]);
         return -1;
     }
     if (!(val[K_FAR][0] > val[K_NEAR][0])) {
         char f[40], n[40];
         gls_fmt_double(f, sizeof f, val[K_FAR][0]);
         gls_fmt_double(n, sizeof n, val[K_NEAR][0]);
-        gls_text_error(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "far (%s) must be greater than near (%s)", f, n);
+        gls_text_error(err, errlen, text, len, fname, seen[K_FAR], vcol[K_FAR], "%s (%s) must be greater than %s (%s)", names[K_FAR], f, names[K_NEAR], n);
         return -1;
     }
     double nmin, nmax;

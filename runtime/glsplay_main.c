@@ -16,7 +16,8 @@ static const char usage_text[] =
     "       glsplay BUNDLE.glsb [--camera CAM ...] --explain\n"
     "Renders the bundle's top-level object through each camera (spec/camera.md)\n"
     "and writes OUTDIR/NAME/image_000000.png, depth_000000.pfm, points_000000.ply\n"
-    "where NAME is the camera file name without .cam.\n"
+    "where NAME is the camera file name without .cam (or .yml, .yaml: an OpenCV\n"
+    "camera file, spec/camera.md).\n"
     "options:\n"
     "  --camera CAM, -c CAM   camera file (repeatable)\n"
     "  -o OUTDIR              output directory (created if missing)\n"
@@ -25,6 +26,9 @@ static const char usage_text[] =
     "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
     "                         it needs --aa N with N > 1)\n"
     "  --size WxH             override every camera's width and height\n"
+    "  --write-calib          also write the cameras' calibration (spec/outputs.md):\n"
+    "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
+    "                         calib.txt (KITTI) and NAME/camera_info.yaml (ROS)\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
     "  --background R,G,B     colour where no surface is, components 0..1 (default 0,0,0)\n"
     "  --anisotropic N        anisotropic texture filtering up to N x, N in 1..16\n"
@@ -327,6 +331,8 @@ int main(int argc, char **argv)
             i++;
         } else if (strcmp(a, "--explain") == 0) {
             o.explain = 1;
+        } else if (strcmp(a, "--write-calib") == 0) {
+            o.write_calib = 1;
         } else if (strcmp(a, "--resume") == 0) {
             o.resume = 1;
         } else if (strcmp(a, "--progress") == 0) {
@@ -410,6 +416,10 @@ int main(int argc, char **argv)
     }
     if (!o.explain && !o.outdir) {
         rc = usage_error("%sno output directory given (-o OUTDIR), and no --explain", "");
+        goto done;
+    }
+    if (o.write_calib && !o.outdir) {
+        rc = usage_error("%s--write-calib writes into the output directory: give -o OUTDIR", "");
         goto done;
     }
     if (o.outdir && o.ncameras == 0) {

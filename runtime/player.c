@@ -16,6 +16,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "atomic_write.h"
+#include "calib_write.h"
 #include "frame_record.h"
 #include "glctx.h"
 #include "mkdirs.h"
@@ -35,14 +36,21 @@ int gls_output_path(char *buf, size_t len, const char *outdir, const char *name,
     return k < 0 || (size_t)k >= len ? -1 : 0;
 }
 
-/* Camera name: the file name without directory and without ".cam". */
+/* Camera name: the file name without directory and without ".cam" (or
+ * ".yml", ".yaml": an OpenCV camera file). */
 static char *camera_name(const char *path)
 {
     const char *base = strrchr(path, '/');
     base = base ? base + 1 : path;
     size_t n = strlen(base);
-    if (n > 4 && strcmp(base + n - 4, ".cam") == 0)
-        n -= 4;
+    static const char *const ext[] = {".cam", ".yml", ".yaml"};
+    for (size_t i = 0; i < 3; i++) {
+        size_t e = strlen(ext[i]);
+        if (n > e && strcmp(base + n - e, ext[i]) == 0) {
+            n -= e;
+            break;
+        }
+    }
     char *s = malloc(n + 1);
     if (s) {
         memcpy(s, base, n);
@@ -572,9 +580,11 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                 if (play_camera(&ses, &cams[i], names[i], o->frame))
                     goto out;
         rc = 0;
-        goto out;
-    }
-    rc = play_trajectory(&ses, cams, (const char *const *)names);
+    } else
+        rc = play_trajectory(&ses, cams, (const char *const *)names);
+    /* after the render: every frame in the range was read and checked */
+    if (rc == 0 && o->write_calib)
+        rc = gls_calib_write(o, cams, (const char *const *)names, errs);
 out:
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);

@@ -42,6 +42,8 @@ typedef struct {
                                     0 or 1 = off (the fast default)     */
     int progress;                /* progress lines on errs               */
     gls_backend backend;         /* GL backend (glctx.h); 0 = auto       */
+    int write_calib;             /* --write-calib: calibration files
+                                    (calib_write.h)                     */
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,

@@ -70,3 +70,19 @@ int gls_rotation_check(double R[9], char *why, size_t whylen)
              fmax(worst, fabs(det - 1)), STR(GLS_ROT_EXACT), moved);
     return 1;
 }
+
+void gls_rotation_rodrigues(const double r[3], double R[9])
+{
+    double t = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    if (t == 0) {
+        static const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        memcpy(R, I, sizeof I);
+        return;
+    }
+    double k[3] = {r[0] / t, r[1] / t, r[2] / t}, c = cos(t), s = sin(t), c1 = 1 - c;
+    /* [k]x = [[0, -kz, ky], [kz, 0, -kx], [-ky, kx, 0]] */
+    const double kx[9] = {0, -k[2], k[1], k[2], 0, -k[0], -k[1], k[0], 0};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[3 * i + j] = (i == j ? c : 0) + c1 * k[i] * k[j] + s * kx[3 * i + j];
+}

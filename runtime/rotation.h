@@ -27,4 +27,9 @@ int gls_rotation_check(double R[9], char *why, size_t whylen);
  * det R > 0.  Newton's iteration Q <- (Q + Q^-T) / 2, quadratic from
  * matrices near orthonormal.  Returns 0, or -1 if R is singular. */
 int gls_rotation_polar(const double R[9], double Q[9]);
+/* The rotation of a Rodrigues vector r (OpenCV's cv::Rodrigues, the
+ * `rvec` of camera files): angle |r| radians about r / |r|,
+ *     R = cos t I + (1 - cos t) k k^T + sin t [k]x,  t = |r|, k = r / t,
+ * row-major; I for r = 0. */
+void gls_rotation_rodrigues(const double r[3], double R[9]);
 #endif

@@ -5,6 +5,7 @@
 #include <string.h>
 #include "camera.h"
 #include "check.h"
+#include "rotation.h"
 #include "textfile.h"
 
 static const char good[] =
@@ -321,8 +322,41 @@ static void test_matrices_map_to_pixels(void)
     CHECK_NEAR(P1[6] - P0[6], 2 * 0.5 / c.height, 1e-15);
 }
 
+/* The K and rvec keys (spec/camera.md "File format") and the OpenCV YAML
+ * form ("OpenCV camera files") give the same camera as fx..skew and R. */
+static void test_k_rvec_yaml(void)
+{
+    gls_camera a, b, y;
+    char err[512] = "";
+    CHECK(parse(good, &a, err) == 0);
+    static const char kfile[] = "width 640\nheight 480\nK 700.5 3.7 301.3  0 650.25 257.8  0 0 1\n"
+                                "R 0.36 0.48 -0.8  -0.8 0.6 0  0.48 0.64 0.6\nT 0.2 -0.1 0.5\nnear 0.1\nfar 1000\n";
+    CHECK_MSG(parse(kfile, &b, err) == 0, "%s", err);
+    CHECK(memcmp(&a, &b, sizeof a) == 0);
+    static const char yfile[] =
+        "%YAML:1.0\n---\nimage_width: 640\nimage_height: 480\n"
+        "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n"
+        "   data: [ 7.0050000000000000e+02, 3.7000000000000002e+00, 301.3, 0.,\n       650.25, 257.8, 0., 0., 1. ]\n"
+        "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 5\n   dt: d\n   data: [ 0., 0., 0., 0., 0. ]\n"
+        "R: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ 0.36, 0.48, -0.8, -0.8, 0.6, 0., 0.48, 0.64, 0.6 ]\n"
+        "T: !!opencv-matrix\n   rows: 3\n   cols: 1\n   dt: d\n   data: [ 0.2, -0.1, 0.5 ]\nnear: 0.1\nfar: 1000.\n";
+    CHECK_MSG(parse(yfile, &y, err) == 0, "%s", err);
+    CHECK(memcmp(&a, &y, sizeof a) == 0);
+    /* rvec: a quarter turn about z, and the zero vector */
+    static const char rfile[] = "width 640\nheight 480\nK 700 0 320  0 700 240  0 0 1\n"
+                                "rvec 0 0 1.5707963267948966\nT 0 0 0\nnear 0.1\nfar 1000\n";
+    CHECK_MSG(parse(rfile, &b, err) == 0, "%s", err);
+    const double Rz[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+    for (int i = 0; i < 9; i++)
+        CHECK_NEAR(b.R[i], Rz[i], 1e-16);
+    double R0[9], r0[3] = {0, 0, 0};
+    gls_rotation_rodrigues(r0, R0);
+    CHECK(R0[0] == 1 && R0[4] == 1 && R0[8] == 1 && R0[1] == 0 && R0[5] == 0);
+}
+
 int main(void)
 {
+    RUN(test_k_rvec_yaml);
     RUN(test_parse_good);
     RUN(test_parse_errors);
     RUN(test_long_lines);

@@ -1,0 +1,39 @@
+/* The values of a camera as a parser found them, with where each was
+ * found, shared by the two camera file parsers (camera.c: the .cam
+ * format; camera_opencv.c: OpenCV FileStorage YAML) so that both check
+ * the values with the same code and the same located messages. */
+#ifndef GLS_CAMERA_KEYS_H
+#define GLS_CAMERA_KEYS_H
+#include <stddef.h>
+#include <stdio.h>
+#include "camera.h"
+
+enum {
+    K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE,
+    K_K,    /* the 3x3 camera matrix, instead of fx fy cx cy skew */
+    K_RVEC, /* a Rodrigues vector, instead of R                   */
+    K_COUNT
+};
+
+typedef struct {
+    double val[K_COUNT][9];
+    unsigned seen[K_COUNT];       /* line of each key, 0 = absent          */
+    unsigned vcol[K_COUNT];       /* column of its first value             */
+    unsigned eline[K_COUNT][9];   /* line and column of each value         */
+    unsigned ecol[K_COUNT][9];
+    gls_pose pose;                /* the 'pose' word, if seen              */
+} gls_camera_keys;
+
+/* Check the values of a parsed camera file whose required keys are all
+ * there (K may stand for fx fy cx cy skew, rvec for R) and fill cam.
+ * names[k] is what the file calls key k, for the messages.  Errors and
+ * notes as gls_camera_parse(). */
+int gls_camera_from_keys(gls_camera_keys *k, const char *const *names, const char *text, size_t len,
+                         const char *fname, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen);
+
+/* A camera given as OpenCV FileStorage YAML (camera_opencv.c): the text
+ * starts with "%YAML".  Parsed as gls_camera_parse() says. */
+int gls_camera_is_opencv(const char *text, size_t len);
+int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes,
+                            gls_camera *cam, char *err, size_t errlen);
+#endif

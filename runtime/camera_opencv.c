@@ -1,0 +1,304 @@
+/* A camera given as the YAML that cv::FileStorage writes (spec/camera.md
+ * "OpenCV camera files"): top-level `key: scalar` lines and
+ * `key: !!opencv-matrix` blocks (rows, cols, dt, data: [ ... ], the data
+ * possibly over several lines).  Only that layout is read, not YAML at
+ * large: it is what OpenCV writes and reads.  The values are checked by
+ * the .cam parser's own code (gls_camera_from_keys, camera_keys.h), so
+ * both formats refuse the same cameras with the same messages. */
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include "camera_keys.h"
+#include "numfmt.h"
+#include "srcline.h"
+#include "textfile.h"
+
+int gls_camera_is_opencv(const char *text, size_t len)
+{
+    return len >= 5 && memcmp(text, "%YAML", 5) == 0;
+}
+
+/* the keys read, and what glsplay's messages call them */
+enum { Y_DIST = K_COUNT, Y_TVEC, Y_COUNT };
+static const char *const yname[Y_COUNT] = {
+    [K_WIDTH] = "image_width", [K_HEIGHT] = "image_height", [K_K] = "camera_matrix", [K_R] = "R",
+    [K_RVEC] = "rvec",         [K_T] = "T",                 [K_NEAR] = "near",       [K_FAR] = "far",
+    [K_POSE] = "pose",         [Y_DIST] = "distortion_coefficients",                 [Y_TVEC] = "tvec",
+    /* not keys of the file; named in messages about K's entries */
+    [K_FX] = "fx", [K_FY] = "fy", [K_CX] = "cx", [K_CY] = "cy", [K_SKEW] = "skew"};
+/* OpenCV's distortion coefficients, in its order */
+static const char *const dist_name[14] = {"k1", "k2", "p1", "p2", "k3", "k4", "k5",
+                                          "k6", "s1", "s2", "s3", "s4", "tx", "ty"};
+#define MAXDATA 16
+
+typedef struct {
+    const char *text, *fname;
+    size_t len;
+    char *err;
+    size_t errlen;
+} src;
+
+static int fail(const src *s, unsigned line, unsigned col, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+static int fail(const src *s, unsigned line, unsigned col, const char *fmt, ...)
+{
+    char msg[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    gls_text_error(s->err, s->errlen, s->text, s->len, s->fname, line, col, "%s", msg);
+    return -1;
+}
+
+/* One !!opencv-matrix block being read. */
+typedef struct {
+    int key;                 /* -1: none open                        */
+    unsigned line, col;      /* of its key                           */
+    int rows, cols, have_dt; /* rows, cols: -1 until given           */
+    int in_data, data_done;  /* inside data's '[', after its ']'     */
+    size_t n;                /* numbers read                         */
+    double v[MAXDATA];
+    unsigned vline[MAXDATA], vcol[MAXDATA];
+} matrix;
+
+/* Numbers of a data list from p on (column col0 of line), until ']'. */
+static int data_numbers(const src *s, matrix *m, char *p, unsigned line, unsigned col0)
+{
+    char *start = p;
+    for (;;) {
+        p += strspn(p, " \t,");
+        if (!*p || *p == '#')
+            return 0;
+        if (*p == ']') {
+            m->in_data = 0;
+            m->data_done = 1;
+            p += 1 + strspn(p + 1, " \t");
+            if (*p && *p != '#')
+                return fail(s, line, col0 + (unsigned)(p - start), "key '%s': text after the data's ']'", yname[m->key]);
+            return 0;
+        }
+        size_t k = strcspn(p, " \t,]#");
+        char c = p[k], tok[64];
+        unsigned col = col0 + (unsigned)(p - start);
+        p[k] = 0;
+        snprintf(tok, sizeof tok, "%s", p);
+        double v;
+        const char *why = gls_parse_double(p, &v);
+        if (why)
+            return fail(s, line, col, "key '%s': '%s' %s", yname[m->key], tok, why);
+        if (m->n < MAXDATA) {
+            m->v[m->n] = v;
+            m->vline[m->n] = line;
+            m->vcol[m->n] = col;
+        }
+        m->n++;
+        p[k] = c;
+        p += k;
+    }
+}
+
+/* One "field: value" line inside a matrix block. */
+static int matrix_field(const src *s, matrix *m, char *p, unsigned line, unsigned col0)
+{
+    char *start = p;
+    if (m->in_data)
+        return data_numbers(s, m, p, line, col0);
+    const char *name = yname[m->key];
+    char *colon = strchr(p, ':');
+    if (!colon || m->data_done)
+        return fail(s, line, col0, "key '%s': expected rows, cols, dt and data of an !!opencv-matrix", name);
+    *colon = 0;
+    char *v = colon + 1;
+    v += strspn(v, " \t");
+    unsigned vc = col0 + (unsigned)(v - start);
+    if (strcmp(p, "rows") == 0 || strcmp(p, "cols") == 0) {
+        int *dst = p[0] == 'r' ? &m->rows : &m->cols;
+        char *e;
+        long x = strtol(v, &e, 10);
+        e += strspn(e, " \t");
+        if (e == v || (*e && *e != '#') || x < 1 || x > 1000)
+            return fail(s, line, vc, "key '%s': %s must be a whole number, 1 or more", name, p);
+        *dst = (int)x;
+        return 0;
+    }
+    if (strcmp(p, "dt") == 0) {
+        /* OpenCV's element types; the numbers are read as doubles anyway */
+        size_t k = strcspn(v, " \t#");
+        if (k != 1 || !strchr("ucwsifd", v[0]))
+            return fail(s, line, vc, "key '%s': dt must be one of u c w s i f d (an element type)", name);
+        m->have_dt = 1;
+        return 0;
+    }
+    if (strcmp(p, "data") == 0) {
+        if (*v != '[')
+            return fail(s, line, vc, "key '%s': data must be a list, [ ... ]", name);
+        m->in_data = 1;
+        return data_numbers(s, m, v + 1, line, vc + 1);
+    }
+    return fail(s, line, col0, "key '%s': unknown field '%s' of an !!opencv-matrix (rows, cols, dt, data)", name, p);
+}
+
+/* A matrix block is complete: check its shape and keep its values. */
+static int matrix_end(const src *s, matrix *m, gls_camera_keys *keys)
+{
+    const char *name = yname[m->key];
+    if (m->in_data)
+        return fail(s, m->line, m->col, "key '%s': the data list has no closing ']'", name);
+    if (m->rows < 0 || m->cols < 0 || !m->have_dt || !m->data_done)
+        return fail(s, m->line, m->col, "key '%s': an !!opencv-matrix needs rows, cols, dt and data", name);
+    if ((size_t)m->rows * (size_t)m->cols != m->n)
+        return fail(s, m->line, m->col, "key '%s': %dx%d needs %d numbers, data has %zu", name, m->rows, m->cols,
+                    m->rows * m->cols, m->n);
+    int key = m->key;
+    if (key == Y_DIST) {
+        if ((m->rows != 1 && m->cols != 1) || m->n > 14)
+            return fail(s, m->line, m->col, "key '%s' must be a 1xN or Nx1 matrix of up to 14 numbers, got %dx%d", name,
+                        m->rows, m->cols);
+        for (size_t i = 0; i < m->n; i++)
+            if (m->v[i] != 0) {
+                char num[40];
+                gls_fmt_double(num, sizeof num, m->v[i]);
+                return fail(s, m->vline[i], m->vcol[i],
+                            "key '%s': %s is %s: glsplay renders an ideal pinhole camera, without lens distortion; "
+                            "every coefficient must be 0 (undistort the images, or calibrate without distortion)",
+                            name, dist_name[i], num);
+            }
+        return 0;
+    }
+    int square = key == K_K || key == K_R;
+    if (square ? m->rows != 3 || m->cols != 3 : (m->rows != 1 && m->cols != 1) || m->n != 3)
+        return fail(s, m->line, m->col, "key '%s' must be a %s matrix, got %dx%d%s", name, square ? "3x3" : "3x1",
+                    m->rows, m->cols, key == K_R && m->n == 3 ? " (a Rodrigues vector is 'rvec')" : "");
+    if (key == Y_TVEC)
+        key = K_T;
+    memcpy(keys->val[key], m->v, m->n * sizeof *m->v);
+    memcpy(keys->eline[key], m->vline, m->n * sizeof *m->vline);
+    memcpy(keys->ecol[key], m->vcol, m->n * sizeof *m->vcol);
+    keys->vcol[key] = m->vcol[0];
+    return 0;
+}
+
+/* A top-level scalar: one number, or (pose) one word, maybe quoted. */
+static int scalar(const src *s, gls_camera_keys *keys, int k, char *v, unsigned line, unsigned vc)
+{
+    char *end;
+    if (*v == '"' && (end = strchr(v + 1, '"')) != NULL) {
+        v++, vc++;
+        *end = 0;
+    } else {
+        end = v + strcspn(v, "#");
+        while (end > v && (end[-1] == ' ' || end[-1] == '\t'))
+            end--;
+        *end = 0;
+    }
+    keys->vcol[k] = vc;
+    if (k == K_POSE) {
+        keys->pose = strcmp(v, "world") == 0 ? GLS_POSE_WORLD : strcmp(v, "rig") == 0 ? GLS_POSE_RIG
+                                                                                      : GLS_POSE_UNDECLARED;
+        if (!keys->pose)
+            return fail(s, line, vc, "key 'pose': '%s' is neither world (R and T map the world into the camera) nor "
+                        "rig (they map the rig, with a trajectory)", v);
+        return 0;
+    }
+    const char *why = gls_parse_double(v, &keys->val[k][0]);
+    return why ? fail(s, line, vc, "key '%s': '%s' %s", yname[k], v, why) : 0;
+}
+
+int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes,
+                            gls_camera *cam, char *err, size_t errlen)
+{
+    src s = {text, fname, len, err, errlen};
+    static gls_camera_keys zero;
+    gls_camera_keys keys = zero;
+    unsigned seen[Y_COUNT] = {0}, last = 1;
+    matrix m = {.key = -1};
+    int skipping = 0; /* inside the value of a key glsplay does not read */
+    gls_text_lines it = {text, len, 0, 0};
+    char buf[GLS_TEXT_MAX_LINE + 1];
+    size_t n;
+    int got;
+    while ((got = gls_text_next_line(&it, buf, &n)) != 0) {
+        unsigned line = it.line;
+        if (got < 0)
+            return fail(&s, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
+        if (memchr(buf, 0, n))
+            return fail(&s, line, (unsigned)((char *)memchr(buf, 0, n) - buf) + 1,
+                        "NUL byte in camera file (is it a text file?)");
+        buf[strcspn(buf, "\r")] = 0;
+        size_t ind = strspn(buf, " \t");
+        char *p = buf + ind;
+        unsigned col = (unsigned)ind + 1;
+        if (!*p || *p == '#')
+            continue;
+        if (ind > 0) {
+            if (m.key >= 0) {
+                if (matrix_field(&s, &m, p, line, col))
+                    return -1;
+            } else if (!skipping) {
+                return fail(&s, line, col, "an indented line outside a matrix (expected 'key: value')");
+            }
+            continue;
+        }
+        if (m.key >= 0 && matrix_end(&s, &m, &keys))
+            return -1;
+        m.key = -1;
+        skipping = 0;
+        if (*p == '%' || strcmp(p, "---") == 0 || strcmp(p, "...") == 0)
+            continue; /* directives, document markers */
+        char *colon = strchr(p, ':');
+        if (!colon)
+            return fail(&s, line, col, "expected 'key: value' (an OpenCV FileStorage YAML file)");
+        *colon = 0;
+        char *v = colon + 1;
+        v += strspn(v, " \t");
+        unsigned vc = (unsigned)(v - buf) + 1;
+        int k;
+        for (k = 0; k < Y_COUNT; k++)
+            if (yname[k] && k != K_FX && k != K_FY && k != K_CX && k != K_CY && k != K_SKEW &&
+                strcmp(p, yname[k]) == 0)
+                break;
+        if (k == Y_COUNT) {
+            skipping = 1; /* calibration metadata: per-view errors, times, ... */
+            continue;
+        }
+        if (seen[k])
+            return fail(&s, line, col, "key '%s' given twice (first on line %u)", p, seen[k]);
+        static const int pairs[3][2] = {{K_R, K_RVEC}, {K_T, Y_TVEC}, {-1, -1}};
+        for (int i = 0; pairs[i][0] >= 0; i++) {
+            int other = k == pairs[i][0] ? pairs[i][1] : k == pairs[i][1] ? pairs[i][0] : -1;
+            if (other >= 0 && seen[other])
+                return fail(&s, line, col, "key '%s' and key '%s' (line %u) both give the %s: give one", p,
+                            yname[other], seen[other], i == 0 ? "rotation" : "translation");
+        }
+        seen[k] = line;
+        last = line;
+        if (k != Y_DIST)
+            keys.seen[k == Y_TVEC ? K_T : k] = line;
+        if (k == K_K || k == K_R || k == K_RVEC || k == K_T || k == Y_DIST || k == Y_TVEC) {
+            if (strncmp(v, "!!opencv-matrix", 15) != 0 || v[15 + strspn(v + 15, " \t")] != 0)
+                return fail(&s, line, vc, "key '%s' must be an !!opencv-matrix (as cv::FileStorage writes a cv::Mat)",
+                            p);
+            m = (matrix){.key = k, .line = line, .col = col, .rows = -1, .cols = -1};
+            continue;
+        }
+        if (scalar(&s, &keys, k, v, line, vc))
+            return -1;
+    }
+    if (m.key >= 0 && matrix_end(&s, &m, &keys))
+        return -1;
+    static const int required[][2] = {{K_WIDTH, -1}, {K_HEIGHT, -1}, {K_K, -1}, {K_R, K_RVEC},
+                                      {K_T, Y_TVEC}, {K_NEAR, -1},   {K_FAR, -1}};
+    for (size_t i = 0; i < sizeof required / sizeof required[0]; i++) {
+        int k = required[i][0], alt = required[i][1];
+        if (!seen[k] && (alt < 0 || !seen[alt]))
+            return fail(&s, last, 1, "missing key '%s' (required: image_width image_height camera_matrix R (or rvec) "
+                        "T (or tvec) near far%s)", yname[k],
+                        k == K_NEAR || k == K_FAR ? "; OpenCV files hold no clipping range: add near: and far:, "
+                                                    "in scene units" : "");
+    }
+    const char *names[K_COUNT];
+    memcpy(names, yname, sizeof names);
+    if (seen[Y_TVEC])
+        names[K_T] = "tvec";
+    return gls_camera_from_keys(&keys, names, text, len, fname, use, notes, cam, err, errlen);
+}
