@@ -316,9 +316,9 @@ $(B)/road_montage: $(B)/examples/road/montage.o
 
 # demo-road: the example road (examples/road/demo.road) rendered as a short
 # stereo sequence into out/road/, and a strip of frames, docs/road_strip.png.
-# examples/road/render.sh renders each selected frame with glsplay
-# --trajectory --frames F:F+1, after compiling that frame's placement of the
-# moving vehicles.
+# examples/road/render.sh: glsroad, glsc, then one glsplay --trajectory
+# --motion over the selected frames (where glsplay lacks --motion, a scene
+# per frame; see examples/road/README.md).
 demo-road:
 	@sh tools/deps.sh
 	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/road_montage

@@ -84,6 +84,10 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
     gls_bundle *b = gls_assemble(c, u, 0);
     if (!b)
         return -1;
+    if (gls_check_instance_names(c, b)) {
+        gls_bundle_free(b);
+        return -1;
+    }
     uint64_t nv = gls_bundle_expanded_vertices(b, b->top);
     if (nv > GLS_MAX_EXPANDED_VERTICES) {
         gls_error_at(&c->diag, GLS_NOLOC,

@@ -65,6 +65,10 @@ static int import_operand(gls_unit *u, const gls_bundle *b, gls_insn *in, uint32
         nm = b->textures[*v].name;
         *v = gls_unit_add_ref(&u->texrefs, &u->ntexrefs, &u->texrefs_cap, nm, strlen(nm), loc);
         break;
+    case GLS_KIND_INSTNAME:
+        nm = b->instnames[*v];
+        *v = gls_unit_add_ref(&u->instnames, &u->ninstnames, &u->instnames_cap, nm, strlen(nm), loc);
+        break;
     case GLS_KIND_FIRST_POS:
         *v = append(&u->pos, &u->npos, &u->pos_cap, b->pos + *v, s.n, sizeof *u->pos);
         break;

@@ -127,11 +127,11 @@ static void h_texmode(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
 
 /* The quoted name a (texture or object, says what) checked and added to
  * the unit's references (*arr, *n, *cap), located at its first character
- * inside the quotes; then the instruction op whose operand arg indexes it.
- * Returns 0, or -1 after reporting an invalid name or running out of
+ * inside the quotes; then the instruction in, whose operand arg indexes
+ * it.  Returns 0, or -1 after reporting an invalid name or running out of
  * memory. */
 static int emit_ref(gls_parse *ctx, gls_tok name, const gls_val *a, const char *what, gls_ref **arr, uint32_t *n,
-                    size_t *cap, gls_opcode op, unsigned arg)
+                    size_t *cap, gls_insn *in, unsigned arg)
 {
     if (!gls_valid_name(a->s + 1, a->len - 2)) {
         ERR(ctx, a->line, a->col, "%.*s is not a valid %s name (dotted identifiers, like \"road.vegetation.Birch\")",
@@ -143,7 +143,8 @@ static int emit_ref(gls_parse *ctx, gls_tok name, const gls_val *a, const char *
         ERR(ctx, name.line, name.col, "out of memory");
         return -1;
     }
-    emit_u(ctx, op, arg, r, name.line);
+    in->u[arg] = r;
+    sema_emit(ctx, in, name.line);
     return 0;
 }
 
@@ -151,8 +152,8 @@ static void h_texture(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n
 {
     (void)n;
     gls_unit *u = ctx->u;
-    if (emit_ref(ctx, name, a, "texture", &u->texrefs, &u->ntexrefs, &u->texrefs_cap, GLS_OP_TEXTURE,
-                 GLS_ARG_TEXTURE_INDEX))
+    gls_insn in = {.op = GLS_OP_TEXTURE};
+    if (emit_ref(ctx, name, a, "texture", &u->texrefs, &u->ntexrefs, &u->texrefs_cap, &in, GLS_ARG_TEXTURE_INDEX))
         return;
     if (gls_texuse_select(&ctx->texuse, gls_tok_loc(ctx, name.line, name.col), a->s + 1, a->len - 2))
         ERR(ctx, name.line, name.col, "out of memory");
@@ -232,33 +233,69 @@ static void h_pop(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     sema_emit(ctx, &in, name.line);
 }
 
-/* call("name", p = v, ...): the parameter values, checked (numbers, each
- * parameter once; the grammar allows no string there) and kept with the
- * reference, to be matched with the
- * callee's parameters when it is linked (template.c). */
+/* call("name", "instance", p = v, ...)'s instance name, the optional
+ * second quoted string (spec/language.md 7): checked and added to the
+ * unit's instance names; its index into them, or GLS_NONE after an error.
+ * Whether it is unique in the scene is known only once the scene is
+ * linked (instnames.c). */
+static uint32_t instance_name(gls_parse *ctx, gls_tok name, const gls_val *a)
+{
+    gls_unit *u = ctx->u;
+    size_t len = a->len - 2;
+    if (len > GLS_MAX_INSTANCE_NAME_BYTES) {
+        ERR(ctx, a->line, a->col, "instance name %.*s is %zu bytes long, more than %u", (int)a->len, a->s, len,
+            GLS_MAX_INSTANCE_NAME_BYTES);
+        return GLS_NONE;
+    }
+    if (!gls_valid_instance_name(a->s + 1, len)) {
+        ERR(ctx, a->line, a->col,
+            "%.*s is not a valid instance name (a letter or '_', then letters, digits, '_', '.' or '-', like \"car1\")",
+            (int)a->len, a->s);
+        return GLS_NONE;
+    }
+    uint32_t r = gls_unit_add_ref(&u->instnames, &u->ninstnames, &u->instnames_cap, a->s + 1, len,
+                                  gls_tok_loc(ctx, a->line, a->col));
+    if (r == GLS_NONE)
+        ERR(ctx, name.line, name.col, "out of memory");
+    return r;
+}
+
+/* call("name", p = v, ...), or call("name", "instance", p = v, ...): the
+ * instance name (a CALLN then), and the parameter values, checked
+ * (numbers, each parameter once; the grammar allows no string there) and
+ * kept with the reference, to be matched with the callee's parameters
+ * when it is linked (template.c). */
 static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     gls_unit *u = ctx->u;
-    for (unsigned i = 1; i < n; i++) {
+    unsigned first = n > 1 && !a[1].pname ? 2 : 1; /* the first parameter value */
+    for (unsigned i = first; i < n; i++) {
         gls_tok p = *a[i].pname;
         if (a[i].kind == VAL_ERR)
             return; /* already reported */
         if (!sema_need_number(ctx, &a[i]))
             return;
-        for (unsigned j = 1; j < i; j++)
+        for (unsigned j = first; j < i; j++)
             if (a[j].pname->len == p.len && memcmp(a[j].pname->p, p.p, p.len) == 0) {
                 ERR(ctx, p.line, p.col, "parameter '%.*s' is given twice", (int)p.len, p.p);
                 return;
             }
     }
-    if (emit_ref(ctx, name, a, "object", &u->refs, &u->nrefs, &u->refs_cap, GLS_OP_CALL, GLS_ARG_CALL_OBJECT))
+    gls_insn in = {.op = GLS_OP_CALL};
+    if (first == 2) {
+        in.op = GLS_OP_CALLN;
+        if ((in.u[GLS_ARG_CALLN_NAME] = instance_name(ctx, name, &a[1])) == GLS_NONE)
+            return;
+    }
+    _Static_assert((int)GLS_ARG_CALL_OBJECT == (int)GLS_ARG_CALLN_OBJECT, "call and calln name their object alike");
+    if (emit_ref(ctx, name, a, "object", &u->refs, &u->nrefs, &u->refs_cap, &in, GLS_ARG_CALL_OBJECT))
         return;
     gls_texuse_call(&ctx->texuse);
-    if (n < 2)
+    if (n <= first)
         return;
     gls_ref *r = &u->refs[u->nrefs - 1];
-    r->args = calloc(n - 1, sizeof *r->args);
-    for (unsigned i = 1; r->args && i < n; i++) {
+    r->args = calloc(n - first, sizeof *r->args);
+    for (unsigned i = first; r->args && i < n; i++) {
         gls_tok p = *a[i].pname;
         gls_named *g = &r->args[r->nargs];
         if (!(g->name = strndup(p.p, p.len)))
@@ -267,7 +304,7 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         g->loc = gls_tok_loc(ctx, p.line, p.col);
         r->nargs++;
     }
-    if (r->nargs != n - 1) {
+    if (r->nargs != n - first) {
         ERR(ctx, name.line, name.col, "out of memory");
         ctx->stop = 1;
     }
@@ -288,6 +325,6 @@ const sema_instr sema_instrs[] = {
     {"transform", 16, 16, "nnnnnnnnnnnnnnnn", WHERE_OUTSIDE, h_transform},
     {"push", 0, 0, "", WHERE_OUTSIDE, h_push},
     {"pop", 0, 0, "", WHERE_OUTSIDE, h_pop},
-    {"call", 1, 1, "s", WHERE_OUTSIDE, h_call},
+    {"call", 1, 2, "ss", WHERE_OUTSIDE, h_call},
 };
 const size_t sema_ninstrs = sizeof sema_instrs / sizeof sema_instrs[0];

@@ -126,4 +126,8 @@ void gls_visit(gls_compiler *c, gls_unit *u);
 
 /* assemble.c */
 gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures);
+
+/* instnames.c: a scene's instance names each given once and reached once
+ * from its top object; 0, or -1 after reporting why not. */
+int gls_check_instance_names(gls_compiler *c, const gls_bundle *b);
 #endif

@@ -146,11 +146,19 @@ void sema_stmt(gls_parse *ctx, gls_tok name, int parens)
             return;
         npos = (unsigned)k;
     }
+    /* call's second positional argument may be an instance name, its
+       third none: say what may go there */
+    if (is_call && !too_many && npos >= 2 && (npos > 2 || a[1].kind != VAL_STR) && a[1].kind != VAL_ERR) {
+        if (npos > 2 && a[1].kind == VAL_STR)
+            ERR(ctx, a[2].line, a[2].col, "argument 3 of 'call' must be a parameter value (NAME = value)");
+        else
+            ERR(ctx, a[1].line, a[1].col,
+                "argument 2 of 'call' must be an instance name (a quoted string) or a parameter value (NAME = value)");
+        return;
+    }
     if (too_many || npos < ins->min || npos > ins->max || (is_scale && npos == 2)) {
         if (is_scale)
             ERR(ctx, name.line, name.col, "'scale' takes 1 or 3 arguments, got %u", n);
-        else if (is_call && npos > 1)
-            ERR(ctx, a[1].line, a[1].col, "argument 2 of 'call' must be a parameter value (NAME = value)");
         else if (ins->min == ins->max)
             ERR(ctx, name.line, name.col, "'%s' takes %u argument%s, got %u", ins->name, ins->min,
                 ins->min == 1 ? "" : "s", n);

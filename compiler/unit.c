@@ -24,6 +24,9 @@ void gls_unit_free(gls_unit *u)
     }
     for (uint32_t i = 0; i < u->ntexrefs; i++)
         free(u->texrefs[i].name);
+    for (uint32_t i = 0; i < u->ninstnames; i++)
+        free(u->instnames[i].name);
+    free(u->instnames);
     free(u->refs);
     free(u->texrefs);
     free(u->pos);

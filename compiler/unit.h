@@ -5,6 +5,7 @@
  *   OBJECT (call)                -> index into unit->refs (resolved by name)
  *   TEXTURE                      -> index into unit->texrefs
  *   FIRST_POS, FIRST_COL, FIRST_TC -> indices into the unit's vertex arrays
+ *   INSTNAME (calln)             -> index into unit->instnames
  */
 #ifndef GLS_UNIT_H
 #define GLS_UNIT_H
@@ -51,6 +52,10 @@ typedef struct gls_unit {
     gls_ref *texrefs;        /* textures named by texture("...")          */
     uint32_t ntexrefs;
     size_t texrefs_cap;
+    gls_ref *instnames;      /* instance names of calls ("car1"), with
+                                where each is written, in CALLN order     */
+    uint32_t ninstnames;
+    size_t instnames_cap;
     gls_vec4 *pos; uint32_t npos; size_t pos_cap;
     gls_rgba *col; uint32_t ncol; size_t col_cap;
     gls_st *tc;    uint32_t ntc;  size_t tc_cap;

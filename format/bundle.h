@@ -52,6 +52,7 @@ extern const char *const gls_feature_why[32];
 #define GLS_MAX_NAME_BYTES        1024u
 #define GLS_MAX_PARAMS            32u            /* per template          */
 #define GLS_MAX_TEMPLATE_TEXT     (1u << 30)     /* source text, bytes    */
+#define GLS_MAX_INSTANCE_NAME_BYTES 64u          /* an instance's name    */
 /* Vertices the top-level object draws once every call is unrolled: calls
  * share objects, so a small bundle can describe an exponentially large
  * scene (A calls B twice, B calls C twice, ...).  2^26 vertices is about
@@ -118,6 +119,9 @@ typedef struct {
     char **sources;        /* source file paths for gls_srcloc.file       */
     uint32_t ntemplates;
     gls_template *templates; /* sorted by name                            */
+    uint32_t ninstnames;
+    char **instnames;      /* instance names (calln), sorted, unique; each
+                              on exactly one calln reached once from top  */
 
     uint32_t npos, ncol, ntex;
     gls_vec4 *pos;         /* vertex positions                             */
@@ -174,6 +178,12 @@ int gls_bundle_write(const gls_bundle *b, uint8_t **out, size_t *outlen, gls_err
  * GLS_MAX_EXPANDED_VERTICES + 1.  The bundle must be validated (acyclic). */
 uint64_t gls_bundle_expanded_vertices(const gls_bundle *b, uint32_t oi);
 
+/* How many times each object is drawn when object top is: the number of
+ * call paths from top to it (1 for top, 0 for an object it does not
+ * reach), saturated at UINT64_MAX; nobjects entries, malloc'd (free it),
+ * or NULL when out of memory.  The bundle must be acyclic (validated). */
+uint64_t *gls_bundle_paths(const gls_bundle *b, uint32_t top);
+
 /* The same with a chosen section codec (layout.h GLS_CODEC_*): uncompressed
  * bundles are for fuzzing seeds and for looking at with a hex editor. */
 int gls_bundle_write_codec(const gls_bundle *b, int codec, uint8_t **out, size_t *outlen, gls_error *err);
@@ -187,6 +197,10 @@ uint32_t gls_bundle_find_texture(const gls_bundle *b, const char *name);
 uint32_t gls_bundle_find_template(const gls_bundle *b, const char *name);
 
 void gls_bundle_free(gls_bundle *b);
+
+/* Is s[0..n) a valid instance name: [A-Za-z_][A-Za-z0-9_.-]*, at most
+ * GLS_MAX_INSTANCE_NAME_BYTES long? */
+int gls_valid_instance_name(const char *s, size_t n);
 
 /* Is s[0..n) a valid dotted name: identifiers ([A-Za-z_][A-Za-z0-9_]*)
  * joined by single dots, at most GLS_MAX_NAME_BYTES long? */

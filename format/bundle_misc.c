@@ -29,6 +29,7 @@ static uint32_t operand_features(const gls_bundle *b, const gls_insn *in, uint32
     case GLS_KIND_NVERT:
     case GLS_KIND_OBJECT:
     case GLS_KIND_FIRST_POS:
+    case GLS_KIND_INSTNAME:
     case GLS_KIND_COUNT:
         break;
     }
@@ -104,6 +105,9 @@ void gls_bundle_free(gls_bundle *b)
         free(t->defaults);
         free(t->text);
     }
+    for (uint32_t i = 0; b->instnames && i < b->ninstnames; i++)
+        free(b->instnames[i]);
+    free(b->instnames);
     free(b->templates);
     free(b->objects);
     free(b->textures);

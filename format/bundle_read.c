@@ -280,6 +280,34 @@ fail:
     return -1;
 }
 
+/* INSTANCE_NAMES: present only when there is a name (a bundle without
+ * names omits the section: one encoding per content); each name a u16
+ * length and its bytes, checked by the validator. */
+static int read_instance_names(gls_bundle *b, cursor *c, gls_error *err)
+{
+    uint32_t n = get_u32(c);
+    if (n == 0 || !count_fits(c, n, 3))
+        FAIL("instance name table: %u names do not fit in the section (an empty table is not written)", n);
+    b->instnames = calloc(n, sizeof *b->instnames);
+    if (!b->instnames)
+        FAIL("out of memory");
+    b->ninstnames = n;
+    for (uint32_t i = 0; i < n; i++) {
+        const uint8_t *l = take(c, 2);
+        uint32_t len = l ? (uint32_t)l[0] | (uint32_t)l[1] << 8 : 0;
+        const uint8_t *q = take(c, len);
+        if (!q || memchr(q, 0, len))
+            FAIL("instance name table: name %u is truncated or malformed", i);
+        if (!(b->instnames[i] = strndup((const char *)q, len)))
+            FAIL("out of memory");
+    }
+    if (c->pos != c->len)
+        FAIL("instance name table: %zu stray bytes at its end", c->len - c->pos);
+    return 0;
+fail:
+    return -1;
+}
+
 /* The checks that need only the first bytes of a bundle (have of them, at
  * least the header when there is one) and its length: magic, version,
  * declared file size.  The file reader runs them on the header alone,
@@ -344,19 +372,21 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
     }
     if (gls_le_get_u32(data + GLS_HDR_HSIZE) != GLS_HEADER_SIZE)
         FAIL("bundle header size %u is not %u", gls_le_get_u32(data + GLS_HDR_HSIZE), GLS_HEADER_SIZE);
-    if (gls_le_get_u32(data + GLS_HDR_NSECT) != GLS_SEC_COUNT)
-        FAIL("bundle has %u sections, expected %u", gls_le_get_u32(data + GLS_HDR_NSECT), GLS_SEC_COUNT);
+    /* every section, or all but the optional INSTANCE_NAMES */
+    const uint32_t nsect = gls_le_get_u32(data + GLS_HDR_NSECT);
+    if (nsect != GLS_SEC_COUNT && nsect != GLS_SEC_REQUIRED)
+        FAIL("bundle has %u sections, expected %u or %u", nsect, GLS_SEC_REQUIRED, GLS_SEC_COUNT);
     if (gls_le_get_u32(data + GLS_HDR_RES0) || gls_le_get_u32(data + GLS_HDR_RES1))
         FAIL("bundle header: reserved fields are not zero");
     b->version = version;
     b->features = gls_le_get_u32(data + GLS_HDR_FEATURES);
     b->top = gls_le_get_u32(data + GLS_HDR_TOP);
 
-    size_t dir_end = GLS_HEADER_SIZE + GLS_SEC_COUNT * GLS_DIRENT_SIZE;
+    size_t dir_end = GLS_HEADER_SIZE + nsect * GLS_DIRENT_SIZE;
     if (len < dir_end)
         FAIL("bundle is truncated inside its section directory");
     uint64_t expect_off = dir_end, total_raw = 0;
-    for (unsigned s = 0; s < GLS_SEC_COUNT; s++) {
+    for (unsigned s = 0; s < nsect; s++) {
         const uint8_t *e = data + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
         uint32_t id = gls_le_get_u32(e), codec = gls_le_get_u32(e + 4);
         uint64_t off = gls_le_get_u64(e + 8), stored = gls_le_get_u64(e + 16), rl = gls_le_get_u64(e + 24);
@@ -403,7 +433,7 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
         GLS_SECTIONS(GLS_X_SEC)
 #undef GLS_X_SEC
     };
-    for (unsigned s = 0; s < GLS_SEC_COUNT; s++) {
+    for (unsigned s = 0; s < nsect; s++) {
         cursor c = {raw[s], rawlen[s], 0, 0};
         if (readers[s](b, &c, err))
             goto fail;

@@ -127,6 +127,22 @@ static int sec_templates(const gls_bundle *bd, uint32_t feat, gls_buf *b)
     return 0;
 }
 
+/* INSTANCE_NAMES: the count, then each name; written only when there is
+ * one (gls_bundle_write_codec), so bundles without stay as they were. */
+static int sec_instance_names(const gls_bundle *bd, uint32_t feat, gls_buf *b)
+{
+    (void)feat;
+    if (put_u32(b, bd->ninstnames))
+        return -1;
+    for (uint32_t i = 0; i < bd->ninstnames; i++) {
+        size_t n = strlen(bd->instnames[i]);
+        uint8_t len[2] = {(uint8_t)(n & 0xFF), (uint8_t)(n >> 8)};
+        if (gls_buf_put(b, len, 2) || gls_buf_put(b, bd->instnames[i], n))
+            return -1;
+    }
+    return 0;
+}
+
 /* feat: the content's feature flags, computed once per write */
 typedef int (*sec_fn)(const gls_bundle *, uint32_t feat, gls_buf *);
 
@@ -146,12 +162,14 @@ int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_
     gls_buf raw = {0};
     ZSTD_CCtx *cctx = ZSTD_createCCtx();
     const uint32_t feat = gls_bundle_features(bd);
+    const unsigned nsect = bd->ninstnames ? GLS_SEC_COUNT : GLS_SEC_REQUIRED;
     uint8_t hdr[GLS_HEADER_SIZE + GLS_SEC_COUNT * GLS_DIRENT_SIZE];
+    const size_t hdr_len = GLS_HEADER_SIZE + nsect * GLS_DIRENT_SIZE;
     memset(hdr, 0, sizeof hdr);
-    if (!cctx || gls_buf_put(&file, hdr, sizeof hdr))
+    if (!cctx || gls_buf_put(&file, hdr, hdr_len))
         goto oom;
 
-    for (unsigned s = 0; s < GLS_SEC_COUNT; s++) {
+    for (unsigned s = 0; s < nsect; s++) {
         raw.len = 0;
         if (fns[s](bd, feat, &raw))
             goto oom;
@@ -182,9 +200,9 @@ int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_
     gls_le_put_u32(hdr + GLS_HDR_HSIZE, GLS_HEADER_SIZE);
     gls_le_put_u32(hdr + GLS_HDR_FEATURES, feat);
     gls_le_put_u32(hdr + GLS_HDR_TOP, bd->top);
-    gls_le_put_u32(hdr + GLS_HDR_NSECT, GLS_SEC_COUNT);
+    gls_le_put_u32(hdr + GLS_HDR_NSECT, nsect);
     gls_le_put_u64(hdr + GLS_HDR_FSIZE, file.len);
-    memcpy(file.data, hdr, sizeof hdr);
+    memcpy(file.data, hdr, hdr_len);
     uLong crc = crc32(0L, Z_NULL, 0);
     crc = crc32_z(crc, file.data, file.len);
     gls_le_put_u32(file.data + GLS_HDR_CRC, (uint32_t)crc);

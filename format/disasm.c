@@ -86,6 +86,9 @@ static void print_insn(const gls_bundle *b, const gls_insn *in, FILE *out)
         case GLS_KIND_TEXTURE:
             fprintf(out, " %s", b->textures[v].name);
             break;
+        case GLS_KIND_INSTNAME: /* quoted, as the call wrote it */
+            fprintf(out, " \"%s\"", b->instnames[v]);
+            break;
         case GLS_KIND_PRIMKIND:  /* printed as the name */
         case GLS_KIND_FIRST_POS: /* shown by the vertex lines */
         case GLS_KIND_FIRST_COL:
@@ -112,6 +115,8 @@ void gls_disassemble(const gls_bundle *b, FILE *out, int with_source)
         fprintf(out, "top: %s\n", b->objects[b->top].name);
     fprintf(out, "objects: %u, textures: %u, templates: %u, vertices: %u\n", b->nobjects, b->ntextures,
             b->ntemplates, b->npos);
+    if (b->ninstnames) /* a line only where there are names: other dumps stay as they were */
+        fprintf(out, "instance names: %u\n", b->ninstnames);
 
     for (uint32_t i = 0; i < b->ntextures; i++) {
         const gls_texture *t = &b->textures[i];

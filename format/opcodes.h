@@ -32,6 +32,8 @@
  *   TRANSFORM  M = M * A, A given row-major: a00 a01 a02 a03 a10 ... a33
  *   PUSH/POP   save/restore the whole state (matrix, colour, mode, texture)
  *   CALL       render another object with a copy of the current state
+ *   CALLN      CALL, naming the instance it draws (INSTANCE_NAMES): a
+ *              player may move it (spec/bundle.md 9.2); drawn as CALL
  *   PRIM       draw a primitive: kind (0 poly, 1 qstrip, 2 tstrip, 3 tfan),
  *              vertex count, first position, first colour (or NONE: use the
  *              current colour), first texcoord (or NONE: texcoord 0,0).
@@ -64,6 +66,7 @@
  *   FIRST_POS  the first of NVERT positions (POSITIONS)
  *   FIRST_COL  the first of NVERT colours (COLORS), or NONE
  *   FIRST_TC   the first of NVERT texture coordinates (TEXCOORDS), or NONE
+ *   INSTNAME   an instance name (INSTANCE_NAMES)
  */
 #define GLS_OPERAND_KINDS(K)                                      \
     K(NUM,       F64, 0,              NULL,             NULL)     \
@@ -77,7 +80,8 @@
     K(TEXTURE,   U32, 0,              NULL,             NULL)     \
     K(FIRST_POS, U32, 0,              NULL,             NULL)     \
     K(FIRST_COL, U32, 0,              NULL,             NULL)     \
-    K(FIRST_TC,  U32, 0,              NULL,             NULL)
+    K(FIRST_TC,  U32, 0,              NULL,             NULL)     \
+    K(INSTNAME,  U32, 0,              NULL,             NULL)
 
 /* How an instruction moves the walk of an object's code (validator):
  *   NEXT  on to the next instruction
@@ -107,7 +111,8 @@ typedef enum { GLS_FLOW_NEXT, GLS_FLOW_PUSH, GLS_FLOW_POP, GLS_FLOW_END } gls_fl
     X(CALL,      "call",      NEXT, O(OBJECT, CALL_OBJECT))                            \
     X(PRIM,      "prim",      NEXT, O(PRIMKIND, PRIM_KIND) O(NVERT, PRIM_N)            \
                                     O(FIRST_POS, PRIM_POS) O(FIRST_COL, PRIM_COL)      \
-                                    O(FIRST_TC, PRIM_TC))
+                                    O(FIRST_TC, PRIM_TC))                              \
+    X(CALLN,     "calln",     NEXT, O(OBJECT, CALLN_OBJECT) O(INSTNAME, CALLN_NAME))
 
 typedef enum {
 #define GLS_X_ENUM(e, name, flow, operands) GLS_OP_##e,

@@ -33,6 +33,20 @@ int gls_valid_name(const char *s, size_t n)
     return !start;
 }
 
+int gls_valid_instance_name(const char *s, size_t n)
+{
+    if (!s || n == 0 || n > GLS_MAX_INSTANCE_NAME_BYTES)
+        return 0;
+    for (size_t i = 0; i < n; i++) {
+        char ch = s[i];
+        int alpha = (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || ch == '_';
+        int other = (ch >= '0' && ch <= '9') || ch == '.' || ch == '-';
+        if (!alpha && (i == 0 || !other))
+            return 0;
+    }
+    return 1;
+}
+
 /* Templates (spec/bundle.md 7.7): names sorted, a source, 1..32
  * parameters with distinct identifiers and finite defaults, text without
  * NUL. */
@@ -226,6 +240,10 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
         if (v >= b->ntextures)
             FAIL("object %s, instruction %u (%s): index %u >= %u textures", o->name, k, nm, v, b->ntextures);
         break;
+    case GLS_KIND_INSTNAME:
+        if (v >= b->ninstnames)
+            FAIL("object %s, instruction %u (%s): instance name %u >= %u names", o->name, k, nm, v, b->ninstnames);
+        break;
     case GLS_KIND_NVERT: {
         int pk = gls_op_find(in->op, GLS_KIND_PRIMKIND);
         gls_primkind kind = (gls_primkind)in->u[pk];
@@ -408,6 +426,122 @@ uint64_t gls_bundle_expanded_vertices(const gls_bundle *b, uint32_t oi)
     return n;
 }
 
+/* Instance names (spec/bundle.md 7.8): valid, sorted and unique (one
+ * encoding per content), each used by some calln; in a bundle with a top
+ * object, each reached exactly once from it, so that a name picks out one
+ * drawn instance.  Runs after check_calls: the call graph is acyclic. */
+static int check_instance_names(const gls_bundle *b, gls_error *err)
+{
+    uint64_t *paths = NULL, *reached = NULL;
+    for (uint32_t i = 0; i < b->ninstnames; i++) {
+        const char *n = b->instnames[i];
+        if (!n || !gls_valid_instance_name(n, strlen(n)))
+            FAIL("instance name %u is not a valid name ([A-Za-z_][A-Za-z0-9_.-]*, at most %u bytes)", i,
+                 GLS_MAX_INSTANCE_NAME_BYTES);
+        if (i && strcmp(b->instnames[i - 1], n) >= 0)
+            FAIL("instance name table not sorted or has a duplicate at %s", n);
+    }
+    if (!b->ninstnames)
+        return 0;
+    reached = calloc(b->ninstnames, sizeof *reached);
+    paths = b->top != GLS_NONE ? gls_bundle_paths(b, b->top) : NULL;
+    if (!reached || (b->top != GLS_NONE && !paths))
+        FAIL("out of memory");
+    /* in a library bundle, uses count once per calln; else paths from top */
+    for (uint32_t oi = 0; oi < b->nobjects; oi++) {
+        const gls_object *o = &b->objects[oi];
+        uint64_t times = paths ? paths[oi] : 1;
+        size_t pos = 0;
+        gls_insn in;
+        while (pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
+            int arg = gls_op_find(in.op, GLS_KIND_INSTNAME);
+            if (arg < 0)
+                continue;
+            uint32_t v = in.u[arg];
+            reached[v] = reached[v] + times < reached[v] ? UINT64_MAX : reached[v] + times;
+        }
+    }
+    for (uint32_t i = 0; i < b->ninstnames; i++) {
+        if (!paths && !reached[i])
+            FAIL("instance name %s: no calln names it", b->instnames[i]);
+        if (paths && reached[i] != 1)
+            FAIL("instance name %s: reached %llu times from the top object, not once", b->instnames[i],
+                 (unsigned long long)reached[i]);
+    }
+    free(paths), free(reached);
+    return 0;
+fail:
+    free(paths), free(reached);
+    return -1;
+}
+
+/* Objects reachable from top in reverse postorder (callers before their
+ * callees), appended to order[*n]; iterative, like check_calls. */
+static void topo_order(const gls_bundle *b, uint32_t top, uint8_t *seen, uint32_t *order, uint32_t *n,
+                       uint32_t *stack, size_t *pc)
+{
+    uint32_t sp = 0, post = 0;
+    stack[sp] = top, pc[sp] = 0, sp++;
+    seen[top] = 1;
+    while (sp) {
+        uint32_t cur = stack[sp - 1];
+        const gls_object *o = &b->objects[cur];
+        gls_insn in;
+        int descended = 0;
+        while (pc[sp - 1] < o->code_len) {
+            gls_insn_decode(o->code, o->code_len, &pc[sp - 1], &in);
+            int arg = gls_op_find(in.op, GLS_KIND_OBJECT);
+            if (arg < 0 || seen[in.u[arg]])
+                continue;
+            seen[in.u[arg]] = 1;
+            stack[sp] = in.u[arg], pc[sp] = 0, sp++;
+            descended = 1;
+            break;
+        }
+        if (!descended) {
+            order[post++] = cur; /* postorder: callees first */
+            sp--;
+        }
+    }
+    for (uint32_t i = 0; i < post / 2; i++) { /* reversed: callers first */
+        uint32_t t = order[i];
+        order[i] = order[post - 1 - i];
+        order[post - 1 - i] = t;
+    }
+    *n = post;
+}
+
+uint64_t *gls_bundle_paths(const gls_bundle *b, uint32_t top)
+{
+    uint32_t n = b->nobjects ? b->nobjects : 1, norder = 0;
+    uint64_t *paths = calloc(n, sizeof *paths);
+    uint8_t *seen = calloc(n, 1);
+    uint32_t *order = malloc(n * sizeof *order), *stack = malloc(n * sizeof *stack);
+    size_t *pc = malloc(n * sizeof *pc);
+    if (!paths || !seen || !order || !stack || !pc) {
+        free(paths);
+        paths = NULL;
+        goto done;
+    }
+    topo_order(b, top, seen, order, &norder, stack, pc);
+    paths[top] = 1;
+    for (uint32_t i = 0; i < norder; i++) {
+        const gls_object *o = &b->objects[order[i]];
+        size_t pos = 0;
+        gls_insn in;
+        while (pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
+            int arg = gls_op_find(in.op, GLS_KIND_OBJECT);
+            if (arg < 0)
+                continue;
+            uint64_t *p = &paths[in.u[arg]], add = paths[order[i]];
+            *p = *p + add < *p ? UINT64_MAX : *p + add;
+        }
+    }
+done:
+    free(seen), free(order), free(stack), free(pc);
+    return paths;
+}
+
 int gls_bundle_validate(const gls_bundle *b, gls_error *err)
 {
     if (b->nobjects > GLS_MAX_OBJECTS || b->ntextures > GLS_MAX_TEXTURES)
@@ -419,7 +553,7 @@ int gls_bundle_validate(const gls_bundle *b, gls_error *err)
     for (uint32_t i = 0; i < b->nobjects; i++)
         if (check_code(b, i, err))
             return -1;
-    if (check_calls(b, err))
+    if (check_calls(b, err) || check_instance_names(b, err))
         return -1;
     if (b->top != GLS_NONE && gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES)
         FAIL("top-level object %s draws more than %llu vertices once its calls are unrolled", b->objects[b->top].name,

@@ -24,8 +24,8 @@
     "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"                             \
     "       glsroad --list-keys\n"                                                     \
     "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n" \
-    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt and DIR/vehicles.txt,\n"    \
-    "replacing a previous output in DIR as a whole.\n"                                 \
+    "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt, DIR/vehicles.txt and\n"    \
+    "DIR/motion/NAME.txt per vehicle, replacing a previous output in DIR as a whole.\n" \
     "The second prints CAMERA (a camera file relative to the rig) with R and T\n"      \
     "replaced by that camera's pose in the world at FRAME of TRAJECTORY.\n"            \
     "The third prints the keys of a road description, as spec/road.md's tables.\n"     \
@@ -59,27 +59,40 @@ static int make_road(const char *in, const char *dir)
         return 1;
     }
     road_buf scene = {0}, tree = {0}, car = {0}, lanes = {0}, traj = {0}, kitti = {0}, tum = {0}, veh = {0};
-    road_out_file files[] = {
-        {"road.scene", NULL, 0},      {"roadobj/Tree.scene", NULL, 0}, {"roadobj/Car.scene", NULL, 0},
-        {"lanes.txt", NULL, 0},       {"trajectory.txt", NULL, 0},     {"poses_kitti.txt", NULL, 0},
-        {"poses_tum.txt", NULL, 0},   {"vehicles.txt", NULL, 0},
-    };
+    static const char *const fixed[] = {"road.scene",      "roadobj/Tree.scene", "roadobj/Car.scene",
+                                        "lanes.txt",       "trajectory.txt",     "poses_kitti.txt",
+                                        "poses_tum.txt",   "vehicles.txt"};
     const road_buf *bufs[] = {&scene, &tree, &car, &lanes, &traj, &kitti, &tum, &veh};
-    enum { NFILES = sizeof files / sizeof files[0] };
+    enum { NFIXED = sizeof fixed / sizeof fixed[0] };
+    /* then motion/NAME.txt per vehicle */
+    int nfiles = NFIXED + d.nveh;
+    road_out_file *files = calloc((size_t)nfiles, sizeof *files);
+    road_buf *motion = calloc((size_t)d.nveh + 1, sizeof *motion);
+    char (*mnames)[ROAD_VEHICLE_NAME_MAX + 16] = calloc((size_t)d.nveh + 1, sizeof *mnames);
+    if (!files || !motion || !mnames) {
+        fprintf(stderr, "glsroad: error: out of memory\n");
+        goto out;
+    }
+    for (int i = 0; i < nfiles; i++) {
+        if (i >= NFIXED)
+            snprintf(mnames[i - NFIXED], sizeof mnames[0], "motion/%s.txt", d.veh[i - NFIXED].name);
+        files[i].name = i < NFIXED ? fixed[i] : mnames[i - NFIXED];
+    }
     /* cheap checks first (limits, an output directory that may not be
        replaced), then everything is computed, then written as a whole:
        an error leaves DIR as it was */
-    if (road_check_limits(&g, err, sizeof err) || road_outdir_check(dir, files, NFILES, err, sizeof err) ||
+    if (road_check_limits(&g, err, sizeof err) || road_outdir_check(dir, files, nfiles, err, sizeof err) ||
         road_emit_scene(&g, &scene, &tree, &car, err, sizeof err) || road_emit_lanes(&g, &lanes, err, sizeof err) ||
-        road_emit_motion(&g, &traj, &kitti, &tum, &veh, err, sizeof err)) {
+        road_emit_motion(&g, &traj, &kitti, &tum, &veh, motion, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         goto out;
     }
-    for (int i = 0; i < NFILES; i++) {
-        files[i].data = bufs[i]->text;
-        files[i].len = bufs[i]->len;
+    for (int i = 0; i < nfiles; i++) {
+        const road_buf *rb = i < NFIXED ? bufs[i] : &motion[i - NFIXED];
+        files[i].data = rb->text;
+        files[i].len = rb->len;
     }
-    if (road_outdir_write(dir, files, NFILES, err, sizeof err)) {
+    if (road_outdir_write(dir, files, nfiles, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         goto out;
     }
@@ -97,6 +110,11 @@ out:
     free(kitti.text);
     free(tum.text);
     free(veh.text);
+    for (int i = 0; motion && i < d.nveh; i++)
+        free(motion[i].text);
+    free(motion);
+    free(mnames);
+    free(files);
     road_geo_free(&g);
     road_desc_free(&d);
     free(text);

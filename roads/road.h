@@ -25,6 +25,7 @@
 #define ROAD_MAX_FRAMES 1000000L          /* frames of the sequence            */
 #define ROAD_MAX_SECONDS 10000.0          /* its length in time (1 ms body steps) */
 #define ROAD_MAX_VEHICLES 256             /* 'vehicle' lines                   */
+#define ROAD_VEHICLE_NAME_MAX 64          /* bytes, NUL included: an instance name (at most 64) */
 #define ROAD_MAX_VEHICLE_POSES 10000000L  /* frames x vehicles                 */
 #define ROAD_MAX_PROFILE_POINTS 256       /* points of one profile             */
 #define ROAD_MAX_POINTS 65536             /* control points of the centre line */
@@ -44,7 +45,7 @@ typedef struct {
 } road_profile;
 
 typedef struct {
-    char name[64];
+    char name[ROAD_VEHICLE_NAME_MAX];
     double lateral;    /* m, positive left of the centre line             */
     double start;      /* distance along the road at t = 0                */
     int oncoming;      /* drives towards decreasing distance              */
@@ -195,14 +196,20 @@ typedef struct {
 typedef int (*road_pose_fn)(void *ctx, const road_pose *p);
 long road_run_trajectory(const road_geo *g, road_pose_fn fn, void *ctx, char *err, size_t errlen);
 
+/* Vehicle v's object-to-world pose at time t (spec/road.md, "Other
+ * vehicles"): P_world = M P_object + t.  Returns 1 if it is on the road,
+ * 0 if beyond an end (then on along that end's tangent). */
+int road_vehicle_pose(const road_geo *g, const road_vehicle *v, double time, double M[9], double t[3]);
+
 /* Rotation matrix (camera-to-world or any proper rotation) to the unit
  * quaternion (x, y, z, w), w >= 0. */
 void road_quat_from_R(const double R[9], double q[4]);
 
 /* Write all motion outputs (trajectory.txt, poses_kitti.txt, poses_tum.txt,
- * vehicles.txt) into the buffers. */
-int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_buf *tum, road_buf *veh, char *err,
-                     size_t errlen);
+ * vehicles.txt, and motion/NAME.txt into motion[i] for vehicle i) into the
+ * buffers. */
+int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_buf *tum, road_buf *veh,
+                     road_buf *motion, char *err, size_t errlen);
 
 /* Shortest round-trip number text (roads/road_text.c): v, and v[0..n)
  * with sep between them. */

@@ -330,7 +330,9 @@ const road_key road_keys[] = {
         WHOLE("seed", 0, 2147483647L, D(seed, 1))),
     {.key = "vehicle", .section = RS_MOTION, .values = "NAME [lateral L] [start S] [oncoming] [object OBJ]",
      .times = "once per NAME", .deflt = "",
-     .meaning = "another vehicle; `oncoming` drives towards decreasing distance; at most 256", .min = 1, .max = -1,
+     .meaning = "another vehicle: its lane (lateral offset), where it is at frame 0, its object; `oncoming` drives "
+                "towards decreasing distance; at most 256; it gets a motion file and a named call (below)",
+     .min = 1, .max = -1,
      .repeat = RK_KEYED, .val = {VEHICLE_NAME}, .opts = VEHICLE_OPTS, .prepare = vehicle_prepare},
     {.key = "vehicle_speed", .section = RS_MOTION, .values = "NAME distance X V | NAME time T V", .deflt = "",
      .meaning = "its speed profile (distance = its own distance travelled)", .min = 4, .max = 4,

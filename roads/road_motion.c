@@ -348,11 +348,34 @@ void road_quat_from_R(const double R[9], double q[4])
     q[3] = w / n;
 }
 
+/* ---- other vehicles ----------------------------------------------------- */
+
+int road_vehicle_pose(const road_geo *g, const road_vehicle *v, double time, double M[9], double t[3])
+{
+    double x, sp, a;
+    road_profile_motion(&v->speed, time, &x, &sp, &a);
+    double s = v->oncoming ? v->start - x : v->start + x;
+    double len = g->c.length;
+    /* off the road: on along the tangent of the end it left by, level with
+       that end's frame (the road's last or first frame) */
+    double sc = s < 0 ? 0 : s > len ? len : s;
+    road_frame f;
+    road_frame_at_s(g, sc, &f);
+    rv3 P = rv_madd(rv_madd(f.C, f.t, s - sc), f.l, v->lateral);
+    if (v->oncoming)
+        rm_cols(rv_mul(f.l, -1), f.n, rv_mul(f.t, -1), M);
+    else
+        rm_cols(f.l, f.n, f.t, M);
+    t[0] = P.x, t[1] = P.y, t[2] = P.z;
+    return s == sc;
+}
+
 /* ---- outputs ------------------------------------------------------------ */
 
 typedef struct {
     const road_geo *g;
     FILE *traj, *kitti, *tum, *veh;
+    FILE **motion;    /* one per vehicle                                 */
     double R0[9];     /* first frame's rotation and centre, for KITTI's */
     rv3 c0;           /* poses relative to it                            */
     double q_prev[4]; /* the last TUM quaternion, for continuity         */
@@ -402,47 +425,48 @@ static int write_pose(void *vctx, const road_pose *p)
     double tum[8] = {p->time, c.x, c.y, c.z, q[0], q[1], q[2], q[3]};
     road_nums(o->tum, tum, 8, " ");
     fputc('\n', o->tum);
-    /* other vehicles at this time */
+    /* other vehicles at this time: vehicles.txt while on the road, their
+       motion files every frame */
     for (int i = 0; i < d->nveh; i++) {
-        const road_vehicle *v = &d->veh[i];
-        double x, sp, a;
-        road_profile_motion(&v->speed, p->time, &x, &sp, &a);
-        double s = v->oncoming ? v->start - x : v->start + x;
-        if (s < 0 || s > o->g->c.length)
-            continue; /* off the road: not in this frame */
-        road_frame f;
-        road_frame_at_s(o->g, s, &f);
-        rv3 P = rv_madd(f.C, f.l, v->lateral);
-        double M[9];
-        if (v->oncoming)
-            rm_cols(rv_mul(f.l, -1), f.n, rv_mul(f.t, -1), M);
-        else
-            rm_cols(f.l, f.n, f.t, M);
-        fprintf(o->veh, "%ld ", p->frame);
-        road_num(o->veh, p->time);
-        fprintf(o->veh, " %s ", v->name);
-        road_nums(o->veh, M, 9, " ");
-        double t3[3] = {P.x, P.y, P.z};
-        fputc(' ', o->veh);
-        road_nums(o->veh, t3, 3, " ");
-        fputc('\n', o->veh);
+        double M[9], t3[3];
+        int on_road = road_vehicle_pose(o->g, &d->veh[i], p->time, M, t3);
+        FILE *out[2] = {on_road ? o->veh : NULL, o->motion[i]};
+        for (int k = 0; k < 2; k++) {
+            if (!out[k])
+                continue;
+            fprintf(out[k], "%ld ", p->frame);
+            road_num(out[k], p->time);
+            if (k == 0)
+                fprintf(out[k], " %s", d->veh[i].name);
+            fputc(' ', out[k]);
+            road_nums(out[k], M, 9, " ");
+            fputc(' ', out[k]);
+            road_nums(out[k], t3, 3, " ");
+            fputc('\n', out[k]);
+        }
     }
+    for (int i = 0; i < d->nveh; i++)
+        if (ferror(o->motion[i]))
+            return -1;
     return ferror(o->traj) || ferror(o->kitti) || ferror(o->tum) || ferror(o->veh) ? -1 : 0;
 }
 
-int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_buf *tum, road_buf *veh, char *err,
-                     size_t errlen)
+int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_buf *tum, road_buf *veh,
+                     road_buf *motion, char *err, size_t errlen)
 {
     const road_desc *d = g->d;
-    road_buf *b[4] = {traj, kitti, tum, veh};
-    FILE *f[4] = {NULL, NULL, NULL, NULL};
-    int ok = 1;
-    for (int i = 0; i < 4; i++) {
+    int nf = 4 + d->nveh;
+    road_buf **b = calloc((size_t)nf, sizeof *b);
+    FILE **f = calloc((size_t)nf, sizeof *f);
+    int ok = b && f;
+    for (int i = 0; ok && i < nf; i++) {
+        b[i] = i == 0 ? traj : i == 1 ? kitti : i == 2 ? tum : i == 3 ? veh : &motion[i - 4];
         memset(b[i], 0, sizeof *b[i]);
         f[i] = open_memstream(&b[i]->text, &b[i]->len);
         ok &= f[i] != NULL;
     }
-    outctx o = {g, f[0], f[1], f[2], f[3], {0}, {0, 0, 0}, {0}};
+    outctx o = {g, ok ? f[0] : NULL, ok ? f[1] : NULL, ok ? f[2] : NULL, ok ? f[3] : NULL, ok ? f + 4 : NULL,
+                {0}, {0, 0, 0}, {0}};
     long n = -1;
     if (ok) {
         fprintf(f[0], "# glsroad trajectory 1\n"
@@ -459,9 +483,16 @@ int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_bu
         for (int i = 0; i < d->nveh; i++)
             fprintf(f[3], "# vehicle %s object %s\n", d->veh[i].name,
                     d->veh[i].object[0] ? d->veh[i].object : "roadobj.Car");
+        for (int i = 0; i < d->nveh; i++)
+            fprintf(f[4 + i], "# glsroad motion 1\n"
+                              "# vehicle %s (object %s) from %s, %g frames per second\n"
+                              "# frame time R(9, row-major) T(3): object-to-parent, P_parent = R * P_object + T;\n"
+                              "# road.scene calls it with no transform, so its parent frame is the world's.\n"
+                              "# Off the road it goes on along the tangent of the end it left by.\n",
+                    d->veh[i].name, d->veh[i].object[0] ? d->veh[i].object : "roadobj.Car", d->file, d->fps);
         n = road_run_trajectory(g, write_pose, &o, err, errlen);
     }
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; f && i < nf; i++)
         if (f[i] && fclose(f[i]) != 0)
             ok = 0;
     if (n < 0 || !ok) {
@@ -469,11 +500,16 @@ int road_emit_motion(const road_geo *g, road_buf *traj, road_buf *kitti, road_bu
             /* err already says why */
         } else
             snprintf(err, errlen, "%s: error: out of memory", d->file);
-        for (int i = 0; i < 4; i++) {
-            free(b[i]->text);
-            b[i]->text = NULL;
-        }
+        for (int i = 0; b && i < nf; i++)
+            if (b[i]) {
+                free(b[i]->text);
+                b[i]->text = NULL;
+            }
+        free(b);
+        free(f);
         return -1;
     }
+    free(b);
+    free(f);
     return 0;
 }

@@ -38,10 +38,24 @@ static int fail(char *err, size_t errlen, const char *fmt, ...)
     return -1;
 }
 
+/* glsroad writes one file per vehicle in this directory: a previous output
+   may have other vehicles, so each NAME.txt in it is glsroad's. */
+#define MOTION_DIR "motion"
+
+static int is_motion_file(const char *name)
+{
+    size_t n = strlen(name);
+    return n > 4 && strcmp(name + n - 4, ".txt") == 0;
+}
+
 /* Does the set write entry `name` of DIR (sub NULL) or of DIR/sub?  *is_dir:
    it is the directory of some names. */
 static int listed(const road_out_file *f, int n, const char *sub, const char *name, int *is_dir)
 {
+    if (!sub && !strcmp(name, MOTION_DIR))
+        return *is_dir = 1, 1;
+    if (sub && !strcmp(sub, MOTION_DIR) && is_motion_file(name))
+        return *is_dir = 0, 1;
     for (int i = 0; i < n; i++) {
         const char *slash = strchr(f[i].name, '/');
         size_t pre = slash ? (size_t)(slash - f[i].name) : 0;
@@ -108,11 +122,37 @@ int road_outdir_check(const char *dir, const road_out_file *files, int n, char *
     return 0;
 }
 
-/* Remove a set written by road_outdir_write (only the names it writes),
-   then the directory; 0, or -1 (errno) if something else is left. */
+/* Remove the motion files of path/motion/ (any previous output's, checked
+   by road_outdir_check to be nothing else), then the directory. */
+static int remove_motion(const char *path)
+{
+    char *m = join(path, MOTION_DIR);
+    if (!m)
+        return -1;
+    DIR *dp = opendir(m);
+    int r = 0;
+    for (struct dirent *e; dp && (e = readdir(dp)) != NULL;) {
+        if (!is_motion_file(e->d_name))
+            continue;
+        char *p = join(m, e->d_name);
+        if (!p || (unlink(p) != 0 && errno != ENOENT))
+            r = -1;
+        free(p);
+    }
+    if (dp)
+        closedir(dp);
+    if (rmdir(m) != 0 && errno != ENOENT)
+        r = -1;
+    free(m);
+    return r;
+}
+
+/* Remove a set written by road_outdir_write (only the names it writes, and
+   motion files), then the directory; 0, or -1 (errno) if something else is
+   left. */
 static int remove_set(const char *path, const road_out_file *f, int n)
 {
-    int r = 0;
+    int r = remove_motion(path);
     for (int i = 0; i < n; i++) {
         char *p = join(path, f[i].name);
         if (!p || (unlink(p) != 0 && errno != ENOENT))

@@ -249,6 +249,13 @@ int road_emit_scene(const road_geo *g, road_buf *scene, road_buf *tree, road_buf
             }
         }
     }
+    /* the other vehicles: each drawn once, as a named instance with no
+       transform, so that its world pose is the one of motion/NAME.txt
+       (glsplay --motion NAME=DIR/motion/NAME.txt) */
+    if (!r && d->nveh)
+        fputs("// vehicles: named instances, moved by glsplay --motion NAME=motion/NAME.txt\n", f);
+    for (int i = 0; !r && i < d->nveh; i++)
+        fprintf(f, "call(\"%s\", \"%s\");\n", d->veh[i].object[0] ? d->veh[i].object : "roadobj.Car", d->veh[i].name);
     if (road_buf_close(f, scene, d->file, err, errlen) || r) {
         free(scene->text);
         scene->text = NULL;

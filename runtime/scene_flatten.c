@@ -295,6 +295,7 @@ static void run(walker *w, uint32_t oi, state st)
             st = w->stack[--w->sp];
             break;
         case GLS_OP_CALL:
+        case GLS_OP_CALLN: /* a named instance: drawn like call (motion is the player's, issue 14) */
             run(w, in.u[GLS_ARG_CALL_OBJECT], st); /* by value: the callee gets a copy */
             break;
         case GLS_OP_PRIM:

@@ -437,7 +437,7 @@ static void test_opcode_table(void)
         [GLS_OP_END] = 1,   [GLS_OP_COLOR] = 33, [GLS_OP_TEXMODE] = 2,    [GLS_OP_TEXTURE] = 5,
         [GLS_OP_NOTEXTURE] = 1, [GLS_OP_TRANS] = 25, [GLS_OP_ROT] = 33,   [GLS_OP_SCALE] = 25,
         [GLS_OP_TRANSFORM] = 129, [GLS_OP_PUSH] = 1, [GLS_OP_POP] = 1,    [GLS_OP_CALL] = 5,
-        [GLS_OP_PRIM] = 18};
+        [GLS_OP_PRIM] = 18, [GLS_OP_CALLN] = 9};
     for (int op = 0; op < GLS_OP_COUNT; op++) {
         gls_buf code = {0};
         gls_insn in = {.op = (gls_opcode)op};
@@ -500,6 +500,113 @@ static void test_expansion_bomb_refused(void)
     expect_invalid(b, "once its calls are unrolled");
 }
 
+/* make_bundle() with a.Top's call of a.Tri named: CALLN a.Tri "car1"
+ * (and the names given, sorted). */
+static gls_bundle *make_named_bundle(const char *const *names, uint32_t n)
+{
+    gls_bundle *b = make_bundle();
+    set_code(b, 0, (gls_insn[]){{.op = GLS_OP_CALLN, .u = {1, 0}}}, 1);
+    b->ninstnames = n;
+    b->instnames = calloc(n ? n : 1, sizeof *b->instnames);
+    for (uint32_t i = 0; i < n; i++)
+        b->instnames[i] = strdup(names[i]);
+    return b;
+}
+
+/* The bundle's validation message, verbatim. */
+static void expect_message(gls_bundle *b, const char *msg)
+{
+    gls_error err = {{0}, 0};
+    CHECK_MSG(gls_bundle_validate(b, &err) != 0, "accepted, expected '%s'", msg);
+    CHECK_MSG(strcmp(err.msg, msg) == 0, "message '%s', expected '%s'", err.msg, msg);
+    gls_bundle_free(b);
+}
+
+/* Re-checksum a written bundle after patching it. */
+static void fix_crc(uint8_t *data, size_t len)
+{
+    gls_le_put_u32(data + GLS_HDR_CRC, 0);
+    gls_le_put_u32(data + GLS_HDR_CRC, (uint32_t)crc32_z(crc32(0L, Z_NULL, 0), data, len));
+}
+
+/* INSTANCE_NAMES and CALLN (spec/bundle.md 7.8, 9.2, 12): a round trip;
+ * the section only where there are names; each validation rule with its
+ * message. */
+static void test_instance_names(void)
+{
+    static const char *const one[] = {"car1"};
+    gls_bundle *b = make_named_bundle(one, 1);
+    gls_error err = {{0}, 0};
+    CHECK_MSG(gls_bundle_validate(b, &err) == 0, "%s", err.msg);
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_COUNT);
+    gls_bundle *r = data ? gls_bundle_read(data, len, &err) : NULL;
+    CHECK_MSG(r != NULL, "%s", err.msg);
+    if (r) {
+        CHECK(r->ninstnames == 1 && strcmp(r->instnames[0], "car1") == 0);
+        size_t len2;
+        uint8_t *again = write_it(r, &len2);
+        CHECK(again && len2 == len && memcmp(again, data, len) == 0);
+        free(again);
+    }
+    gls_bundle_free(r);
+    gls_bundle_free(b);
+    free(data);
+
+    /* without names, the section is not written: the bundle is as before */
+    b = make_bundle();
+    data = write_it(b, &len);
+    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_REQUIRED && GLS_SEC_REQUIRED == 7);
+    if (data) { /* a section count that is neither is refused */
+        gls_le_put_u32(data + GLS_HDR_NSECT, 9);
+        fix_crc(data, len);
+        r = gls_bundle_read(data, len, &err);
+        CHECK(r == NULL);
+        CHECK_MSG(strcmp(err.msg, "bundle has 9 sections, expected 7 or 8") == 0, "%s", err.msg);
+    }
+    gls_bundle_free(b);
+    free(data);
+
+    /* an empty table is never written, so it is refused */
+    b = make_named_bundle(one, 1);
+    if (gls_bundle_write_codec(b, GLS_CODEC_RAW, &data, &len, &err) == 0) {
+        const uint8_t *e = data + GLS_HEADER_SIZE + (GLS_SEC_COUNT - 1) * GLS_DIRENT_SIZE;
+        gls_le_put_u32(data + gls_le_get_u64(e + 8), 0);
+        fix_crc(data, len);
+        r = gls_bundle_read(data, len, &err);
+        CHECK(r == NULL);
+        CHECK_MSG(strstr(err.msg, "instance name table: 0 names do not fit in the section") != NULL, "%s", err.msg);
+        free(data);
+    }
+    gls_bundle_free(b);
+
+    static const char *const bad[] = {"1car"};
+    expect_message(make_named_bundle(bad, 1),
+                   "instance name 0 is not a valid name ([A-Za-z_][A-Za-z0-9_.-]*, at most 64 bytes)");
+    static const char *const long_name[] = {"a234567890123456789012345678901234567890123456789012345678901234x"};
+    expect_message(make_named_bundle(long_name, 1),
+                   "instance name 0 is not a valid name ([A-Za-z_][A-Za-z0-9_.-]*, at most 64 bytes)");
+    static const char *const twice[] = {"car1", "car1"};
+    expect_message(make_named_bundle(twice, 2), "instance name table not sorted or has a duplicate at car1");
+    static const char *const unsorted[] = {"car2", "car1"};
+    expect_message(make_named_bundle(unsorted, 2), "instance name table not sorted or has a duplicate at car1");
+    /* the operand: an index into the table */
+    expect_code_message(&(gls_insn){.op = GLS_OP_CALLN, .u = {1, 0}}, 1,
+                        "object a.Tri, instruction 0 (calln): instance name 0 >= 0 names");
+    /* reached twice from the top object (two callns of one name) */
+    b = make_named_bundle(one, 1);
+    set_code(b, 0, (gls_insn[]){{.op = GLS_OP_CALLN, .u = {1, 0}}, {.op = GLS_OP_CALLN, .u = {1, 0}}}, 2);
+    expect_message(b, "instance name car1: reached 2 times from the top object, not once");
+    /* a name no calln reached from the top object gives */
+    static const char *const two[] = {"car1", "car2"};
+    expect_message(make_named_bundle(two, 2), "instance name car2: reached 0 times from the top object, not once");
+    /* a library bundle: no top, each name on some calln */
+    b = make_named_bundle(two, 2);
+    b->top = GLS_NONE;
+    expect_message(b, "instance name car2: no calln names it");
+}
+
 int main(void)
 {
     RUN(test_round_trip_is_lossless);
@@ -513,5 +620,6 @@ int main(void)
     RUN(test_templates);
     RUN(test_opcode_table);
     RUN(test_expansion_bomb_refused);
+    RUN(test_instance_names);
     CHECK_EXIT();
 }
