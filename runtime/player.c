@@ -521,7 +521,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                 goto out;
             }
     }
-    if (gls_scene_flatten(b, &scene, err, sizeof err)) {
+    if ((o->flatten ? gls_scene_flatten : gls_scene_load)(b, &scene, err, sizeof err)) {
         fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, err);
         goto out;
     }

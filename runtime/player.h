@@ -42,6 +42,9 @@ typedef struct {
                                     0 or 1 = off (the fast default)     */
     int progress;                /* progress lines on errs               */
     gls_backend backend;         /* GL backend (glctx.h); 0 = auto       */
+    int flatten;                 /* --flatten: the flattened reference path */
+    const char *const *motions;  /* --motion NAME=FILE arguments         */
+    size_t nmotions;
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,

@@ -203,8 +203,8 @@ static inline int tb_render(gls_glctx *ctx, const gls_bundle *b, const gls_camer
 {
     char err[512];
     gls_scene s;
-    if (gls_scene_flatten(b, &s, err, sizeof err)) {
-        printf("  flatten: %s\n", err);
+    if (gls_scene_load(b, &s, err, sizeof err)) {
+        printf("  scene: %s\n", err);
         return -1;
     }
     gls_renderer *r = gls_renderer_create(ctx, b, &s, err, sizeof err);
