@@ -119,6 +119,7 @@ SEES_test_aa := bench
 SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
+SEES_test_instances := runtime
 SEES_test_progress := runtime
 SEES_test_rotation := runtime
 SEES_test_road_geo := roads
