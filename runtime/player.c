@@ -555,6 +555,36 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     return rc;
 }
 
+/* --explain counts culling in the first frame: with a trajectory, the
+ * cameras and motions are posed for its first frame in range (the
+ * cameras in place, they are posed again per frame when rendering).  0,
+ * or 1 after a message. */
+static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls_camera *posed, FILE *errs)
+{
+    if (!o->trajectory) {
+        motion_apply(ms, o->frame);
+        return 0;
+    }
+    char err[1024];
+    gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
+    if (!t)
+        return 1;
+    gls_traj_pose p;
+    int got;
+    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1 && p.frame < o->frame_first)
+        ;
+    gls_traj_close(t);
+    if (got != 1 || p.frame >= o->frame_end)
+        return 0; /* the scan before rendering says what is wrong */
+    if (motion_check(ms, p.frame, errs) == 0)
+        motion_apply(ms, p.frame);
+    for (size_t i = 0; i < o->ncameras; i++) {
+        gls_camera rel = posed[i];
+        gls_traj_compose(rel.R, rel.T, p.R, p.T, posed[i].R, posed[i].T);
+    }
+    return 0;
+}
+
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
@@ -627,8 +657,14 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    if (o->explain)
-        gls_explain(out, o->bundle, b, &scene, cams, (const char *const *)names, o->ncameras, o, ctx);
+    if (o->explain) {
+        gls_camera *posed = malloc((o->ncameras ? o->ncameras : 1) * sizeof *posed);
+        if (posed)
+            memcpy(posed, cams, o->ncameras * sizeof *posed);
+        if (posed && explain_first_frame(o, &ms, posed, errs) == 0)
+            gls_explain(out, o->bundle, b, &scene, posed, (const char *const *)names, o->ncameras, o, ctx);
+        free(posed);
+    }
     if (!o->outdir) {
         rc = 0;
         goto out;
