@@ -327,8 +327,10 @@ static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
 static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto);
 
 /* A new instance of object oi, called from instance parent with st (its
- * M the call-site transform in the parent's frame). */
-static void enter(walker *w, uint32_t oi, state st, uint32_t parent)
+ * M the call-site transform in the parent's frame), named name (NULL:
+ * unnamed; the bundle validator checks that names are valid and unique,
+ * spec/bundle.md). */
+static void enter(walker *w, uint32_t oi, state st, uint32_t parent, const char *name)
 {
     if (w->ninst >= GLS_SCENE_MAX_INSTANCES) {
         w->limit = "more than 4194304 instances (call paths): too many to draw";
@@ -345,6 +347,14 @@ static void enter(walker *w, uint32_t oi, state st, uint32_t parent)
     n->parent = parent;
     memcpy(n->local, st.M, sizeof n->local);
     identity(n->motion);
+    if (name) {
+        size_t len = strlen(name) + 1;
+        if (!(n->name = malloc(len))) {
+            w->oom = 1;
+            return;
+        }
+        memcpy(n->name, name, len);
+    }
     int fresh = 0;
     n->proto = proto_for(w, oi, &st, &fresh);
     if (n->proto == GLS_NONE)
@@ -406,10 +416,10 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
             break;
         case GLS_OP_CALL:
             /* by value: the callee gets a copy.  Instanced: an affine call
-             * is an instance (the lead's CALLN goes here too, naming it:
-             * gls_scene_name_instance(s, w->ninst - 1, name) after enter) */
+             * is an instance.  A named call (CALLN) is the same with
+             * enter(..., the bundle's name of it). */
             if (w->instanced && is_affine(st.M))
-                enter(w, in.u[GLS_ARG_CALL_OBJECT], st, inst);
+                enter(w, in.u[GLS_ARG_CALL_OBJECT], st, inst, NULL);
             else
                 run(w, in.u[GLS_ARG_CALL_OBJECT], st, inst, proto);
             break;
@@ -579,7 +589,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     st.rgba[0] = st.rgba[1] = st.rgba[2] = st.rgba[3] = 1.0; /* opaque white */
     st.mode = GLS_MODE_COLOR;
     st.texture = GLS_NONE;
-    enter(&w, b->top, st, GLS_NONE);
+    enter(&w, b->top, st, GLS_NONE, NULL);
     s->protos = w.protos, s->nprotos = (uint32_t)w.nprotos;
     s->inst = w.inst, s->ninst = (uint32_t)w.ninst;
     w.protos = NULL, w.inst = NULL;
@@ -614,6 +624,8 @@ out:
     free(w.wcol);
     free(w.wtc);
     free(w.protos);
+    for (size_t i = 0; w.inst && i < w.ninst; i++)
+        free(w.inst[i].name);
     free(w.inst);
     free(w.proto_head);
     free(w.has_call);
