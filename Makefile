@@ -86,10 +86,10 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # The helper programs (benchmarks, image tools, fuzz seed writer): built by
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
-PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/depth2png $(B)/pnghalf \
+PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends units programs spec-road-keys
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -119,6 +119,7 @@ SEES_test_aa := bench
 SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
+SEES_test_instances := runtime
 SEES_test_progress := runtime
 SEES_test_rotation := runtime
 SEES_test_road_geo := roads
@@ -276,13 +277,19 @@ clean:
 # (tests/unit/player_scene.h); test_aa shares bench/aa_scene.h.
 INC_bench := -Ibench -Itests/unit $(INC_runtime)
 LIB_bench := $(LIB_runtime)
-BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench
+BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_bench) $(LDLIBS) $(GL_LIBS)
 
 # bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
+
+# bench-instances (runtime owner): instanced replay against --flatten and
+# the floor, random-order triangles and a 10,000-tree forest
+# (docs/instances.txt; minutes: the flattened forest has 20 M triangles).
+bench-instances: $(B)/bench/play_floor $(B)/bench/instances_bench
+	@sh bench/instances.sh $(B)
 
 # bench-backends: frames per second of each GL backend (spec/backends.md),
 # the road sequence and the 100k-triangle terrain, 1 and 256 samples a

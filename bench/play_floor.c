@@ -2,16 +2,21 @@
  * buffer, world coordinates as float, one draw call per frame, through the
  * same OSMesa context, the same FBO (RGBA8 + 32F depth, reversed Z) and
  * the same read-backs (colour and depth) as the player.  Nothing a real
- * player could skip, in the order that draws fastest.  Prints "floor FPS". */
+ * player could skip, in the order that draws fastest.  Prints "floor FPS".
+ * With --random, the same triangles in bench/random_order.h's order (what
+ * a floor that draws triangles as given makes of instances_bench's
+ * random-order scene). */
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include "glcalls.h"
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 #include "glctx.h"
 #include "play_scene.h"
+#include "random_order.h"
 #include "render.h"
 
 #define LOAD(type, name) type name = (type)(uintptr_t)gls_glctx_proc(ctx, #name)
@@ -21,9 +26,27 @@ typedef struct {
     uint8_t c[4];
 } vert;
 
-int main(void)
+/* *v = grid vertex (i, j) as a float position and an RGBA8 colour. */
+static void put_vertex(vert *v, int i, int j)
+{
+    double p[3];
+    float c[4];
+    ps_vertex(i, j, p, c);
+    for (int a = 0; a < 3; a++) {
+        v->p[a] = (float)p[a];
+        v->c[a] = (uint8_t)lrint(c[a] * 255.0);
+    }
+    v->c[3] = 255;
+}
+
+int main(int argc, char **argv)
 {
     char err[256];
+    int random = argc == 2 && strcmp(argv[1], "--random") == 0;
+    if (argc > 1 && !random) {
+        fprintf(stderr, "usage: play_floor [--random]\n");
+        return 2;
+    }
     gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
     if (!ctx) {
         fprintf(stderr, "play_floor: %s\n", err);
@@ -47,22 +70,23 @@ int main(void)
      * plain way to draw these triangles, or the player could beat it by
      * ordering alone (its chunks are spatial cells). */
     const int blk = 32;
-    for (int bi = 0; bi < PS_N; bi += blk)
+    uint32_t *order = random ? ro_order() : NULL;
+    if (random && !order)
+        return 1;
+    for (uint32_t t = 0; random && t < RO_NTRI; t++)
+        for (int q = 0; q < 3; q++) {
+            int i, j;
+            ro_corner(order[t], q, &i, &j);
+            put_vertex(&v[k++], i, j);
+        }
+    free(order);
+    for (int bi = 0; !random && bi < PS_N; bi += blk)
     for (int bj = 0; bj < PS_N; bj += blk)
     for (int i = bi; i < bi + blk && i < PS_N; i++)
         for (int j = bj; j < bj + blk && j < PS_N; j++) {
             static const int corner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
-            for (int q = 0; q < 6; q++) {
-                double p[3];
-                float c[4];
-                ps_vertex(i + corner[q][0], j + corner[q][1], p, c);
-                for (int a = 0; a < 3; a++) {
-                    v[k].p[a] = (float)p[a];
-                    v[k].c[a] = (uint8_t)lrint(c[a] * 255.0);
-                }
-                v[k].c[3] = 255;
-                k++;
-            }
+            for (int q = 0; q < 6; q++)
+                put_vertex(&v[k++], i + corner[q][0], j + corner[q][1]);
         }
     GLuint fbo, rb[2], vbo;
     glGenFramebuffers(1, &fbo);

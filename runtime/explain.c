@@ -1,9 +1,11 @@
 /* glsplay --explain: the rendering plan, derived from the bundle's
  * feature bits (which the reader has checked against the content). */
+#include <stdlib.h>
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "units.h"
 #include "player.h"
+#include "scene_cull.h"
 
 /* The GL effect each feature switches on, by feature bit; the asserts keep
  * the indices in step with bundle.h. */
@@ -36,6 +38,33 @@ static void explain_backend(FILE *out, const gls_play_opts *o, const gls_glctx *
     fprintf(out, "GL_RENDERER: %s; GL_VERSION: %s\n", gi->renderer, gi->version);
 }
 
+/* Instances, their memory, and what each camera culls in its first
+ * frame (cams are posed for it: with a trajectory, its first frame). */
+static void explain_instances(FILE *out, const gls_scene *s, const gls_camera *cams, const char *const *names,
+                              size_t n, const gls_play_opts *o)
+{
+    uint64_t geo, table;
+    char g[32], tb[32];
+    gls_scene_memory(s, &geo, &table);
+    gls_fmt_bytes(g, sizeof g, geo);
+    gls_fmt_bytes(tb, sizeof tb, table);
+    uint32_t drawing = 0;
+    for (uint32_t i = 0; i < s->ninst; i++)
+        drawing += s->inst[i].nitems > 0;
+    fprintf(out, "instances: %u (%u with geometry of their own, %u protos, %u draw items)%s; memory: unique geometry %s, "
+                 "instance table %s\n", s->ninst, drawing, s->nprotos, s->nitems,
+            o->flatten ? ", every call inlined (--flatten)" : "", g, tb);
+    uint8_t *ivis = malloc(s->ninst ? s->ninst : 1), *vis = malloc(s->nitems ? s->nitems : 1);
+    for (size_t k = 0; ivis && vis && k < n; k++) {
+        gls_cull_stats st;
+        gls_scene_cull(s, &cams[k], ivis, vis, &st);
+        fprintf(out, "  camera %s, first frame: %u instances drawn, %u culled (outside the view); %u of %u items drawn\n",
+                names[k], st.drawn, st.culled, st.items_drawn, s->nitems);
+    }
+    free(ivis);
+    free(vis);
+}
+
 void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
                  const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o,
                  const gls_glctx *ctx)
@@ -53,11 +82,12 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
             b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
-    fprintf(out, "geometry: %u triangles in %u chunks (cells of %g units, double anchors), %u state batches",
+    fprintf(out, "geometry: %u unique triangles in %u chunks (cells of %g units, double anchors), %u state batches",
             s->nverts / 3, s->nchunks, GLS_SCENE_CELL, s->nbatches);
     if (s->dropped)
         fprintf(out, ", %llu triangles dropped (a vertex beyond 2^50 units from the origin, or at infinity)", (unsigned long long)s->dropped);
     fprintf(out, "\n");
+    explain_instances(out, s, cams, names, n, o);
     explain_backend(out, o, ctx);
     fprintf(out, "always on: reversed-Z depth test (GL_DEPTH_COMPONENT32F, cleared to 0, GL_GREATER, "
                  "glClipControl GL_ZERO_TO_ONE); FBO with RGBA8 colour; clear colour black\n");

@@ -46,6 +46,11 @@ static const char usage_text[] =
     "                         consecutive ranges split a sequence across processes\n"
     "  --frame N              the frame number in the file names of a single render\n"
     "                         (default 0)\n"
+    "  --motion NAME=FILE     move the named instance NAME by FILE's per-frame pose\n"
+    "                         (object-to-parent; glsroad motion, KITTI or TUM rows;\n"
+    "                         repeatable; spec/bundle.md section 9.3)\n"
+    "  --flatten              draw every call inlined, as one flattened scene (the\n"
+    "                         reference path; default: instanced, spec/bundle.md 9.3)\n"
     "  --resume               skip frames that are complete: every camera has the record\n"
     "                         NAME/.frame_F.done, written after its last file, for the\n"
     "                         same outputs and settings, and every file is there\n"
@@ -181,9 +186,14 @@ int main(int argc, char **argv)
     double subpixel = 0;
     int have_aa = 0, have_samples = 0;
     const char **cams = calloc((size_t)argc, sizeof *cams);
-    if (!cams)
+    const char **mot = calloc((size_t)argc, sizeof *mot);
+    if (!cams || !mot) {
+        free(cams);
+        free(mot);
         return 1;
+    }
     o.cameras = cams;
+    o.motions = mot;
     int rc;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -191,6 +201,7 @@ int main(int argc, char **argv)
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             fputs(usage_text, stdout);
             free(cams);
+            free(mot);
             return 0;
         } else if (strcmp(a, "--camera") == 0 || strcmp(a, "-c") == 0) {
             if (!has_val) {
@@ -335,6 +346,15 @@ int main(int argc, char **argv)
             o.write_calib = 1;
         } else if (strcmp(a, "--resume") == 0) {
             o.resume = 1;
+        } else if (strcmp(a, "--flatten") == 0) {
+            o.flatten = 1;
+        } else if (strcmp(a, "--motion") == 0) {
+            const char *eq = has_val ? strchr(argv[i + 1], '=') : NULL;
+            if (!eq || eq == argv[i + 1] || !eq[1]) {
+                rc = usage_error("--motion needs NAME=FILE, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            mot[o.nmotions++] = argv[++i];
         } else if (strcmp(a, "--progress") == 0) {
             o.progress = 1;
         } else if (strcmp(a, "--trajectory") == 0) {
@@ -429,5 +449,6 @@ int main(int argc, char **argv)
     rc = gls_play(&o, stdout, stderr);
 done:
     free(cams);
+    free(mot);
     return rc;
 }

@@ -20,9 +20,11 @@
 #include "frame_record.h"
 #include "glctx.h"
 #include "mkdirs.h"
+#include "motion.h"
 #include "outputs.h"
 #include "player.h"
 #include "progress.h"
+#include "suggest.h"
 #include "trajectory.h"
 #include "render.h"
 #include "units.h"
@@ -86,8 +88,94 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
 
 /* What one run keeps across cameras and frames: the options, the
  * renderer, and the timing behind the progress line and the estimate. */
+/* --motion: the named instances and their motion files. */
+typedef struct {
+    gls_scene *scene;
+    size_t n;
+    uint32_t *inst;
+    gls_motion *m;
+} motion_set;
+
+/* Every frame to be rendered must have a row in every motion file. */
+static int motion_check(const motion_set *ms, uint64_t frame, FILE *errs)
+{
+    double R[9], T[3];
+    for (size_t i = 0; i < ms->n; i++)
+        if (gls_motion_pose(&ms->m[i], frame, R, T)) {
+            fprintf(errs, "glsplay: error: %s: no row for frame %llu (the motion of instance %s)\n", ms->m[i].path,
+                    (unsigned long long)frame, ms->scene->inst[ms->inst[i]].name);
+            return -1;
+        }
+    return 0;
+}
+
+/* Pose the moving instances for frame (checked by motion_check). */
+static void motion_apply(const motion_set *ms, uint64_t frame)
+{
+    double R[9], T[3];
+    for (size_t i = 0; i < ms->n; i++)
+        if (gls_motion_pose(&ms->m[i], frame, R, T) == 0)
+            gls_scene_move(ms->scene, ms->inst[i], R, T);
+    if (ms->n)
+        gls_scene_update(ms->scene);
+}
+
+/* Read the --motion arguments against the scene's instance names.  0, or
+ * 1 after a message. */
+static int motion_load(const gls_play_opts *o, motion_set *ms, FILE *errs)
+{
+    char err[1024];
+    ms->inst = calloc(o->nmotions ? o->nmotions : 1, sizeof *ms->inst);
+    ms->m = calloc(o->nmotions ? o->nmotions : 1, sizeof *ms->m);
+    if (!ms->inst || !ms->m) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        return 1;
+    }
+    for (size_t i = 0; i < o->nmotions; i++) {
+        const char *arg = o->motions[i], *eq = strchr(arg, '=');
+        char name[GLS_INSTANCE_NAME_MAX + 2];
+        size_t len = (size_t)(eq - arg);
+        snprintf(name, sizeof name, "%.*s", (int)(len < sizeof name - 1 ? len : sizeof name - 1), arg);
+        uint32_t k = len <= GLS_INSTANCE_NAME_MAX ? gls_scene_find_instance(ms->scene, name) : GLS_NONE;
+        if (k == GLS_NONE) {
+            const char **names = calloc(ms->scene->ninst ? ms->scene->ninst : 1, sizeof *names);
+            size_t nn = 0;
+            for (uint32_t j = 0; names && j < ms->scene->ninst; j++)
+                if (ms->scene->inst[j].name)
+                    names[nn++] = ms->scene->inst[j].name;
+            const char *s = names ? gls_suggest(arg, len, names, nn) : NULL;
+            fprintf(errs, "glsplay: error: --motion %.*s: %s has no instance named '%.*s'%s%s%s\n", (int)len, arg,
+                    o->bundle, (int)len, arg, s ? "; did you mean '" : nn ? "" : " (it names no instance)",
+                    s ? s : "", s ? "'?" : "");
+            free(names);
+            return 1;
+        }
+        for (size_t j = 0; j < i; j++)
+            if (ms->inst[j] == k) {
+                fprintf(errs, "glsplay: error: --motion %s: instance %s is moved twice\n", arg, name);
+                return 1;
+            }
+        ms->inst[i] = k;
+        if (gls_motion_read(eq + 1, errs, &ms->m[i], err, sizeof err)) {
+            fprintf(errs, "%s\n", err);
+            return 1;
+        }
+        ms->n = i + 1;
+    }
+    return 0;
+}
+
+static void motion_free(motion_set *ms)
+{
+    for (size_t i = 0; ms->m && i < ms->n; i++)
+        gls_motion_free(&ms->m[i]);
+    free(ms->m);
+    free(ms->inst);
+}
+
 typedef struct {
     const gls_play_opts *o;
+    const motion_set *ms;
     const gls_aa_plan *plan;
     gls_renderer *r;
     FILE *errs;
@@ -373,8 +461,8 @@ static gls_traj *open_trajectory(const char *path, FILE *notes, FILE *errs)
  * to the end of the range is checked, the frames in the range counted
  * and, with --resume, the complete ones among them.  0, or 1 after a
  * message. */
-static int scan_trajectory(const gls_play_opts *o, const gls_camera *rel, const char *const *names, FILE *errs,
-                           uint64_t *inrange, uint64_t *complete)
+static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const gls_camera *rel,
+                           const char *const *names, FILE *errs, uint64_t *inrange, uint64_t *complete)
 {
     char err[1024];
     gls_traj *t = open_trajectory(o->trajectory, errs, errs);
@@ -391,6 +479,10 @@ static int scan_trajectory(const gls_play_opts *o, const gls_camera *rel, const 
         if (p.frame > UINT32_MAX) {
             fprintf(errs, "%s:%u: error: frame %llu: frame numbers above %u are not supported\n", o->trajectory,
                     p.line, (unsigned long long)p.frame, UINT32_MAX);
+            rc = 1;
+            break;
+        }
+        if (motion_check(ms, p.frame, errs)) {
             rc = 1;
             break;
         }
@@ -426,7 +518,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     const gls_play_opts *o = s->o;
     FILE *errs = s->errs;
     uint64_t inrange, complete;
-    if (scan_trajectory(o, rel, names, errs, &inrange, &complete))
+    if (scan_trajectory(o, s->ms, rel, names, errs, &inrange, &complete))
         return 1;
     if (o->resume)
         resume_note(errs, complete, inrange);
@@ -447,6 +539,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
             break;
         if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
             continue;
+        motion_apply(s->ms, p.frame);
         for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
             gls_camera c = rel[i];
             gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
@@ -470,6 +563,36 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     return rc;
 }
 
+/* --explain counts culling in the first frame: with a trajectory, the
+ * cameras and motions are posed for its first frame in range (the
+ * cameras in place, they are posed again per frame when rendering).  0,
+ * or 1 after a message. */
+static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls_camera *posed, FILE *errs)
+{
+    if (!o->trajectory) {
+        motion_apply(ms, o->frame);
+        return 0;
+    }
+    char err[1024];
+    gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
+    if (!t)
+        return 1;
+    gls_traj_pose p;
+    int got;
+    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1 && p.frame < o->frame_first)
+        ;
+    gls_traj_close(t);
+    if (got != 1 || p.frame >= o->frame_end)
+        return 0; /* the scan before rendering says what is wrong */
+    if (motion_check(ms, p.frame, errs) == 0)
+        motion_apply(ms, p.frame);
+    for (size_t i = 0; i < o->ncameras; i++) {
+        gls_camera rel = posed[i];
+        gls_traj_compose(rel.R, rel.T, p.R, p.T, posed[i].R, posed[i].T);
+    }
+    return 0;
+}
+
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
@@ -477,6 +600,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     int rc = 1;
     gls_scene scene;
     memset(&scene, 0, sizeof scene);
+    motion_set ms = {&scene, 0, NULL, NULL};
     gls_glctx *ctx = NULL;
     gls_renderer *r = NULL;
     gls_camera *cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *cams);
@@ -529,18 +653,26 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                 goto out;
             }
     }
-    if (gls_scene_flatten(b, &scene, err, sizeof err)) {
+    if ((o->flatten ? gls_scene_flatten : gls_scene_load)(b, &scene, err, sizeof err)) {
         fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, err);
         goto out;
     }
+    if (motion_load(o, &ms, errs) || (!o->trajectory && motion_check(&ms, o->frame, errs)))
+        goto out;
     /* the context before the plan, which reports it */
     ctx = gls_glctx_create(o->backend, err, sizeof err);
     if (!ctx) {
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    if (o->explain)
-        gls_explain(out, o->bundle, b, &scene, cams, (const char *const *)names, o->ncameras, o, ctx);
+    if (o->explain) {
+        gls_camera *posed = malloc((o->ncameras ? o->ncameras : 1) * sizeof *posed);
+        if (posed)
+            memcpy(posed, cams, o->ncameras * sizeof *posed);
+        if (posed && explain_first_frame(o, &ms, posed, errs) == 0)
+            gls_explain(out, o->bundle, b, &scene, posed, (const char *const *)names, o->ncameras, o, ctx);
+        free(posed);
+    }
     if (!o->outdir) {
         rc = 0;
         goto out;
@@ -570,11 +702,12 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &plan, r, errs, o->ncameras, 0, gls_now(), 0};
+    session ses = {o, &ms, &plan, r, errs, o->ncameras, 0, gls_now(), 0};
     if (!o->trajectory) {
         int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
         if (o->resume)
             resume_note(errs, skip, 1);
+        motion_apply(&ms, o->frame);
         if (!skip)
             for (size_t i = 0; i < o->ncameras; i++)
                 if (play_camera(&ses, &cams[i], names[i], o->frame))
@@ -588,6 +721,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 out:
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);
+    motion_free(&ms);
     gls_scene_free(&scene);
     gls_bundle_free(b);
     for (size_t i = 0; names && i < o->ncameras; i++)

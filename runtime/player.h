@@ -44,6 +44,9 @@ typedef struct {
     gls_backend backend;         /* GL backend (glctx.h); 0 = auto       */
     int write_calib;             /* --write-calib: calibration files
                                     (calib_write.h)                     */
+    int flatten;                 /* --flatten: the flattened reference path */
+    const char *const *motions;  /* --motion NAME=FILE arguments         */
+    size_t nmotions;
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,

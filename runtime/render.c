@@ -20,6 +20,7 @@
 #include <string.h>
 #include "glcalls.h"
 #include "render.h"
+#include "scene_cull.h"
 #include "units.h"
 
 #ifndef GL_TEXTURE_MAX_ANISOTROPY
@@ -56,7 +57,9 @@ struct gls_renderer {
     GLuint near_vbo;       /* per-pass vertices of re-anchored chunks */
     uint8_t *near_buf;
     size_t near_cap;       /* vertices */
-    uint32_t *near_list;   /* chunk indices drawn from near_vbo */
+    uint32_t *near_list;   /* item indices drawn from near_vbo */
+    uint8_t *ivis, *vis;   /* culling: per instance, per item           */
+    gls_cull_stats cull;   /* of the last plain pass                    */
     GLuint *tex;           /* per bundle texture: GL name or 0 if unused */
     uint32_t ntex;
     uint32_t width, height; /* one image (tile) */
@@ -199,8 +202,10 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
         glTexCoord2f(0, 0); /* texcoords absent: (0, 0) */
     set_pointers(scene);
     r->glGenBuffers(1, &r->near_vbo);
-    r->near_list = malloc((scene->nchunks ? scene->nchunks : 1) * sizeof *r->near_list);
-    if (!r->near_list) {
+    r->near_list = malloc((scene->nitems ? scene->nitems : 1) * sizeof *r->near_list);
+    r->ivis = malloc(scene->ninst ? scene->ninst : 1);
+    r->vis = malloc(scene->nitems ? scene->nitems : 1);
+    if (!r->near_list || !r->ivis || !r->vis) {
         snprintf(err, errlen, "out of memory");
         gls_renderer_destroy(r);
         return NULL;
@@ -330,34 +335,61 @@ static void apply_key(gls_renderer *r, const gls_drawkey *k)
         glColor4ub(k->rgba[0], k->rgba[1], k->rgba[2], k->rgba[3]);
 }
 
-/* Does chunk ch need re-anchoring at the camera centre C?  Its float
- * offsets err by up to 2^-24 * maxoff; every visible vertex is at least
- * max(distance from C to the chunk's box, near) from the camera.  Keep the
- * static offsets only while that error is within 4 * 2^-24 of the
- * distance, i.e. no more than twice the float rounding GL adds anyway. */
-static int needs_reanchor(const gls_chunk *ch, const double C[3], double near)
+/* Does item it need re-anchoring at the camera centre C?  Its float
+ * offsets err by up to 2^-24 * maxoff in the proto's frame, scale times
+ * that in the world; every visible vertex is at least max(distance from
+ * C to the item's box, near) from the camera.  Keep the static offsets
+ * only while that error is within 4 * 2^-24 of the distance, i.e. no
+ * more than twice the float rounding GL adds anyway. */
+static int needs_reanchor(const gls_scene *s, const gls_item *it, const double C[3], double near)
 {
     double d2 = 0;
     for (int j = 0; j < 3; j++) {
-        double e = C[j] < ch->lo[j] ? ch->lo[j] - C[j] : C[j] > ch->hi[j] ? C[j] - ch->hi[j] : 0;
+        double e = C[j] < it->lo[j] ? it->lo[j] - C[j] : C[j] > it->hi[j] ? C[j] - it->hi[j] : 0;
         d2 += e * e;
     }
     double dist = sqrt(d2);
     if (dist < near)
         dist = near;
-    return ch->maxoff > 4 * dist;
+    return s->chunks[it->chunk].maxoff * s->inst[it->inst].scale > 4 * dist;
 }
 
-static void draw_chunk(gls_renderer *r, const gls_camera *c, const gls_chunk *ch, const double anchor[3],
-                       uint32_t first, const gls_drawkey **prev)
+/* Modelview of geometry at offsets from a in the frame of world transform
+ * W: camera-relative in double (W a first, then R (W a) + T, where the
+ * large terms cancel), the rotation R A.  For W = I every product is
+ * exact, so an instance at the identity draws exactly as flattened. */
+static void item_modelview(const gls_camera *c, const double W[16], const double a[3], double MV[16])
 {
+    double p[3];
+    for (int i = 0; i < 3; i++)
+        p[i] = W[4 * i] * a[0] + W[4 * i + 1] * a[1] + W[4 * i + 2] * a[2] + W[4 * i + 3];
+    gls_camera_modelview(c, p, MV);
+    for (int i = 0; i < 3; i++) {
+        double sg = i == 0 ? 1.0 : -1.0; /* the flip diag(1, -1, -1) */
+        for (int j = 0; j < 3; j++)
+            MV[4 * i + j] =
+                sg * (c->R[3 * i] * W[j] + c->R[3 * i + 1] * W[4 + j] + c->R[3 * i + 2] * W[8 + j]);
+    }
+}
+
+/* Draw item it: from the static buffer (near = 0: offsets from its
+ * chunk's anchor in its instance's frame) or the near buffer (offsets
+ * from the camera centre C in the world). */
+static void draw_item(gls_renderer *r, const gls_camera *c, const gls_item *it, int near, const double C[3],
+                      uint32_t first, const gls_drawkey **prev)
+{
+    static const double I[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const gls_chunk *ch = &r->scene->chunks[it->chunk];
     double MV[16];
     float f[16];
     if (!*prev || memcmp(*prev, &ch->key, sizeof **prev)) {
         apply_key(r, &ch->key);
         *prev = &ch->key;
     }
-    gls_camera_modelview(c, anchor, MV);
+    if (near)
+        item_modelview(c, I, C, MV);
+    else
+        item_modelview(c, r->scene->inst[it->inst].world, ch->anchor, MV);
     gls_mat_to_gl(MV, f);
     glLoadMatrixf(f);
     glDrawArrays(GL_TRIANGLES, (GLint)first, (GLsizei)ch->count);
@@ -377,35 +409,40 @@ static void load_projection(gls_renderer *r, const gls_camera *c, double du, dou
     glMatrixMode(GL_MODELVIEW);
 }
 
-/* Chunks near the camera: offsets from the camera centre, formed in
- * double, so their float error is relative to their distance.  Uploaded
- * once per camera position; returns how many chunks are in the list. */
+/* Items near the camera: offsets from the camera centre, formed in
+ * double in the world, so their float error is relative to their
+ * distance.  Uploaded once per camera position; returns how many items
+ * are in the list. */
 static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double C[3])
 {
     const gls_scene *s = r->scene;
     uint32_t nnear = 0;
     size_t nv = 0;
-    for (uint32_t i = 0; i < s->nchunks; i++)
-        if (needs_reanchor(&s->chunks[i], C, c->near)) {
+    for (uint32_t i = 0; i < s->nitems; i++)
+        if (needs_reanchor(s, &s->items[i], C, c->near)) {
             r->near_list[nnear++] = i;
-            nv += s->chunks[i].count;
+            nv += s->chunks[s->items[i].chunk].count;
         }
     if (!nnear)
         return 0;
     if (nv > r->near_cap) {
         uint8_t *nb = realloc(r->near_buf, nv * s->stride);
         if (!nb)
-            return 0; /* out of memory: those chunks are not drawn */
+            return 0; /* out of memory: those items are not drawn */
         r->near_buf = nb;
         r->near_cap = nv;
     }
     size_t at = 0;
     for (uint32_t k = 0; k < nnear; k++) {
-        const gls_chunk *ch = &s->chunks[r->near_list[k]];
+        const gls_item *it = &s->items[r->near_list[k]];
+        const gls_chunk *ch = &s->chunks[it->chunk];
+        const double *W = s->inst[it->inst].world;
         memcpy(r->near_buf + at * s->stride, s->verts + (size_t)ch->first * s->stride, (size_t)ch->count * s->stride);
         for (uint32_t v = 0; v < ch->count; v++) {
-            const double *p = s->world + 3 * ((size_t)ch->first + v);
-            float off[3] = {(float)(p[0] - C[0]), (float)(p[1] - C[1]), (float)(p[2] - C[2])};
+            const double *q = s->exact + 3 * ((size_t)ch->first + v);
+            float off[3];
+            for (int i = 0; i < 3; i++)
+                off[i] = (float)(W[4 * i] * q[0] + W[4 * i + 1] * q[1] + W[4 * i + 2] * q[2] + W[4 * i + 3] - C[i]);
             memcpy(r->near_buf + (at + v) * s->stride, off, sizeof off);
         }
         at += ch->count;
@@ -415,7 +452,7 @@ static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double 
     return nnear;
 }
 
-/* Draw every chunk (those with vis[i] != 0; NULL: all) with the current
+/* Draw every item (those with vis[i] != 0; NULL: all) with the current
  * projection and viewport. */
 static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear, const uint8_t *vis)
 {
@@ -424,14 +461,14 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
     uint32_t k = 0;
     r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
     set_pointers(s);
-    for (uint32_t i = 0; i < s->nchunks; i++) {
-        const gls_chunk *ch = &s->chunks[i];
+    for (uint32_t i = 0; i < s->nitems; i++) {
+        const gls_item *it = &s->items[i];
         if (k < nnear && r->near_list[k] == i) {
             k++;
             continue;
         }
         if (!vis || vis[i])
-            draw_chunk(r, c, ch, ch->anchor, ch->first, &prev);
+            draw_item(r, c, it, 0, C, s->chunks[it->chunk].first, &prev);
     }
     if (!nnear)
         return;
@@ -439,10 +476,10 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
     set_pointers(s);
     size_t at = 0;
     for (k = 0; k < nnear; k++) {
-        const gls_chunk *ch = &s->chunks[r->near_list[k]];
+        const gls_item *it = &s->items[r->near_list[k]];
         if (!vis || vis[r->near_list[k]])
-            draw_chunk(r, c, ch, C, (uint32_t)at, &prev);
-        at += ch->count;
+            draw_item(r, c, it, 1, C, (uint32_t)at, &prev);
+        at += s->chunks[it->chunk].count;
     }
 }
 
@@ -468,6 +505,7 @@ void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const do
     }
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     uint32_t nnear = prepare_near(r, c, C);
+    gls_scene_cull(r->scene, c, r->ivis, r->vis, &r->cull);
     for (uint32_t t = 0; t < n && t < r->kx * r->ky; t++) {
         if (r->kx * r->ky > 1) {
             GLint x = (GLint)(r->width * (t % r->kx)), y = (GLint)(r->height * (t / r->kx));
@@ -475,44 +513,25 @@ void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const do
             glScissor(x, y, (GLsizei)r->width, (GLsizei)r->height);
         }
         load_projection(r, c, du[t], dv[t]);
-        draw_all(r, c, C, nnear, NULL);
+        draw_all(r, c, C, nnear, r->vis);
     }
 }
 
-uint32_t gls_renderer_nchunks(const gls_renderer *r) { return r->scene->nchunks; }
+uint32_t gls_renderer_nchunks(const gls_renderer *r) { return r->scene->nitems; }
 
-uint32_t gls_render_chunk_bounds(const gls_renderer *r, const gls_camera *c, double (*b)[4])
+gls_cull_stats gls_render_cull_stats(const gls_renderer *r) { return r->cull; }
+
+uint32_t gls_render_chunk_bounds(gls_renderer *r, const gls_camera *c, double (*b)[4])
 {
     const gls_scene *s = r->scene;
-    for (uint32_t i = 0; i < s->nchunks; i++) {
-        const gls_chunk *ch = &s->chunks[i];
-        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-        int nearer = 0, beyond = 0;
-        for (int k = 0; k < 8; k++) {
-            double P[3] = {k & 1 ? ch->hi[0] : ch->lo[0], k & 2 ? ch->hi[1] : ch->lo[1], k & 4 ? ch->hi[2] : ch->lo[2]};
-            double u, v, z = gls_camera_project(c, P, &u, &v);
-            if (!(z >= c->near)) {
-                nearer++;
-                continue;
-            }
-            beyond += z > c->far;
-            lo[0] = fmin(lo[0], u), lo[1] = fmin(lo[1], v);
-            hi[0] = fmax(hi[0], u), hi[1] = fmax(hi[1], v);
-        }
-        if (nearer == 8 || beyond == 8) { /* wholly clipped: nowhere */
-            b[i][0] = b[i][1] = INFINITY;
-            b[i][2] = b[i][3] = -INFINITY;
-        } else if (nearer || !isfinite(lo[0] + lo[1] + hi[0] + hi[1])) { /* crosses the near plane */
-            b[i][0] = b[i][1] = -INFINITY;
-            b[i][2] = b[i][3] = INFINITY;
-        } else {
-            /* corners in front of the camera: the box projects inside their
-             * convex hull; a pixel of margin for rounding */
-            b[i][0] = lo[0] - 1, b[i][1] = lo[1] - 1;
-            b[i][2] = hi[0] + 1, b[i][3] = hi[1] + 1;
-        }
+    gls_scene_cull(s, c, r->ivis, r->vis, &r->cull);
+    for (uint32_t i = 0; i < s->nitems; i++) {
+        if (r->vis[i]) /* the frustum's instances first, then each item's box */
+            gls_box_image_bounds(c, s->items[i].lo, s->items[i].hi, b[i]);
+        else
+            b[i][0] = b[i][1] = INFINITY, b[i][2] = b[i][3] = -INFINITY;
     }
-    return s->nchunks;
+    return s->nitems;
 }
 
 void gls_render_prepare(gls_renderer *r, const gls_camera *c)
@@ -640,6 +659,8 @@ void gls_renderer_destroy(gls_renderer *r)
         r->glDeleteBuffers(1, &r->near_vbo);
     free(r->near_buf);
     free(r->near_list);
+    free(r->ivis);
+    free(r->vis);
     if (r->fbo) {
         r->glBindFramebuffer(GL_FRAMEBUFFER, 0);
         r->glDeleteFramebuffers(1, &r->fbo);

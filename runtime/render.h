@@ -17,6 +17,7 @@
 #include "camera.h"
 #include "glctx.h"
 #include "scene.h"
+#include "scene_cull.h"
 
 typedef struct gls_renderer gls_renderer;
 
@@ -47,7 +48,8 @@ uint64_t gls_renderer_bytes(uint32_t width, uint32_t height, uint32_t kx, uint32
 /* Largest framebuffer side GL allows (GL_MAX_RENDERBUFFER_SIZE). */
 uint32_t gls_renderer_max_dim(const gls_renderer *r);
 
-/* Render one pass: clear, draw every chunk.  (du, dv) shifts the principal
+/* Render one pass: clear, draw every item (an instance's chunk) the
+ * camera can see (scene_cull.h).  (du, dv) shifts the principal
  * point by a sub-pixel amount (0, 0 for a plain image): the hook for
  * anti-aliasing by jittered multi-pass accumulation.  The camera's
  * width/height must equal the framebuffer size. */
@@ -59,12 +61,16 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
 void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv);
 
 /* Fine-framebuffer passes (one-pass anti-aliasing, aa_onepass.c).
- * Image-space bounds of every chunk for camera c, b[i] = {u0, v0, u1,
+ * Image-space bounds of every draw item (an instance's chunk; the
+ * lattice's "chunks") for camera c, b[i] = {u0, v0, u1,
  * v1}: the bounding box of its box's projected corners; {-inf, -inf,
  * inf, inf} when the box reaches nearer than the near plane (it may be
  * anywhere), {inf, inf, -inf, -inf} when it is wholly nearer than near or
- * beyond far (nowhere).  Returns the number of chunks. */
-uint32_t gls_render_chunk_bounds(const gls_renderer *r, const gls_camera *c, double (*b)[4]);
+ * beyond far (nowhere), or outside the view (culled).  Returns the
+ * number of items. */
+uint32_t gls_render_chunk_bounds(gls_renderer *r, const gls_camera *c, double (*b)[4]);
+/* Instances drawn and culled by the last pass or chunk bounds. */
+gls_cull_stats gls_render_cull_stats(const gls_renderer *r);
 uint32_t gls_renderer_nchunks(const gls_renderer *r);
 /* Upload what camera c needs before gls_render_mapped (the re-anchored
  * near chunks). */

@@ -1,20 +1,30 @@
-/* A bundle flattened for drawing: every primitive of the top object's
- * call tree, triangulated, transformed to world coordinates in double
- * precision, and stored as float offsets from a per-chunk double anchor.
+/* A bundle prepared for drawing: each object's own geometry once
+ * (a "proto", in the object's frame), and an instance table with one
+ * entry per call path (an object and a double-precision transform).
+ *
+ * Instances: the top object is instance 0 (identity); every `call` whose
+ * transform is affine adds an instance of the callee, child of the
+ * caller's instance.  A proto is an object entered with one drawing state
+ * (colour, texture, mode): a tree called 10,000 times with the same state
+ * is one proto and 10,000 instances.  A call whose matrix is projective
+ * (a TRANSFORM with a bottom row other than 0 0 0 1) is inlined into the
+ * caller's proto instead: its vertices are divided by w after the whole
+ * transform, which a per-instance matrix in GL cannot reproduce exactly.
+ * gls_scene_flatten() inlines every call (the reference path: one proto,
+ * one instance, the world-space triangles of the previous player).
  *
  * Why chunks: GL works in float.  A vertex 1e7 units from the origin has a
- * float spacing of 1 unit, so world coordinates cannot go to GL as they
- * are.  Each chunk holds the triangles of one GLS_SCENE_CELL-sized cube of
- * space; its anchor is the cube's centre, so offsets stay below about one
- * cell (float error <= 2^-24 * offset).  Per frame the renderer forms the
- * chunk's modelview in double, camera-relative (camera.h), and only then
- * converts it to float.  A float offset errs by up to 2^-24 of its size,
- * which matters only for geometry much closer to the camera than the
- * chunk's size: the renderer re-anchors such chunks at the camera centre
- * each frame (render.c), so the error stays ~2^-24 of the distance.
- * Anchors are multiples of the cell size plus half a
- * cell, so translating a whole scene (and its camera) by a multiple of the
- * cell size changes no float that GL sees: the output is byte-identical.
+ * float spacing of 1 unit, so coordinates cannot go to GL as they are.
+ * Each chunk holds the triangles of one GLS_SCENE_CELL-sized cube of its
+ * proto's space; its anchor is the cube's centre, so offsets stay below
+ * about one cell (float error <= 2^-24 * offset).  Per frame the renderer
+ * forms each drawn (instance, chunk) item's modelview in double,
+ * camera-relative (camera.h: R * (W * anchor) + T, the large terms
+ * cancelling in double), and only then converts it to float.  Items much
+ * closer to the camera than their size are re-anchored at the camera
+ * centre each frame (render.c).  Anchors are multiples of the cell size
+ * plus half a cell, so translating a whole scene (and its camera) by a
+ * multiple of the cell size changes no float that GL sees.
  */
 #ifndef GLS_SCENE_H
 #define GLS_SCENE_H
@@ -47,6 +57,46 @@ typedef struct {
     uint32_t first, count; /* vertex range in gls_scene.verts             */
 } gls_chunk;
 
+/* Geometry of one object entered with one drawing state. */
+typedef struct {
+    uint32_t object;       /* bundle object index                          */
+    uint32_t first_chunk, nchunks; /* its chunks, sorted by key then cell */
+    uint32_t ntris;
+    double lo[3], hi[3];   /* bounding box in the proto's frame (double)   */
+    /* build only: the drawing state it was entered with, next proto of
+     * the same object */
+    uint8_t rgba[4];
+    uint32_t texture, mode, next;
+} gls_proto;
+
+/* Longest instance name (spec/language.md: at most 64 bytes). */
+#define GLS_INSTANCE_NAME_MAX 64
+
+/* One call path.  world = parent's world * local * motion (motion: the
+ * identity unless --motion moves a named instance, gls_scene_move). */
+typedef struct {
+    uint32_t proto;        /* its geometry, GLS_NONE if it draws nothing   */
+    uint32_t parent;       /* GLS_NONE for the top (instance 0)            */
+    double local[16];      /* call-site transform in the parent's frame    */
+    double motion[16];     /* per frame, object-to-parent (--motion)       */
+    double world[16];      /* composed, row-major, affine                  */
+    double lo[3], hi[3];   /* world box of its geometry (from the proto's) */
+    double scale;          /* max row sum |W[i][0..2]|: float error growth */
+    char *name;            /* NULL, or its name (gls_scene_name_instance)  */
+    uint32_t first_item, nitems; /* its draw items, by key then cell      */
+} gls_instance;
+
+/* What the renderer draws: a chunk of an instance's proto. */
+typedef struct {
+    uint32_t inst, chunk;
+    double lo[3], hi[3];   /* world box of the chunk under the instance   */
+} gls_item;
+
+/* Limits of the instanced form (spec/bundle.md section 10): instances
+ * (call paths, each ~500 bytes) and unique vertices (GL's int range). */
+#define GLS_SCENE_MAX_INSTANCES (1u << 22)
+#define GLS_SCENE_MAX_VERTS 0x7fffffffu
+
 typedef struct {
     uint32_t features;     /* the bundle's GLS_FEAT_* bits                */
     int has_color;         /* vertices carry RGBA8 colours                */
@@ -54,19 +104,48 @@ typedef struct {
     size_t stride;         /* bytes per vertex: 12 [+4 colour] [+8 st]    */
     size_t color_offset, texcoord_offset;
     uint8_t *verts;        /* nverts * stride bytes, GL_TRIANGLES order   */
-    double *world;         /* nverts * 3: exact world positions, for
-                              re-anchoring chunks near the camera         */
+    double *exact;         /* nverts * 3: exact positions in the proto's
+                              frame, for re-anchoring near the camera     */
     uint32_t nverts;
-    gls_chunk *chunks;     /* sorted by key, then cell                    */
+    gls_chunk *chunks;     /* per proto, sorted by key, then cell        */
     uint32_t nchunks;
-    uint32_t nbatches;     /* runs of chunks with equal keys              */
+    uint32_t nbatches;     /* distinct draw keys                          */
+    gls_proto *protos;
+    uint32_t nprotos;
+    gls_instance *inst;
+    uint32_t ninst;
+    gls_item *items;       /* all instances' items, in drawing order:
+                              by key, then instance, then cell            */
+    uint32_t nitems;
+    int moving;            /* some instance has a motion (gls_scene_move)  */
     uint64_t dropped;      /* triangles with a vertex at infinity (w = 0) */
-    double lo[3], hi[3];   /* world bounding box of the vertices          */
+    double lo[3], hi[3];   /* bounding box of the unique vertices        */
 } gls_scene;
 
-/* Flatten b (which must be validated and have a top object).  Returns 0,
- * or -1 with a message in err (out of memory, too many vertices). */
+/* Build the instanced scene of b (validated, with a top object): what
+ * the player draws.  Vertices always carry a colour, so that colour
+ * changes do not split draws; keys are texture and mode only.  0, or -1
+ * with a message in err (out of memory, a limit above). */
+int gls_scene_load(const gls_bundle *b, gls_scene *s, char *err, size_t errlen);
+/* The same with every call inlined into one proto drawn once (the
+ * flattened reference path; colours in keys when vertices carry none). */
 int gls_scene_flatten(const gls_bundle *b, gls_scene *s, char *err, size_t errlen);
 void gls_scene_free(gls_scene *s);
+
+/* Give instance i a name (the seam for named calls: the bundle's CALLN
+ * names one call site, which is exactly one instance).  0, or -1 if i is
+ * out of range, the name is invalid or another instance has it. */
+int gls_scene_name_instance(gls_scene *s, uint32_t i, const char *name);
+/* The instance named name, or GLS_NONE. */
+uint32_t gls_scene_find_instance(const gls_scene *s, const char *name);
+/* Set instance i's motion (object-to-parent, row-major R and T) for the
+ * next frames; R = NULL resets it to the identity.  Then
+ * gls_scene_update() recomputes world transforms and boxes. */
+void gls_scene_move(gls_scene *s, uint32_t i, const double R[9], const double T[3]);
+void gls_scene_update(gls_scene *s);
+
+/* Memory: unique geometry (vertices, exact positions, chunks, protos) and
+ * the instance table (instances, items, names). */
+void gls_scene_memory(const gls_scene *s, uint64_t *geometry, uint64_t *table);
 
 #endif

@@ -15,7 +15,7 @@
 #include "render.h"
 #include "scene.h"
 
-#define TB_MAXOBJ 8
+#define TB_MAXOBJ 16
 
 typedef struct {
     gls_bundle *b;
@@ -160,6 +160,23 @@ static inline uint32_t tb_texture(tb *t, const char *name, uint32_t w, uint32_t 
     return b->ntextures++;
 }
 
+/* Close every object with END and compute features; no validation
+ * (for scenes beyond a validator limit that the player no longer needs). */
+static inline gls_bundle *tb_finish_unchecked(tb *t)
+{
+    gls_bundle *b = t->b;
+    for (uint32_t i = 0; i < b->nobjects; i++) {
+        t->cur = i;
+        tb_op0(t, GLS_OP_END);
+        b->objects[i].code = t->code[i].data;
+        b->objects[i].code_len = (uint32_t)t->code[i].len;
+        b->objects[i].ninsn = t->ninsn[i];
+    }
+    b->features = gls_bundle_features(b);
+    t->b = NULL;
+    return b;
+}
+
 /* Close every object with END, compute features, validate. */
 static inline gls_bundle *tb_finish(tb *t)
 {
@@ -203,8 +220,8 @@ static inline int tb_render(gls_glctx *ctx, const gls_bundle *b, const gls_camer
 {
     char err[512];
     gls_scene s;
-    if (gls_scene_flatten(b, &s, err, sizeof err)) {
-        printf("  flatten: %s\n", err);
+    if (gls_scene_load(b, &s, err, sizeof err)) {
+        printf("  scene: %s\n", err);
         return -1;
     }
     gls_renderer *r = gls_renderer_create(ctx, b, &s, err, sizeof err);

@@ -1,0 +1,662 @@
+/* Replay of a validated bundle into a gls_scene (scene.h): protos,
+ * instances and chunks.
+ *
+ * The interpreter keeps the state of opcodes.h: matrix M (double, row
+ * major, relative to the current instance's frame), colour, texture mode,
+ * texture.  PUSH/POP save and restore it on a heap stack; CALL runs the
+ * callee on a copy (an implicit push/pop), so a callee's changes never
+ * leak.  An affine CALL starts a new instance (M = identity in its frame);
+ * its proto is built by the first walk that enters the object with that
+ * drawing state, later walks only look for calls.  The validator
+ * guarantees that every index is in range, the pushes balance and calls
+ * nest at most GLS_MAX_CALL_DEPTH deep, so recursion on CALL is bounded.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "buf.h"
+#include "scene.h"
+#include "vec.h"
+
+typedef struct {
+    double M[16];
+    double rgba[4];
+    uint32_t mode, texture;
+} state;
+
+/* One triangle before chunking: world vertices and its draw key. */
+typedef struct {
+    uint32_t proto;
+    gls_drawkey key;
+    int64_t cell[3];
+    uint32_t idx; /* emission order: the final tie-break, for determinism */
+} tri;
+
+typedef struct {
+    const gls_bundle *b;
+    int has_color, has_texcoord;
+    state *stack;
+    size_t sp, cap;
+    /* emitted triangles: 3 world vertices each, plus colours/texcoords */
+    tri *tris;
+    double *wpos;          /* 9 per triangle */
+    uint8_t *wcol;         /* 12 per triangle */
+    float *wtc;            /* 6 per triangle */
+    size_t ntri, tcap;
+    uint64_t dropped;
+    int oom;
+    int instanced;         /* gls_scene_load (else gls_scene_flatten)    */
+    gls_proto *protos;
+    size_t nprotos, pcap;
+    uint32_t *proto_head;  /* per object: its first proto, or GLS_NONE    */
+    uint8_t *has_call;     /* per object: its code has a CALL             */
+    gls_instance *inst;
+    size_t ninst, icap;
+    const char *limit;     /* a limit crossed: the message               */
+} walker;
+
+static void identity(double A[16])
+{
+    memset(A, 0, 16 * sizeof *A);
+    A[0] = A[5] = A[10] = A[15] = 1;
+}
+
+/* cos and sin of an angle in degrees, exact at multiples of 90 degrees so
+ * that axis-aligned rotations keep exact coordinates exact. */
+static void cos_sin_deg(double deg, double *c, double *s)
+{
+    double r = fmod(deg, 360.0);
+    if (r < 0)
+        r += 360.0;
+    if (r == 0) { *c = 1; *s = 0; return; }
+    if (r == 90) { *c = 0; *s = 1; return; }
+    if (r == 180) { *c = -1; *s = 0; return; }
+    if (r == 270) { *c = 0; *s = -1; return; }
+    double a = r * (3.14159265358979323846 / 180.0);
+    *c = cos(a);
+    *s = sin(a);
+}
+
+/* The glRotate matrix.  A zero axis (the validator allows it) is no
+ * rotation at all. */
+static void rotation(double deg, double x, double y, double z, double A[16])
+{
+    identity(A);
+    double len = sqrt(x * x + y * y + z * z);
+    if (!(len > 0) || !isfinite(len))
+        return;
+    x /= len, y /= len, z /= len;
+    double c, s;
+    cos_sin_deg(deg, &c, &s);
+    double t = 1 - c;
+    A[0] = x * x * t + c;     A[1] = x * y * t - z * s; A[2] = x * z * t + y * s;
+    A[4] = y * x * t + z * s; A[5] = y * y * t + c;     A[6] = y * z * t - x * s;
+    A[8] = x * z * t - y * s; A[9] = y * z * t + x * s; A[10] = z * z * t + c;
+}
+
+static uint8_t unorm8(double v)
+{
+    /* colours are validated to 0..1; round to nearest like GL does */
+    return (uint8_t)lrint(v * 255.0);
+}
+
+static int push_state(walker *w, const state *st)
+{
+    if (gls_grow(&w->stack, &w->cap, w->sp + 1, sizeof *w->stack))
+        return -1;
+    w->stack[w->sp++] = *st;
+    return 0;
+}
+
+static int grow_tris(walker *w, size_t need)
+{
+    if (w->ntri + need <= w->tcap)
+        return 0;
+    /* four arrays of one capacity: grown by the largest element's rule */
+    size_t cap = gls_grow_cap(w->tcap, w->ntri + need, 9 * sizeof *w->wpos);
+    tri *t = cap ? gls_resize(w->tris, cap, sizeof *t) : NULL;
+    if (t)
+        w->tris = t;
+    double *p = cap ? gls_resize(w->wpos, cap, 9 * sizeof *p) : NULL;
+    if (p)
+        w->wpos = p;
+    uint8_t *c = cap ? gls_resize(w->wcol, cap, 12) : NULL;
+    if (c)
+        w->wcol = c;
+    float *x = cap ? gls_resize(w->wtc, cap, 6 * sizeof *x) : NULL;
+    if (x)
+        w->wtc = x;
+    if (!t || !p || !c || !x)
+        return -1;
+    w->tcap = cap;
+    return 0;
+}
+
+/* Vertex k of a primitive, fully resolved. */
+typedef struct {
+    double p[3];
+    uint8_t c[4];
+    float st[2];
+    int ok;
+} vtx;
+
+static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t k, vtx *v)
+{
+    const gls_bundle *b = w->b;
+    const gls_vec4 *q = &b->pos[in->u[GLS_ARG_PRIM_POS] + k];
+    const double *M = st->M;
+    double h[4];
+    m4_apply(M, q->x, q->y, q->z, q->w, h);
+    /* homogeneous: divide through in double; 1/w is skipped when w == 1 so
+     * ordinary coordinates stay bit-exact */
+    /* A vertex must be finite and within GLS_SCENE_MAX_COORD of the
+     * origin: beyond that a double no longer resolves a millimetre-sized
+     * scene unit, and cell indices (coordinate / cell) would overflow the
+     * integers they are stored in.  Such a vertex (from a huge scale, say)
+     * drops its triangles, counted and shown by --explain. */
+    v->ok = 1;
+    for (int i = 0; i < 3; i++) {
+        v->p[i] = h[3] == 1.0 ? h[i] : h[i] / h[3];
+        if (!(fabs(v->p[i]) <= GLS_SCENE_MAX_COORD))
+            v->ok = 0;
+    }
+    if (in->u[GLS_ARG_PRIM_COL] != GLS_NONE) {
+        const gls_rgba *c = &b->col[in->u[GLS_ARG_PRIM_COL] + k];
+        v->c[0] = unorm8(c->r), v->c[1] = unorm8(c->g), v->c[2] = unorm8(c->b);
+    } else {
+        v->c[0] = unorm8(st->rgba[0]), v->c[1] = unorm8(st->rgba[1]), v->c[2] = unorm8(st->rgba[2]);
+    }
+    /* Alpha is not blended (outputs are RGB): opaque, so that the alpha
+     * test sees only the texture's binary alpha. */
+    v->c[3] = 255;
+    if (in->u[GLS_ARG_PRIM_TC] != GLS_NONE) {
+        v->st[0] = b->tc[in->u[GLS_ARG_PRIM_TC] + k].s;
+        v->st[1] = b->tc[in->u[GLS_ARG_PRIM_TC] + k].t;
+    } else {
+        v->st[0] = v->st[1] = 0;
+    }
+}
+
+static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const vtx *a, const vtx *b2, const vtx *c)
+{
+    if (!a->ok || !b2->ok || !c->ok) {
+        w->dropped++;
+        return;
+    }
+    if (w->ntri >= GLS_SCENE_MAX_VERTS / 3) {
+        w->limit = "more than 715827882 unique triangles (2^31 - 1 vertices): too many to draw";
+        w->oom = 1;
+        return;
+    }
+    if (grow_tris(w, 1)) {
+        w->oom = 1;
+        return;
+    }
+    size_t i = w->ntri++;
+    const vtx *v[3] = {a, b2, c};
+    tri *t = &w->tris[i];
+    t->proto = proto;
+    t->key = *key;
+    t->idx = (uint32_t)i;
+    /* the cell of the first vertex: exact under translations by multiples
+     * of the cell size (a centroid would round differently far away) */
+    for (int j = 0; j < 3; j++)
+        t->cell[j] = (int64_t)floor(a->p[j] / GLS_SCENE_CELL);
+    for (int k = 0; k < 3; k++) {
+        memcpy(w->wpos + 9 * i + 3 * k, v[k]->p, 3 * sizeof(double));
+        memcpy(w->wcol + 12 * i + 4 * k, v[k]->c, 4);
+        memcpy(w->wtc + 6 * i + 2 * k, v[k]->st, 2 * sizeof(float));
+    }
+}
+
+/* The draw key of a drawing state. */
+static void state_key(const walker *w, const state *st, gls_drawkey *key)
+{
+    memset(key, 0, sizeof *key);
+    if (st->mode != GLS_MODE_COLOR && st->texture != GLS_NONE) {
+        key->texture = st->texture;
+        key->mode = (uint8_t)st->mode;
+    } else {
+        key->texture = GLS_NONE;
+        key->mode = GLS_MODE_COLOR;
+    }
+    (void)w;
+}
+
+static void prim(walker *w, uint32_t proto, const state *st, const gls_insn *in)
+{
+    gls_drawkey key;
+    state_key(w, st, &key);
+    if (!w->has_color && !w->instanced)
+        for (int j = 0; j < 3; j++)
+            key.rgba[j] = unorm8(st->rgba[j]);
+    key.rgba[3] = w->has_color || w->instanced ? 0 : 255;
+    uint32_t n = in->u[GLS_ARG_PRIM_N];
+    vtx v0, v1, v2, v3;
+    switch (in->u[GLS_ARG_PRIM_KIND]) {
+    case GLS_PRIM_POLY: /* convex polygon: a fan, like GL_POLYGON */
+    case GLS_PRIM_TFAN:
+        fetch(w, st, in, 0, &v0);
+        fetch(w, st, in, 1, &v1);
+        for (uint32_t k = 2; k < n; k++) {
+            fetch(w, st, in, k, &v2);
+            emit(w, proto, &key, &v0, &v1, &v2);
+            v1 = v2;
+        }
+        break;
+    case GLS_PRIM_TSTRIP:
+        fetch(w, st, in, 0, &v0);
+        fetch(w, st, in, 1, &v1);
+        for (uint32_t k = 2; k < n; k++) {
+            fetch(w, st, in, k, &v2);
+            if (k % 2) /* keep GL's consistent winding: (k-1, k-2, k) */
+                emit(w, proto, &key, &v1, &v0, &v2);
+            else
+                emit(w, proto, &key, &v0, &v1, &v2);
+            v0 = v1, v1 = v2;
+        }
+        break;
+    case GLS_PRIM_QSTRIP: /* quad 2k, 2k+1, 2k+3, 2k+2 */
+        fetch(w, st, in, 0, &v0);
+        fetch(w, st, in, 1, &v1);
+        for (uint32_t k = 2; k + 1 < n; k += 2) {
+            fetch(w, st, in, k, &v2);
+            fetch(w, st, in, k + 1, &v3);
+            emit(w, proto, &key, &v0, &v1, &v3);
+            emit(w, proto, &key, &v0, &v3, &v2);
+            v0 = v2, v1 = v3;
+        }
+        break;
+    default:
+        break; /* unreachable: the validator checked the kind */
+    }
+}
+
+static int is_affine(const double M[16]) { return M[12] == 0 && M[13] == 0 && M[14] == 0 && M[15] == 1; }
+
+/* Does object oi's code contain a CALL or CALLN?  (A proto already built for an
+ * object without calls needs no further walk.) */
+static int object_calls(walker *w, uint32_t oi)
+{
+    if (w->has_call[oi] == 0) {
+        const gls_object *o = &w->b->objects[oi];
+        size_t pos = 0;
+        gls_insn in;
+        w->has_call[oi] = 1;
+        while (gls_insn_decode(o->code, o->code_len, &pos, &in) == 0 && in.op != GLS_OP_END)
+            if (in.op == GLS_OP_CALL || in.op == GLS_OP_CALLN) {
+                w->has_call[oi] = 2;
+                break;
+            }
+    }
+    return w->has_call[oi] == 2;
+}
+
+/* The proto of object oi entered with st's drawing state; *fresh = 1 if
+ * it was just made (then this walk builds it).  GLS_NONE when out of
+ * memory. */
+static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
+{
+    gls_drawkey key;
+    state_key(w, st, &key);
+    uint8_t rgba[4] = {unorm8(st->rgba[0]), unorm8(st->rgba[1]), unorm8(st->rgba[2]), 255};
+    for (uint32_t p = w->proto_head[oi]; p != GLS_NONE; p = w->protos[p].next) {
+        const gls_proto *q = &w->protos[p];
+        if (q->texture == key.texture && q->mode == key.mode && memcmp(q->rgba, rgba, 4) == 0) {
+            *fresh = 0;
+            return p;
+        }
+    }
+    if (gls_grow(&w->protos, &w->pcap, w->nprotos + 1, sizeof *w->protos)) {
+        w->oom = 1;
+        return GLS_NONE;
+    }
+    gls_proto *q = &w->protos[w->nprotos];
+    memset(q, 0, sizeof *q);
+    q->object = oi;
+    q->texture = key.texture;
+    q->mode = key.mode;
+    memcpy(q->rgba, rgba, 4);
+    q->next = w->proto_head[oi];
+    w->proto_head[oi] = (uint32_t)w->nprotos;
+    *fresh = 1;
+    return (uint32_t)w->nprotos++;
+}
+
+static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto);
+
+/* A new instance of object oi, called from instance parent with st (its
+ * M the call-site transform in the parent's frame), named name (NULL:
+ * unnamed; the bundle validator checks that names are valid and unique,
+ * spec/bundle.md). */
+static void enter(walker *w, uint32_t oi, state st, uint32_t parent, const char *name)
+{
+    if (w->ninst >= GLS_SCENE_MAX_INSTANCES) {
+        w->limit = "more than 4194304 instances (call paths): too many to draw";
+        w->oom = 1;
+        return;
+    }
+    if (gls_grow(&w->inst, &w->icap, w->ninst + 1, sizeof *w->inst)) {
+        w->oom = 1;
+        return;
+    }
+    uint32_t i = (uint32_t)w->ninst++;
+    gls_instance *n = &w->inst[i];
+    memset(n, 0, sizeof *n);
+    n->parent = parent;
+    memcpy(n->local, st.M, sizeof n->local);
+    identity(n->motion);
+    if (name) {
+        size_t len = strlen(name) + 1;
+        if (!(n->name = malloc(len))) {
+            w->oom = 1;
+            return;
+        }
+        memcpy(n->name, name, len);
+    }
+    int fresh = 0;
+    n->proto = proto_for(w, oi, &st, &fresh);
+    if (n->proto == GLS_NONE)
+        return;
+    if (!fresh && !object_calls(w, oi))
+        return;
+    identity(st.M);
+    run(w, oi, st, i, fresh ? n->proto : GLS_NONE);
+}
+
+/* Walk object oi in instance inst's frame; prims go to proto (GLS_NONE:
+ * built already, only calls matter). */
+static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
+{
+    const gls_object *o = &w->b->objects[oi];
+    size_t pos = 0, base = w->sp;
+    gls_insn in;
+    double A[16];
+    while (!w->oom && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
+        switch (in.op) {
+        case GLS_OP_END:
+            w->sp = base;
+            return;
+        case GLS_OP_COLOR:
+            memcpy(st.rgba, in.d + GLS_ARG_COLOR_R, sizeof st.rgba);
+            break;
+        case GLS_OP_TEXMODE:
+            st.mode = in.u[GLS_ARG_TEXMODE_MODE];
+            break;
+        case GLS_OP_TEXTURE:
+            st.texture = in.u[GLS_ARG_TEXTURE_INDEX];
+            break;
+        case GLS_OP_NOTEXTURE:
+            st.texture = GLS_NONE;
+            break;
+        case GLS_OP_TRANS:
+            identity(A);
+            A[3] = in.d[GLS_ARG_TRANS_X], A[7] = in.d[GLS_ARG_TRANS_Y], A[11] = in.d[GLS_ARG_TRANS_Z];
+            m4_mul(st.M, A, st.M);
+            break;
+        case GLS_OP_ROT:
+            rotation(in.d[GLS_ARG_ROT_ANGLE], in.d[GLS_ARG_ROT_X], in.d[GLS_ARG_ROT_Y], in.d[GLS_ARG_ROT_Z], A);
+            m4_mul(st.M, A, st.M);
+            break;
+        case GLS_OP_SCALE:
+            identity(A);
+            A[0] = in.d[GLS_ARG_SCALE_X], A[5] = in.d[GLS_ARG_SCALE_Y], A[10] = in.d[GLS_ARG_SCALE_Z];
+            m4_mul(st.M, A, st.M);
+            break;
+        case GLS_OP_TRANSFORM:
+            m4_mul(st.M, in.d + GLS_ARG_TRANSFORM_A00, st.M); /* operands are row-major, like M */
+            break;
+        case GLS_OP_PUSH:
+            if (push_state(w, &st))
+                w->oom = 1;
+            break;
+        case GLS_OP_POP:
+            st = w->stack[--w->sp];
+            break;
+        case GLS_OP_CALL:
+        case GLS_OP_CALLN:
+            /* by value: the callee gets a copy.  Instanced: an affine call
+             * is an instance; a named call (CALLN) always is one, with the
+             * bundle's name, so --motion can move it (a projective matrix
+             * goes to GL as it is: no exactness claim for that rare case).
+             * Flattened (--flatten): both are inlined, names unused. */
+            if (w->instanced && (in.op == GLS_OP_CALLN || is_affine(st.M)))
+                enter(w, in.u[GLS_ARG_CALL_OBJECT], st, inst,
+                      in.op == GLS_OP_CALLN ? w->b->instnames[in.u[GLS_ARG_CALLN_NAME]] : NULL);
+            else
+                run(w, in.u[GLS_ARG_CALL_OBJECT], st, inst, proto);
+            break;
+        case GLS_OP_PRIM:
+            if (proto != GLS_NONE)
+                prim(w, proto, &st, &in);
+            break;
+        default:
+            break;
+        }
+    }
+    w->sp = base;
+}
+
+static int key_cmp(const gls_drawkey *a, const gls_drawkey *b)
+{
+    if (a->texture != b->texture)
+        return a->texture < b->texture ? -1 : 1;
+    if (a->mode != b->mode)
+        return a->mode < b->mode ? -1 : 1;
+    return memcmp(a->rgba, b->rgba, 4);
+}
+
+static int tri_cmp(const void *pa, const void *pb)
+{
+    const tri *a = pa, *b = pb;
+    if (a->proto != b->proto)
+        return a->proto < b->proto ? -1 : 1;
+    int k = key_cmp(&a->key, &b->key);
+    if (k)
+        return k;
+    for (int j = 0; j < 3; j++)
+        if (a->cell[j] != b->cell[j])
+            return a->cell[j] < b->cell[j] ? -1 : 1;
+    return a->idx < b->idx ? -1 : a->idx > b->idx;
+}
+
+/* Items in drawing order: by key, then instance, then chunk. */
+static const gls_scene *sort_scene;
+static int item_cmp(const void *pa, const void *pb)
+{
+    const gls_item *a = pa, *b = pb;
+    int k = key_cmp(&sort_scene->chunks[a->chunk].key, &sort_scene->chunks[b->chunk].key);
+    if (k)
+        return k;
+    if (a->inst != b->inst)
+        return a->inst < b->inst ? -1 : 1;
+    return a->chunk < b->chunk ? -1 : a->chunk > b->chunk;
+}
+
+/* Chunks, vertices and protos' boxes from the sorted triangles. */
+static int make_chunks(walker *w, gls_scene *s)
+{
+    s->verts = malloc(w->ntri ? w->ntri * 3 * s->stride : 1);
+    s->chunks = malloc((w->ntri ? w->ntri : 1) * sizeof *s->chunks);
+    s->exact = malloc((w->ntri ? w->ntri : 1) * 9 * sizeof *s->exact);
+    if (!s->verts || !s->chunks || !s->exact)
+        return -1;
+    for (int j = 0; j < 3; j++)
+        s->lo[j] = INFINITY, s->hi[j] = -INFINITY;
+    for (size_t p = 0; p < s->nprotos; p++)
+        for (int j = 0; j < 3; j++)
+            s->protos[p].lo[j] = INFINITY, s->protos[p].hi[j] = -INFINITY;
+    gls_chunk *ch = NULL;
+    for (size_t i = 0; i < w->ntri; i++) {
+        const tri *t = &w->tris[i];
+        gls_proto *pr = &s->protos[t->proto];
+        int new_proto = i == 0 || w->tris[i - 1].proto != t->proto;
+        if (!ch || new_proto || key_cmp(&ch->key, &t->key) || memcmp(w->tris[i - 1].cell, t->cell, sizeof t->cell)) {
+            if (new_proto)
+                pr->first_chunk = s->nchunks;
+            pr->nchunks++;
+            ch = &s->chunks[s->nchunks++];
+            ch->key = t->key;
+            ch->first = (uint32_t)(i * 3);
+            ch->count = 0;
+            ch->maxoff = 0;
+            for (int j = 0; j < 3; j++) {
+                ch->anchor[j] = ((double)t->cell[j] + 0.5) * GLS_SCENE_CELL;
+                ch->lo[j] = INFINITY, ch->hi[j] = -INFINITY;
+            }
+        }
+        pr->ntris++;
+        for (int k = 0; k < 3; k++) {
+            uint8_t *v = s->verts + (i * 3 + (size_t)k) * s->stride;
+            const double *p = w->wpos + 9 * (size_t)t->idx + 3 * k;
+            float off[3];
+            memcpy(s->exact + (i * 3 + (size_t)k) * 3, p, 3 * sizeof *p);
+            for (int j = 0; j < 3; j++) {
+                off[j] = (float)(p[j] - ch->anchor[j]);
+                if (fabs(p[j] - ch->anchor[j]) > ch->maxoff)
+                    ch->maxoff = fabs(p[j] - ch->anchor[j]);
+                ch->lo[j] = fmin(ch->lo[j], p[j]), ch->hi[j] = fmax(ch->hi[j], p[j]);
+                pr->lo[j] = fmin(pr->lo[j], p[j]), pr->hi[j] = fmax(pr->hi[j], p[j]);
+                s->lo[j] = fmin(s->lo[j], p[j]), s->hi[j] = fmax(s->hi[j], p[j]);
+            }
+            memcpy(v, off, sizeof off);
+            if (s->has_color)
+                memcpy(v + s->color_offset, w->wcol + 12 * (size_t)t->idx + 4 * k, 4);
+            if (s->has_texcoord)
+                memcpy(v + s->texcoord_offset, w->wtc + 6 * (size_t)t->idx + 2 * k, 8);
+        }
+        ch->count += 3;
+    }
+    return 0;
+}
+
+/* Items of every instance with geometry, sorted into drawing order. */
+static int make_items(gls_scene *s)
+{
+    size_t n = 0;
+    for (uint32_t i = 0; i < s->ninst; i++) {
+        gls_instance *in = &s->inst[i];
+        if (in->proto != GLS_NONE && s->protos[in->proto].nchunks == 0)
+            in->proto = GLS_NONE; /* an object that draws nothing itself */
+        in->nitems = in->proto == GLS_NONE ? 0 : s->protos[in->proto].nchunks;
+        n += in->nitems;
+    }
+    if (n > UINT32_MAX)
+        return -1;
+    s->items = malloc((n ? n : 1) * sizeof *s->items);
+    if (!s->items)
+        return -1;
+    for (uint32_t i = 0; i < s->ninst; i++) {
+        const gls_instance *in = &s->inst[i];
+        for (uint32_t k = 0; k < in->nitems; k++) {
+            gls_item *it = &s->items[s->nitems++];
+            it->inst = i;
+            it->chunk = s->protos[in->proto].first_chunk + k;
+        }
+    }
+    sort_scene = s;
+    if (s->nitems)
+        qsort(s->items, s->nitems, sizeof *s->items, item_cmp);
+    for (uint32_t i = 0; i < s->nitems; i++)
+        if (i == 0 || key_cmp(&s->chunks[s->items[i - 1].chunk].key, &s->chunks[s->items[i].chunk].key))
+            s->nbatches++;
+    return 0;
+}
+
+static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, size_t errlen)
+{
+    memset(s, 0, sizeof *s);
+    if (b->top == GLS_NONE) {
+        snprintf(err, errlen, "the bundle is a library (it has no top-level object): nothing to play");
+        return -1;
+    }
+    walker w;
+    memset(&w, 0, sizeof w);
+    w.b = b;
+    w.instanced = instanced;
+    /* instanced: colours always in the vertices, so keys are texture and
+     * mode only and a colour change does not split a draw */
+    w.has_color = instanced || (b->features & GLS_FEAT_VERTEX_COLOR) != 0;
+    w.has_texcoord = (b->features & GLS_FEAT_TEXCOORDS) && (b->features & GLS_FEAT_TEXTURES);
+    w.proto_head = malloc((b->nobjects ? b->nobjects : 1) * sizeof *w.proto_head);
+    w.has_call = calloc(b->nobjects ? b->nobjects : 1, 1);
+    int rc = -1;
+    if (!w.proto_head || !w.has_call) {
+        snprintf(err, errlen, "out of memory while building the scene");
+        goto out;
+    }
+    for (uint32_t i = 0; i < b->nobjects; i++)
+        w.proto_head[i] = GLS_NONE;
+    state st;
+    identity(st.M);
+    st.rgba[0] = st.rgba[1] = st.rgba[2] = st.rgba[3] = 1.0; /* opaque white */
+    st.mode = GLS_MODE_COLOR;
+    st.texture = GLS_NONE;
+    enter(&w, b->top, st, GLS_NONE, NULL);
+    s->protos = w.protos, s->nprotos = (uint32_t)w.nprotos;
+    s->inst = w.inst, s->ninst = (uint32_t)w.ninst;
+    w.protos = NULL, w.inst = NULL;
+    if (w.oom) {
+        snprintf(err, errlen, "%s", w.limit ? w.limit : "out of memory while building the scene");
+        goto out;
+    }
+    if (w.ntri) /* qsort(NULL, 0) is undefined */
+        qsort(w.tris, w.ntri, sizeof *w.tris, tri_cmp);
+
+    s->features = b->features;
+    s->has_color = w.has_color;
+    s->has_texcoord = w.has_texcoord;
+    s->stride = 12;
+    s->color_offset = s->texcoord_offset = 0;
+    if (s->has_color)
+        s->color_offset = s->stride, s->stride += 4;
+    if (s->has_texcoord)
+        s->texcoord_offset = s->stride, s->stride += 8;
+    s->nverts = (uint32_t)(w.ntri * 3);
+    s->dropped = w.dropped;
+    if (make_chunks(&w, s) || make_items(s)) {
+        snprintf(err, errlen, "out of memory while building the scene");
+        goto out;
+    }
+    gls_scene_update(s);
+    rc = 0;
+out:
+    free(w.stack);
+    free(w.tris);
+    free(w.wpos);
+    free(w.wcol);
+    free(w.wtc);
+    free(w.protos);
+    for (size_t i = 0; w.inst && i < w.ninst; i++)
+        free(w.inst[i].name);
+    free(w.inst);
+    free(w.proto_head);
+    free(w.has_call);
+    if (rc)
+        gls_scene_free(s);
+    return rc;
+}
+
+int gls_scene_load(const gls_bundle *b, gls_scene *s, char *err, size_t errlen)
+{
+    return build(b, s, 1, err, errlen);
+}
+
+int gls_scene_flatten(const gls_bundle *b, gls_scene *s, char *err, size_t errlen)
+{
+    return build(b, s, 0, err, errlen);
+}
+
+void gls_scene_free(gls_scene *s)
+{
+    for (uint32_t i = 0; s->inst && i < s->ninst; i++)
+        free(s->inst[i].name);
+    free(s->verts);
+    free(s->exact);
+    free(s->chunks);
+    free(s->protos);
+    free(s->inst);
+    free(s->items);
+    memset(s, 0, sizeof *s);
+}

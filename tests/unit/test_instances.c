@@ -1,0 +1,328 @@
+/* Instanced replay: named instances moved per frame (--motion), motion
+ * files, and a scene beyond the flattened form's 2^26-vertex limit.  The
+ * projections are checked against an independent double-precision camera
+ * model written here. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "check.h"
+#include "motion.h"
+#include "player.h"
+#include "player_scene.h"
+
+static gls_glctx *ctx;
+static const double I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+
+/* u, v of world point P through c (P_cam = R P + T, pinhole, skew). */
+static double ref_project(const gls_camera *c, const double P[3], double *u, double *v)
+{
+    double X = c->R[0] * P[0] + c->R[1] * P[1] + c->R[2] * P[2] + c->T[0];
+    double Y = c->R[3] * P[0] + c->R[4] * P[1] + c->R[5] * P[2] + c->T[1];
+    double Z = c->R[6] * P[0] + c->R[7] * P[1] + c->R[8] * P[2] + c->T[2];
+    *u = (c->fx * X + c->skew * Y) / Z + c->cx;
+    *v = c->fy * Y / Z + c->cy;
+    return Z;
+}
+
+/* Centroid of the pixels of colour rgb; the count of them. */
+static long centroid(const uint8_t *rgba, uint32_t W, uint32_t H, const uint8_t rgb[3], double *cu, double *cv)
+{
+    long n = 0;
+    double su = 0, sv = 0;
+    for (uint32_t v = 0; v < H; v++)
+        for (uint32_t u = 0; u < W; u++) {
+            const uint8_t *p = rgba + 4 * ((size_t)v * W + u);
+            if (p[0] == rgb[0] && p[1] == rgb[1] && p[2] == rgb[2])
+                n++, su += u, sv += v;
+        }
+    *cu = n ? su / n : 1e9, *cv = n ? sv / n : 1e9;
+    return n;
+}
+
+static int render_scene(gls_scene *s, const gls_bundle *b, const gls_camera *c, uint8_t *rgba)
+{
+    char err[256];
+    gls_renderer *r = gls_renderer_create(ctx, b, s, err, sizeof err);
+    if (!r || gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
+        printf("  renderer: %s\n", err);
+        gls_renderer_destroy(r);
+        return -1;
+    }
+    gls_render_pass(r, c, 0, 0);
+    gls_render_read_rgba(r, rgba);
+    gls_renderer_destroy(r);
+    return 0;
+}
+
+/* A red unit square (x, y in -0.5..0.5, z = 0) called at (1, 0, 8) and
+ * named "car1", moved by a rotation of 30 degrees about z and (0.5,
+ * -0.25, 0.75): its corners must land where the model puts
+ * W_call * (R q + T). */
+static void test_motion_moves_named_instance(void)
+{
+    tb t;
+    tb_init(&t);
+    uint32_t sq = tb_object(&t, "square", 0);
+    tb_color(&t, 1, 0, 0, 1);
+    tb_rect_z(&t, -0.5, -0.5, 0.5, 0.5, 0);
+    tb_object(&t, "top", 1);
+    tb_op0(&t, GLS_OP_PUSH);
+    tb_trans(&t, 1, 0, 8);
+    tb_call(&t, sq);
+    tb_op0(&t, GLS_OP_POP);
+    gls_bundle *b = tb_finish(&t);
+    gls_scene s;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    CHECK(s.ninst == 2 && s.inst[1].parent == 0);
+    CHECK(gls_scene_name_instance(&s, 1, "car1") == 0);
+    CHECK(gls_scene_name_instance(&s, 0, "car1") == -1);   /* taken */
+    CHECK(gls_scene_name_instance(&s, 0, "1car") == -1);   /* charset */
+    CHECK(gls_scene_name_instance(&s, 9, "x") == -1);      /* no such instance */
+    CHECK(gls_scene_find_instance(&s, "car1") == 1);
+    double a = 30 * 3.14159265358979323846 / 180;
+    double R[9] = {cos(a), -sin(a), 0, sin(a), cos(a), 0, 0, 0, 1}, T[3] = {0.5, -0.25, 0.75};
+    gls_scene_move(&s, 1, R, T);
+    gls_scene_update(&s);
+    double Tc[3] = {0, 0, 0};
+    gls_camera c = tb_camera(320, 240, 300, 300, 159.5, 119.5, 0, I3, Tc, 0.1, 100);
+    uint8_t *rgba = malloc((size_t)320 * 240 * 4);
+    CHECK(render_scene(&s, b, &c, rgba) == 0);
+    /* the model: corner q -> R q + T -> + (1, 0, 8); the projected
+     * square's centroid is the mean of its corners' projections to first
+     * order (the square is small and nearly fronto-parallel) */
+    static const double q[4][2] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+    double mu = 0, mv = 0;
+    for (int k = 0; k < 4; k++) {
+        double P[3], u, v;
+        for (int i = 0; i < 3; i++)
+            P[i] = R[3 * i] * q[k][0] + R[3 * i + 1] * q[k][1] + T[i] + (i == 0 ? 1 : i == 2 ? 8 : 0);
+        ref_project(&c, P, &u, &v);
+        mu += u / 4, mv += v / 4;
+    }
+    static const uint8_t red[3] = {255, 0, 0};
+    double cu, cv;
+    long n = centroid(rgba, 320, 240, red, &cu, &cv);
+    printf("  moved square: %ld pixels, centroid (%.3f, %.3f), model (%.3f, %.3f)\n", n, cu, cv, mu, mv);
+    /* area: the square at depth 8.75 is 300/8.75 = 34.3 px on a side */
+    CHECK(n > 1000 && n < 1350);
+    CHECK(fabs(cu - mu) < 0.05 && fabs(cv - mv) < 0.05);
+    /* without the motion it is back at its placement */
+    gls_scene_move(&s, 1, NULL, NULL);
+    gls_scene_update(&s);
+    CHECK(render_scene(&s, b, &c, rgba) == 0);
+    centroid(rgba, 320, 240, red, &cu, &cv);
+    double P0[3] = {1, 0, 8}, u0, v0;
+    ref_project(&c, P0, &u0, &v0);
+    CHECK(fabs(cu - u0) < 0.05 && fabs(cv - v0) < 0.05);
+    free(rgba);
+    gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
+/* A named instance without motion renders byte-identically to the
+ * unnamed one. */
+static void test_named_without_motion_identical(void)
+{
+    tb t;
+    tb_init(&t);
+    uint32_t sq = tb_object(&t, "square", 0);
+    tb_color(&t, 0, 1, 0, 1);
+    tb_rect_z(&t, -0.5, -0.3, 0.4, 0.5, 0);
+    tb_object(&t, "top", 1);
+    tb_trans(&t, 0.3, 0.1, 5);
+    tb_rot(&t, 20, 0, 1, 0);
+    tb_call(&t, sq);
+    gls_bundle *b = tb_finish(&t);
+    gls_scene s0, s1;
+    char err[256];
+    CHECK(gls_scene_load(b, &s0, err, sizeof err) == 0 && gls_scene_load(b, &s1, err, sizeof err) == 0);
+    CHECK(gls_scene_name_instance(&s1, 1, "car1") == 0);
+    double Tc[3] = {0, 0, 0};
+    gls_camera c = tb_camera(160, 120, 150, 150, 79.5, 59.5, 0, I3, Tc, 0.1, 100);
+    size_t n = (size_t)160 * 120 * 4;
+    uint8_t *a = malloc(n), *a1 = malloc(n);
+    CHECK(render_scene(&s0, b, &c, a) == 0 && render_scene(&s1, b, &c, a1) == 0);
+    CHECK(memcmp(a, a1, n) == 0);
+    free(a), free(a1);
+    gls_scene_free(&s0);
+    gls_scene_free(&s1);
+    gls_bundle_free(b);
+}
+
+static int write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fputs(text, f);
+    return fclose(f);
+}
+
+/* The three formats give the same pose; errors verbatim. */
+static void test_motion_files(void)
+{
+    char dir[] = "/tmp/gls_motion_XXXXXX", path[512], err[512];
+    CHECK(mkdtemp(dir) != NULL);
+    /* 90 degrees about z, T = (1, 2, 3); quaternion (0, 0, s, s), s = sqrt(1/2) */
+    static const char *files[3] = {
+        "# glsroad motion 1\n0 0 1 0 0 0 1 0 0 0 1 0 0 0\n4 0.1 0 -1 0 1 0 0 0 0 1 1 2 3\n",
+        "1 0 0 0 0 1 0 0 0 0 1 0\n# a comment\n1 0 0 0 0 1 0 0 0 0 1 0\n\n"
+        "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1 0\n0 -1 0 1 1 0 0 2 0 0 1 3\n",
+        "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n3 0 0 0 0 0 0 1\n"
+        "4 1 2 3 0 0 0.70710678118654752 0.70710678118654752\n"};
+    for (int k = 0; k < 3; k++) {
+        snprintf(path, sizeof path, "%s/m%d.txt", dir, k);
+        CHECK(write_text(path, files[k]) == 0);
+        gls_motion m;
+        double R[9], T[3];
+        CHECK(gls_motion_read(path, NULL, &m, err, sizeof err) == 0);
+        CHECK(gls_motion_pose(&m, 4, R, T) == 0);
+        CHECK_MSG(fabs(R[1] + 1) < 1e-12 && fabs(R[3] - 1) < 1e-12 && fabs(R[0]) < 1e-12 && T[0] == 1 && T[1] == 2 &&
+                      T[2] == 3, "format %d", k);
+        CHECK(gls_motion_pose(&m, 5, R, T) == -1); /* no row: the player's load-time error */
+        if (k == 0)
+            CHECK(gls_motion_pose(&m, 2, R, T) == -1);
+        gls_motion_free(&m);
+    }
+    static const struct {
+        const char *text, *want;
+    } bad[] = {
+        {"1 2 3\n", "PATH:1: error: 3 values: not a motion row (\"# glsroad motion 1\" then 14 values, KITTI's 12 or TUM's 8)"},
+        {"1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1\n", "PATH:2: error: expected 12 values like the first row, got 11"},
+        {"0 0 0 0 0 0 0 2\n", "PATH:1: error: quaternion (0 0 0 2) is not of unit length"},
+        {"# glsroad motion 1\n3 0 1 0 0 0 1 0 0 0 1 0 0 0\n3 0 1 0 0 0 1 0 0 0 1 0 0 0\n",
+         "PATH:3: error: frame 3 does not follow frame 3: frames must increase"},
+        {"# glsroad motion 1\n", "PATH:1: error: no frames in the motion file"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        snprintf(path, sizeof path, "%s/bad.txt", dir);
+        CHECK(write_text(path, bad[k].text) == 0);
+        gls_motion m;
+        CHECK(gls_motion_read(path, NULL, &m, err, sizeof err) == -1);
+        char want[600];
+        const char *at = strstr(bad[k].want, "PATH");
+        snprintf(want, sizeof want, "%s%s", path, at + 4);
+        CHECK_MSG(strcmp(err, want) == 0, "got '%s', want '%s'", err, want);
+        unlink(path);
+    }
+    for (int k = 0; k < 3; k++) {
+        snprintf(path, sizeof path, "%s/m%d.txt", dir, k);
+        unlink(path);
+    }
+    rmdir(dir);
+}
+
+/* --motion with a name the bundle lacks: an input error, exit 1. */
+static void test_motion_unknown_name(void)
+{
+    char dir[] = "/tmp/gls_motion_XXXXXX", bpath[512], cpath[512], out[512];
+    CHECK(mkdtemp(dir) != NULL);
+    tb t;
+    tb_init(&t);
+    tb_object(&t, "top", 1);
+    tb_rect_z(&t, 0, 0, 1, 1, 5);
+    gls_bundle *b = tb_finish(&t);
+    snprintf(bpath, sizeof bpath, "%s/s.glsb", dir);
+    snprintf(cpath, sizeof cpath, "%s/c.cam", dir);
+    snprintf(out, sizeof out, "%s/out", dir);
+    double Tc[3] = {0, 0, 0};
+    gls_camera c = tb_camera(32, 24, 30, 30, 15.5, 11.5, 0, I3, Tc, 0.1, 100);
+    CHECK(tb_write(b, bpath) == 0 && tb_write_camera(&c, cpath) == 0);
+    const char *cams[1] = {cpath}, *mot[1] = {"car1=/nonexistent"};
+    gls_play_opts o;
+    memset(&o, 0, sizeof o);
+    o.bundle = bpath, o.cameras = cams, o.ncameras = 1, o.outdir = out, o.outputs = GLS_OUT_IMAGE;
+    o.motions = mot, o.nmotions = 1;
+    o.aa = gls_aa_defaults();
+    o.frame_end = UINT64_MAX;
+    FILE *errs = tmpfile(), *outs = tmpfile();
+    CHECK(gls_play(&o, outs, errs) == 1);
+    char msg[600] = "", want[600];
+    rewind(errs);
+    if (!fgets(msg, sizeof msg, errs))
+        msg[0] = 0;
+    snprintf(want, sizeof want, "glsplay: error: --motion car1: %s has no instance named 'car1' (it names no instance)\n",
+             bpath);
+    CHECK_MSG(strcmp(msg, want) == 0, "got '%s'", msg);
+    CHECK(access(out, F_OK) != 0); /* nothing written */
+    fclose(errs), fclose(outs);
+    unlink(bpath), unlink(cpath), rmdir(dir);
+    gls_bundle_free(b);
+}
+
+/* 2^11 instances of a 65,536-vertex fan: 2^27 vertices flattened, twice
+ * the old limit, and about 13 GB as flattened triangles; instanced, one
+ * fan and a table.  Only the first fan is in view: the others are culled. */
+static void test_beyond_flattened_limit(void)
+{
+    enum { NV = 65536, LEVELS = 11 };
+    tb t;
+    tb_init(&t);
+    uint32_t leaf = tb_object(&t, "fan", 0);
+    gls_vec4 *p = malloc(NV * sizeof *p);
+    for (int k = 0; k < NV; k++) {
+        double a = 2 * 3.14159265358979323846 * k / NV;
+        p[k] = k == 0 ? (gls_vec4){0, 0, 0, 1} : (gls_vec4){0.5 * cos(a), 0.5 * sin(a), 0, 1};
+    }
+    tb_color(&t, 0, 0, 1, 1);
+    tb_prim4(&t, GLS_PRIM_TFAN, NV, p, NULL, NULL);
+    free(p);
+    uint32_t prev = leaf;
+    for (int l = 0; l < LEVELS; l++) { /* level l: two calls of level l-1, 2^l * 3 units apart */
+        char name[16];
+        snprintf(name, sizeof name, "level%02d", l);
+        uint32_t o = tb_object(&t, name, l == LEVELS - 1);
+        tb_call(&t, prev);
+        tb_trans(&t, 3.0 * (1 << l), 0, 0);
+        tb_call(&t, prev);
+        prev = o;
+    }
+    gls_bundle *b = tb_finish_unchecked(&t);
+    CHECK(gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES);
+    gls_scene s;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    CHECK(s.nverts == 3 * (NV - 2) && s.nprotos >= 1);
+    uint32_t leaves = 0;
+    for (uint32_t i = 0; i < s.ninst; i++)
+        leaves += s.inst[i].nitems > 0;
+    CHECK(leaves == 1u << LEVELS);
+    uint64_t geo, table;
+    gls_scene_memory(&s, &geo, &table);
+    printf("  %u instances of a %u-triangle fan: geometry %.1f MiB, table %.1f MiB\n", leaves, NV - 2, geo / 1048576.0,
+           table / 1048576.0);
+    double Tc[3] = {0, 0, 4};
+    gls_camera c = tb_camera(32, 32, 40, 40, 15.5, 15.5, 0, I3, Tc, 0.1, 100);
+    uint8_t *rgba = malloc((size_t)32 * 32 * 4);
+    CHECK(render_scene(&s, b, &c, rgba) == 0);
+    static const uint8_t blue[3] = {0, 0, 255};
+    double cu, cv;
+    long n = centroid(rgba, 32, 32, blue, &cu, &cv);
+    /* the fan at the origin, radius 0.5 at depth 4: 5 px, area ~ 78 px
+     * (the next one, 3 units along x, projects 30 px away: not in view) */
+    printf("  %ld pixels, centroid (%.3f, %.3f)\n", n, cu, cv);
+    CHECK(n > 60 && n < 100 && fabs(cu - 15.5) < 0.3 && fabs(cv - 15.5) < 0.3);
+    free(rgba);
+    gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
+int main(void)
+{
+    char err[256];
+    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
+    if (!ctx) {
+        printf("FAIL test_instances: no GL context: %s\n", err);
+        return 1;
+    }
+    RUN(test_motion_moves_named_instance);
+    RUN(test_named_without_motion_identical);
+    RUN(test_motion_files);
+    RUN(test_motion_unknown_name);
+    RUN(test_beyond_flattened_limit);
+    gls_glctx_destroy(ctx);
+    CHECK_EXIT();
+}
