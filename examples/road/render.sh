@@ -22,38 +22,13 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 awk -v frames=" $FRAMES " '/^#/ || index(frames, " " $1 " ")' "$OUT/road/trajectory.txt" >"$tmp/trajectory.txt"
 CAMS="--camera $HERE/rig/left.cam --camera $HERE/rig/right.cam"
-if "$B/glsplay" --help 2>&1 | grep -q -e '--motion'; then
-    "$B/glsc" -I "$OUT/road" -I "$B/scenelib.glsb" -o "$OUT/road.glsb" "$OUT/road/road.scene"
-    set --
-    for m in "$OUT"/road/motion/*.txt; do
-        [ -f "$m" ] && set -- "$@" --motion "$(basename "$m" .txt)=$m"
-    done
-    "$B/glsplay" "$OUT/road.glsb" $CAMS --trajectory "$tmp/trajectory.txt" "$@" \
-        --background 0.55,0.7,0.9 -o "$OUT"
-else
-    # Until glsplay has --motion (issue 14, the player's part): each
-    # selected frame gets a small top-level scene placing the vehicles
-    # (vehicles.txt) around the road, compiled against the road compiled
-    # once as a library without its named vehicles.  Remove this branch
-    # once --motion is merged.
-    mkdir -p "$tmp/road"
-    cp -R "$OUT/road/roadobj" "$tmp/road/"
-    sed '/^\/\/ vehicles: named instances/,$d' "$OUT/road/road.scene" >"$tmp/road/road.scene"
-    "$B/glsc" -I "$B/scenelib.glsb" --lib "$tmp/road" -o "$tmp/road.glsb"
-    for f in $FRAMES; do
-        {
-            echo 'call("road");'
-            awk -v f="$f" '$1 == "#" && $2 == "vehicle" { obj[$3] = $5 }
-                $1 !~ /^#/ && $1 == f {
-                printf "push; transform(%s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, 0, 0, 0, 1); call(\"%s\"); pop;\n",
-                    $4, $5, $6, $13, $7, $8, $9, $14, $10, $11, $12, $15, obj[$3] }' "$OUT/road/vehicles.txt"
-        } >"$tmp/Frame.scene"
-        "$B/glsc" -I "$tmp" -I "$tmp/road.glsb" -I "$B/scenelib.glsb" -o "$tmp/frame.glsb" "$tmp/Frame.scene"
-        "$B/glsplay" "$tmp/frame.glsb" $CAMS --trajectory "$OUT/road/trajectory.txt" --frames "$f:$((f + 1))" \
-            --background 0.55,0.7,0.9 -o "$OUT"
-        echo "frame $f"
-    done
-fi
+"$B/glsc" -I "$OUT/road" -I "$B/scenelib.glsb" -o "$OUT/road.glsb" "$OUT/road/road.scene"
+set --
+for m in "$OUT"/road/motion/*.txt; do
+    [ -f "$m" ] && set -- "$@" --motion "$(basename "$m" .txt)=$m"
+done
+"$B/glsplay" "$OUT/road.glsb" $CAMS --trajectory "$tmp/trajectory.txt" "$@" \
+    --background 0.55,0.7,0.9 -o "$OUT"
 if [ -n "$STRIP" ]; then
     # four frames of the left camera, 300 px wide each (the PNG stays under
     # 300 KB: asphalt and grass textures compress poorly)
