@@ -430,6 +430,11 @@ int main(int argc, char **argv)
         rc = usage_error("%sno bundle given", "");
         goto done;
     }
+    /* the flattened path inlines every call: there is no instance to move */
+    if (o.flatten && o.nmotions) {
+        rc = usage_error("%s--motion moves instances, and --flatten draws none; leave out --flatten", "");
+        goto done;
+    }
     if (frames && !o.trajectory) {
         rc = usage_error("%s--frames selects frames of a --trajectory; for a single render use --frame N", "");
         goto done;

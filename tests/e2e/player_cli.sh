@@ -94,6 +94,7 @@ expect player_usage_no_camera 2 "no camera" -- $PLAY "$t/proj.glsb" -o "$t/u"
 expect player_usage_bad_size 2 "WxH" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --size 0x10
 expect player_usage_bad_outputs 2 "image, depth, points" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --outputs image,colour
 expect player_usage_unknown_option 2 "unknown option" -- $PLAY "$t/proj.glsb" --frobnicate
+expect player_usage_motion_flatten 2 "glsplay: error: --motion moves instances, and --flatten draws none; leave out --flatten (try glsplay --help)" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --flatten --motion car=x.txt
 expect player_help 0 "" -- $PLAY --help
 grep -q "usage: glsplay" "$t/stdout" && ok player_help_text || fail player_help_text "no usage line"
 
