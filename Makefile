@@ -86,7 +86,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # The helper programs (benchmarks, image tools, fuzz seed writer): built by
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
-PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/depth2png $(B)/pnghalf \
+PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
 .PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends units programs spec-road-keys
@@ -119,6 +119,7 @@ SEES_test_aa := bench
 SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
+SEES_test_outputs := runtime
 SEES_test_progress := runtime
 SEES_test_rotation := runtime
 SEES_test_road_geo := roads
@@ -276,7 +277,7 @@ clean:
 # (tests/unit/player_scene.h); test_aa shares bench/aa_scene.h.
 INC_bench := -Ibench -Itests/unit $(INC_runtime)
 LIB_bench := $(LIB_runtime)
-BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench
+BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/png_bench
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_bench) $(LDLIBS) $(GL_LIBS)
 
