@@ -50,7 +50,7 @@ $(B)/roads/glsroad_main.o: LAYER_INC = $(INC_glsroad)
 HAVE_EGL    := $(if $(filter 1,$(GLS_NO_EGL)),,$(shell pkg-config --exists egl 2>/dev/null && echo 1))
 HAVE_OSMESA := $(if $(filter 1,$(GLS_NO_OSMESA)),,$(shell pkg-config --exists osmesa 2>/dev/null && echo 1))
 GLCTX_LEFT_OUT := $(if $(HAVE_EGL),,runtime/glctx_egl.c) $(if $(HAVE_OSMESA),,runtime/glctx_osmesa.c)
-GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),$(shell pkg-config --libs osmesa)) -lspng
+GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),$(shell pkg-config --libs osmesa)) -lspng -pthread
 $(B)/runtime/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
 $(B)/runtime/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
 # Which backends are in, for runtime/glctx.c: written when the Makefile is
@@ -120,6 +120,7 @@ SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
 SEES_test_outputs := runtime
+SEES_test_writer := runtime
 SEES_test_progress := runtime
 SEES_test_rotation := runtime
 SEES_test_road_geo := roads

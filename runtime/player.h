@@ -42,6 +42,11 @@ typedef struct {
                                     0 or 1 = off (the fast default)     */
     int progress;                /* progress lines on errs               */
     gls_backend backend;         /* GL backend (glctx.h); 0 = auto       */
+    unsigned writer_threads;     /* 1: encode and write each camera
+                                    frame's files on a writer thread while
+                                    the next renders (glsplay's default);
+                                    0: on the rendering thread.  Same
+                                    files either way (frame_writer.h)   */
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,
