@@ -89,7 +89,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends units programs spec-road-keys
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -285,6 +285,13 @@ $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 # bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 	@sh bench/play.sh $(B)
+
+# bench-encode: what writing the files costs glsplay: frames per second
+# with and without image files, writer thread on and off, 640x480 and
+# 1920x1080, and each PNG encoder and level on one frame; writes
+# docs/encode.txt (BE_BASELINE=path/to/old/glsplay adds a column).
+bench-encode: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench $(B)/bench/png_bench
+	@sh bench/encode.sh $(B)
 
 # bench-backends: frames per second of each GL backend (spec/backends.md),
 # the road sequence and the 100k-triangle terrain, 1 and 256 samples a

@@ -8,15 +8,15 @@
 #include <spng.h>
 
 /* The player's PNG settings (outputs.h).  Measured on rendered frames
- * (docs/encode.txt): level 1 is 3 to 5 times faster than level 6 and
- * 4 to 5 times faster than stb; "sub" gives the smallest 8-bit files of
- * the single filters at about the speed of none, while the adaptive
- * choice of all five filters costs about twice the time for 1 to 2 %
- * less; 16-bit images (anti-aliased, whose low bytes are close to noise)
- * compress best and fastest unfiltered. */
+ * (make bench-encode, docs/encode.txt): level 1 is 3 to 5 times faster
+ * than level 6 and 4 to 6 times faster than stb_image_write; "sub" gives
+ * the smallest files of the single filters at about the speed of none
+ * (none makes the terrain's files half as large again), while the
+ * adaptive choice of all five filters costs about twice the time for 1
+ * to 2 % less.  16-bit: sub is within a few % of none in speed and size
+ * on the road, 25 % smaller on the smooth terrain. */
 #define PNG_LEVEL 1
-#define PNG_FILTERS_8 SPNG_FILTER_CHOICE_SUB
-#define PNG_FILTERS_16 SPNG_FILTER_CHOICE_NONE
+#define PNG_FILTERS SPNG_FILTER_CHOICE_SUB
 
 /* PNG through libspng: one encoder for every PNG the player writes.
  * channels 1 (grey) or 3 (RGB); depth 8 or 16 (16-bit samples in host
@@ -84,17 +84,17 @@ int gls_encode_png_with(const void *px, uint32_t w, uint32_t h, int channels, in
 
 int gls_encode_png(const uint8_t *rgba, uint32_t w, uint32_t h, gls_buf *out)
 {
-    return encode_spng(rgba, w, h, 3, 8, 1, PNG_LEVEL, PNG_FILTERS_8, out);
+    return encode_spng(rgba, w, h, 3, 8, 1, PNG_LEVEL, PNG_FILTERS, out);
 }
 
 int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out)
 {
-    return encode_spng(g, w, h, 1, 8, 0, PNG_LEVEL, PNG_FILTERS_8, out);
+    return encode_spng(g, w, h, 1, 8, 0, PNG_LEVEL, PNG_FILTERS, out);
 }
 
 int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out)
 {
-    return encode_spng(rgb, w, h, 3, 16, 0, PNG_LEVEL, PNG_FILTERS_16, out);
+    return encode_spng(rgb, w, h, 3, 16, 0, PNG_LEVEL, PNG_FILTERS, out);
 }
 
 /* PFM, channels 1 ("Pf") or 3 ("PF"), float32 little-endian (scale

@@ -9,11 +9,11 @@
 #include "bundle.h"
 #include "camera.h"
 
-/* Every PNG is encoded by libspng at zlib level 1, 8-bit ones with the
- * "sub" filter on every row, 16-bit ones unfiltered (outputs.c), chosen by
- * measurement (bench/png_bench.c, docs/encode.txt): 4 to 5 times faster
- * than stb_image_write's encoder, which the player used before, with
- * files of about the same size and the same pixels. */
+/* Every PNG is encoded by libspng at zlib level 1 with the "sub" filter on
+ * every row (outputs.c), chosen by measurement (make bench-encode,
+ * docs/encode.txt): 4 to 6 times faster than stb_image_write's encoder,
+ * which the player used before, with files of about the same size or
+ * smaller and the same pixels. */
 
 /* 8-bit RGB PNG of an RGBA image (alpha dropped), top row first. */
 int gls_encode_png(const uint8_t *rgba, uint32_t w, uint32_t h, gls_buf *out);
