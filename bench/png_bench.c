@@ -15,41 +15,14 @@
 #include <time.h>
 #include <spng.h>
 #include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
 #include "outputs.h"
+#include "stb_png.h"
 
 static double now(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-typedef struct {
-    gls_buf *out;
-    int failed;
-} sink;
-
-static void to_buf(void *ctx, void *data, int size)
-{
-    sink *s = ctx;
-    if (size > 0 && gls_buf_put(s->out, data, (size_t)size))
-        s->failed = 1;
-}
-
-/* stb_image_write as the player used it: RGBA dropped to RGB first. */
-static int encode_stb(const uint8_t *rgba, int w, int h, gls_buf *out)
-{
-    size_t n = (size_t)w * (size_t)h;
-    uint8_t *rgb = malloc(n * 3);
-    if (!rgb)
-        return -1;
-    for (size_t i = 0; i < n; i++)
-        memcpy(rgb + 3 * i, rgba + 4 * i, 3);
-    sink s = {out, 0};
-    int ok = stbi_write_png_to_func(to_buf, &s, w, h, 3, rgb, w * 3);
-    free(rgb);
-    return ok && !s.failed ? 0 : -1;
 }
 
 static const struct {
@@ -88,7 +61,7 @@ int main(int argc, char **argv)
             for (int r = 0; r < repeat; r++) {
                 buf.len = 0;
                 double t0 = now();
-                int e = k < 0 ? encode_stb(px, w, h, &buf)
+                int e = k < 0 ? stb_png_encode(px, w, h, &buf)
                               : gls_encode_png_with(px, (uint32_t)w, (uint32_t)h, 3, sixteen ? 16 : 8, !sixteen, lv,
                                                     filters[fi].bits, &buf);
                 double t = now() - t0;
