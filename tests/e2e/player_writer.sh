@@ -74,24 +74,25 @@ sys.exit(0 if ok else 1)
 PY
 then ok png_pixels_exact_cv2; else fail png_pixels_exact_cv2 "decoded pixels differ from the expected values"; fi
 
-# check_stop NAME DIR RC ERRFILE WANT_FIRST_BAD: the run stopped with exit 1
-# and one message; frames before the failing one complete with their
-# records; the failing frame and every later one without record or file
-# (but an obstacle); no temporary file left.  Prints the failing frame.
+# check_stop DIR RC ERRFILE: the run stopped with exit 1 and one message;
+# frames before the failing one complete with their records; the failing
+# frame and every later one without record or file (but an obstacle, or
+# the failing frame's image written before its depth map); no temporary
+# file left.  Prints the failing frame, or returns 1 with why in $tmp/why.
 check_stop() {
-    name=$1 dir=$2 rc=$3 errf=$4
+    dir=$1 rc=$2 errf=$3
     bad=""
     f=0
     while [ $f -lt 8 ]; do
         ff=$(printf %06d $f)
         if [ -f "$dir/cam/.frame_$ff.done" ]; then
-            [ -z "$bad" ] || { fail "$name" "frame $f has a record after the failing frame $bad"; return 1; }
+            [ -z "$bad" ] || { echo "frame $f has a record after the failing frame $bad" >"$tmp/why"; return 1; }
         else
             [ -n "$bad" ] || bad=$f
             for k in image depth; do
                 [ -f "$dir/cam/${k}_$ff.png" ] || [ -f "$dir/cam/${k}_$ff.pfm" ] || continue
                 [ "$f" = "$bad" ] && [ "$k" = image ] && continue # written before the failing depth map
-                fail "$name" "frame $f has $k file after the failure"
+                echo "frame $f has a $k file after the failure" >"$tmp/why"
                 return 1
             done
         fi
@@ -99,7 +100,7 @@ check_stop() {
     done
     tmps=$(find "$dir" -name '*.tmp*' | wc -l)
     if [ "$rc" != 1 ] || [ "$(wc -l <"$errf")" != 1 ] || [ "$tmps" != 0 ] || [ -z "$bad" ]; then
-        fail "$name" "rc=$rc, $tmps temporary files, first incomplete frame '$bad', stderr: $(cat "$errf")"
+        echo "rc=$rc, $tmps temporary files, first incomplete frame '$bad', stderr: $(cat "$errf")" >"$tmp/why"
         return 1
     fi
     echo "$bad"
@@ -111,14 +112,15 @@ for n in 1 0; do
     play --outputs image,depth --writer-threads $n -o "$tmp/ob$n" 2>"$tmp/oberr$n"
     echo $? >"$tmp/obrc$n"
 done
-b1=$(check_stop writer_error_stops_run "$tmp/ob1" "$(cat "$tmp/obrc1")" "$tmp/oberr1") &&
-    b0=$(check_stop writer_error_stops_run "$tmp/ob0" "$(cat "$tmp/obrc0")" "$tmp/oberr0")
 want="glsplay: error: cannot write $tmp/ob1/cam/image_000003.png: it is a directory"
-if [ "$b1" = 3 ] && [ "$b0" = 3 ] && [ "$(cat "$tmp/oberr1")" = "$want" ] &&
+if ! b1=$(check_stop "$tmp/ob1" "$(cat "$tmp/obrc1")" "$tmp/oberr1") ||
+    ! b0=$(check_stop "$tmp/ob0" "$(cat "$tmp/obrc0")" "$tmp/oberr0"); then
+    fail writer_error_stops_run "$(cat "$tmp/why")"
+elif [ "$b1" = 3 ] && [ "$b0" = 3 ] && [ "$(cat "$tmp/oberr1")" = "$want" ] &&
     [ "$(sed "s|/ob0/|/ob1/|" "$tmp/oberr0")" = "$want" ] && [ ! -e "$tmp/ob1/cam/depth_000003.pfm" ]; then
     ok writer_error_stops_run
 else
-    [ -n "$b1$b0" ] && fail writer_error_stops_run "stopped at frames '$b1' (thread) and '$b0' (none): $(cat "$tmp/oberr1")"
+    fail writer_error_stops_run "stopped at frames '$b1' (thread) and '$b0' (none): $(cat "$tmp/oberr1")"
 fi
 
 # a full disk (a 64 KiB tmpfs; needs the right to mount, else said and
@@ -131,14 +133,14 @@ if mount -t tmpfs -o size=64k tmpfs "$tmp/full" 2>/dev/null; then
         rm -rf "$tmp/full/out"
         play --outputs depth --writer-threads $n -o "$tmp/full/out" 2>"$tmp/fullerr$n"
         rc=$?
-        b=$(check_stop writer_disk_full "$tmp/full/out" "$rc" "$tmp/fullerr$n") || { res=x; break; }
+        b=$(check_stop "$tmp/full/out" "$rc" "$tmp/fullerr$n") || { fail writer_disk_full "$(cat "$tmp/why")"; res=x; break; }
         want="glsplay: error: cannot write $tmp/full/out/cam/depth_$(printf %06d "$b").pfm: No space left on device"
         [ "$(cat "$tmp/fullerr$n")" = "$want" ] || { fail writer_disk_full "$(cat "$tmp/fullerr$n"), wanted $want"; res=x; break; }
         res="$res $b"
     done
     case $res in
     x) ;;
-    " "[1-7]" "[1-7]) [ "${res% *}" = " ${res##* }" ] && ok writer_disk_full ||
+    " "[1-7]" "[1-7]) [ "${res% *}" = " ${res##* }" ] && ok writer_disk_full && echo "  full disk at frame${res% *}" ||
         fail writer_disk_full "stopped at frames$res (thread, none)" ;;
     *) fail writer_disk_full "stopped at frames '$res'" ;;
     esac

@@ -14,7 +14,7 @@ typedef struct {
     int failed;
 } stb_png_sink;
 
-static void stb_png_put(void *ctx, void *data, int size)
+static inline void stb_png_put(void *ctx, void *data, int size)
 {
     stb_png_sink *s = ctx;
     if (size > 0 && gls_buf_put(s->out, data, (size_t)size))
