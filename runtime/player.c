@@ -6,6 +6,7 @@
  * input, then for each camera (or each frame of a trajectory) render,
  * write and record progress, all through one session's state.  What has a
  * job of its own is elsewhere already (outputs.c, aa_render.c,
+ * frame_files.c and frame_writer.c (encoding and writing, on a thread),
  * frame_record.c, progress.c, trajectory.c); splitting the camera and the
  * trajectory loops apart would cut through that shared state. */
 #include <errno.h>
@@ -149,15 +150,6 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
     return b + enc;
 }
 
-/* Render one camera and write what was asked for.
- *
- * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
- * Anti-aliased (N > 1): the image (and mask) come from the accumulated
- * samples (one fine framebuffer for the lattice and grid, jittered passes
- * for stratified); depth and points come from one extra unjittered pass
- * (the geometry at each pixel centre, never averaged across an edge),
- * drawn only when they are asked for; the points' colours come from that
- * pass too, so each point has the colour of the surface it lies on. */
 /* Say why a camera frame failed.  An earlier frame's files may still be
  * in the writer: if one of them failed, a run without the writer thread
  * would have stopped there, so that message is said instead of this one
@@ -168,6 +160,15 @@ static void say_failure(session *s, const char *msg)
     fprintf(s->errs, "%s\n", gls_writer_finish(s->w, earlier, sizeof earlier) ? earlier : msg);
 }
 
+/* Render one camera and write what was asked for.
+ *
+ * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
+ * Anti-aliased (N > 1): the image (and mask) come from the accumulated
+ * samples (one fine framebuffer for the lattice and grid, jittered passes
+ * for stratified); depth and points come from one extra unjittered pass
+ * (the geometry at each pixel centre, never averaged across an edge),
+ * drawn only when they are asked for; the points' colours come from that
+ * pass too, so each point has the colour of the surface it lies on. */
 static int play_camera(session *s, const gls_camera *c, const char *name, uint32_t frame)
 {
     static const char lower_size[] = "lower --size (or the camera's width and height)";
