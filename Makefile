@@ -50,7 +50,7 @@ $(B)/roads/glsroad_main.o: LAYER_INC = $(INC_glsroad)
 HAVE_EGL    := $(if $(filter 1,$(GLS_NO_EGL)),,$(shell pkg-config --exists egl 2>/dev/null && echo 1))
 HAVE_OSMESA := $(if $(filter 1,$(GLS_NO_OSMESA)),,$(shell pkg-config --exists osmesa 2>/dev/null && echo 1))
 GLCTX_LEFT_OUT := $(if $(HAVE_EGL),,runtime/glctx_egl.c) $(if $(HAVE_OSMESA),,runtime/glctx_osmesa.c)
-GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),$(shell pkg-config --libs osmesa)) -lspng
+GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),$(shell pkg-config --libs osmesa)) -lspng -pthread
 $(B)/runtime/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
 $(B)/runtime/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
 # Which backends are in, for runtime/glctx.c: written when the Makefile is
@@ -86,10 +86,10 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # The helper programs (benchmarks, image tools, fuzz seed writer): built by
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
-PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/depth2png $(B)/pnghalf \
+PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends units programs spec-road-keys
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -120,6 +120,8 @@ SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
 SEES_test_instances := runtime
+SEES_test_outputs := runtime
+SEES_test_writer := runtime
 SEES_test_progress := runtime
 SEES_test_rotation := runtime
 SEES_test_road_geo := roads
@@ -277,7 +279,7 @@ clean:
 # (tests/unit/player_scene.h); test_aa shares bench/aa_scene.h.
 INC_bench := -Ibench -Itests/unit $(INC_runtime)
 LIB_bench := $(LIB_runtime)
-BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench
+BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_bench) $(LDLIBS) $(GL_LIBS)
 
@@ -290,6 +292,13 @@ bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
 # (docs/instances.txt; minutes: the flattened forest has 20 M triangles).
 bench-instances: $(B)/bench/play_floor $(B)/bench/instances_bench
 	@sh bench/instances.sh $(B)
+
+# bench-encode: what writing the files costs glsplay: frames per second
+# with and without image files, writer thread on and off, 640x480 and
+# 1920x1080, and each PNG encoder and level on one frame; writes
+# docs/encode.txt (BE_BASELINE=path/to/old/glsplay adds a column).
+bench-encode: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench $(B)/bench/png_bench
+	@sh bench/encode.sh $(B)
 
 # bench-backends: frames per second of each GL backend (spec/backends.md),
 # the road sequence and the 100k-triangle terrain, 1 and 256 samples a

@@ -79,6 +79,9 @@ static const char usage_text[] =
     "  on a terminal, stderr shows progress: frames done, frames/s and time left for a\n"
     "  sequence, samples done for a long anti-aliased camera frame\n"
     "  --progress             show it even when stderr is not a terminal\n"
+    "  --writer-threads N     1 (default): encode and write a frame's files on a thread of\n"
+    "                         their own while the next frame renders; 0: in turn, on one\n"
+    "                         thread.  The files are the same either way\n"
     "  a render projected to take over a minute (timed on its first passes or frames)\n"
     "  prints the estimate on stderr first: \"glsplay: note: estimated render time ...\"\n"
     "  --help                 this text\n"
@@ -179,6 +182,7 @@ int main(int argc, char **argv)
     gls_play_opts o;
     memset(&o, 0, sizeof o);
     o.frame_end = UINT64_MAX;
+    o.writer_threads = 1;
     const char *frames = NULL;
     o.outputs = GLS_OUT_IMAGE | GLS_OUT_DEPTH | GLS_OUT_POINTS;
     o.aa = gls_aa_defaults();
@@ -303,6 +307,14 @@ int main(int argc, char **argv)
                 goto done;
             }
             o.aa_tiles = (uint32_t)v;
+            i++;
+        } else if (strcmp(a, "--writer-threads") == 0) {
+            unsigned long long v;
+            if (!has_val || parse_uint(argv[i + 1], 0, 1, &v)) {
+                rc = usage_error("--writer-threads needs 0 or 1, got '%s'", has_val ? argv[i + 1] : "");
+                goto done;
+            }
+            o.writer_threads = (unsigned)v;
             i++;
         } else if (strcmp(a, "--anisotropic") == 0) {
             unsigned long long v;

@@ -9,14 +9,26 @@
 #include "bundle.h"
 #include "camera.h"
 
+/* Every PNG is encoded by libspng at zlib level 1 with the "sub" filter on
+ * every row (outputs.c), chosen by measurement (make bench-encode,
+ * docs/encode.txt): 4 to 6 times faster than stb_image_write's encoder,
+ * which the player used before, with files of about the same size or
+ * smaller and the same pixels. */
+
 /* 8-bit RGB PNG of an RGBA image (alpha dropped), top row first. */
 int gls_encode_png(const uint8_t *rgba, uint32_t w, uint32_t h, gls_buf *out);
 
-/* 16-bit RGB PNG (libspng), rgb top row first, 3 samples per pixel. */
+/* 16-bit RGB PNG, rgb top row first, 3 samples per pixel. */
 int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out);
 
 /* 8-bit greyscale PNG of one byte per pixel. */
 int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out);
+
+/* Any of the above with other settings, for the bench: channels 1 or 3,
+ * depth 8 or 16 (host-order samples), rgba: 8-bit pixels given as RGBA
+ * (alpha dropped), level 0..9, filters SPNG_FILTER_CHOICE_* bits. */
+int gls_encode_png_with(const void *px, uint32_t w, uint32_t h, int channels, int depth, int rgba, int level,
+                        int filters, gls_buf *out);
 
 /* Colour PFM ("PF", 3 channels float32, scale -1.0 = little-endian),
  * rows bottom to top; rgb is top row first. */

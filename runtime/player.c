@@ -6,6 +6,7 @@
  * input, then for each camera (or each frame of a trajectory) render,
  * write and record progress, all through one session's state.  What has a
  * job of its own is elsewhere already (outputs.c, aa_render.c,
+ * frame_files.c and frame_writer.c (encoding and writing, on a thread),
  * frame_record.c, progress.c, trajectory.c); splitting the camera and the
  * trajectory loops apart would cut through that shared state. */
 #include <errno.h>
@@ -17,7 +18,9 @@
 #include "aa_render.h"
 #include "atomic_write.h"
 #include "calib_write.h"
+#include "frame_files.h"
 #include "frame_record.h"
+#include "frame_writer.h"
 #include "glctx.h"
 #include "mkdirs.h"
 #include "motion.h"
@@ -61,15 +64,6 @@ static char *camera_name(const char *path)
     return s;
 }
 
-static int write_buf(FILE *errs, const char *path, gls_buf *b)
-{
-    if (gls_write_file_atomic(path, b->data, b->len)) {
-        fprintf(errs, "glsplay: error: cannot write %s: %s\n", path, gls_write_error(path, errno));
-        return -1;
-    }
-    return 0;
-}
-
 /* The output kinds, in the order they are written. */
 static const struct {
     unsigned bit;
@@ -86,8 +80,6 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
     return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
 }
 
-/* What one run keeps across cameras and frames: the options, the
- * renderer, and the timing behind the progress line and the estimate. */
 /* --motion: the named instances and their motion files. */
 typedef struct {
     gls_scene *scene;
@@ -173,11 +165,14 @@ static void motion_free(motion_set *ms)
     free(ms->inst);
 }
 
+/* What one run keeps across cameras and frames: the options, the
+ * renderer, and the timing behind the progress line and the estimate. */
 typedef struct {
     const gls_play_opts *o;
     const motion_set *ms;
     const gls_aa_plan *plan;
     gls_renderer *r;
+    gls_writer *w;              /* where each camera frame's files go   */
     FILE *errs;
     uint64_t views, views_done; /* camera frames to render, rendered    */
     double t0;                  /* when rendering began                 */
@@ -251,6 +246,16 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
     return b + enc;
 }
 
+/* Say why a camera frame failed.  An earlier frame's files may still be
+ * in the writer: if one of them failed, a run without the writer thread
+ * would have stopped there, so that message is said instead of this one
+ * (the same message whatever the thread's timing). */
+static void say_failure(session *s, const char *msg)
+{
+    char earlier[1024];
+    fprintf(s->errs, "%s\n", gls_writer_finish(s->w, earlier, sizeof earlier) ? earlier : msg);
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -267,7 +272,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     const gls_aa_plan *plan = s->plan;
     gls_renderer *r = s->r;
     FILE *errs = s->errs;
-    char err[512], path[MAXPATH];
+    char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
     int centre = !aa || (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS));
@@ -276,11 +281,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     void *img = NULL; /* image in its output format when not rgba */
     gls_accum acc;
     memset(&acc, 0, sizeof acc);
-    gls_buf buf = {0};
+    gls_frame_files *f = NULL;
     int rc = -1;
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
-        fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
-        return -1;
+        snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
+        goto out;
     }
     if (centre) {
         gls_render_pass(r, c, 0.0, 0.0);
@@ -307,7 +312,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             if (gls_aa_render_fine(r, c, plan, &fo, &acc, NULL, err, sizeof err)) {
                 char mem[32];
                 gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
-                fprintf(errs, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)\n", name, err, mem);
+                snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)", name, err,
+                         mem);
                 goto out;
             }
         } else {
@@ -318,10 +324,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
                 uint32_t kx, ky;
                 gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
                 if (kx * ky > 1)
-                    fprintf(errs, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)\n", name,
-                            err, kx * ky);
+                    snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)",
+                             name, err, kx * ky);
                 else
-                    fprintf(errs, "glsplay: error: camera %s: %s; %s\n", name, err, lower_size);
+                    snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
                 goto out;
             }
         }
@@ -358,68 +364,49 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
-    /* This camera's frame is incomplete from the first file rewritten
-     * until the last is written: no record meanwhile (frame_record.h). */
-    char record[MAXPATH], text[1024];
-    if (gls_frame_record_path(record, sizeof record, o->outdir, name, frame) ||
-        gls_frame_record_text(text, sizeof text, o, c, name, frame)) {
-        fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
-        goto out;
-    }
-    if (unlink(record) != 0 && errno != ENOENT) {
-        fprintf(errs, "glsplay: error: cannot remove %s: %s\n", record, strerror(errno));
-        goto out;
-    }
-    for (size_t k = 0; k < NOUTS; k++) {
-        if (!(o->outputs & outs[k].bit))
-            continue;
-        if (output_file(path, sizeof path, o, name, k, frame)) {
-            fprintf(errs, "glsplay: error: output path for camera %s is too long\n", name);
-            goto out;
+    /* The files go to the writer (frame_writer.h, frame_files.h), which
+     * encodes and writes them, with its thread while the next frame
+     * renders, and writes the frame record after the last one. */
+    f = gls_frame_files_new();
+    if (!f)
+        goto oom;
+    f->cam = *c;
+    f->name = name;
+    f->image_format = o->image_format;
+    f->buffer_bytes = camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n);
+    int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
+                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame);
+    for (size_t k = 0; k < NOUTS && !too_long; k++)
+        if (o->outputs & outs[k].bit) {
+            f->files[f->nfiles].bit = outs[k].bit;
+            too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
         }
-        buf.len = 0;
-        uint64_t np;
-        int e;
-        switch (outs[k].bit) {
-        case GLS_OUT_IMAGE:
-            e = o->image_format == GLS_IMG_PNG16 ? gls_encode_png16(img, c->width, c->height, &buf)
-                : o->image_format == GLS_IMG_PFM ? gls_encode_pfm_rgb(img, c->width, c->height, &buf)
-                                                 : gls_encode_png(aa ? img : rgba, c->width, c->height, &buf);
-            break;
-        case GLS_OUT_DEPTH:
-            e = gls_encode_pfm(z, c->width, c->height, &buf);
-            break;
-        case GLS_OUT_POINTS:
-            e = gls_encode_ply(c, z, rgba, &buf, &np);
-            break;
-        default:
-            e = gls_encode_png_gray(mask, c->width, c->height, &buf);
-            break;
-        }
-        if (e)
-            goto oom;
-        if (write_buf(errs, path, &buf))
-            goto out;
-    }
-    if (gls_write_file_atomic(record, text, strlen(text))) {
-        fprintf(errs, "glsplay: error: cannot write %s: %s\n", record, strerror(errno));
+    if (too_long) {
+        snprintf(msg, sizeof msg, "glsplay: error: output path for camera %s is too long", name);
         goto out;
     }
+    f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
+    rgba = mask = NULL, z = NULL, img = NULL;
+    gls_write_job *job = &f->job;
+    f = NULL; /* the writer's now, submitted or freed */
+    if (gls_writer_submit(s->w, job, msg, sizeof msg))
+        goto out;
     view_done(s);
     rc = 0;
     goto out;
-oom:;
-    char need[32];
-    gls_fmt_bytes(need, sizeof need, camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n));
-    fprintf(errs, "glsplay: error: camera %s: out of memory for the buffers of a %ux%u image (about %s); %s\n", name,
-            c->width, c->height, need, lower_size);
+oom:
+    gls_frame_oom_message(msg, sizeof msg, name, c->width, c->height,
+                          camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n));
 out:
+    if (rc && msg[0])
+        say_failure(s, msg);
+    if (f)
+        f->job.destroy(&f->job);
     gls_accum_free(&acc);
     free(rgba);
     free(z);
     free(img);
     free(mask);
-    free(buf.data);
     return rc;
 }
 
@@ -549,6 +536,13 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
         if (rc)
             break;
         done++;
+        /* the last frame's files are written before the closing progress
+         * line, whose time includes them */
+        if (done == todo && gls_writer_finish(s->w, err, sizeof err)) {
+            fprintf(errs, "%s\n", err);
+            rc = 1;
+            break;
+        }
         double now = gls_now();
         if (o->progress && (done == todo || now - last >= 0.5)) {
             last = now;
@@ -603,6 +597,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     motion_set ms = {&scene, 0, NULL, NULL};
     gls_glctx *ctx = NULL;
     gls_renderer *r = NULL;
+    gls_writer *wr = NULL;
     gls_camera *cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *cams);
     char **names = calloc(o->ncameras ? o->ncameras : 1, sizeof *names);
     gls_bundle *b = NULL;
@@ -702,7 +697,12 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &plan, r, errs, o->ncameras, 0, gls_now(), 0};
+    wr = gls_writer_create(o->writer_threads, err, sizeof err);
+    if (!wr) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        goto out;
+    }
+    session ses = {o, &ms, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0};
     if (!o->trajectory) {
         int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
         if (o->resume)
@@ -713,12 +713,21 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                 if (play_camera(&ses, &cams[i], names[i], o->frame))
                     goto out;
         rc = 0;
-    } else
+    } else {
         rc = play_trajectory(&ses, cams, (const char *const *)names);
-    /* after the render: every frame in the range was read and checked */
+    }
+    if (rc == 0 && gls_writer_finish(wr, err, sizeof err)) {
+        fprintf(errs, "%s\n", err);
+        rc = 1;
+    }
+    /* after the render and its files: every frame in the range was read
+     * and checked */
     if (rc == 0 && o->write_calib)
         rc = gls_calib_write(o, cams, (const char *const *)names, errs);
 out:
+    /* first: it waits for the files in flight, whose jobs name the
+     * cameras */
+    gls_writer_destroy(wr);
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);
     motion_free(&ms);

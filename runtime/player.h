@@ -47,6 +47,11 @@ typedef struct {
     int flatten;                 /* --flatten: the flattened reference path */
     const char *const *motions;  /* --motion NAME=FILE arguments         */
     size_t nmotions;
+    unsigned writer_threads;     /* 1: encode and write each camera
+                                    frame's files on a writer thread while
+                                    the next renders (glsplay's default);
+                                    0: on the rendering thread.  Same
+                                    files either way (frame_writer.h)   */
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,

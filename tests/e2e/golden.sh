@@ -2,8 +2,9 @@
 # Byte-identity guard.  Compiles a fixed set of scenes (the demo, the
 # examples, tests/compiler/*, the scene library as a library bundle), dumps
 # each bundle with glsdis --source, renders the demo at the README's
-# command and one example, and compares the SHA-256 of every bundle, dump
-# and image with the list in tests/e2e/golden.sha256.  Prints "ok NAME" /
+# command and one example, and compares the SHA-256 of every bundle, dump,
+# depth map and point cloud, and of the decoded pixels of every PNG image,
+# with the list in tests/e2e/golden.sha256.  Prints "ok NAME" /
 # "FAIL NAME: why", one line per file.
 #
 # The list was recorded on main before the refactoring of issue 12, which
@@ -70,7 +71,24 @@ render demo demo --camera examples/demo/left.cam --camera examples/demo/right.ca
 # an example with textures and anti-aliasing, as examples/render.sh renders it
 render signs signs --camera examples/signs/left.cam --aa 4 --outputs image,depth --background 0.55,0.7,0.9
 
-(cd "$t/files" && sha256sum -- *) >"$t/got"
+# Bundles, dumps, PFM and PLY files: the SHA-256 of the file.  PNG images:
+# the SHA-256 of the pixels as cv2.imread decodes them (shape, dtype, then
+# the samples), named NAME.png.pixels, so that a change of PNG encoder or
+# compression level (issue 14) keeps the digests while any changed pixel
+# still fails.
+(cd "$t/files" && sha256sum -- *) | grep -v '\.png$' >"$t/got"
+/usr/bin/python3 - "$t/files" >>"$t/got" <<'PY' || fail golden_png_pixels "cannot decode the PNG images"
+import hashlib, os, sys
+import cv2
+d = sys.argv[1]
+for n in sorted(os.listdir(d)):
+    if n.endswith(".png"):
+        a = cv2.imread(os.path.join(d, n), cv2.IMREAD_UNCHANGED)
+        if a is None:
+            sys.exit("cannot read " + n)
+        h = hashlib.sha256(("%s %s\n" % (a.shape, a.dtype)).encode() + a.tobytes()).hexdigest()
+        print("%s  %s.pixels" % (h, n))
+PY
 
 if [ "$1" = --record ]; then
     { grep '^#' "$LIST" 2>/dev/null; cat "$t/got"; } >"$t/list" && cp "$t/list" "$LIST"

@@ -1,0 +1,42 @@
+/* The files of one camera frame as a writer job (frame_writer.h): the
+ * pixels read back or accumulated, the paths, and the frame record.  Run,
+ * it removes the old record, encodes and writes each file atomically
+ * (outputs.h, atomic_write.h), then writes the record (frame_record.h),
+ * so the record exists only once every file of the frame is complete. */
+#ifndef GLS_FRAME_FILES_H
+#define GLS_FRAME_FILES_H
+
+#include <stdint.h>
+#include "camera.h"
+#include "frame_writer.h"
+#include "player.h"
+
+#define GLS_FRAME_PATH 4096
+
+typedef struct {
+    gls_write_job job; /* first: the writer sees this */
+    gls_camera cam;    /* size; the points' back-projection */
+    const char *name;  /* camera name, for messages (outlives the job) */
+    gls_image_format image_format;
+    /* the buffers, owned by the job (freed with it); NULL when unused:
+     * rgba (a plain render's image, the points' colours), image (the image
+     * in its output format when it is not rgba), z (depth), mask */
+    uint8_t *rgba, *mask;
+    void *image;
+    float *z;
+    uint64_t buffer_bytes; /* for the out-of-memory message */
+    size_t nfiles;
+    struct {
+        unsigned bit; /* GLS_OUT_* */
+        char path[GLS_FRAME_PATH];
+    } files[4];
+    char record[GLS_FRAME_PATH], record_text[1024];
+} gls_frame_files;
+
+/* A zeroed job with its run and destroy set, or NULL. */
+gls_frame_files *gls_frame_files_new(void);
+
+/* The line said when a camera frame's buffers cannot be had. */
+void gls_frame_oom_message(char *buf, size_t len, const char *name, uint32_t w, uint32_t h, uint64_t bytes);
+
+#endif
