@@ -18,8 +18,12 @@
 #define GLS_MAX_OPEN 128
 /* Statements one object may run inside repeat loops, iterations counted
  * too, and all the objects of a compile together (spec/language.md 9). */
+#ifndef GLS_MAX_UNROLLED
 #define GLS_MAX_UNROLLED (1u << 22)
+#endif
+#ifndef GLS_MAX_UNROLLED_TOTAL
 #define GLS_MAX_UNROLLED_TOTAL (1ull << 26)
+#endif
 
 enum { VAL_NUM, VAL_WORD, VAL_STR, VAL_ERR };
 

@@ -125,7 +125,10 @@ long_render() { # NAME UNITS COUNT_RE PLAY_OPTIONS...
     $PLAY $S -o "$t/long" --aa 4096 --size 640x480 --outputs image "$@" 2>"$t/err_$name" &
     pid=$!
     i=0
-    while [ $i -lt 240 ] && ! grep -q "estimated render time" "$t/err_$name"; do sleep 0.25; i=$((i + 1)); done
+    # up to 150 s: the plan at 4096^2 (a generator search over 16.7
+    # million candidates) and the first tiles take seconds natively; under
+    # ASan on a loaded machine a CI run had printed nothing after 60 s
+    while [ $i -lt 600 ] && ! grep -q "estimated render time" "$t/err_$name"; do sleep 0.25; i=$((i + 1)); done
     kill "$pid" 2>/dev/null
     wait "$pid" 2>/dev/null
     grep -q "^glsplay: note: estimated render time [0-9a-z ]*: 1 camera frame x $count anti-aliasing $units x [0-9.]* [mu]*s (measured on the first [0-9]* $units; --explain shows the plan)\$" \
