@@ -23,20 +23,6 @@ static int fail(char *err, size_t errlen, const char *path, unsigned line, const
     return -1;
 }
 
-/* Unit quaternion (x, y, z, w) -> row-major rotation; -1 if its length
- * is off by more than 1e-4 (printed decimals), else normalised. */
-static int quat_to_R(double x, double y, double z, double w, double R[9])
-{
-    double n = sqrt(x * x + y * y + z * z + w * w);
-    if (!(fabs(n - 1) <= 1e-4))
-        return -1;
-    x /= n, y /= n, z /= n, w /= n;
-    R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - z * w), R[2] = 2 * (x * z + y * w);
-    R[3] = 2 * (x * y + z * w), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - x * w);
-    R[6] = 2 * (x * z - y * w), R[7] = 2 * (y * z + x * w), R[8] = 1 - 2 * (x * x + y * y);
-    return 0;
-}
-
 int gls_motion_read(const char *path, FILE *notes, gls_motion *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
@@ -112,7 +98,7 @@ int gls_motion_read(const char *path, FILE *notes, gls_motion *m, char *err, siz
             }
         } else {
             memcpy(RT + 9, v + 1, 3 * sizeof *v);
-            if (quat_to_R(v[4], v[5], v[6], v[7], RT)) {
+            if (gls_rotation_quat(v[4], v[5], v[6], v[7], RT)) {
                 fail(err, errlen, path, line, "quaternion (%s %s %s %s) is not of unit length", tok[4], tok[5],
                      tok[6], tok[7]);
                 goto out;

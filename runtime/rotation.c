@@ -86,3 +86,15 @@ void gls_rotation_rodrigues(const double r[3], double R[9])
         for (int j = 0; j < 3; j++)
             R[3 * i + j] = (i == j ? c : 0) + c1 * k[i] * k[j] + s * kx[3 * i + j];
 }
+
+int gls_rotation_quat(double x, double y, double z, double w, double R[9])
+{
+    double n = sqrt(x * x + y * y + z * z + w * w);
+    if (!(fabs(n - 1) <= 1e-4))
+        return -1;
+    x /= n, y /= n, z /= n, w /= n;
+    R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - z * w), R[2] = 2 * (x * z + y * w);
+    R[3] = 2 * (x * y + z * w), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - x * w);
+    R[6] = 2 * (x * z - y * w), R[7] = 2 * (y * z + x * w), R[8] = 1 - 2 * (x * x + y * y);
+    return 0;
+}

@@ -32,4 +32,8 @@ int gls_rotation_polar(const double R[9], double Q[9]);
  *     R = cos t I + (1 - cos t) k k^T + sin t [k]x,  t = |r|, k = r / t,
  * row-major; I for r = 0. */
 void gls_rotation_rodrigues(const double r[3], double R[9]);
+/* The rotation of a quaternion (x, y, z, w), w last as TUM writes it:
+ * row-major R.  Returns -1 if its length is off 1 by more than 1e-4
+ * (more than printed decimals explain), else 0 (normalised first). */
+int gls_rotation_quat(double x, double y, double z, double w, double R[9]);
 #endif

@@ -20,6 +20,8 @@ struct gls_traj {
     unsigned line;
     FILE *notes;
     int noted; /* the note on a re-orthonormalised R was given */
+    int fmt;        /* values a line: 14 glsroad, 12 KITTI, 8 TUM; 0 before the first */
+    uint64_t rows;  /* data lines read (KITTI and TUM number frames by row) */
     int have_prev;
     uint64_t prev_frame;
     double prev_time;
@@ -90,6 +92,22 @@ static int parse_u64(const char *s, uint64_t *out)
     return 0;
 }
 
+/* R a rotation (gls_rotation_check, replaced in place by the nearest one
+ * within 1e-4): 0, or -1 with the error in err. */
+static int check_rotation(gls_traj *t, double R[9], char *err, size_t errlen)
+{
+    char why[300];
+    int rot = gls_rotation_check(R, why, sizeof why);
+    if (rot < 0)
+        return fail(t, err, errlen, "%s", why);
+    /* one note per file: a trajectory printed with few decimals would
+       repeat it on every line */
+    if (rot > 0 && t->notes && !t->noted++)
+        fprintf(t->notes, "%s:%u: note: %s (and on every later line where needed, without a note)\n", t->path,
+                t->line, why);
+    return 0;
+}
+
 int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
 {
     for (;;) {
@@ -116,35 +134,67 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
         int nt = gls_text_split(t->buf, "#", " \t\r\n\f\v", tok, 15);
         if (nt == 0)
             continue;
-        if (nt != 14)
-            return fail(t, err, errlen, "expected 14 values (frame time R[9] T[3]), got %s%d", nt == 15 ? "more than " : "",
-                        nt == 15 ? 14 : nt);
-        if (parse_u64(tok[0], &p->frame))
+        /* the first line's count tells the format (trajectory.h) */
+        if (!t->fmt && (nt == 14 || nt == 12 || nt == 8))
+            t->fmt = nt;
+        if (!t->fmt)
+            return fail(t, err, errlen,
+                        "expected 14 values (frame time R[9] T[3]), 12 (KITTI: [R|t] row-major) or 8 (TUM: time tx ty "
+                        "tz qx qy qz qw), got %s%d",
+                        nt == 15 ? "more than " : "", nt == 15 ? 14 : nt);
+        if (nt != t->fmt)
+            return fail(t, err, errlen, "expected %d values (%s), got %s%d", t->fmt,
+                        t->fmt == 14 ? "frame time R[9] T[3]"
+                        : t->fmt == 12 ? "KITTI, like the first line: [R|t] row-major"
+                                       : "TUM, like the first line: time tx ty tz qx qy qz qw",
+                        nt == 15 ? "more than " : "", nt == 15 ? 14 : nt);
+        int first_value = t->fmt == 14 ? 1 : 0;
+        if (t->fmt == 14 && parse_u64(tok[0], &p->frame))
             return fail(t, err, errlen, "frame '%s' is not a whole number", tok[0]);
         double v[13];
-        for (int i = 0; i < 13; i++) {
-            const char *why = gls_parse_double(tok[i + 1], &v[i]);
+        for (int i = first_value; i < nt; i++) {
+            const char *why = gls_parse_double(tok[i], &v[i - first_value]);
             if (why)
-                return fail(t, err, errlen, "value %d ('%s') %s", i + 2, tok[i + 1], why);
+                return fail(t, err, errlen, "value %d ('%s') %s", i + 1, tok[i], why);
         }
-        p->time = v[0];
-        memcpy(p->R, v + 1, sizeof p->R);
-        memcpy(p->T, v + 10, sizeof p->T);
+        if (t->fmt == 14) {
+            p->time = v[0];
+            memcpy(p->R, v + 1, sizeof p->R);
+            memcpy(p->T, v + 10, sizeof p->T);
+        } else {
+            /* KITTI and TUM give the camera's pose in the world,
+             * P_world = Rw P_cam + c: frame = row, and the world -> rig
+             * pose is R = Rw^T, T = -Rw^T c (after Rw is checked) */
+            double Rw[9], c[3];
+            p->frame = t->rows;
+            if (t->fmt == 12) {
+                p->time = (double)t->rows; /* KITTI poses carry no time */
+                for (int r = 0; r < 3; r++) {
+                    memcpy(Rw + 3 * r, v + 4 * r, 3 * sizeof *v);
+                    c[r] = v[4 * r + 3];
+                }
+            } else {
+                p->time = v[0];
+                memcpy(c, v + 1, sizeof c);
+                if (gls_rotation_quat(v[4], v[5], v[6], v[7], Rw))
+                    return fail(t, err, errlen, "quaternion (%s %s %s %s) is not of unit length", tok[4], tok[5],
+                                tok[6], tok[7]);
+            }
+            if (check_rotation(t, Rw, err, errlen))
+                return -1;
+            rm_transpose(Rw, p->R);
+            rv3 T = rm_apply(p->R, rv(c[0], c[1], c[2]));
+            p->T[0] = -T.x, p->T[1] = -T.y, p->T[2] = -T.z;
+        }
+        t->rows++;
         p->line = t->line;
         if (t->have_prev && !(p->frame > t->prev_frame))
             return fail(t, err, errlen, "frame %llu does not follow frame %llu: frames must increase",
                         (unsigned long long)p->frame, (unsigned long long)t->prev_frame);
         if (t->have_prev && !(p->time > t->prev_time))
             return fail(t, err, errlen, "time %.17g is not after the previous frame's %.17g", p->time, t->prev_time);
-        char why[300];
-        int rot = gls_rotation_check(p->R, why, sizeof why);
-        if (rot < 0)
-            return fail(t, err, errlen, "%s", why);
-        /* one note per file: a trajectory printed with few decimals would
-           repeat it on every line */
-        if (rot > 0 && t->notes && !t->noted++)
-            fprintf(t->notes, "%s:%u: note: %s (and on every later line where needed, without a note)\n", t->path,
-                    t->line, why);
+        if (t->fmt == 14 && check_rotation(t, p->R, err, errlen))
+            return -1;
         t->have_prev = 1;
         t->prev_frame = p->frame;
         t->prev_time = p->time;

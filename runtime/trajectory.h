@@ -4,7 +4,11 @@
  * player can use it as it is.
  *
  * A trajectory line:  FRAME TIME R00 R01 R02 R10 R11 R12 R20 R21 R22 T0 T1 T2
- * with P_rig = R * P_world + T (the camera-file convention).  A camera file
+ * with P_rig = R * P_world + T (the camera-file convention).  KITTI (12
+ * values: [Rw | c] row-major) and TUM (8: time c qx qy qz qw) lines are
+ * read too, told apart by the first line's count: camera-to-world poses,
+ * returned as R = Rw^T, T = -Rw^T c, frame = line number among lines with
+ * values (spec/road.md, "KITTI and TUM trajectories").  A camera file
  * used with a trajectory gives that camera's pose relative to the rig:
  * P_cam = R_cam * P_rig + T_cam.  So in each frame
  *     R_cam_world = R_cam * R,   T_cam_world = R_cam * T + T_cam.

@@ -1,5 +1,7 @@
 /* The trajectory reader and pose composition (runtime/trajectory.c). */
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
 #include "check.h"
@@ -70,7 +72,17 @@ static void test_errors(void)
     snprintf(t, sizeof t, "0 0 %s 0 0 0\n1 0.04 %s 0 0\n", I, I);
     expect_error("count.txt", t, "count.txt:2: error: expected 14 values (frame time R[9] T[3]), got 13");
     snprintf(t, sizeof t, "0 0 %s 0 0 0 9\n", I);
-    expect_error("count2.txt", t, "count2.txt:1: error: expected 14 values (frame time R[9] T[3]), got more than 14");
+    expect_error("count2.txt", t,
+                 "count2.txt:1: error: expected 14 values (frame time R[9] T[3]), 12 (KITTI: [R|t] row-major) or 8 "
+                 "(TUM: time tx ty tz qx qy qz qw), got more than 14");
+    expect_error("kitti_count.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1\n",
+                 "kitti_count.txt:2: error: expected 12 values (KITTI, like the first line: [R|t] row-major), got 11");
+    expect_error("tum_quat.txt", "0.5 1 2 3 0 0 0 1\n0.6 1 2 3 0 0 0.1 1\n",
+                 "tum_quat.txt:2: error: quaternion (0 0 0.1 1) is not of unit length");
+    expect_error("tum_time.txt", "0.5 1 2 3 0 0 0 1\n0.5 1 2 3 0 0 0 1\n",
+                 "tum_time.txt:2: error: time 0.5 is not after the previous frame's 0.5");
+    expect_error("kitti_mirror.txt", "-1 0 0 0 0 1 0 0 0 0 1 0\n",
+                 "kitti_mirror.txt:1: error: R has determinant -1; a rotation needs +1 (a reflection swaps handedness)");
     snprintf(t, sizeof t, "-1 0 %s 0 0 0\n", I);
     expect_error("neg.txt", t, "neg.txt:1: error: frame '-1' is not a whole number");
     snprintf(t, sizeof t, "1.5 0 %s 0 0 0\n", I);
@@ -95,6 +107,78 @@ static void test_errors(void)
     snprintf(t, sizeof t, "%s/none.txt", dir);
     CHECK(gls_traj_open(t, NULL, err, sizeof err) == NULL);
     CHECK_MSG(strstr(err, "none.txt: error: cannot open: No such file") != NULL, "%s", err);
+}
+
+/* KITTI and TUM rows give the camera's pose in the world (P_world = Rw
+ * P_cam + c); the reader turns them into world -> rig poses, R = Rw^T,
+ * T = -Rw^T c, numbering frames by row.  The rows here are written from
+ * known world -> rig poses (R, T) by the test's own arithmetic, the
+ * quaternion by the matrix -> quaternion direction (the reader goes the
+ * other way), and must read back as (R, T). */
+static void test_kitti_tum(void)
+{
+    double R[3][9], T[3][3];
+    double r0[3] = {0.3, -1.1, 0.7}, r1[3] = {-2.5, 0.4, 0.2}, r2[3] = {0.01, 3.0, -0.05}; /* angle near pi too */
+    gls_rotation_rodrigues(r0, R[0]), gls_rotation_rodrigues(r1, R[1]), gls_rotation_rodrigues(r2, R[2]);
+    double Tv[3][3] = {{1.5, -2, 30}, {1e6, 2e6, -3.5}, {0, 0, 0.25}};
+    char kitti[2048] = "# KITTI\n", tum[2048] = "# TUM\n";
+    for (int k = 0; k < 3; k++) {
+        double Rw[9], c[3];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                Rw[3 * i + j] = R[k][3 * j + i];
+        for (int i = 0; i < 3; i++)
+            c[i] = -(Rw[3 * i] * Tv[k][0] + Rw[3 * i + 1] * Tv[k][1] + Rw[3 * i + 2] * Tv[k][2]);
+        memcpy(T[k], Tv[k], sizeof T[k]);
+        char line[512];
+        snprintf(line, sizeof line, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", Rw[0],
+                 Rw[1], Rw[2], c[0], Rw[3], Rw[4], Rw[5], c[1], Rw[6], Rw[7], Rw[8], c[2]);
+        strcat(kitti, line);
+        /* matrix -> quaternion (Shepperd: from the largest of w, x, y, z) */
+        double tr = Rw[0] + Rw[4] + Rw[8], q[4]; /* x y z w */
+        if (tr > 0) {
+            double S = sqrt(tr + 1) * 2;
+            q[3] = S / 4, q[0] = (Rw[7] - Rw[5]) / S, q[1] = (Rw[2] - Rw[6]) / S, q[2] = (Rw[3] - Rw[1]) / S;
+        } else if (Rw[0] > Rw[4] && Rw[0] > Rw[8]) {
+            double S = sqrt(1 + Rw[0] - Rw[4] - Rw[8]) * 2;
+            q[3] = (Rw[7] - Rw[5]) / S, q[0] = S / 4, q[1] = (Rw[1] + Rw[3]) / S, q[2] = (Rw[2] + Rw[6]) / S;
+        } else if (Rw[4] > Rw[8]) {
+            double S = sqrt(1 + Rw[4] - Rw[0] - Rw[8]) * 2;
+            q[3] = (Rw[2] - Rw[6]) / S, q[0] = (Rw[1] + Rw[3]) / S, q[1] = S / 4, q[2] = (Rw[5] + Rw[7]) / S;
+        } else {
+            double S = sqrt(1 + Rw[8] - Rw[0] - Rw[4]) * 2;
+            q[3] = (Rw[3] - Rw[1]) / S, q[0] = (Rw[2] + Rw[6]) / S, q[1] = (Rw[5] + Rw[7]) / S, q[2] = S / 4;
+        }
+        snprintf(line, sizeof line, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", 100.25 + 0.1 * k, c[0], c[1],
+                 c[2], q[0], q[1], q[2], q[3]);
+        strcat(tum, line);
+    }
+    const char *paths[2] = {NULL, NULL};
+    char kp[160], tp[160];
+    snprintf(kp, sizeof kp, "%s", write_file("kitti.txt", kitti));
+    snprintf(tp, sizeof tp, "%s", write_file("tum.txt", tum));
+    paths[0] = kp, paths[1] = tp;
+    for (int f = 0; f < 2; f++) {
+        char err[512];
+        gls_traj *t = gls_traj_open(paths[f], NULL, err, sizeof err);
+        CHECK(t != NULL);
+        gls_traj_pose p;
+        for (int k = 0; k < 3; k++) {
+            CHECK_MSG(gls_traj_next(t, &p, err, sizeof err) == 1, "%s", err);
+            CHECK(p.frame == (uint64_t)k && p.line == (unsigned)k + 2);
+            CHECK(f == 0 ? p.time == k : fabs(p.time - (100.25 + 0.1 * k)) < 1e-12);
+            double e = 0;
+            for (int i = 0; i < 9; i++)
+                e = fmax(e, fabs(p.R[i] - R[k][i]));
+            /* T comes back through -Rw^T c: rounding relative to |T| */
+            double n = sqrt(T[k][0] * T[k][0] + T[k][1] * T[k][1] + T[k][2] * T[k][2]);
+            for (int i = 0; i < 3; i++)
+                e = fmax(e, fabs(p.T[i] - T[k][i]) / fmax(1, n));
+            CHECK_MSG(e < 1e-12, "%s frame %d: largest difference %g", f ? "TUM" : "KITTI", k, e);
+        }
+        CHECK(gls_traj_next(t, &p, err, sizeof err) == 0);
+        gls_traj_close(t);
+    }
 }
 
 /* Rotations printed with 5 decimals are re-orthonormalised, with one note
@@ -230,6 +314,7 @@ int main(void)
         return 1;
     RUN(test_read);
     RUN(test_errors);
+    RUN(test_kitti_tum);
     RUN(test_rotation_tolerance);
     RUN(test_compose);
     RUN(test_range);
