@@ -154,7 +154,7 @@ $(B)/gen/lexer.c: compiler/lexer.re $(B)/gen/grammar.h
 # lemon leaves grammar.h alone when its content would not change: touch it,
 # or it stays older than grammar.y and the grammar is made again on every
 # run (and everything that includes grammar.h recompiled).
-$(B)/gen/grammar.c $(B)/gen/grammar.h: compiler/grammar.y
+$(B)/gen/grammar.c $(B)/gen/grammar.h &: compiler/grammar.y
 	@mkdir -p $(B)/gen
 	cp compiler/grammar.y $(B)/gen/grammar.y
 	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y && touch grammar.h

@@ -118,6 +118,16 @@ for gen, src in (("compiler/lexer.re", "gen/lexer.c"), ("compiler/grammar.y", "g
         print("ok " + name)
     else:
         print("FAIL %s: touching it does not recompile %s/%s" % (name, B, src))
+# lemon writes grammar.c and grammar.h in one run: under -j the recipe
+# must run once (two copies raced on gen/grammar.y and failed a CI build)
+p = subprocess.run(["make", "--no-print-directory", "-n", "-j2", "-W", "compiler/grammar.y", "B=" + B,
+                    os.path.join(B, "gen/grammar.c"), os.path.join(B, "gen/grammar.h")],
+                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+runs = sum(1 for line in p.stdout.splitlines() if line.lstrip().startswith("cd ") and "lemon" in line)
+if p.returncode == 0 and runs == 1:
+    print("ok build_deps_grammar_made_once")
+else:
+    print("FAIL build_deps_grammar_made_once: make -n -j2 runs lemon %d times (rc %d)" % (runs, p.returncode))
 if before:
     print("note: build_deps: out of date before the test, not judged: %s" % " ".join(sorted(before)))
 PYEOF
