@@ -153,11 +153,16 @@ $(B)/gen/lexer.c: compiler/lexer.re $(B)/gen/grammar.h
 	re2c --no-generation-date --no-version -W -o $@ $<
 # lemon leaves grammar.h alone when its content would not change: touch it,
 # or it stays older than grammar.y and the grammar is made again on every
-# run (and everything that includes grammar.h recompiled).
-$(B)/gen/grammar.c $(B)/gen/grammar.h &: compiler/grammar.y
+# run (and everything that includes grammar.h recompiled).  One rule makes
+# both files, with grammar.c as its only target: a rule with two targets
+# runs twice under -j (two copies raced on gen/grammar.y), and GNU make
+# 4.3's grouped targets (&:) hide the recompile of grammar.c from make -n.
+$(B)/gen/grammar.c: compiler/grammar.y
 	@mkdir -p $(B)/gen
 	cp compiler/grammar.y $(B)/gen/grammar.y
 	cd $(B)/gen && lemon -q -T/usr/share/lemon/lempar.c grammar.y && touch grammar.h
+$(B)/gen/grammar.h: $(B)/gen/grammar.c
+	@test -f $@ || { rm -f $<; $(MAKE) --no-print-directory $<; }
 $(B)/gen/%.o: $(B)/gen/%.c
 	$(CC) $(CFLAGS) $(INC_compiler) -Wno-unused-parameter -Wno-unused-variable $(DEPFLAGS) -c $< -o $@
 $(COMPILER_OBJ): | $(B)/gen/grammar.h
