@@ -12,7 +12,8 @@
 _Static_assert(GLS_FEAT_TEXTURES == 1u << 0 && GLS_FEAT_ALPHA_TEST == 1u << 1 &&
                    GLS_FEAT_VERTEX_COLOR == 1u << 2 && GLS_FEAT_TEXCOORDS == 1u << 3 &&
                    GLS_FEAT_HOMOGENEOUS == 1u << 4 && GLS_FEAT_MODULATE == 1u << 5 &&
-                   GLS_FEAT_REPLACE == 1u << 6 && GLS_FEAT_TRANSLUCENT == 1u << 7,
+                   GLS_FEAT_REPLACE == 1u << 6 && GLS_FEAT_TRANSLUCENT == 1u << 7 &&
+                   GLS_FEAT_MARKS == 1u << 8,
                "feature bits moved: update effect[]");
 static const char *const effect[32] = {
     [0] = "GL_TEXTURE_2D, RGBA8 textures with mipmaps (GL_LINEAR_MIPMAP_LINEAR)",
@@ -23,6 +24,7 @@ static const char *const effect[32] = {
     [5] = "glTexEnv GL_MODULATE (texture times colour)",
     [6] = "glTexEnv GL_REPLACE (texture colour only)",
     [7] = "none: alpha is not blended, surfaces are drawn opaque (outputs are RGB)",
+    [8] = "none: landmarks draw nothing (--outputs landmarks lists them)",
 };
 
 /* The backend asked for and what it gave (spec/backends.md). */
