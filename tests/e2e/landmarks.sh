@@ -74,6 +74,50 @@ else
     fail landmarks_usage "exit $rc: $(cat "$t/err")"
 fi
 
+# the road example (spec/road.md "Landmarks"): glsroad marks each dash's
+# corners at its band's corner vertices, trees and its car carry marks,
+# and examples/road/render.sh writes landmarks; near dashes' visible
+# corners are within 2 px of painted pixels
+if ROAD_FRAMES=0 sh examples/road/render.sh "$BIN" "$t/road" >"$t/road.log" 2>&1; then
+    sc="$t/road/road/road.scene"
+    nd=$(grep -c '^mark("b[0-9]*\.dash[0-9]*\.\(begin\|end\)\.\(left\|right\)", ' "$sc")
+    missing=$(sed -n 's/^mark("b[0-9]*\.dash[0-9]*\.[a-z]*\.[a-z]*", \(.*\));$/vert(\1);/p' "$sc" | while read -r v; do
+        grep -qF "$v" "$sc" || echo "$v"; done | head -3)
+    if [ "$nd" -gt 0 ] && [ $((nd % 4)) -eq 0 ] && [ -z "$missing" ] &&
+        grep -qx 'mark("top", 0, 7, 0);' "$t/road/road/roadobj/Tree.scene" &&
+        grep -qx 'mark("front.left", 0.9, 0, 2.2);' "$t/road/road/roadobj/Car.scene"; then
+        ok landmarks_road_scene
+    else
+        fail landmarks_road_scene "$nd dash corners; not at a band vertex: $missing"
+    fi
+    if [ -f "$t/road/left/landmarks_000000.csv" ] && [ -f "$t/road/right/landmarks_000000.csv" ] &&
+        $PY - "$t/road/left" <<'PY'
+import csv, sys
+import cv2
+import numpy as np
+d = sys.argv[1]
+im = cv2.imread(d + "/image_000000.png")
+rows = list(csv.DictReader(open(d + "/landmarks_000000.csv", newline="")))
+near = [r for r in rows if ".dash" in r["name"] and r["visible"] == "1" and float(r["depth"]) < 40]
+bad = []
+for r in near:
+    i, j = int(np.floor(float(r["u"]) + 0.5)), int(np.floor(float(r["v"]) + 0.5))
+    if im[max(j - 2, 0):j + 3, max(i - 2, 0):i + 3].min(axis=2).max() < 200:
+        bad.append(r["name"])
+trees = [r for r in rows if "roadobj.Tree#" in r["path"]]
+if len(near) < 8 or bad or not trees:
+    print("  %d near visible dash corners, %d not on a painted pixel: %s; %d tree marks" % (len(near), len(bad), bad[:3], len(trees)))
+    sys.exit(1)
+PY
+    then
+        ok landmarks_road_example
+    else
+        fail landmarks_road_example "see above"
+    fi
+else
+    fail landmarks_road_example "render.sh failed: $(tail -3 "$t/road.log")"
+fi
+
 if $PY -c 'import cv2, numpy' 2>/dev/null; then
     mkdir "$t/py"
     $PY tests/py/check_landmarks.py "$BIN" "$t/py" || fail landmarks_check "check_landmarks.py exited with status $?"
