@@ -79,47 +79,59 @@ static int cmp_str(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* The instance names of the units (units[0..nu)), sorted, each once (a
- * library may name calls alike in different objects; in a scene the
- * names are unique, instnames.c).  0, or -1 when out of memory. */
-static int add_instance_names(gls_bundle *b, gls_unit **units, uint32_t nu)
+/* The names of one kind a unit gives (instance names, landmark names). */
+typedef const gls_ref *(*names_of)(const gls_unit *u, uint32_t *n);
+static const gls_ref *instnames_of(const gls_unit *u, uint32_t *n) { *n = u->ninstnames; return u->instnames; }
+static const gls_ref *marknames_of(const gls_unit *u, uint32_t *n) { *n = u->nmarknames; return u->marknames; }
+
+/* A name table of the bundle (*out, *nout) from the units' names of one
+ * kind (units[0..nu), get): sorted, each once (a library may name calls
+ * alike in different objects, and objects place landmarks of one name;
+ * in a scene instance names are unique, instnames.c).  0, or -1 when out
+ * of memory. */
+static int add_names(char ***out, uint32_t *nout, gls_unit **units, uint32_t nu, names_of get)
 {
     size_t total = 0;
-    for (uint32_t i = 0; i < nu; i++)
-        total += units[i]->ninstnames;
+    uint32_t n;
+    for (uint32_t i = 0; i < nu; i++) {
+        get(units[i], &n);
+        total += n;
+    }
     if (!total)
         return 0;
     char **names = malloc(total * sizeof *names);
     if (!names)
         return -1;
     size_t k = 0;
-    for (uint32_t i = 0; i < nu; i++)
-        for (uint32_t j = 0; j < units[i]->ninstnames; j++)
-            names[k++] = units[i]->instnames[j].name;
+    for (uint32_t i = 0; i < nu; i++) {
+        const gls_ref *refs = get(units[i], &n);
+        for (uint32_t j = 0; j < n; j++)
+            names[k++] = refs[j].name;
+    }
     qsort(names, total, sizeof *names, cmp_str);
-    b->instnames = calloc(total, sizeof *b->instnames);
-    if (!b->instnames) {
+    *out = calloc(total, sizeof **out);
+    if (!*out) {
         free(names);
         return -1;
     }
     for (size_t i = 0; i < total; i++) {
-        if (b->ninstnames && strcmp(b->instnames[b->ninstnames - 1], names[i]) == 0)
+        if (*nout && strcmp((*out)[*nout - 1], names[i]) == 0)
             continue;
-        if (!(b->instnames[b->ninstnames] = strdup(names[i]))) {
+        if (!((*out)[*nout] = strdup(names[i]))) {
             free(names);
             return -1;
         }
-        b->ninstnames++;
+        (*nout)++;
     }
     free(names);
     return 0;
 }
 
-/* The index of instance name s in b's sorted table (it is there). */
-static uint32_t find_instname(const gls_bundle *b, const char *s)
+/* The index of name s in the sorted table names[0..n) (it is there). */
+static uint32_t find_name(char *const *names, uint32_t n, const char *s)
 {
-    char *const *hit = bsearch(&s, b->instnames, b->ninstnames, sizeof *b->instnames, cmp_str);
-    return hit ? (uint32_t)(hit - b->instnames) : GLS_NONE;
+    char *const *hit = bsearch(&s, names, n, sizeof *names, cmp_str);
+    return hit ? (uint32_t)(hit - names) : GLS_NONE;
 }
 
 /* Build the bundle from every unit with state 2 and every loaded texture
@@ -176,7 +188,8 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
             goto oom;
         memcpy(b->textures[i].rgba, texs[i]->tex.rgba, (size_t)texs[i]->tex.width * texs[i]->tex.height * 4);
     }
-    if (add_instance_names(b, units, nu))
+    if (add_names(&b->instnames, &b->ninstnames, units, nu, instnames_of) ||
+        add_names(&b->marknames, &b->nmarknames, units, nu, marknames_of))
         goto oom;
     b->pos = malloc(npos * sizeof *b->pos + 1);
     b->col = malloc(ncol * sizeof *b->col + 1);
@@ -215,7 +228,8 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
                 case GLS_KIND_FIRST_POS: *v += p0; break;
                 case GLS_KIND_FIRST_COL: if (*v != GLS_NONE) *v += c0; break;
                 case GLS_KIND_FIRST_TC: if (*v != GLS_NONE) *v += t0; break;
-                case GLS_KIND_INSTNAME: *v = find_instname(b, u->instnames[*v].name); break;
+                case GLS_KIND_INSTNAME: *v = find_name(b->instnames, b->ninstnames, u->instnames[*v].name); break;
+                case GLS_KIND_MARKNAME: *v = find_name(b->marknames, b->nmarknames, u->marknames[*v].name); break;
                 case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
                 case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
                     break; /* not an index */

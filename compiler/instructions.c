@@ -310,6 +310,48 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     }
 }
 
+/* mark("name", x, y, z): a landmark at (x, y, z) under the current
+ * transform, drawing nothing (spec/language.md 7).  Its name identifies
+ * it within the object, so an object places each name once: the second
+ * place is an error, with a note at the first (a mark in a loop body
+ * meets it on the second iteration; spec/language.md says what to do). */
+static void h_mark(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    gls_unit *u = ctx->u;
+    const char *s = a[0].s + 1;
+    size_t len = a[0].len - 2;
+    if (!gls_valid_mark_name(s, len)) {
+        ERR(ctx, a[0].line, a[0].col,
+            "%.*s is not a valid landmark name (1 to %u letters, digits, '_', '.' or '-', like \"post.top\")",
+            (int)a[0].len, a[0].s, GLS_MAX_MARK_NAME_BYTES);
+        return;
+    }
+    for (uint32_t i = 0; i < u->nmarknames; i++)
+        if (strlen(u->marknames[i].name) == len && memcmp(u->marknames[i].name, s, len) == 0) {
+            gls_loc was = u->marknames[i].loc;
+            if (was.line == a[0].line && was.col == a[0].col) /* the same mark, run again by a loop */
+                ERR(ctx, a[0].line, a[0].col,
+                    "landmark %.*s is placed on every iteration of this loop, but an object places a name once "
+                    "(call an object that places it: its rows differ by path)",
+                    (int)a[0].len, a[0].s);
+            else {
+                ERR(ctx, a[0].line, a[0].col, "landmark %.*s is placed twice in this object", (int)a[0].len, a[0].s);
+                gls_note_at(ctx->d, was, "%.*s is first placed here", (int)a[0].len, a[0].s);
+            }
+            return;
+        }
+    gls_insn in = {.op = GLS_OP_MARK};
+    in.d[GLS_ARG_MARK_X] = a[1].num, in.d[GLS_ARG_MARK_Y] = a[2].num, in.d[GLS_ARG_MARK_Z] = a[3].num;
+    in.u[GLS_ARG_MARK_NAME] = gls_unit_add_ref(&u->marknames, &u->nmarknames, &u->marknames_cap, s, len,
+                                               gls_tok_loc(ctx, a[0].line, a[0].col));
+    if (in.u[GLS_ARG_MARK_NAME] == GLS_NONE) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return;
+    }
+    sema_emit(ctx, &in, name.line);
+}
+
 /* The instructions (sema.h says what each field means). */
 const sema_instr sema_instrs[] = {
     {"vert", 1, 4, "nnnn", WHERE_PRIM, h_vert},
@@ -326,5 +368,6 @@ const sema_instr sema_instrs[] = {
     {"push", 0, 0, "", WHERE_OUTSIDE, h_push},
     {"pop", 0, 0, "", WHERE_OUTSIDE, h_pop},
     {"call", 1, 2, "ss", WHERE_OUTSIDE, h_call},
+    {"mark", 4, 4, "snnn", WHERE_OUTSIDE, h_mark},
 };
 const size_t sema_ninstrs = sizeof sema_instrs / sizeof sema_instrs[0];

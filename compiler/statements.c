@@ -8,7 +8,7 @@
 #include "sema.h"
 
 const char *const sema_words[] = {"vert",  "col", "tex",   "color",     "texmode", "texture", "notexture",
-                                  "trans", "rot", "scale", "transform", "push",    "pop",     "call",
+                                  "trans", "rot", "scale", "transform", "push",    "pop",     "call",    "mark",
                                   "poly",  "qstrip", "tstrip", "tfan",  "const",   "param",   "repeat"};
 const size_t sema_nwords = sizeof sema_words / sizeof sema_words[0];
 
@@ -28,6 +28,7 @@ const gls_alias sema_aliases[] = {
     {"notex", "notexture"},     {"untexture", "notexture"}, {"disabletexture", "notexture"},
     {"pushmatrix", "push"},     {"save", "push"},           {"popmatrix", "pop"},          {"restore", "pop"},
     {"multmatrix", "transform"}, {"matrix", "transform"},
+    {"landmark", "mark"},       {"marker", "mark"},         {"keypoint", "mark"},
     {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},
     {"define", "const"},        {"let", "const"},           {"var", "const"},
     {"for", "repeat"},          {"loop", "repeat"},         {"while", "repeat"},           {"times", "repeat"},

@@ -27,6 +27,9 @@ void gls_unit_free(gls_unit *u)
     for (uint32_t i = 0; i < u->ninstnames; i++)
         free(u->instnames[i].name);
     free(u->instnames);
+    for (uint32_t i = 0; i < u->nmarknames; i++)
+        free(u->marknames[i].name);
+    free(u->marknames);
     free(u->refs);
     free(u->texrefs);
     free(u->pos);

@@ -6,6 +6,7 @@
  *   TEXTURE                      -> index into unit->texrefs
  *   FIRST_POS, FIRST_COL, FIRST_TC -> indices into the unit's vertex arrays
  *   INSTNAME (calln)             -> index into unit->instnames
+ *   MARKNAME (mark)              -> index into unit->marknames
  */
 #ifndef GLS_UNIT_H
 #define GLS_UNIT_H
@@ -56,6 +57,10 @@ typedef struct gls_unit {
                                 where each is written, in CALLN order     */
     uint32_t ninstnames;
     size_t instnames_cap;
+    gls_ref *marknames;      /* landmark names of marks, with where each
+                                is written, in MARK order; unique         */
+    uint32_t nmarknames;
+    size_t marknames_cap;
     gls_vec4 *pos; uint32_t npos; size_t pos_cap;
     gls_rgba *col; uint32_t ncol; size_t col_cap;
     gls_st *tc;    uint32_t ntc;  size_t tc_cap;

@@ -27,7 +27,8 @@
     X(HOMOGENEOUS,  4, "homogeneous-w", "some vertex has w != 1")                 \
     X(MODULATE,     5, "modulate",      "texture mode modulate is used")          \
     X(REPLACE,      6, "replace",       "texture mode replace is used")           \
-    X(TRANSLUCENT,  7, "translucent",   "some colour has alpha < 1 (recorded; drawn opaque)")
+    X(TRANSLUCENT,  7, "translucent",   "some colour has alpha < 1 (recorded; drawn opaque)") \
+    X(MARKS,        8, "marks",         "some object places a landmark (mark; draws nothing)")
 
 enum {
 #define GLS_X_FEAT(e, bit, name, why) GLS_FEAT_##e = 1u << (bit),
@@ -53,6 +54,7 @@ extern const char *const gls_feature_why[32];
 #define GLS_MAX_PARAMS            32u            /* per template          */
 #define GLS_MAX_TEMPLATE_TEXT     (1u << 30)     /* source text, bytes    */
 #define GLS_MAX_INSTANCE_NAME_BYTES 64u          /* an instance's name    */
+#define GLS_MAX_MARK_NAME_BYTES   64u            /* a landmark's name     */
 /* Vertices the top-level object draws once every call is unrolled: calls
  * share objects, so a small bundle can describe an exponentially large
  * scene (A calls B twice, B calls C twice, ...).  2^26 vertices is about
@@ -122,6 +124,9 @@ typedef struct {
     uint32_t ninstnames;
     char **instnames;      /* instance names (calln), sorted, unique; each
                               on exactly one calln reached once from top  */
+    uint32_t nmarknames;
+    char **marknames;      /* landmark names (mark), sorted, unique; each
+                              placed by some mark, at most once per object */
 
     uint32_t npos, ncol, ntex;
     gls_vec4 *pos;         /* vertex positions                             */
@@ -201,6 +206,10 @@ void gls_bundle_free(gls_bundle *b);
 /* Is s[0..n) a valid instance name: [A-Za-z_][A-Za-z0-9_.-]*, at most
  * GLS_MAX_INSTANCE_NAME_BYTES long? */
 int gls_valid_instance_name(const char *s, size_t n);
+
+/* Is s[0..n) a valid landmark name: 1..GLS_MAX_MARK_NAME_BYTES bytes of
+ * [A-Za-z0-9_.-]? */
+int gls_valid_mark_name(const char *s, size_t n);
 
 /* Is s[0..n) a valid dotted name: identifiers ([A-Za-z_][A-Za-z0-9_]*)
  * joined by single dots, at most GLS_MAX_NAME_BYTES long? */

@@ -22,6 +22,8 @@ static uint32_t operand_features(const gls_bundle *b, const gls_insn *in, uint32
         return v != GLS_NONE ? GLS_FEAT_VERTEX_COLOR : 0;
     case GLS_KIND_FIRST_TC:
         return v != GLS_NONE ? GLS_FEAT_TEXCOORDS : 0;
+    case GLS_KIND_MARKNAME:
+        return GLS_FEAT_MARKS;
     case GLS_KIND_NUM:
     case GLS_KIND_ANGLE:
     case GLS_KIND_COMPONENT:
@@ -108,6 +110,9 @@ void gls_bundle_free(gls_bundle *b)
     for (uint32_t i = 0; b->instnames && i < b->ninstnames; i++)
         free(b->instnames[i]);
     free(b->instnames);
+    for (uint32_t i = 0; b->marknames && i < b->nmarknames; i++)
+        free(b->marknames[i]);
+    free(b->marknames);
     free(b->templates);
     free(b->objects);
     free(b->textures);

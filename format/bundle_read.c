@@ -280,32 +280,43 @@ fail:
     return -1;
 }
 
-/* INSTANCE_NAMES: present only when there is a name (a bundle without
- * names omits the section: one encoding per content); each name a u16
- * length and its bytes, checked by the validator. */
-static int read_instance_names(gls_bundle *b, cursor *c, gls_error *err)
+/* A name table (INSTANCE_NAMES, MARK_NAMES): present only when there is
+ * a name (a bundle without omits the section: one encoding per content);
+ * each name a u16 length and its bytes, checked by the validator.  what
+ * names the table in messages. */
+static int read_names(cursor *c, uint32_t *count, char ***names, const char *what, gls_error *err)
 {
     uint32_t n = get_u32(c);
     if (n == 0 || !count_fits(c, n, 3))
-        FAIL("instance name table: %u names do not fit in the section (an empty table is not written)", n);
-    b->instnames = calloc(n, sizeof *b->instnames);
-    if (!b->instnames)
+        FAIL("%s table: %u names do not fit in the section (an empty table is not written)", what, n);
+    *names = calloc(n, sizeof **names);
+    if (!*names)
         FAIL("out of memory");
-    b->ninstnames = n;
+    *count = n;
     for (uint32_t i = 0; i < n; i++) {
         const uint8_t *l = take(c, 2);
         uint32_t len = l ? (uint32_t)l[0] | (uint32_t)l[1] << 8 : 0;
         const uint8_t *q = take(c, len);
         if (!q || memchr(q, 0, len))
-            FAIL("instance name table: name %u is truncated or malformed", i);
-        if (!(b->instnames[i] = strndup((const char *)q, len)))
+            FAIL("%s table: name %u is truncated or malformed", what, i);
+        if (!((*names)[i] = strndup((const char *)q, len)))
             FAIL("out of memory");
     }
     if (c->pos != c->len)
-        FAIL("instance name table: %zu stray bytes at its end", c->len - c->pos);
+        FAIL("%s table: %zu stray bytes at its end", what, c->len - c->pos);
     return 0;
 fail:
     return -1;
+}
+
+static int read_instance_names(gls_bundle *b, cursor *c, gls_error *err)
+{
+    return read_names(c, &b->ninstnames, &b->instnames, "instance name", err);
+}
+
+static int read_mark_names(gls_bundle *b, cursor *c, gls_error *err)
+{
+    return read_names(c, &b->nmarknames, &b->marknames, "landmark name", err);
 }
 
 /* The checks that need only the first bytes of a bundle (have of them, at
@@ -372,10 +383,10 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
     }
     if (gls_le_get_u32(data + GLS_HDR_HSIZE) != GLS_HEADER_SIZE)
         FAIL("bundle header size %u is not %u", gls_le_get_u32(data + GLS_HDR_HSIZE), GLS_HEADER_SIZE);
-    /* every section, or all but the optional INSTANCE_NAMES */
+    /* every required section, and those of the optional ones present */
     const uint32_t nsect = gls_le_get_u32(data + GLS_HDR_NSECT);
-    if (nsect != GLS_SEC_COUNT && nsect != GLS_SEC_REQUIRED)
-        FAIL("bundle has %u sections, expected %u or %u", nsect, GLS_SEC_REQUIRED, GLS_SEC_COUNT);
+    if (nsect < GLS_SEC_REQUIRED || nsect > GLS_SEC_COUNT)
+        FAIL("bundle has %u sections, expected %u to %u", nsect, GLS_SEC_REQUIRED, GLS_SEC_COUNT);
     if (gls_le_get_u32(data + GLS_HDR_RES0) || gls_le_get_u32(data + GLS_HDR_RES1))
         FAIL("bundle header: reserved fields are not zero");
     b->version = version;
@@ -386,12 +397,18 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
     if (len < dir_end)
         FAIL("bundle is truncated inside its section directory");
     uint64_t expect_off = dir_end, total_raw = 0;
+    uint32_t ids[GLS_SEC_COUNT];
     for (unsigned s = 0; s < nsect; s++) {
         const uint8_t *e = data + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
         uint32_t id = gls_le_get_u32(e), codec = gls_le_get_u32(e + 4);
         uint64_t off = gls_le_get_u64(e + 8), stored = gls_le_get_u64(e + 16), rl = gls_le_get_u64(e + 24);
-        if (id != GLS_SEC_OBJECTS + s)
+        /* the required sections in order, then optional ones in id order */
+        if (s < GLS_SEC_REQUIRED && id != GLS_SEC_OBJECTS + s)
             FAIL("section directory entry %u has id %u, expected %u", s, id, GLS_SEC_OBJECTS + s);
+        if (s >= GLS_SEC_REQUIRED && (id <= ids[s - 1] || id > GLS_SEC_COUNT))
+            FAIL("section directory entry %u has id %u, expected an optional section after %u (up to %u)", s, id,
+                 ids[s - 1], GLS_SEC_COUNT);
+        ids[s] = id;
         if (off != expect_off || stored > len - off)
             FAIL("section %u: offset %llu / size %llu outside the file or not contiguous", id,
                  (unsigned long long)off, (unsigned long long)stored);
@@ -435,7 +452,7 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
     };
     for (unsigned s = 0; s < nsect; s++) {
         cursor c = {raw[s], rawlen[s], 0, 0};
-        if (readers[s](b, &c, err))
+        if (readers[ids[s] - GLS_SEC_OBJECTS](b, &c, err))
             goto fail;
     }
     for (unsigned s = 0; s < GLS_SEC_COUNT; s++)

@@ -127,20 +127,44 @@ static int sec_templates(const gls_bundle *bd, uint32_t feat, gls_buf *b)
     return 0;
 }
 
-/* INSTANCE_NAMES: the count, then each name; written only when there is
- * one (gls_bundle_write_codec), so bundles without stay as they were. */
-static int sec_instance_names(const gls_bundle *bd, uint32_t feat, gls_buf *b)
+/* A name table (INSTANCE_NAMES, MARK_NAMES): the count, then each name
+ * as a u16 length and its bytes. */
+static int put_names(gls_buf *b, char *const *names, uint32_t n)
 {
-    (void)feat;
-    if (put_u32(b, bd->ninstnames))
+    if (put_u32(b, n))
         return -1;
-    for (uint32_t i = 0; i < bd->ninstnames; i++) {
-        size_t n = strlen(bd->instnames[i]);
-        uint8_t len[2] = {(uint8_t)(n & 0xFF), (uint8_t)(n >> 8)};
-        if (gls_buf_put(b, len, 2) || gls_buf_put(b, bd->instnames[i], n))
+    for (uint32_t i = 0; i < n; i++) {
+        size_t k = strlen(names[i]);
+        uint8_t len[2] = {(uint8_t)(k & 0xFF), (uint8_t)(k >> 8)};
+        if (gls_buf_put(b, len, 2) || gls_buf_put(b, names[i], k))
             return -1;
     }
     return 0;
+}
+
+/* INSTANCE_NAMES and MARK_NAMES are written only when they have a name
+ * (section_present), so bundles without stay as they were. */
+static int sec_instance_names(const gls_bundle *bd, uint32_t feat, gls_buf *b)
+{
+    (void)feat;
+    return put_names(b, bd->instnames, bd->ninstnames);
+}
+
+static int sec_mark_names(const gls_bundle *bd, uint32_t feat, gls_buf *b)
+{
+    (void)feat;
+    return put_names(b, bd->marknames, bd->nmarknames);
+}
+
+/* Is section id (GLS_SEC_*) written: every required one, an optional one
+ * only when it holds a name. */
+static int section_present(const gls_bundle *bd, unsigned id)
+{
+    if (id == GLS_SEC_INSTANCE_NAMES)
+        return bd->ninstnames > 0;
+    if (id == GLS_SEC_MARK_NAMES)
+        return bd->nmarknames > 0;
+    return 1;
 }
 
 /* feat: the content's feature flags, computed once per write */
@@ -162,16 +186,20 @@ int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_
     gls_buf raw = {0};
     ZSTD_CCtx *cctx = ZSTD_createCCtx();
     const uint32_t feat = gls_bundle_features(bd);
-    const unsigned nsect = bd->ninstnames ? GLS_SEC_COUNT : GLS_SEC_REQUIRED;
+    unsigned nsect = 0;
+    for (unsigned id = GLS_SEC_OBJECTS; id <= GLS_SEC_COUNT; id++)
+        nsect += section_present(bd, id) != 0;
     uint8_t hdr[GLS_HEADER_SIZE + GLS_SEC_COUNT * GLS_DIRENT_SIZE];
     const size_t hdr_len = GLS_HEADER_SIZE + nsect * GLS_DIRENT_SIZE;
     memset(hdr, 0, sizeof hdr);
     if (!cctx || gls_buf_put(&file, hdr, hdr_len))
         goto oom;
 
-    for (unsigned s = 0; s < nsect; s++) {
+    for (unsigned s = 0, id = GLS_SEC_OBJECTS; id <= GLS_SEC_COUNT; id++) {
+        if (!section_present(bd, id))
+            continue;
         raw.len = 0;
-        if (fns[s](bd, feat, &raw))
+        if (fns[id - GLS_SEC_OBJECTS](bd, feat, &raw))
             goto oom;
         size_t bound = ZSTD_compressBound(raw.len);
         size_t off = file.len;
@@ -188,8 +216,8 @@ int gls_bundle_write_codec(const gls_bundle *bd, int codec, uint8_t **out, size_
             goto fail;
         }
         file.len = off + z;
-        uint8_t *e = hdr + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
-        gls_le_put_u32(e + 0, GLS_SEC_OBJECTS + s);
+        uint8_t *e = hdr + GLS_HEADER_SIZE + s++ * GLS_DIRENT_SIZE;
+        gls_le_put_u32(e + 0, id);
         gls_le_put_u32(e + 4, (uint32_t)codec);
         gls_le_put_u64(e + 8, off);
         gls_le_put_u64(e + 16, z);

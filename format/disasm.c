@@ -89,6 +89,9 @@ static void print_insn(const gls_bundle *b, const gls_insn *in, FILE *out)
         case GLS_KIND_INSTNAME: /* quoted, as the call wrote it */
             fprintf(out, " \"%s\"", b->instnames[v]);
             break;
+        case GLS_KIND_MARKNAME: /* quoted, as mark wrote it */
+            fprintf(out, " \"%s\"", b->marknames[v]);
+            break;
         case GLS_KIND_PRIMKIND:  /* printed as the name */
         case GLS_KIND_FIRST_POS: /* shown by the vertex lines */
         case GLS_KIND_FIRST_COL:
@@ -117,6 +120,17 @@ void gls_disassemble(const gls_bundle *b, FILE *out, int with_source)
             b->ntemplates, b->npos);
     if (b->ninstnames) /* a line only where there are names: other dumps stay as they were */
         fprintf(out, "instance names: %u\n", b->ninstnames);
+    if (b->nmarknames) { /* likewise: marks (instructions) and their distinct names */
+        uint64_t nmarks = 0;
+        for (uint32_t i = 0; i < b->nobjects; i++) {
+            size_t pos = 0;
+            gls_insn in;
+            while (pos < b->objects[i].code_len &&
+                   gls_insn_decode(b->objects[i].code, b->objects[i].code_len, &pos, &in) == 0)
+                nmarks += in.op == GLS_OP_MARK;
+        }
+        fprintf(out, "marks: %llu, landmark names: %u\n", (unsigned long long)nmarks, b->nmarknames);
+    }
 
     for (uint32_t i = 0; i < b->ntextures; i++) {
         const gls_texture *t = &b->textures[i];

@@ -41,9 +41,11 @@
  * sec_<name>() and bundle_read.c reads it with read_<name>(), in this
  * order (SOURCES needs the objects read before it).  TEMPLATES came with
  * format version 2, INSTANCE_NAMES later in version 2 (before its
- * release).  INSTANCE_NAMES is the one optional section: a bundle without
- * instance names has GLS_SEC_REQUIRED sections, so its bytes are those it
- * had before named instances existed; one with names has them all. */
+ * release), MARK_NAMES after it (landmarks, issue 15).  The last two are
+ * optional: each is present exactly when it has a name, so a bundle
+ * without instance names and landmarks has GLS_SEC_REQUIRED sections and
+ * the bytes it had before either existed; the directory lists the present
+ * ones in id order (bundle_read.c). */
 #define GLS_SECTIONS(X)                                                              \
     X(OBJECTS,   objects,   "names, instruction counts, bytecode")                 \
     X(SOURCES,   sources,   "source file names and per-instruction lines")         \
@@ -52,7 +54,8 @@
     X(COLORS,    colors,    "vertex colours, float32, delta+byte planes")          \
     X(TEXCOORDS, texcoords, "texture coordinates, float32, delta+byte planes")     \
     X(TEMPLATES, templates, "parameterised objects: names, parameters, source text")   \
-    X(INSTANCE_NAMES, instance_names, "names of named instances (calln), sorted")
+    X(INSTANCE_NAMES, instance_names, "names of named instances (calln), sorted") \
+    X(MARK_NAMES, mark_names, "names of landmarks (mark), sorted")
 
 enum {
     GLS_SEC_BEFORE_FIRST_ = 0,
@@ -62,8 +65,8 @@ enum {
     GLS_SEC_AFTER_LAST_
 };
 #define GLS_SEC_COUNT ((unsigned)GLS_SEC_AFTER_LAST_ - 1u)
-/* Sections every bundle has: all but INSTANCE_NAMES, which is written only
- * when the bundle has at least one instance name. */
+/* Sections every bundle has: all but INSTANCE_NAMES and MARK_NAMES, each
+ * written only when the bundle has at least one name of its kind. */
 #define GLS_SEC_REQUIRED ((unsigned)GLS_SEC_INSTANCE_NAMES - 1u)
 
 enum { GLS_CODEC_RAW = 0, GLS_CODEC_ZSTD = 1 };

@@ -34,6 +34,9 @@
  *   CALL       render another object with a copy of the current state
  *   CALLN      CALL, naming the instance it draws (INSTANCE_NAMES): a
  *              player may move it (spec/bundle.md 9.2); drawn as CALL
+ *   MARK       place the named landmark (MARK_NAMES) at M * (x, y, z, 1):
+ *              draws nothing; a player reports where it is (glsplay
+ *              --outputs landmarks, spec/outputs.md)
  *   PRIM       draw a primitive: kind (0 poly, 1 qstrip, 2 tstrip, 3 tfan),
  *              vertex count, first position, first colour (or NONE: use the
  *              current colour), first texcoord (or NONE: texcoord 0,0).
@@ -67,6 +70,8 @@
  *   FIRST_COL  the first of NVERT colours (COLORS), or NONE
  *   FIRST_TC   the first of NVERT texture coordinates (TEXCOORDS), or NONE
  *   INSTNAME   an instance name (INSTANCE_NAMES)
+ *   MARKNAME   a landmark name (MARK_NAMES); one object places each name
+ *              at most once
  */
 #define GLS_OPERAND_KINDS(K)                                      \
     K(NUM,       F64, 0,              NULL,             NULL)     \
@@ -81,7 +86,8 @@
     K(FIRST_POS, U32, 0,              NULL,             NULL)     \
     K(FIRST_COL, U32, 0,              NULL,             NULL)     \
     K(FIRST_TC,  U32, 0,              NULL,             NULL)     \
-    K(INSTNAME,  U32, 0,              NULL,             NULL)
+    K(INSTNAME,  U32, 0,              NULL,             NULL)     \
+    K(MARKNAME,  U32, 0,              NULL,             NULL)
 
 /* How an instruction moves the walk of an object's code (validator):
  *   NEXT  on to the next instruction
@@ -112,7 +118,9 @@ typedef enum { GLS_FLOW_NEXT, GLS_FLOW_PUSH, GLS_FLOW_POP, GLS_FLOW_END } gls_fl
     X(PRIM,      "prim",      NEXT, O(PRIMKIND, PRIM_KIND) O(NVERT, PRIM_N)            \
                                     O(FIRST_POS, PRIM_POS) O(FIRST_COL, PRIM_COL)      \
                                     O(FIRST_TC, PRIM_TC))                              \
-    X(CALLN,     "calln",     NEXT, O(OBJECT, CALLN_OBJECT) O(INSTNAME, CALLN_NAME))
+    X(CALLN,     "calln",     NEXT, O(OBJECT, CALLN_OBJECT) O(INSTNAME, CALLN_NAME))   \
+    X(MARK,      "mark",      NEXT, O(MARKNAME, MARK_NAME)                              \
+                                    O(NUM, MARK_X) O(NUM, MARK_Y) O(NUM, MARK_Z))
 
 typedef enum {
 #define GLS_X_ENUM(e, name, flow, operands) GLS_OP_##e,

@@ -8,6 +8,7 @@
 #include "specname.h"
 
 void gls_fail(gls_error *err, int line, const char *fmt, ...);
+int gls_check_mark_names(const gls_bundle *b, gls_error *err); /* validate_marks.c */
 #define FAIL(...) do { gls_fail(err, __LINE__, __VA_ARGS__); goto fail; } while (0)
 
 int gls_valid_name(const char *s, size_t n)
@@ -243,6 +244,10 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
     case GLS_KIND_INSTNAME:
         if (v >= b->ninstnames)
             FAIL("object %s, instruction %u (%s): instance name %u >= %u names", o->name, k, nm, v, b->ninstnames);
+        break;
+    case GLS_KIND_MARKNAME:
+        if (v >= b->nmarknames)
+            FAIL("object %s, instruction %u (%s): landmark name %u >= %u names", o->name, k, nm, v, b->nmarknames);
         break;
     case GLS_KIND_NVERT: {
         int pk = gls_op_find(in->op, GLS_KIND_PRIMKIND);
@@ -553,7 +558,7 @@ int gls_bundle_validate(const gls_bundle *b, gls_error *err)
     for (uint32_t i = 0; i < b->nobjects; i++)
         if (check_code(b, i, err))
             return -1;
-    if (check_calls(b, err) || check_instance_names(b, err))
+    if (check_calls(b, err) || check_instance_names(b, err) || gls_check_mark_names(b, err))
         return -1;
     if (b->top != GLS_NONE && gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES)
         FAIL("top-level object %s draws more than %llu vertices once its calls are unrolled", b->objects[b->top].name,

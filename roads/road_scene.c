@@ -148,6 +148,26 @@ static void place(FILE *f, const road_frame *fr, rv3 P, int reverse)
     fputs(", 0, 0, 0, 1);", f);
 }
 
+/* The four corners of dash k of boundary b as landmarks (spec/road.md
+   "Landmarks"): the corners of the band on the marking's surface, where
+   it begins and ends along the road, on its left and right edge (e[0],
+   e[1]), computed as the band's first and last stations are. */
+static void dash_marks(FILE *f, const road_geo *g, int b, int k, double u0, double u1, const road_edge *e)
+{
+    static const char *const end[2] = {"begin", "end"}, *const side[2] = {"left", "right"};
+    for (int i = 0; i < 2; i++) {
+        road_frame fr;
+        road_frame_at(g, i ? u1 : u0, &fr);
+        for (int j = 0; j < 2; j++) {
+            rv3 P = road_edge_point(&fr, &e[j]);
+            double v[3] = {P.x, P.y, P.z};
+            fprintf(f, "mark(\"b%d.dash%d.%s.%s\", ", b, k, end[i], side[j]);
+            road_nums(f, v, 3, ", ");
+            fputs(");\n", f);
+        }
+    }
+}
+
 static int emit_markings(FILE *f, const road_geo *g, ectx *x)
 {
     const road_desc *d = g->d;
@@ -169,12 +189,15 @@ static int emit_markings(FILE *f, const road_geo *g, ectx *x)
             }
         } else {
             road_edge e[2] = {{a, 0.5 * mw, h, 0}, {a, -0.5 * mw, h, 0}};
-            for (double s0 = 0; s0 < c->length; s0 += d->dash + d->gap) {
+            int k = 0;
+            for (double s0 = 0; s0 < c->length; s0 += d->dash + d->gap, k++) {
                 double s1 = fmin(s0 + d->dash, c->length);
                 if (s1 - s0 < 1e-3)
                     break;
-                if (band(f, g, nurbs_u_of_s(c, s0), nurbs_u_of_s(c, s1), e, 0, x))
+                double u0 = nurbs_u_of_s(c, s0), u1 = nurbs_u_of_s(c, s1);
+                if (band(f, g, u0, u1, e, 0, x))
                     return -1;
+                dash_marks(f, g, b, k, u0, u1, e);
             }
         }
     }

@@ -12,7 +12,8 @@
 _Static_assert(GLS_FEAT_TEXTURES == 1u << 0 && GLS_FEAT_ALPHA_TEST == 1u << 1 &&
                    GLS_FEAT_VERTEX_COLOR == 1u << 2 && GLS_FEAT_TEXCOORDS == 1u << 3 &&
                    GLS_FEAT_HOMOGENEOUS == 1u << 4 && GLS_FEAT_MODULATE == 1u << 5 &&
-                   GLS_FEAT_REPLACE == 1u << 6 && GLS_FEAT_TRANSLUCENT == 1u << 7,
+                   GLS_FEAT_REPLACE == 1u << 6 && GLS_FEAT_TRANSLUCENT == 1u << 7 &&
+                   GLS_FEAT_MARKS == 1u << 8,
                "feature bits moved: update effect[]");
 static const char *const effect[32] = {
     [0] = "GL_TEXTURE_2D, RGBA8 textures with mipmaps (GL_LINEAR_MIPMAP_LINEAR)",
@@ -23,6 +24,7 @@ static const char *const effect[32] = {
     [5] = "glTexEnv GL_MODULATE (texture times colour)",
     [6] = "glTexEnv GL_REPLACE (texture colour only)",
     [7] = "none: alpha is not blended, surfaces are drawn opaque (outputs are RGB)",
+    [8] = "none: landmarks draw nothing (--outputs landmarks lists them)",
 };
 
 /* The backend asked for and what it gave (spec/backends.md). */
@@ -78,7 +80,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     if (gls_aa_plan_init(&p, &ao, err, sizeof err))
         p.count = 1, p.o = ao, p.o.n = 1;
     int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
-    int centre = !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS));
+    int centre = !aa || (outputs & GLS_OUT_CENTRE_Z);
     static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
             b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
@@ -196,7 +198,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  reads back%s: %s%s%s\n", aa ? " (unjittered centre pass)" : "",
                     (!aa && (outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (outputs & GLS_OUT_POINTS)
                         ? "colour (RGBA8) " : "",
-                    outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS) ? "depth (float32) " : "",
+                    outputs & GLS_OUT_CENTRE_Z ? "depth (float32) " : "",
                     outputs ? "" : "nothing");
         fprintf(out, "  writes:%s%s%s%s%s\n", outputs & GLS_OUT_IMAGE ? " image (" : "",
                 outputs & GLS_OUT_IMAGE ? fmt_name[o->image_format] : "", outputs & GLS_OUT_IMAGE ? ")" : "",
@@ -204,5 +206,9 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                 outputs & GLS_OUT_POINTS ? " points (PLY, world, double)" : "");
         if (outputs & GLS_OUT_MASK)
             fprintf(out, "  writes: mask (8-bit PNG, 255 where the samples of a pixel differ)\n");
+        if (outputs & GLS_OUT_LANDMARKS)
+            fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
+                    !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"
+                                                                         : "one extra unjittered pass (--aa)");
     }
 }

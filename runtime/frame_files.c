@@ -33,6 +33,8 @@ static int encode(const gls_frame_files *f, unsigned bit, gls_buf *buf)
         return gls_encode_pfm(f->z, c->width, c->height, buf);
     case GLS_OUT_POINTS:
         return gls_encode_ply(c, f->z, f->rgba, buf, &np);
+    case GLS_OUT_LANDMARKS:
+        return gls_encode_landmarks_csv(f->landmarks, c, f->z, buf);
     default:
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -78,6 +80,7 @@ static void destroy(gls_write_job *job)
     free(f->mask);
     free(f->image);
     free(f->z);
+    gls_landmarks_free(f->landmarks);
     free(f);
 }
 

@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 #include "camera.h"
+#include "gt_landmarks.h"
 #include "frame_writer.h"
 #include "player.h"
 
@@ -24,12 +25,13 @@ typedef struct {
     uint8_t *rgba, *mask;
     void *image;
     float *z;
+    gls_landmarks *landmarks; /* --outputs landmarks: this frame's, or NULL */
     uint64_t buffer_bytes; /* for the out-of-memory message */
     size_t nfiles;
     struct {
         unsigned bit; /* GLS_OUT_* */
         char path[GLS_FRAME_PATH];
-    } files[4];
+    } files[8];
     char record[GLS_FRAME_PATH], record_text[1024];
 } gls_frame_files;
 

@@ -24,7 +24,8 @@ static const char usage_text[] =
     "  --outputs LIST         comma-separated subset of image,depth,points,mask\n"
     "                         (default image,depth,points; mask: 255 where a pixel's\n"
     "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
-    "                         it needs --aa N with N > 1)\n"
+    "                         it needs --aa N with N > 1); also landmarks: the scene's\n"
+    "                         marks projected, NAME/landmarks_F.csv (spec/outputs.md)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --write-calib          also write the cameras' calibration (spec/outputs.md):\n"
     "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
@@ -106,6 +107,8 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_POINTS;
         else if (strcmp(t, "mask") == 0)
             *bits |= GLS_OUT_MASK;
+        else if (strcmp(t, "landmarks") == 0)
+            *bits |= GLS_OUT_LANDMARKS;
         else
             return -1;
     }
@@ -231,7 +234,7 @@ int main(int argc, char **argv)
             o.outdir = argv[++i];
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
-                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, got '%s'",
+                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, mask, landmarks, got '%s'",
                                  has_val ? argv[i + 1] : "");
                 goto done;
             }

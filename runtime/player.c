@@ -22,6 +22,7 @@
 #include "frame_record.h"
 #include "frame_writer.h"
 #include "glctx.h"
+#include "gt_landmarks.h"
 #include "mkdirs.h"
 #include "motion.h"
 #include "outputs.h"
@@ -68,7 +69,8 @@ static char *camera_name(const char *path)
 static const struct {
     unsigned bit;
     const char *kind;
-} outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"}};
+} outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"},
+            {GLS_OUT_LANDMARKS, "landmarks"}};
 #define NOUTS (sizeof outs / sizeof outs[0])
 
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
@@ -77,6 +79,8 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
     const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
     if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
         ext = "pfm";
+    if (outs[k].bit == GLS_OUT_LANDMARKS)
+        ext = "csv";
     return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
 }
 
@@ -170,6 +174,7 @@ static void motion_free(motion_set *ms)
 typedef struct {
     const gls_play_opts *o;
     const motion_set *ms;
+    const gls_scene *scene;     /* its landmarks (--outputs landmarks)  */
     const gls_aa_plan *plan;
     gls_renderer *r;
     gls_writer *w;              /* where each camera frame's files go   */
@@ -227,7 +232,7 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
 {
     unsigned out = o->outputs;
     uint64_t b = 0, enc = 0;
-    if (out & (GLS_OUT_DEPTH | GLS_OUT_POINTS))
+    if (out & GLS_OUT_CENTRE_Z)
         b += 4 * n, enc = 4 * n;
     if ((!aa && (out & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (out & GLS_OUT_POINTS))
         b += 4 * n;
@@ -275,7 +280,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
-    int centre = !aa || (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS));
+    int centre = !aa || (o->outputs & GLS_OUT_CENTRE_Z);
     uint8_t *rgba = NULL, *mask = NULL;
     float *z = NULL;
     void *img = NULL; /* image in its output format when not rgba */
@@ -295,7 +300,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
                 goto oom;
             gls_render_read_rgba(r, rgba);
         }
-        if (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) {
+        if (o->outputs & GLS_OUT_CENTRE_Z) {
             z = malloc(n * sizeof *z);
             if (!z)
                 goto oom;
@@ -385,6 +390,9 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         snprintf(msg, sizeof msg, "glsplay: error: output path for camera %s is too long", name);
         goto out;
     }
+    /* where the landmarks are in this frame: motion moves them */
+    if ((o->outputs & GLS_OUT_LANDMARKS) && !(f->landmarks = gls_landmarks_take(s->scene)))
+        goto oom;
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
     rgba = mask = NULL, z = NULL, img = NULL;
     gls_write_job *job = &f->job;
@@ -702,7 +710,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0};
+    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0};
     if (!o->trajectory) {
         int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
         if (o->resume)

@@ -13,6 +13,10 @@
 
 /* mask: the mixed-pixel mask of an anti-aliased image (spec/antialiasing.md) */
 enum { GLS_OUT_IMAGE = 1, GLS_OUT_DEPTH = 2, GLS_OUT_POINTS = 4, GLS_OUT_MASK = 8 };
+/* landmarks: the scene's marks projected, as CSV (gt_landmarks.h) */
+enum { GLS_OUT_LANDMARKS = 1u << 12 };
+/* The outputs made from the centre sample's depth (never blended). */
+#define GLS_OUT_CENTRE_Z (GLS_OUT_DEPTH | GLS_OUT_POINTS | GLS_OUT_LANDMARKS)
 
 /* Image file format: 8-bit PNG, 16-bit PNG, float32 PFM ("PF", RGB). */
 typedef enum { GLS_IMG_PNG8 = 0, GLS_IMG_PNG16 = 1, GLS_IMG_PFM = 2 } gls_image_format;

@@ -86,6 +86,18 @@ typedef struct {
     uint32_t first_item, nitems; /* its draw items, by key then cell      */
 } gls_instance;
 
+/* A landmark (a bundle's mark) as placed by one call path: its name (an
+ * index into gls_scene.marknames), the instance whose frame it is in, its
+ * position in that frame (the mark's matrix applied, homogeneous), and its
+ * call path, "Top > a.B#2 > c.D#1": each call as the callee's name and
+ * #k, the k-th call of that object in its caller's code, from 1
+ * (spec/outputs.md "Landmarks"). */
+typedef struct {
+    uint32_t name, inst;
+    double p[4];
+    char *path;
+} gls_mark;
+
 /* What the renderer draws: a chunk of an instance's proto. */
 typedef struct {
     uint32_t inst, chunk;
@@ -117,6 +129,10 @@ typedef struct {
     gls_item *items;       /* all instances' items, in drawing order:
                               by key, then instance, then cell            */
     uint32_t nitems;
+    gls_mark *marks;       /* landmarks, in the order the walk placed them */
+    uint32_t nmarks;
+    char **marknames;      /* the bundle's landmark names                 */
+    uint32_t nmarknames;
     int moving;            /* some instance has a motion (gls_scene_move)  */
     uint64_t dropped;      /* triangles with a vertex at infinity (w = 0) */
     double lo[3], hi[3];   /* bounding box of the unique vertices        */
@@ -143,6 +159,10 @@ uint32_t gls_scene_find_instance(const gls_scene *s, const char *name);
  * gls_scene_update() recomputes world transforms and boxes. */
 void gls_scene_move(gls_scene *s, uint32_t i, const double R[9], const double T[3]);
 void gls_scene_update(gls_scene *s);
+
+/* World position of landmark k in the current frame: its instance's
+ * world transform (motion included) applied, divided by w, in double. */
+void gls_scene_mark_world(const gls_scene *s, uint32_t k, double X[3]);
 
 /* Memory: unique geometry (vertices, exact positions, chunks, protos) and
  * the instance table (instances, items, names). */

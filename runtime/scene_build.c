@@ -17,6 +17,7 @@
 #include <string.h>
 #include "buf.h"
 #include "scene.h"
+#include "scene_marks.h"
 #include "vec.h"
 
 typedef struct {
@@ -54,6 +55,7 @@ typedef struct {
     gls_instance *inst;
     size_t ninst, icap;
     const char *limit;     /* a limit crossed: the message               */
+    gls_markwalk marks;    /* landmarks and the call path (scene_marks.h) */
 } walker;
 
 static void identity(double A[16])
@@ -275,8 +277,8 @@ static void prim(walker *w, uint32_t proto, const state *st, const gls_insn *in)
 
 static int is_affine(const double M[16]) { return M[12] == 0 && M[13] == 0 && M[14] == 0 && M[15] == 1; }
 
-/* Does object oi's code contain a CALL or CALLN?  (A proto already built for an
- * object without calls needs no further walk.) */
+/* Does object oi's code contain a CALL, CALLN or MARK?  (A proto already
+ * built for an object without calls or marks needs no further walk.) */
 static int object_calls(walker *w, uint32_t oi)
 {
     if (w->has_call[oi] == 0) {
@@ -285,7 +287,7 @@ static int object_calls(walker *w, uint32_t oi)
         gls_insn in;
         w->has_call[oi] = 1;
         while (gls_insn_decode(o->code, o->code_len, &pos, &in) == 0 && in.op != GLS_OP_END)
-            if (in.op == GLS_OP_CALL || in.op == GLS_OP_CALLN) {
+            if (in.op == GLS_OP_CALL || in.op == GLS_OP_CALLN || in.op == GLS_OP_MARK) {
                 w->has_call[oi] = 2;
                 break;
             }
@@ -370,9 +372,13 @@ static void enter(walker *w, uint32_t oi, state st, uint32_t parent, const char 
 static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
 {
     const gls_object *o = &w->b->objects[oi];
-    size_t pos = 0, base = w->sp;
+    size_t pos = 0, base = w->sp, saved;
     gls_insn in;
-    double A[16];
+    double A[16], h[4];
+    uint32_t ncall = 0; /* calls so far: their index into callk */
+    const uint32_t *callk = w->marks.on ? gls_markwalk_calls(&w->marks, oi) : NULL;
+    if (w->marks.on && !callk)
+        w->oom = 1;
     while (!w->oom && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
         switch (in.op) {
         case GLS_OP_END:
@@ -420,12 +426,31 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
              * is an instance; a named call (CALLN) always is one, with the
              * bundle's name, so --motion can move it (a projective matrix
              * goes to GL as it is: no exactness claim for that rare case).
-             * Flattened (--flatten): both are inlined, names unused. */
+             * Flattened (--flatten): both are inlined, names unused.
+             * The call path goes on for the landmarks in the callee. */
+            if (gls_markwalk_enter(&w->marks, in.u[GLS_ARG_CALL_OBJECT], callk ? callk[ncall++] : 0, &saved)) {
+                w->oom = 1;
+                break;
+            }
             if (w->instanced && (in.op == GLS_OP_CALLN || is_affine(st.M)))
                 enter(w, in.u[GLS_ARG_CALL_OBJECT], st, inst,
                       in.op == GLS_OP_CALLN ? w->b->instnames[in.u[GLS_ARG_CALLN_NAME]] : NULL);
             else
                 run(w, in.u[GLS_ARG_CALL_OBJECT], st, inst, proto);
+            gls_markwalk_leave(&w->marks, saved);
+            break;
+        case GLS_OP_MARK: /* in the instance's frame, like a vertex; drawn by no proto */
+            m4_apply(st.M, in.d[GLS_ARG_MARK_X], in.d[GLS_ARG_MARK_Y], in.d[GLS_ARG_MARK_Z], 1.0, h);
+            switch (gls_markwalk_place(&w->marks, inst, in.u[GLS_ARG_MARK_NAME], h)) {
+            case -2:
+                w->limit = "more than 16777216 landmarks (marks on every call path): too many to report";
+                /* fall through */
+            case -1:
+                w->oom = 1;
+                break;
+            default:
+                break;
+            }
             break;
         case GLS_OP_PRIM:
             if (proto != GLS_NONE)
@@ -588,6 +613,10 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     }
     for (uint32_t i = 0; i < b->nobjects; i++)
         w.proto_head[i] = GLS_NONE;
+    if (gls_markwalk_init(&w.marks, b)) {
+        snprintf(err, errlen, "out of memory while building the scene");
+        goto out;
+    }
     state st;
     identity(st.M);
     st.rgba[0] = st.rgba[1] = st.rgba[2] = st.rgba[3] = 1.0; /* opaque white */
@@ -615,7 +644,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         s->texcoord_offset = s->stride, s->stride += 8;
     s->nverts = (uint32_t)(w.ntri * 3);
     s->dropped = w.dropped;
-    if (make_chunks(&w, s) || make_items(s)) {
+    if (make_chunks(&w, s) || make_items(s) || gls_markwalk_finish(&w.marks, s)) {
         snprintf(err, errlen, "out of memory while building the scene");
         goto out;
     }
@@ -633,6 +662,7 @@ out:
     free(w.inst);
     free(w.proto_head);
     free(w.has_call);
+    gls_markwalk_free(&w.marks);
     if (rc)
         gls_scene_free(s);
     return rc;
@@ -652,6 +682,12 @@ void gls_scene_free(gls_scene *s)
 {
     for (uint32_t i = 0; s->inst && i < s->ninst; i++)
         free(s->inst[i].name);
+    for (uint32_t i = 0; s->marks && i < s->nmarks; i++)
+        free(s->marks[i].path);
+    for (uint32_t i = 0; s->marknames && i < s->nmarknames; i++)
+        free(s->marknames[i]);
+    free(s->marks);
+    free(s->marknames);
     free(s->verts);
     free(s->exact);
     free(s->chunks);

@@ -106,6 +106,15 @@ void gls_scene_update(gls_scene *s)
     }
 }
 
+void gls_scene_mark_world(const gls_scene *s, uint32_t k, double X[3])
+{
+    const gls_mark *m = &s->marks[k];
+    double h[4];
+    m4_apply(s->inst[m->inst].world, m->p[0], m->p[1], m->p[2], m->p[3], h);
+    for (int i = 0; i < 3; i++)
+        X[i] = h[3] == 1.0 ? h[i] : h[i] / h[3];
+}
+
 void gls_scene_memory(const gls_scene *s, uint64_t *geometry, uint64_t *table)
 {
     *geometry = (uint64_t)s->nverts * (s->stride + 3 * sizeof(double)) + (uint64_t)s->nchunks * sizeof(gls_chunk) +

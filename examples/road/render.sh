@@ -27,7 +27,7 @@ set --
 for m in "$OUT"/road/motion/*.txt; do
     [ -f "$m" ] && set -- "$@" --motion "$(basename "$m" .txt)=$m"
 done
-"$B/glsplay" "$OUT/road.glsb" $CAMS --trajectory "$tmp/trajectory.txt" "$@" \
+"$B/glsplay" "$OUT/road.glsb" $CAMS --trajectory "$tmp/trajectory.txt" "$@" --outputs image,depth,points,landmarks \
     --background 0.55,0.7,0.9 -o "$OUT"
 if [ -n "$STRIP" ]; then
     # four frames of the left camera, 300 px wide each (the PNG stays under
@@ -42,4 +42,4 @@ if [ -n "$STRIP" ]; then
     "$B/road_montage" "$STRIP" 4 300 "$@"
     echo "strip: $STRIP"
 fi
-echo "demo-road: frames in $OUT/left and $OUT/right (images, depth, points); road outputs in $OUT/road"
+echo "demo-road: frames in $OUT/left and $OUT/right (images, depth, points, landmarks); road outputs in $OUT/road"

@@ -437,7 +437,7 @@ static void test_opcode_table(void)
         [GLS_OP_END] = 1,   [GLS_OP_COLOR] = 33, [GLS_OP_TEXMODE] = 2,    [GLS_OP_TEXTURE] = 5,
         [GLS_OP_NOTEXTURE] = 1, [GLS_OP_TRANS] = 25, [GLS_OP_ROT] = 33,   [GLS_OP_SCALE] = 25,
         [GLS_OP_TRANSFORM] = 129, [GLS_OP_PUSH] = 1, [GLS_OP_POP] = 1,    [GLS_OP_CALL] = 5,
-        [GLS_OP_PRIM] = 18, [GLS_OP_CALLN] = 9};
+        [GLS_OP_PRIM] = 18, [GLS_OP_CALLN] = 9, [GLS_OP_MARK] = 29};
     for (int op = 0; op < GLS_OP_COUNT; op++) {
         gls_buf code = {0};
         gls_insn in = {.op = (gls_opcode)op};
@@ -540,7 +540,7 @@ static void test_instance_names(void)
     CHECK_MSG(gls_bundle_validate(b, &err) == 0, "%s", err.msg);
     size_t len;
     uint8_t *data = write_it(b, &len);
-    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_COUNT);
+    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_INSTANCE_NAMES);
     gls_bundle *r = data ? gls_bundle_read(data, len, &err) : NULL;
     CHECK_MSG(r != NULL, "%s", err.msg);
     if (r) {
@@ -558,12 +558,12 @@ static void test_instance_names(void)
     b = make_bundle();
     data = write_it(b, &len);
     CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_REQUIRED && GLS_SEC_REQUIRED == 7);
-    if (data) { /* a section count that is neither is refused */
-        gls_le_put_u32(data + GLS_HDR_NSECT, 9);
+    if (data) { /* a section count outside 7..9 is refused */
+        gls_le_put_u32(data + GLS_HDR_NSECT, 10);
         fix_crc(data, len);
         r = gls_bundle_read(data, len, &err);
         CHECK(r == NULL);
-        CHECK_MSG(strcmp(err.msg, "bundle has 9 sections, expected 7 or 8") == 0, "%s", err.msg);
+        CHECK_MSG(strcmp(err.msg, "bundle has 10 sections, expected 7 to 9") == 0, "%s", err.msg);
     }
     gls_bundle_free(b);
     free(data);
@@ -571,7 +571,7 @@ static void test_instance_names(void)
     /* an empty table is never written, so it is refused */
     b = make_named_bundle(one, 1);
     if (gls_bundle_write_codec(b, GLS_CODEC_RAW, &data, &len, &err) == 0) {
-        const uint8_t *e = data + GLS_HEADER_SIZE + (GLS_SEC_COUNT - 1) * GLS_DIRENT_SIZE;
+        const uint8_t *e = data + GLS_HEADER_SIZE + (GLS_SEC_INSTANCE_NAMES - 1) * GLS_DIRENT_SIZE;
         gls_le_put_u32(data + gls_le_get_u64(e + 8), 0);
         fix_crc(data, len);
         r = gls_bundle_read(data, len, &err);
@@ -607,6 +607,98 @@ static void test_instance_names(void)
     expect_message(b, "instance name car2: no calln names it");
 }
 
+/* make_bundle() with a.Tri's code replaced by marks of the names' indices
+ * given in idx[0..n) (at (1, 2, 3)), and the name table names[0..nn). */
+static gls_bundle *make_marked_bundle(const char *const *names, uint32_t nn, const uint32_t *idx, uint32_t n)
+{
+    gls_bundle *b = make_bundle();
+    gls_insn in[4];
+    for (uint32_t i = 0; i < n; i++)
+        in[i] = (gls_insn){.op = GLS_OP_MARK, .u = {idx[i]}, .d = {0, 1, 2, 3}};
+    set_code(b, 1, in, n);
+    b->nmarknames = nn;
+    b->marknames = calloc(nn ? nn : 1, sizeof *b->marknames);
+    for (uint32_t i = 0; i < nn; i++)
+        b->marknames[i] = strdup(names[i]);
+    return b;
+}
+
+/* MARK_NAMES and MARK (spec/bundle.md 7.9, 9.1, 12): a round trip; the
+ * section only where there are marks, after INSTANCE_NAMES or in its
+ * place; each validation rule with its message. */
+static void test_mark_names(void)
+{
+    static const char *const two[] = {"post.foot", "post.top"};
+    static const uint32_t both[] = {1, 0};
+    gls_bundle *b = make_marked_bundle(two, 2, both, 2);
+    gls_error err = {{0}, 0};
+    CHECK_MSG(gls_bundle_validate(b, &err) == 0, "%s", err.msg);
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    /* 8 sections: the required 7, then MARK_NAMES (id 9) */
+    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_REQUIRED + 1);
+    CHECK(data && gls_le_get_u32(data + GLS_HEADER_SIZE + GLS_SEC_REQUIRED * GLS_DIRENT_SIZE) == GLS_SEC_MARK_NAMES);
+    CHECK(data && (gls_le_get_u32(data + GLS_HDR_FEATURES) & GLS_FEAT_MARKS));
+    gls_bundle *r = data ? gls_bundle_read(data, len, &err) : NULL;
+    CHECK_MSG(r != NULL, "%s", err.msg);
+    if (r) {
+        CHECK(r->nmarknames == 2 && strcmp(r->marknames[1], "post.top") == 0);
+        size_t pos = 0;
+        gls_insn in;
+        CHECK(gls_insn_decode(r->objects[1].code, r->objects[1].code_len, &pos, &in) == 0);
+        CHECK(in.op == GLS_OP_MARK && in.u[GLS_ARG_MARK_NAME] == 1 && in.d[GLS_ARG_MARK_X] == 1 &&
+              in.d[GLS_ARG_MARK_Y] == 2 && in.d[GLS_ARG_MARK_Z] == 3);
+        size_t len2;
+        uint8_t *again = write_it(r, &len2);
+        CHECK(again && len2 == len && memcmp(again, data, len) == 0);
+        free(again);
+    }
+    gls_bundle_free(r);
+    if (data) { /* an optional section's id must follow the one before it */
+        gls_le_put_u32(data + GLS_HEADER_SIZE + GLS_SEC_REQUIRED * GLS_DIRENT_SIZE, 10);
+        fix_crc(data, len);
+        r = gls_bundle_read(data, len, &err);
+        CHECK(r == NULL);
+        CHECK_MSG(strcmp(err.msg, "section directory entry 7 has id 10, expected an optional section after 7 (up to 9)") ==
+                      0, "%s", err.msg);
+    }
+    free(data);
+
+    /* with instance names too: all 9 sections, in id order */
+    static const char *const car[] = {"car1"};
+    b->ninstnames = 1;
+    b->instnames = calloc(1, sizeof *b->instnames);
+    b->instnames[0] = strdup(car[0]);
+    set_code(b, 0, (gls_insn[]){{.op = GLS_OP_CALLN, .u = {1, 0}}}, 1);
+    data = write_it(b, &len);
+    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_COUNT && GLS_SEC_COUNT == 9);
+    r = data ? gls_bundle_read(data, len, &err) : NULL;
+    CHECK_MSG(r && r->ninstnames == 1 && r->nmarknames == 2, "%s", err.msg);
+    gls_bundle_free(r);
+    free(data);
+    gls_bundle_free(b);
+
+    static const uint32_t first[] = {0};
+    static const char *const bad[] = {"post top"};
+    expect_message(make_marked_bundle(bad, 1, first, 1),
+                   "landmark name 0 is not a valid name ([A-Za-z0-9_.-], 1 to 64 bytes)");
+    static const char *const twice[] = {"a", "a"};
+    expect_message(make_marked_bundle(twice, 2, first, 1), "landmark name table not sorted or has a duplicate at a");
+    static const char *const unsorted[] = {"b", "a"};
+    expect_message(make_marked_bundle(unsorted, 2, both, 2), "landmark name table not sorted or has a duplicate at a");
+    /* one object places a name once */
+    static const uint32_t again[] = {1, 0, 1};
+    expect_message(make_marked_bundle(two, 2, again, 3),
+                   "object a.Tri, instruction 2 (mark): landmark post.top is placed twice in the object");
+    /* every name is placed by some mark */
+    expect_message(make_marked_bundle(two, 2, first, 1), "landmark name post.top: no mark places it");
+    /* the operand: an index into the table */
+    expect_code_message(&(gls_insn){.op = GLS_OP_MARK, .u = {0}}, 1,
+                        "object a.Tri, instruction 0 (mark): landmark name 0 >= 0 names");
+    expect_code_message(&(gls_insn){.op = GLS_OP_MARK, .u = {0}, .d = {0, 1, NAN, 3}}, 1,
+                        "object a.Tri, instruction 0 (mark): operand 3 is not finite");
+}
+
 int main(void)
 {
     RUN(test_round_trip_is_lossless);
@@ -621,5 +713,6 @@ int main(void)
     RUN(test_opcode_table);
     RUN(test_expansion_bomb_refused);
     RUN(test_instance_names);
+    RUN(test_mark_names);
     CHECK_EXIT();
 }
