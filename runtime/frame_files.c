@@ -6,6 +6,10 @@
 #include <unistd.h>
 #include "atomic_write.h"
 #include "frame_files.h"
+#include "numfmt.h"
+#include "out_disparity.h"
+#include "out_npy.h"
+#include "out_png16.h"
 #include "outputs.h"
 #include "units.h"
 
@@ -19,21 +23,75 @@ void gls_frame_oom_message(char *buf, size_t len, const char *name, uint32_t w, 
              name, w, h, need);
 }
 
-static int encode(const gls_frame_files *f, unsigned bit, gls_buf *buf)
+/* A float output (depth, disparity, a pfm image) in the chosen format. */
+static int encode_float(const gls_frame_files *f, const float *v, unsigned channels, gls_buf *buf)
+{
+    const gls_camera *c = &f->cam;
+    if (f->float_format == GLS_FLOAT_NPY)
+        return gls_encode_npy(v, c->width, c->height, channels, buf);
+    return channels == 3 ? gls_encode_pfm_rgb(v, c->width, c->height, buf) : gls_encode_pfm(v, c->width, c->height, buf);
+}
+
+/* disparity16 and depth16: a value that does not fit is refused, with
+ * the pixel, the value, the limit and what to do instead. */
+static int encode_16(const gls_frame_files *f, unsigned bit, const float *v, gls_buf *buf, char *err, size_t errlen)
+{
+    const gls_camera *c = &f->cam;
+    int disp = bit == GLS_OUT_DISPARITY16;
+    double scale = disp ? 256.0 : f->depth_scale;
+    size_t bad = 0;
+    int rc = gls_encode_scaled16(v, c->width, c->height, scale, buf, &bad);
+    if (rc <= 0)
+        return rc;
+    char at[256], sc[32];
+    snprintf(at, sizeof at, "glsplay: error: %s: camera %s, frame %u, pixel (%zu, %zu)", disp ? "disparity16" : "depth16",
+             f->name, f->frame, bad % c->width, bad / c->width);
+    gls_fmt_double(sc, sizeof sc, scale);
+    if (disp && rc == GLS_SCALED16_OVER)
+        snprintf(err, errlen,
+                 "%s: disparity %.6g px is over %.6g px, the most a KITTI 16-bit PNG holds (d * 256 <= 65535); "
+                 "use --outputs disparity (float) instead",
+                 at, v[bad], 65535 / 256.0);
+    else if (disp)
+        snprintf(err, errlen,
+                 "%s: disparity %.6g px rounds to 0, which a KITTI 16-bit PNG reads as no disparity "
+                 "(d * 256 >= 0.5 for a surface); use --outputs disparity (float) instead",
+                 at, v[bad]);
+    else if (rc == GLS_SCALED16_OVER)
+        snprintf(err, errlen,
+                 "%s: depth %.6g is over %.6g, the largest a 16-bit PNG holds at --depth-scale %s (65535 / %s); "
+                 "lower --depth-scale or use --outputs depth (float) instead",
+                 at, v[bad], 65535 / scale, sc, sc);
+    else
+        snprintf(err, errlen,
+                 "%s: depth %.6g rounds to 0 at --depth-scale %s, which means no surface; raise --depth-scale or "
+                 "use --outputs depth (float) instead",
+                 at, v[bad], sc);
+    return 1;
+}
+
+/* 0, -1 out of memory, 1 refused with the message in err. */
+static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls_buf *buf, char *err, size_t errlen)
 {
     const gls_camera *c = &f->cam;
     uint64_t np;
     switch (bit) {
     case GLS_OUT_IMAGE:
         return f->image_format == GLS_IMG_PNG16 ? gls_encode_png16(f->image, c->width, c->height, buf)
-               : f->image_format == GLS_IMG_PFM ? gls_encode_pfm_rgb(f->image, c->width, c->height, buf)
+               : f->image_format == GLS_IMG_PFM ? encode_float(f, f->image, 3, buf)
                                                 : gls_encode_png(f->image ? f->image : f->rgba, c->width, c->height,
                                                                  buf);
     case GLS_OUT_DEPTH:
-        return gls_encode_pfm(f->z, c->width, c->height, buf);
+        return encode_float(f, f->z, 1, buf);
     case GLS_OUT_POINTS:
         return gls_encode_ply(c, f->z, f->rgba, buf, &np);
-    default:
+    case GLS_OUT_DISPARITY:
+        return encode_float(f, disp, 1, buf);
+    case GLS_OUT_DISPARITY16:
+        return encode_16(f, bit, disp, buf, err, errlen);
+    case GLS_OUT_DEPTH16:
+        return encode_16(f, bit, f->z, buf, err, errlen);
+    default: /* edges, and the same map as mask */
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
 }
@@ -42,6 +100,7 @@ static int run(gls_write_job *job, char *err, size_t errlen)
 {
     gls_frame_files *f = (gls_frame_files *)job;
     gls_buf buf = {0};
+    float *disp = NULL;
     int rc = -1;
     /* The frame is incomplete from the first file rewritten until the
      * last is written: no record meanwhile (frame_record.h). */
@@ -51,10 +110,17 @@ static int run(gls_write_job *job, char *err, size_t errlen)
     }
     for (size_t k = 0; k < f->nfiles; k++) {
         buf.len = 0;
-        if (encode(f, f->files[k].bit, &buf)) {
-            gls_frame_oom_message(err, errlen, f->name, f->cam.width, f->cam.height, f->buffer_bytes);
-            goto out;
+        size_t n = (size_t)f->cam.width * f->cam.height;
+        if ((f->files[k].bit & GLS_OUT_DISPARITIES) && !disp) {
+            disp = malloc((n ? n : 1) * sizeof *disp);
+            if (disp)
+                gls_disparity_from_z(f->z, n, f->fxB, disp);
         }
+        int e = (f->files[k].bit & GLS_OUT_DISPARITIES) && !disp ? -1 : encode(f, f->files[k].bit, disp, &buf, err, errlen);
+        if (e < 0)
+            gls_frame_oom_message(err, errlen, f->name, f->cam.width, f->cam.height, f->buffer_bytes);
+        if (e)
+            goto out;
         const char *path = f->files[k].path;
         if (gls_write_file_atomic(path, buf.data, buf.len)) {
             snprintf(err, errlen, "glsplay: error: cannot write %s: %s", path, gls_write_error(path, errno));
@@ -68,6 +134,7 @@ static int run(gls_write_job *job, char *err, size_t errlen)
     rc = 0;
 out:
     free(buf.data);
+    free(disp);
     return rc;
 }
 
