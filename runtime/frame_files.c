@@ -33,16 +33,17 @@ static int encode_float(const gls_frame_files *f, const float *v, unsigned chann
 }
 
 /* disparity16 and depth16: a value that does not fit is refused, with
- * the pixel, the value, the limit and what to do instead. */
-static int encode_16(const gls_frame_files *f, unsigned bit, const float *v, gls_buf *buf, char *err, size_t errlen)
+ * the pixel, the value, the limit and what to do instead.  Checked before
+ * any file of the frame is written; 0, or 1 with the message in err. */
+static int check_16(const gls_frame_files *f, unsigned bit, const float *v, char *err, size_t errlen)
 {
     const gls_camera *c = &f->cam;
     int disp = bit == GLS_OUT_DISPARITY16;
     double scale = disp ? 256.0 : f->depth_scale;
     size_t bad = 0;
-    int rc = gls_encode_scaled16(v, c->width, c->height, scale, buf, &bad);
-    if (rc <= 0)
-        return rc;
+    int rc = gls_scaled16_check(v, (size_t)c->width * c->height, scale, &bad);
+    if (rc == 0)
+        return 0;
     char at[256], sc[32];
     snprintf(at, sizeof at, "glsplay: error: %s: camera %s, frame %u, pixel (%zu, %zu)", disp ? "disparity16" : "depth16",
              f->name, f->frame, bad % c->width, bad / c->width);
@@ -70,11 +71,12 @@ static int encode_16(const gls_frame_files *f, unsigned bit, const float *v, gls
     return 1;
 }
 
-/* 0, -1 out of memory, 1 refused with the message in err. */
-static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls_buf *buf, char *err, size_t errlen)
+/* 0, or -1 when out of memory. */
+static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls_buf *buf)
 {
     const gls_camera *c = &f->cam;
     uint64_t np;
+    size_t bad;
     switch (bit) {
     case GLS_OUT_IMAGE:
         return f->image_format == GLS_IMG_PNG16 ? gls_encode_png16(f->image, c->width, c->height, buf)
@@ -87,10 +89,10 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
         return gls_encode_ply(c, f->z, f->rgba, buf, &np);
     case GLS_OUT_DISPARITY:
         return encode_float(f, disp, 1, buf);
-    case GLS_OUT_DISPARITY16:
-        return encode_16(f, bit, disp, buf, err, errlen);
+    case GLS_OUT_DISPARITY16: /* checked by check_16 */
+        return gls_encode_scaled16(disp, c->width, c->height, 256.0, buf, &bad);
     case GLS_OUT_DEPTH16:
-        return encode_16(f, bit, f->z, buf, err, errlen);
+        return gls_encode_scaled16(f->z, c->width, c->height, f->depth_scale, buf, &bad);
     default: /* edges, and the same map as mask */
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -102,25 +104,36 @@ static int run(gls_write_job *job, char *err, size_t errlen)
     gls_buf buf = {0};
     float *disp = NULL;
     int rc = -1;
+    /* The disparity, made once for disparity and disparity16; a value
+     * a 16-bit file cannot hold stops the frame before any file of it
+     * is written. */
+    size_t n = (size_t)f->cam.width * f->cam.height;
+    for (size_t k = 0; k < f->nfiles; k++) {
+        unsigned bit = f->files[k].bit;
+        if ((bit & GLS_OUT_DISPARITIES) && !disp) {
+            disp = malloc((n ? n : 1) * sizeof *disp);
+            if (!disp) {
+                gls_frame_oom_message(err, errlen, f->name, f->cam.width, f->cam.height, f->buffer_bytes);
+                return -1;
+            }
+            gls_disparity_from_z(f->z, n, f->fxB, disp);
+        }
+        if ((bit & (GLS_OUT_DISPARITY16 | GLS_OUT_DEPTH16)) &&
+            check_16(f, bit, bit == GLS_OUT_DISPARITY16 ? disp : f->z, err, errlen))
+            goto out;
+    }
     /* The frame is incomplete from the first file rewritten until the
      * last is written: no record meanwhile (frame_record.h). */
     if (unlink(f->record) != 0 && errno != ENOENT) {
         snprintf(err, errlen, "glsplay: error: cannot remove %s: %s", f->record, strerror(errno));
-        return -1;
+        goto out;
     }
     for (size_t k = 0; k < f->nfiles; k++) {
         buf.len = 0;
-        size_t n = (size_t)f->cam.width * f->cam.height;
-        if ((f->files[k].bit & GLS_OUT_DISPARITIES) && !disp) {
-            disp = malloc((n ? n : 1) * sizeof *disp);
-            if (disp)
-                gls_disparity_from_z(f->z, n, f->fxB, disp);
-        }
-        int e = (f->files[k].bit & GLS_OUT_DISPARITIES) && !disp ? -1 : encode(f, f->files[k].bit, disp, &buf, err, errlen);
-        if (e < 0)
+        if (encode(f, f->files[k].bit, disp, &buf)) {
             gls_frame_oom_message(err, errlen, f->name, f->cam.width, f->cam.height, f->buffer_bytes);
-        if (e)
             goto out;
+        }
         const char *path = f->files[k].path;
         if (gls_write_file_atomic(path, buf.data, buf.len)) {
             snprintf(err, errlen, "glsplay: error: cannot write %s: %s", path, gls_write_error(path, errno));

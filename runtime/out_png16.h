@@ -20,4 +20,9 @@ enum { GLS_SCALED16_OVER = 1, GLS_SCALED16_ZERO = 2 };
  * bytes are added then. */
 int gls_encode_scaled16(const float *v, uint32_t w, uint32_t h, double scale, gls_buf *out, size_t *bad);
 
+/* The same verdict without encoding: 0, GLS_SCALED16_OVER or
+ * GLS_SCALED16_ZERO with *bad (the player checks before it writes any
+ * file of the frame). */
+int gls_scaled16_check(const float *v, size_t n, double scale, size_t *bad);
+
 #endif
