@@ -12,8 +12,9 @@ computed here in numpy.  Run with /usr/bin/python3.  Prints "ok NAME" /
       surface its pixel ray meets, computed here (not from the player's
       depth); +inf and 0 where the ray meets nothing
   check_disparity.py reproject OUT LEFT.cam RIGHT.cam TAG
-      every valid pixel of each camera, unprojected with its depth and
-      projected into the other camera: u_other = u -+ d, v_other = v
+      every valid pixel of each camera (OUT/NAME/, NAME the camera file's
+      name), unprojected with its depth and projected into the other
+      camera: u_other = u -+ d, v_other = v
   check_disparity.py kitti OUT NAME...     disparity16 = floor(256 d + 0.5), 0 where d = +inf
   check_disparity.py depth16 OUT SCALE NAME...   depth16 = floor(Zc S + 0.5), 0 where no surface
   check_disparity.py npy PFMDIR NPYDIR NAME KIND CH   KIND_000000.npy == KIND_000000.pfm bit for bit
@@ -121,9 +122,13 @@ def pixels_into(src, dst, z):
     return u, v, x[0] / x[2], x[1] / x[2]
 
 
+def cam_name(path):
+    return path.rsplit('/', 1)[-1].rsplit('.', 1)[0]
+
+
 def reproject(out, lpath, rpath, tag):
     left, right = read_cam(lpath), read_cam(rpath)
-    for name, src, dst, sign in (('left', left, right, -1), ('right', right, left, 1)):
+    for name, src, dst, sign in ((cam_name(lpath), left, right, -1), (cam_name(rpath), right, left, 1)):
         z = read_pfm('%s/%s/depth_000000.pfm' % (out, name))
         d = read_pfm('%s/%s/disparity_000000.pfm' % (out, name))
         if not result('reproject_read_%s_%s' % (tag, name), z is not None and d is not None, 'cannot read'):
