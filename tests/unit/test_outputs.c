@@ -11,6 +11,7 @@
 #include <spng.h>
 #include <stb/stb_image.h>
 #include "check.h"
+#include "out_disparity.h"
 #include "out_npy.h"
 #include "out_png16.h"
 #include "outputs.h"
@@ -197,6 +198,43 @@ static void test_scaled16(void)
     free(a.data);
 }
 
+/* The rectified-pair check's tolerances (out_disparity.h): 1e-9 per
+ * rotation entry, 1e-9 B off the x axis, 1e-9 relative on intrinsics;
+ * B from the centres. */
+static gls_camera pair_cam(double bx, double by, double fx, double r01)
+{
+    gls_camera c;
+    memset(&c, 0, sizeof c);
+    c.width = 64, c.height = 48, c.fx = fx, c.fy = 500, c.cx = 31.5, c.cy = 23.5;
+    double R[9] = {1, r01, 0, -r01, 1, 0, 0, 0, 1};
+    memcpy(c.R, R, sizeof R);
+    c.T[0] = -bx, c.T[1] = -by; /* centre (bx, by, 0) for R = I */
+    c.near = 0.1, c.far = 100;
+    return c;
+}
+
+static void test_rectified_tolerance(void)
+{
+    char err[256];
+    double B = 0;
+    gls_camera l = pair_cam(0, 0, 500, 0);
+    gls_camera r = pair_cam(0.5, 0, 500, 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == 0 && B == 0.5);
+    r = pair_cam(0.5, 0.5e-10, 500 * (1 + 1e-10), 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == 0);
+    r = pair_cam(0.5, 0.5e-8, 500, 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1 && strstr(err, "not along x"));
+    r = pair_cam(0.5, 0, 500 * (1 + 1e-8), 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1 && strstr(err, "different fx"));
+    r = pair_cam(0.5, 0, 500, 1e-8);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1);
+    CHECK_STR(err, "cameras l and r have different rotations");
+    r = pair_cam(0.5, 0, 500, 1e-10); /* rotation within 1e-9: the centre moves by 1e-10 B too */
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == 0);
+    r = pair_cam(-0.5, 0, 500, 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1 && strstr(err, "not to the right"));
+}
+
 int main(void)
 {
     RUN(test_png8_pixels);
@@ -204,5 +242,6 @@ int main(void)
     RUN(test_png16_pixels);
     RUN(test_npy_layout);
     RUN(test_scaled16);
+    RUN(test_rectified_tolerance);
     CHECK_EXIT();
 }
