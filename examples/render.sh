@@ -15,7 +15,8 @@
 #                        dense_stereo (--aa 4) keep theirs: their tests
 #                        measure with them
 #   EXAMPLES_OUTPUTS=L   glsplay --outputs (default image,depth,points;
-#                        calibration never writes points)
+#                        calibration never writes points; stereo's
+#                        binocular pair adds disparity,disparity16)
 #   EXAMPLES_DEPTH_VIEW=0  skip the colour depth views (no depth2png needed)
 #   EXAMPLES_ONLY="a b"  render only these examples
 set -e
@@ -36,13 +37,15 @@ example() {
     mkdir -p "$OUT/$name"
     "$B/glsc" -I "$B/scenelib.glsb" -o "$OUT/$name/$name.glsb" "$HERE/$name/$scene.scene"
     set -- "$@" -o "$OUT/$name"
-    for c in "$HERE/$name"/*.cam; do set -- "$@" --camera "$c"; done
+    # CAMS: only these cameras (names without .cam), else every camera
+    cams=${CAMS:-$(cd "$HERE/$name" && ls *.cam | sed 's/\.cam$//')}
+    for c in $cams; do set -- "$@" --camera "$HERE/$name/$c.cam"; done
     "$B/glsplay" "$OUT/$name/$name.glsb" "$@"
-    [ "${EXAMPLES_DEPTH_VIEW:-1}" = 0 ] || for c in "$HERE/$name"/*.cam; do
-        d="$OUT/$name/$(basename "$c" .cam)"
+    [ "${EXAMPLES_DEPTH_VIEW:-1}" = 0 ] || for c in $cams; do
+        d="$OUT/$name/$c"
         "$B/depth2png" "$d/depth_000000.pfm" "$d/depth_000000_view.png"
     done
-    if [ -n "$GAL" ]; then
+    if [ -n "$GAL" ] && [ -n "$gcam" ]; then
         "$B/pnghalf" "$OUT/$name/$gcam/image_000000.png" "$GAL/ex_$name.png"
         "$B/pnghalf" "$OUT/$name/$gcam/depth_000000_view.png" "$GAL/ex_${name}_depth.png"
     fi
@@ -50,7 +53,13 @@ example() {
 }
 
 example calibration Calibration view05 --aa 8 --pattern grid --outputs "$(echo "$OUTPUTS" | sed 's/,*points//')"
-example stereo Stereo bino_left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY
+# stereo: the binocular rig is a rectified pair, so it also writes its
+# disparity (spec/outputs.md); the trinocular rig is rendered on its own
+CAMS="bino_left bino_right"
+example stereo Stereo bino_left --aa "$LOOK_AA" --outputs "$OUTPUTS,disparity,disparity16" --background $SKY
+CAMS="tri_left tri_right tri_top"
+example stereo Stereo "" --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY
+CAMS=
 example dense_stereo DenseStereo left --aa 4 --outputs "$OUTPUTS"
 example grouping Grouping left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY
 example lane Lane left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include "aa_onepass.h"
 #include "aa_render.h"
+#include "out_disparity.h"
 #include "units.h"
 #include "player.h"
 #include "scene_cull.h"
@@ -79,8 +80,9 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     char err[128];
     if (gls_aa_plan_init(&p, &ao, err, sizeof err))
         p.count = 1, p.o = ao, p.o.n = 1;
-    int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
-    int centre = !aa || (outputs & GLS_OUT_CENTRE_Z);
+    int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
+    int centre = !aa || (outputs & GLS_OUT_FROM_Z);
+    int npy = o->float_format == GLS_FLOAT_NPY;
     static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
             b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
@@ -196,16 +198,21 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         }
         if (centre)
             fprintf(out, "  reads back%s: %s%s%s\n", aa ? " (unjittered centre pass)" : "",
-                    (!aa && (outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (outputs & GLS_OUT_POINTS)
+                    (!aa && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (outputs & GLS_OUT_POINTS)
                         ? "colour (RGBA8) " : "",
-                    outputs & GLS_OUT_CENTRE_Z ? "depth (float32) " : "",
+                    outputs & GLS_OUT_FROM_Z ? "depth (float32) " : "",
                     outputs ? "" : "nothing");
         fprintf(out, "  writes:%s%s%s%s%s\n", outputs & GLS_OUT_IMAGE ? " image (" : "",
-                outputs & GLS_OUT_IMAGE ? fmt_name[o->image_format] : "", outputs & GLS_OUT_IMAGE ? ")" : "",
-                outputs & GLS_OUT_DEPTH ? " depth (PFM, Zc)" : "",
+                outputs & GLS_OUT_IMAGE ? (npy && o->image_format == GLS_IMG_PFM ? "float32 NPY (H, W, 3)"
+                                                                                 : fmt_name[o->image_format])
+                                        : "",
+                outputs & GLS_OUT_IMAGE ? ")" : "",
+                outputs & GLS_OUT_DEPTH ? (npy ? " depth (NPY, Zc)" : " depth (PFM, Zc)") : "",
                 outputs & GLS_OUT_POINTS ? " points (PLY, world, double)" : "");
-        if (outputs & GLS_OUT_MASK)
-            fprintf(out, "  writes: mask (8-bit PNG, 255 where the samples of a pixel differ)\n");
+        if (outputs & GLS_OUT_EDGE_MAPS)
+            fprintf(out, "  writes: %s (8-bit PNG, 255 where the samples of a pixel differ)\n",
+                    outputs & GLS_OUT_EDGES ? "edges" : "mask");
+        gls_explain_depth_outputs(out, o, aa);
         if (outputs & GLS_OUT_LANDMARKS)
             fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
                     !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"

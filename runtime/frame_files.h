@@ -13,15 +13,21 @@
 #include "player.h"
 
 #define GLS_FRAME_PATH 4096
+#define GLS_FRAME_MAX_FILES 16
 
 typedef struct {
     gls_write_job job; /* first: the writer sees this */
     gls_camera cam;    /* size; the points' back-projection */
     const char *name;  /* camera name, for messages (outlives the job) */
+    uint32_t frame;    /* for messages */
     gls_image_format image_format;
+    gls_float_format float_format; /* depth, disparity, a pfm image */
+    double fxB;        /* disparity: fx B of the rectified pair (out_disparity.h) */
+    double depth_scale; /* depth16: codes of Zc * depth_scale */
     /* the buffers, owned by the job (freed with it); NULL when unused:
      * rgba (a plain render's image, the points' colours), image (the image
-     * in its output format when it is not rgba), z (depth), mask */
+     * in its output format when it is not rgba), z (depth), mask (the
+     * edges map); the disparity is made from z by the writer */
     uint8_t *rgba, *mask;
     void *image;
     float *z;
@@ -31,7 +37,7 @@ typedef struct {
     struct {
         unsigned bit; /* GLS_OUT_* */
         char path[GLS_FRAME_PATH];
-    } files[8];
+    } files[GLS_FRAME_MAX_FILES];
     char record[GLS_FRAME_PATH], record_text[1024];
 } gls_frame_files;
 

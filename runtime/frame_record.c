@@ -34,25 +34,37 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
     if (onepass)
         snprintf(mem, sizeof mem, " memory %llu",
                  (unsigned long long)(o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY));
-    if (m == 1 || !(out & (GLS_OUT_IMAGE | GLS_OUT_MASK)))
+    if (m == 1 || !(out & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)))
         snprintf(aa, sizeof aa, "1");
     else
         snprintf(aa, sizeof aa, "%llu %s%s%s %s %llu%s", (unsigned long long)m,
                  o->aa.filter == GLS_AA_GAUSS ? "gauss" : "box", o->aa.filter == GLS_AA_GAUSS ? ":" : "",
                  o->aa.filter == GLS_AA_GAUSS ? sigma : "", gls_aa_pattern_name(o->aa.pattern),
                  (unsigned long long)(o->aa.pattern == GLS_AA_STRATIFIED ? o->aa.seed : 0), mem);
+    /* the float format of depth, disparity and a pfm image; depth16's
+     * scale ("-" when no output uses them) */
+    int floats = (out & (GLS_OUT_DEPTH | GLS_OUT_DISPARITY)) || (image && o->image_format == GLS_IMG_PFM);
+    char scale[32] = "-";
+    if (out & GLS_OUT_DEPTH16)
+        gls_fmt_double(scale, sizeof scale, o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI);
     int k = snprintf(buf, len,
                      "glsplay frame record 1\n"
                      "frame %u\n"
                      "camera %s %ux%u\n"
-                     "outputs%s%s%s%s%s\n"
+                     "outputs%s%s%s%s%s%s%s%s%s\n"
                      "image-format %s\n"
+                     "float-format %s\n"
+                     "depth-scale %s\n"
                      "aa %s\n"
                      "anisotropic %u\n"
                      "background %s %s %s\n",
                      frame, name, c->width, c->height, out & GLS_OUT_IMAGE ? " image" : "",
                      out & GLS_OUT_DEPTH ? " depth" : "", out & GLS_OUT_POINTS ? " points" : "",
-                     out & GLS_OUT_MASK ? " mask" : "", out & GLS_OUT_LANDMARKS ? " landmarks" : "", image ? fmt[o->image_format] : "-", aa,
+                     out & GLS_OUT_EDGES ? " edges" : "", out & GLS_OUT_EDGES_AS_MASK ? " mask" : "",
+                     out & GLS_OUT_DISPARITY ? " disparity" : "", out & GLS_OUT_DISPARITY16 ? " disparity16" : "",
+                     out & GLS_OUT_DEPTH16 ? " depth16" : "", out & GLS_OUT_LANDMARKS ? " landmarks" : "",
+                     image ? fmt[o->image_format] : "-",
+                     floats ? (o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm") : "-", scale, aa,
                      o->anisotropy > 1 ? o->anisotropy : 1, bg[0], bg[1], bg[2]);
     return k < 0 || (size_t)k >= len ? -1 : 0;
 }

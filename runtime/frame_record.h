@@ -6,8 +6,9 @@
  * side, each complete.  So the player removes the record before it
  * rewrites any file of that camera and frame, and writes the record
  * (atomically) after the last one.  The record says what it covers:
- * camera name and size, outputs, image format and the settings that change
- * the images, so --resume with other outputs or settings does not take it. */
+ * camera name and size, outputs, image and float formats and the settings
+ * that change the files, so --resume with other outputs or settings does
+ * not take it. */
 #ifndef GLS_FRAME_RECORD_H
 #define GLS_FRAME_RECORD_H
 
@@ -20,7 +21,8 @@
 int gls_frame_record_path(char *buf, size_t len, const char *outdir, const char *name, uint32_t frame);
 
 /* The record's text for camera c (its name, size) and frame under o
- * (outputs, image format, anti-aliasing, anisotropy, background).  0, or
+ * (outputs, image format, float format, depth16's scale, anti-aliasing,
+ * anisotropy, background).  0, or
  * -1 if it does not fit in len. */
 int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_camera *c, const char *name,
                           uint32_t frame);

@@ -21,11 +21,22 @@ static const char usage_text[] =
     "options:\n"
     "  --camera CAM, -c CAM   camera file (repeatable)\n"
     "  -o OUTDIR              output directory (created if missing)\n"
-    "  --outputs LIST         comma-separated subset of image,depth,points,mask\n"
-    "                         (default image,depth,points; mask: 255 where a pixel's\n"
-    "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
-    "                         it needs --aa N with N > 1); also landmarks: the scene's\n"
-    "                         marks projected, NAME/landmarks_F.csv (spec/outputs.md)\n"
+    "  --outputs LIST         comma-separated subset of image,depth,points,edges,\n"
+    "                         disparity,disparity16,depth16,landmarks (default\n"
+    "                         image,depth,points; spec/outputs.md):\n"
+    "                         edges: edges_F.png, 255 where a pixel's anti-aliasing\n"
+    "                         samples differ, i.e. it straddles an edge; it needs --aa N\n"
+    "                         with N > 1 (mask: the same map as mask_F.png, its old\n"
+    "                         name, for one release)\n"
+    "                         disparity: fx B / Zc (float, +inf: no surface), for a\n"
+    "                         rectified pair: exactly two cameras, the left one first;\n"
+    "                         disparity16: the same as KITTI's 16-bit PNG (d * 256)\n"
+    "                         depth16: 16-bit PNG of Zc * --depth-scale, 0: no surface\n"
+    "                         landmarks: the scene's marks projected, landmarks_F.csv\n"
+    "  --depth-scale S        depth16's scale: a positive number, kitti (256, the\n"
+    "                         default) or tum (5000)\n"
+    "  --float-format F       pfm (default) or npy (NumPy float32): the file format of\n"
+    "                         depth, disparity and the image with --image-format pfm\n"
     "  --size WxH             override every camera's width and height\n"
     "  --write-calib          also write the cameras' calibration (spec/outputs.md):\n"
     "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
@@ -105,8 +116,16 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_DEPTH;
         else if (strcmp(t, "points") == 0)
             *bits |= GLS_OUT_POINTS;
-        else if (strcmp(t, "mask") == 0)
-            *bits |= GLS_OUT_MASK;
+        else if (strcmp(t, "edges") == 0)
+            *bits |= GLS_OUT_EDGES;
+        else if (strcmp(t, "mask") == 0) /* edges' old name, for one release */
+            *bits |= GLS_OUT_EDGES_AS_MASK;
+        else if (strcmp(t, "disparity") == 0)
+            *bits |= GLS_OUT_DISPARITY;
+        else if (strcmp(t, "disparity16") == 0)
+            *bits |= GLS_OUT_DISPARITY16;
+        else if (strcmp(t, "depth16") == 0)
+            *bits |= GLS_OUT_DEPTH16;
         else if (strcmp(t, "landmarks") == 0)
             *bits |= GLS_OUT_LANDMARKS;
         else
@@ -234,7 +253,8 @@ int main(int argc, char **argv)
             o.outdir = argv[++i];
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
-                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, mask, landmarks, got '%s'",
+                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, edges, disparity, "
+                                 "disparity16, depth16, landmarks, got '%s'",
                                  has_val ? argv[i + 1] : "");
                 goto done;
             }
@@ -356,6 +376,28 @@ int main(int argc, char **argv)
                 goto done;
             }
             i++;
+        } else if (strcmp(a, "--depth-scale") == 0) {
+            const char *v = has_val ? argv[i + 1] : "";
+            if (strcmp(v, "kitti") == 0)
+                o.depth_scale = GLS_DEPTH_SCALE_KITTI;
+            else if (strcmp(v, "tum") == 0)
+                o.depth_scale = GLS_DEPTH_SCALE_TUM;
+            else if (parse_pos(v, &o.depth_scale)) {
+                rc = usage_error("--depth-scale needs a positive number, kitti (256) or tum (5000), got '%s'", v);
+                goto done;
+            }
+            i++;
+        } else if (strcmp(a, "--float-format") == 0) {
+            const char *v = has_val ? argv[i + 1] : "";
+            if (strcmp(v, "pfm") == 0)
+                o.float_format = GLS_FLOAT_PFM;
+            else if (strcmp(v, "npy") == 0)
+                o.float_format = GLS_FLOAT_NPY;
+            else {
+                rc = usage_error("--float-format needs pfm or npy, got '%s'", v);
+                goto done;
+            }
+            i++;
         } else if (strcmp(a, "--explain") == 0) {
             o.explain = 1;
         } else if (strcmp(a, "--write-calib") == 0) {
@@ -437,9 +479,10 @@ int main(int argc, char **argv)
             goto done;
         }
     }
-    /* one sample per pixel: no pixel is mixed, the mask would be all 0 */
-    if ((o.outputs & GLS_OUT_MASK) && (o.aa.samples ? o.aa.samples : (uint64_t)o.aa.n * o.aa.n) <= 1) {
-        rc = usage_error("%s--outputs mask needs anti-aliasing, --aa N with N > 1", "");
+    /* one sample per pixel: no pixel is mixed, the map would be all 0 */
+    if ((o.outputs & GLS_OUT_EDGE_MAPS) && (o.aa.samples ? o.aa.samples : (uint64_t)o.aa.n * o.aa.n) <= 1) {
+        rc = usage_error("--outputs %s needs anti-aliasing, --aa N with N > 1",
+                         o.outputs & GLS_OUT_EDGES ? "edges" : "mask");
         goto done;
     }
     if (!o.bundle) {
@@ -467,6 +510,9 @@ int main(int argc, char **argv)
         rc = usage_error("%sno camera given (--camera CAM)", "");
         goto done;
     }
+    if (o.outputs & GLS_OUT_EDGES_AS_MASK)
+        fprintf(stderr, "glsplay: note: --outputs mask is now called edges (the word mask will mean object masks); "
+                        "mask_F.png is written as before\n");
     rc = gls_play(&o, stdout, stderr);
 done:
     free(cams);

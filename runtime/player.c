@@ -25,6 +25,7 @@
 #include "gt_landmarks.h"
 #include "mkdirs.h"
 #include "motion.h"
+#include "out_disparity.h"
 #include "outputs.h"
 #include "player.h"
 #include "progress.h"
@@ -65,22 +66,28 @@ static char *camera_name(const char *path)
     return s;
 }
 
-/* The output kinds, in the order they are written. */
+/* The output kinds, in the order they are written; ext NULL: a float
+ * output, .pfm or .npy by --float-format. */
 static const struct {
     unsigned bit;
-    const char *kind;
-} outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"},
-            {GLS_OUT_LANDMARKS, "landmarks"}};
+    const char *kind, *ext;
+} outs[] = {{GLS_OUT_IMAGE, "image", "png"},
+            {GLS_OUT_DEPTH, "depth", NULL},
+            {GLS_OUT_POINTS, "points", "ply"},
+            {GLS_OUT_EDGES, "edges", "png"},
+            {GLS_OUT_EDGES_AS_MASK, "mask", "png"},
+            {GLS_OUT_DISPARITY, "disparity", NULL},
+            {GLS_OUT_DISPARITY16, "disparity16", "png"},
+            {GLS_OUT_DEPTH16, "depth16", "png"},
+            {GLS_OUT_LANDMARKS, "landmarks", "csv"}};
 #define NOUTS (sizeof outs / sizeof outs[0])
 
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
 static int output_file(char *path, size_t len, const gls_play_opts *o, const char *name, size_t k, uint32_t frame)
 {
-    const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
-    if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
-        ext = "pfm";
-    if (outs[k].bit == GLS_OUT_LANDMARKS)
-        ext = "csv";
+    const char *ext = outs[k].ext;
+    if (!ext || (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM))
+        ext = o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm";
     return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
 }
 
@@ -182,6 +189,7 @@ typedef struct {
     uint64_t views, views_done; /* camera frames to render, rendered    */
     double t0;                  /* when rendering began                 */
     int estimated;              /* the estimate was made (printed or not) */
+    double baseline;            /* disparity: B of the rectified pair   */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -232,19 +240,23 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
 {
     unsigned out = o->outputs;
     uint64_t b = 0, enc = 0;
-    if (out & GLS_OUT_CENTRE_Z)
+    if (out & GLS_OUT_FROM_Z)
         b += 4 * n, enc = 4 * n;
-    if ((!aa && (out & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (out & GLS_OUT_POINTS))
+    if (out & GLS_OUT_DISPARITIES) /* made by the writer */
+        b += 4 * n;
+    if (out & (GLS_OUT_DISPARITY16 | GLS_OUT_DEPTH16)) /* the 16-bit codes */
+        b += 2 * n;
+    if ((!aa && (out & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (out & GLS_OUT_POINTS))
         b += 4 * n;
     if (aa)
-        b += (weighted ? 32 : 16) * n + ((out & GLS_OUT_MASK) ? 5 * n : 0);
+        b += (weighted ? 32 : 16) * n + ((out & GLS_OUT_EDGE_MAPS) ? 5 * n : 0);
     if (out & GLS_OUT_IMAGE) {
         uint64_t img = o->image_format == GLS_IMG_PFM ? 12 : o->image_format == GLS_IMG_PNG16 ? 6 : aa ? 4 : 0;
         b += img * n;
         if (img * n > enc)
             enc = img * n;
     }
-    if (out & GLS_OUT_MASK)
+    if (out & GLS_OUT_EDGE_MAPS)
         b += n;
     if (out & GLS_OUT_POINTS)
         enc = 27 * n; /* x y z double, r g b */
@@ -279,8 +291,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     FILE *errs = s->errs;
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
-    int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
-    int centre = !aa || (o->outputs & GLS_OUT_CENTRE_Z);
+    int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
+    int centre = !aa || (o->outputs & GLS_OUT_FROM_Z);
     uint8_t *rgba = NULL, *mask = NULL;
     float *z = NULL;
     void *img = NULL; /* image in its output format when not rgba */
@@ -294,13 +306,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     }
     if (centre) {
         gls_render_pass(r, c, 0.0, 0.0);
-        if ((!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (o->outputs & GLS_OUT_POINTS)) {
+        if ((!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (o->outputs & GLS_OUT_POINTS)) {
             rgba = malloc(n * 4);
             if (!rgba)
                 goto oom;
             gls_render_read_rgba(r, rgba);
         }
-        if (o->outputs & GLS_OUT_CENTRE_Z) {
+        if (o->outputs & GLS_OUT_FROM_Z) {
             z = malloc(n * sizeof *z);
             if (!z)
                 goto oom;
@@ -308,7 +320,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         }
     }
     if (aa) {
-        if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_MASK) != 0))
+        if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
         if (gls_aa_fine_ok(plan)) {
             /* lattice and grid: the samples are the pixels of a fine
@@ -361,7 +373,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             gls_accum_rgba8(&acc, img);
         }
     }
-    if (o->outputs & GLS_OUT_MASK) {
+    if (o->outputs & GLS_OUT_EDGE_MAPS) {
         /* one sample per pixel cannot straddle anything: all zero */
         mask = calloc(n ? n : 1, 1);
         if (!mask)
@@ -377,7 +389,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         goto oom;
     f->cam = *c;
     f->name = name;
+    f->frame = frame;
     f->image_format = o->image_format;
+    f->float_format = o->float_format;
+    f->fxB = c->fx * s->baseline;
+    f->depth_scale = o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI;
     f->buffer_bytes = camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n);
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame);
@@ -595,6 +611,21 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
     return 0;
 }
 
+/* --outputs disparity: exactly two cameras, a rectified pair with the
+ * left one first (out_disparity.h).  0 with *B, or 1 after a message. */
+static int rectified_check(const gls_play_opts *o, const gls_camera *cams, const char *const *names, double *B,
+                           FILE *errs)
+{
+    char why[512];
+    const char *word = o->outputs & GLS_OUT_DISPARITY ? "disparity" : "disparity16";
+    if (o->ncameras != 2)
+        snprintf(why, sizeof why, "exactly two cameras, the left one first; %zu given", o->ncameras);
+    else if (gls_rectified_pair(&cams[0], &cams[1], names[0], names[1], B, why, sizeof why) == 0)
+        return 0;
+    fprintf(errs, "glsplay: error: --outputs %s needs a rectified pair: %s\n", word, why);
+    return 1;
+}
+
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
@@ -611,6 +642,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_bundle *b = NULL;
     gls_aa_plan plan;
     gls_aa_opts aao = o->aa;
+    double baseline = 0;
     if (aao.n == 0)
         aao.n = 1;
     if (gls_aa_plan_init(&plan, &aao, err, sizeof err)) {
@@ -656,6 +688,9 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                 goto out;
             }
     }
+    /* disparity: a rectified pair, checked before anything is drawn */
+    if ((o->outputs & GLS_OUT_DISPARITIES) && rectified_check(o, cams, (const char *const *)names, &baseline, errs))
+        goto out;
     if ((o->flatten ? gls_scene_flatten : gls_scene_load)(b, &scene, err, sizeof err)) {
         fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, err);
         goto out;
@@ -710,7 +745,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0};
+    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline};
     if (!o->trajectory) {
         int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
         if (o->resume)

@@ -11,12 +11,35 @@
 #include "glctx.h"
 #include "scene.h"
 
-/* mask: the mixed-pixel mask of an anti-aliased image (spec/antialiasing.md) */
-enum { GLS_OUT_IMAGE = 1, GLS_OUT_DEPTH = 2, GLS_OUT_POINTS = 4, GLS_OUT_MASK = 8 };
-/* landmarks: the scene's marks projected, as CSV (gt_landmarks.h) */
-enum { GLS_OUT_LANDMARKS = 1u << 12 };
-/* The outputs made from the centre sample's depth (never blended). */
-#define GLS_OUT_CENTRE_Z (GLS_OUT_DEPTH | GLS_OUT_POINTS | GLS_OUT_LANDMARKS)
+/* edges: the mixed-pixel map of an anti-aliased image (spec/antialiasing.md);
+ * EDGES_AS_MASK: the same map under its old name mask_F.png (--outputs mask,
+ * kept for one release).  disparity, disparity16: fx B / Zc of a rectified
+ * pair, float and KITTI 16-bit PNG; depth16: 16-bit PNG of Zc * depth_scale
+ * (spec/outputs.md "Disparity and 16-bit depth"); landmarks: the scene's
+ * marks projected, as CSV (gt_landmarks.h). */
+enum {
+    GLS_OUT_IMAGE = 1,
+    GLS_OUT_DEPTH = 2,
+    GLS_OUT_POINTS = 4,
+    GLS_OUT_EDGES = 8,
+    GLS_OUT_EDGES_AS_MASK = 16,
+    GLS_OUT_DISPARITY = 32,
+    GLS_OUT_DISPARITY16 = 64,
+    GLS_OUT_DEPTH16 = 128,
+    GLS_OUT_LANDMARKS = 1u << 12
+};
+/* the outputs made from the mixed-pixel map, and from the centre pass's depth */
+#define GLS_OUT_EDGE_MAPS (GLS_OUT_EDGES | GLS_OUT_EDGES_AS_MASK)
+#define GLS_OUT_DISPARITIES (GLS_OUT_DISPARITY | GLS_OUT_DISPARITY16)
+#define GLS_OUT_FROM_Z (GLS_OUT_DEPTH | GLS_OUT_POINTS | GLS_OUT_DISPARITIES | GLS_OUT_DEPTH16 | GLS_OUT_LANDMARKS)
+
+/* depth16's scale by default: KITTI's metres * 256 (TUM's is 5000) */
+#define GLS_DEPTH_SCALE_KITTI 256.0
+#define GLS_DEPTH_SCALE_TUM 5000.0
+
+/* Format of the float outputs (depth, disparity, the image with
+ * --image-format pfm): PFM, or NumPy .npy (out_npy.h). */
+typedef enum { GLS_FLOAT_PFM = 0, GLS_FLOAT_NPY = 1 } gls_float_format;
 
 /* Image file format: 8-bit PNG, 16-bit PNG, float32 PFM ("PF", RGB). */
 typedef enum { GLS_IMG_PNG8 = 0, GLS_IMG_PNG16 = 1, GLS_IMG_PFM = 2 } gls_image_format;
@@ -39,6 +62,8 @@ typedef struct {
     float background[3];         /* clear colour, 0..1 (default black)   */
     gls_aa_opts aa;              /* anti-aliasing; n = 0 is taken as 1   */
     gls_image_format image_format;
+    gls_float_format float_format; /* depth, disparity, a pfm image    */
+    double depth_scale;          /* depth16: Zc * depth_scale, 0 = KITTI's */
     uint32_t aa_tiles;           /* samples per GL pass, 0 = automatic   */
     uint64_t aa_memory;          /* one-pass anti-aliasing: bytes for the
                                     fine framebuffer's tiles, 0 = default */

@@ -63,8 +63,8 @@ render() {
 SKY="--background 0.55,0.7,0.9"
 render demo_aa4 "$t/demo.glsb" --camera examples/demo/left.cam --camera examples/demo/right.cam --aa 4 $SKY
 render demo_plain "$t/demo.glsb" --camera examples/demo/left.cam --outputs image,depth,points
-render demo_aa4_png16_mask "$t/demo.glsb" --camera examples/demo/right.cam --aa 4 --image-format png16 \
-    --outputs image,mask
+render demo_aa4_png16_edges "$t/demo.glsb" --camera examples/demo/right.cam --aa 4 --image-format png16 \
+    --outputs image,edges
 render proj "$t/proj.glsb" --camera "$t/proj.cam"
 render orient_stereo "$t/orient.glsb" --camera "$t/orient.cam" --camera "$t/left.cam" --camera "$t/right.cam"
 for e in calibration stereo dense_stereo grouping lane signs; do

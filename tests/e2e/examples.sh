@@ -12,6 +12,9 @@
 #     corners lie within 0.1 px (RMS and max) of the stated corners
 #     projected through the camera files; cv2.calibrateCamera recovers
 #     fx, fy, cx, cy within 1 px;
+#   - stereo: the binocular pair writes disparity and disparity16 (every
+#     pixel reprojected into the other camera lands u -+ d away, on the
+#     same row; the KITTI PNG is round(256 d)), the trinocular rig none;
 #   - dense stereo: StereoSGBM on the rectified pair (--aa 4, as make demo)
 #     agrees with the ground-truth disparity f B / Z within 1 px on at least
 #     95% of the pixels valid in both (measured 0.989), within 3 px on 97%.
@@ -72,4 +75,10 @@ for e in $EXAMPLES; do
     $PY tests/py/examples_check.py depth "$e" "$t/out/$e"
 done
 $PY tests/py/examples_check.py calib examples/calibration "$t/out/calibration" 0.1 | grep -v '^# view'
+# stereo: the binocular rig, a rectified pair, writes its disparity
+$PY tests/py/check_disparity.py reproject "$t/out/stereo" examples/stereo/bino_left.cam examples/stereo/bino_right.cam \
+    stereo_example | grep -v '^#'
+$PY tests/py/check_disparity.py kitti "$t/out/stereo" bino_left bino_right
+[ ! -e "$t/out/stereo/tri_left/disparity_000000.pfm" ] && [ -f "$t/out/stereo/tri_left/image_000000.png" ] &&
+    ok examples_stereo_trinocular_no_disparity || fail examples_stereo_trinocular_no_disparity "$(ls "$t/out/stereo/tri_left")"
 $PY tests/py/examples_check.py sgbm examples/dense_stereo "$t/out/dense_stereo" 0.95 0.97

@@ -21,8 +21,8 @@ S="$t/proj.glsb --camera $t/proj.cam"
 run aa_plain $PLAY $S -o "$t/plain"
 run aa_one $PLAY $S -o "$t/one" --aa 1
 cmp -s "$t/plain/proj/image_000000.png" "$t/one/proj/image_000000.png" && ok aa_one_is_plain || fail aa_one_is_plain "images differ"
-run aa_16 $PLAY $S -o "$t/a16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,mask
-run aa_16_again $PLAY $S -o "$t/b16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,mask
+run aa_16 $PLAY $S -o "$t/a16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,edges
+run aa_16_again $PLAY $S -o "$t/b16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,edges
 cmp -s "$t/a16/proj/image_000000.png" "$t/b16/proj/image_000000.png" && ok aa_deterministic || fail aa_deterministic "stratified runs differ"
 run aa_seed6 $PLAY $S -o "$t/c16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 6 --image-format png16 --outputs image
 cmp -s "$t/a16/proj/image_000000.png" "$t/c16/proj/image_000000.png" && fail aa_seed_matters "seeds 5 and 6 give the same image" || ok aa_seed_matters
@@ -31,7 +31,7 @@ run aa_pfm $PLAY $S -o "$t/pf" --subpixel 1/8 --image-format pfm --outputs image
 # the same samples as a16, written as float: png16 must agree with it
 run aa_16_pfm $PLAY $S -o "$t/a16pf" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format pfm --outputs image
 [ -s "$t/pf/proj/image_000000.pfm" ] && head -c 3 "$t/pf/proj/image_000000.pfm" | grep -q '^PF' && ok aa_pfm_header || fail aa_pfm_header "no PF file"
-run aa_lattice_mask $PLAY $S -o "$t/lat" --aa 4 --image-format pfm --outputs image,mask
+run aa_lattice_edges $PLAY $S -o "$t/lat" --aa 4 --image-format pfm --outputs image,edges
 if [ -x $PY ] && $PY -c 'import cv2' 2>/dev/null; then
     $PY - "$t" <<'PYEOF'
 import sys, cv2, numpy as np
@@ -39,7 +39,7 @@ t = sys.argv[1]
 plain = cv2.imread(t + '/plain/proj/image_000000.png', cv2.IMREAD_UNCHANGED).astype(float) / 255
 a16 = cv2.imread(t + '/a16/proj/image_000000.png', cv2.IMREAD_UNCHANGED)
 pf = cv2.imread(t + '/pf/proj/image_000000.pfm', cv2.IMREAD_UNCHANGED)
-mask = cv2.imread(t + '/a16/proj/mask_000000.png', cv2.IMREAD_UNCHANGED)
+mask = cv2.imread(t + '/a16/proj/edges_000000.png', cv2.IMREAD_UNCHANGED)
 def res(name, cond, why=''):
     print(('ok ' if cond else 'FAIL ') + name + ('' if cond else ': ' + why))
 res('aa_png16_depth', a16.dtype == np.uint16 and a16.shape == plain.shape, str(a16.dtype))
@@ -55,17 +55,17 @@ res('aa_pfm_float', pf.dtype == np.float32 and pf.shape == plain.shape and np.is
 # same picture: far from edges the anti-aliased image equals the plain one
 flat = mask == 0
 res('aa_pfm_matches_plain', np.abs(pf - plain)[flat].max() < 1e-6 if flat.any() else False, 'differs away from edges')
-res('aa_mask_edges', 0 < (mask > 0).sum() < mask.size // 4, '%d mixed' % (mask > 0).sum())
+res('aa_edges_map', 0 < (mask > 0).sum() < mask.size // 4, '%d mixed' % (mask > 0).sum())
 # the mask marks exactly the pixels whose anti-aliased value is not a plain colour
 inner = (a16.astype(float) / 65535)
-res('aa_mask_where_blended', np.abs(inner - plain)[~flat].max() > 0.01, 'mask marks nothing blended')
+res('aa_edges_where_blended', np.abs(inner - plain)[~flat].max() > 0.01, 'mask marks nothing blended')
 # the same through the lattice's one pass (the default)
 lat = cv2.imread(t + '/lat/proj/image_000000.pfm', cv2.IMREAD_UNCHANGED)
-lmask = cv2.imread(t + '/lat/proj/mask_000000.png', cv2.IMREAD_UNCHANGED)
+lmask = cv2.imread(t + '/lat/proj/edges_000000.png', cv2.IMREAD_UNCHANGED)
 lflat = lmask == 0
 res('aa_lattice_matches_plain', lat is not None and np.abs(lat - plain)[lflat].max() < 1e-6 and 0 < (~lflat).sum() < lmask.size // 4,
     'differs away from edges')
-res('aa_lattice_mask_where_blended', np.abs(lat - plain)[~lflat].max() > 0.01, 'mask marks nothing blended')
+res('aa_lattice_edges_where_blended', np.abs(lat - plain)[~lflat].max() > 0.01, 'mask marks nothing blended')
 PYEOF
 else
     fail player_aa_opencv "no OpenCV under $PY"

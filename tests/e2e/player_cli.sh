@@ -112,15 +112,25 @@ exact() {
 # -o "": OUTDIR/NAME would be /NAME at the file-system root
 exact player_usage_empty_outdir 2 "glsplay: error: -o needs a non-empty output directory (try glsplay --help)" -- \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o ""
-# a mask of one sample per pixel would be all 0: refused
-exact player_usage_mask_without_aa 2 \
-    "glsplay: error: --outputs mask needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
-    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs image,mask
+# an edges map of one sample per pixel would be all 0: refused
+exact player_usage_edges_without_aa 2 \
+    "glsplay: error: --outputs edges needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs image,edges
+exact player_usage_edges_aa1 2 \
+    "glsplay: error: --outputs edges needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs edges --aa 1
 exact player_usage_mask_aa1 2 \
     "glsplay: error: --outputs mask needs anti-aliasing, --aa N with N > 1 (try glsplay --help)" -- \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m" --outputs mask --aa 1
-[ ! -e "$t/m" ] && ok player_mask_without_aa_writes_nothing || fail player_mask_without_aa_writes_nothing "$(find "$t/m")"
-exact player_mask_with_aa 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m2" --outputs mask --aa 2
+[ ! -e "$t/m" ] && ok player_edges_without_aa_writes_nothing || fail player_edges_without_aa_writes_nothing "$(find "$t/m")"
+exact player_edges_with_aa 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m2" --outputs edges --aa 2
+[ "$(ls "$t/m2/proj")" = "edges_000000.png" ] && ok player_edges_file_name || fail player_edges_file_name "$(ls "$t/m2/proj")"
+# mask: edges' old name, for one release: the same map as mask_F.png, and a note
+exact player_mask_alias 0 \
+    "glsplay: note: --outputs mask is now called edges (the word mask will mean object masks); mask_F.png is written as before" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/m3" --outputs mask --aa 2
+[ "$(ls "$t/m3/proj")" = "mask_000000.png" ] && cmp -s "$t/m3/proj/mask_000000.png" "$t/m2/proj/edges_000000.png" &&
+    ok player_mask_alias_same_map || fail player_mask_alias_same_map "$(ls "$t/m3/proj")"
 # anisotropic texture filtering: off in the default plan (llvmpipe takes
 # minutes per frame with it), on with --anisotropic N
 if "$B/glsc" -I examples/demo -I "$B/textures" -o "$t/tex.glsb" examples/demo/Demo.scene 2>"$t/stderr"; then

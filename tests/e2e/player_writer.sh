@@ -39,9 +39,9 @@ CAM
 play() { "$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --background 0.25,0.25,0.25 "$@"; }
 
 # the same files, byte for byte, with and without the thread: every output,
-# 8-bit, then 16-bit with anti-aliasing and the mask
+# 8-bit, then 16-bit with anti-aliasing and the edges map
 same=1
-for args in "" "--image-format png16 --aa 4 --outputs image,depth,points,mask"; do
+for args in "" "--image-format png16 --aa 4 --outputs image,depth,points,edges"; do
     # shellcheck disable=SC2086
     play $args --writer-threads 1 -o "$tmp/t1" 2>"$tmp/err1" &&
         play $args --writer-threads 0 -o "$tmp/t0" 2>"$tmp/err0" &&

@@ -4,12 +4,16 @@
  * encoders before issue 14 gave (stb_image_write for 8-bit, libspng at its
  * default level for 16-bit); the files are written at zlib's fastest level
  * and are the same bytes every time. */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <spng.h>
 #include <stb/stb_image.h>
 #include "check.h"
+#include "out_disparity.h"
+#include "out_npy.h"
+#include "out_png16.h"
 #include "outputs.h"
 #include "stb_png.h"
 
@@ -135,10 +139,109 @@ static void test_png16_pixels(void)
     free(p), free(a.data), free(b.data), free(old.data);
 }
 
+/* .npy (out_npy.h): numpy's header for (h, w) and (h, w, 3), padded so
+ * the data starts at byte 128 (10 + 60 or 63 header bytes, rounded up to
+ * a multiple of 64), the floats little-endian in C order. */
+static void test_npy_layout(void)
+{
+    float v[2 * 3 * 3];
+    for (int i = 0; i < 18; i++)
+        v[i] = (float)i - 0.5f;
+    v[4] = INFINITY;
+    static const char h1[] = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }";
+    static const char h3[] = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3, 3), }";
+    for (unsigned ch = 1; ch <= 3; ch += 2) {
+        gls_buf a = {0};
+        CHECK(gls_encode_npy(v, 3, 2, ch, &a) == 0);
+        const char *h = ch == 1 ? h1 : h3;
+        size_t hl = strlen(h);
+        CHECK(a.len == 128 + 6 * ch * 4);
+        CHECK(memcmp(a.data, "\x93NUMPY\x01\x00", 8) == 0 && a.data[8] == 118 && a.data[9] == 0);
+        CHECK(memcmp(a.data + 10, h, hl) == 0);
+        for (size_t i = 10 + hl; i < 127; i++)
+            CHECK(a.data[i] == ' ');
+        CHECK(a.data[127] == '\n');
+        for (unsigned i = 0; a.len == 128 + 6 * ch * 4 && i < 6 * ch; i++) {
+            uint32_t bits, want;
+            memcpy(&want, &v[i], 4);
+            const uint8_t *p = a.data + 128 + 4 * i;
+            bits = (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+            CHECK(bits == want);
+        }
+        free(a.data);
+    }
+}
+
+/* Scaled 16-bit PNGs (out_png16.h): floor(v s + 0.5), 0 for no surface,
+ * and the first value that does not fit refused at its boundary:
+ * 255.998046875 * 256 = 65535.5 rounds to 65536. */
+static void test_scaled16(void)
+{
+    float v[6] = {1.0f, INFINITY, 255.998f, 0.5f / 256, 12.25f, NAN};
+    gls_buf a = {0};
+    size_t bad = 99;
+    CHECK(gls_encode_scaled16(v, 3, 2, 256, &a, &bad) == 0);
+    int w, h, c;
+    uint16_t *d = stbi_load_16_from_memory(a.data, (int)a.len, &w, &h, &c, 0);
+    CHECK(d && w == 3 && h == 2 && c == 1);
+    if (d)
+        CHECK(d[0] == 256 && d[1] == 0 && d[2] == 65535 && d[3] == 1 && d[4] == 3136 && d[5] == 0);
+    stbi_image_free(d);
+    free(a.data);
+    a = (gls_buf){0};
+    float over[2] = {3, 255.998046875f};
+    CHECK(gls_encode_scaled16(over, 2, 1, 256, &a, &bad) == GLS_SCALED16_OVER && bad == 1 && a.len == 0);
+    float zero[3] = {INFINITY, 1, 0.4f / 256};
+    CHECK(gls_encode_scaled16(zero, 3, 1, 256, &a, &bad) == GLS_SCALED16_ZERO && bad == 2 && a.len == 0);
+    float tum[1] = {13.107f}; /* 65535 / 5000 */
+    CHECK(gls_encode_scaled16(tum, 1, 1, 5000, &a, &bad) == 0);
+    free(a.data);
+}
+
+/* The rectified-pair check's tolerances (out_disparity.h): 1e-9 per
+ * rotation entry, 1e-9 B off the x axis, 1e-9 relative on intrinsics;
+ * B from the centres. */
+static gls_camera pair_cam(double bx, double by, double fx, double r01)
+{
+    gls_camera c;
+    memset(&c, 0, sizeof c);
+    c.width = 64, c.height = 48, c.fx = fx, c.fy = 500, c.cx = 31.5, c.cy = 23.5;
+    double R[9] = {1, r01, 0, -r01, 1, 0, 0, 0, 1};
+    memcpy(c.R, R, sizeof R);
+    c.T[0] = -bx, c.T[1] = -by; /* centre (bx, by, 0) for R = I */
+    c.near = 0.1, c.far = 100;
+    return c;
+}
+
+static void test_rectified_tolerance(void)
+{
+    char err[256];
+    double B = 0;
+    gls_camera l = pair_cam(0, 0, 500, 0);
+    gls_camera r = pair_cam(0.5, 0, 500, 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == 0 && B == 0.5);
+    r = pair_cam(0.5, 0.5e-10, 500 * (1 + 1e-10), 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == 0);
+    r = pair_cam(0.5, 0.5e-8, 500, 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1 && strstr(err, "not along x"));
+    r = pair_cam(0.5, 0, 500 * (1 + 1e-8), 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1 && strstr(err, "different fx"));
+    r = pair_cam(0.5, 0, 500, 1e-8);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1);
+    CHECK_STR(err, "cameras l and r have different rotations");
+    r = pair_cam(0.5, 0, 500, 1e-10); /* rotation within 1e-9: the centre moves by 1e-10 B too */
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == 0);
+    r = pair_cam(-0.5, 0, 500, 0);
+    CHECK(gls_rectified_pair(&l, &r, "l", "r", &B, err, sizeof err) == -1 && strstr(err, "not to the right"));
+}
+
 int main(void)
 {
     RUN(test_png8_pixels);
     RUN(test_png_gray_pixels);
     RUN(test_png16_pixels);
+    RUN(test_npy_layout);
+    RUN(test_scaled16);
+    RUN(test_rectified_tolerance);
     CHECK_EXIT();
 }
