@@ -360,6 +360,7 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
         rc = gt_normals(g, gls_renderer_scene(r), err, errlen);
     if (rc == 0) {
         static const GLuint id0[4] = {0, 0, 0, 0};
+        g->glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
         static const GLfloat n0[4] = {0, 0, 0, 0}, d0 = 0; /* reversed Z: far is 0 */
         glDisable(GL_SCISSOR_TEST);
         glDisable(GL_ALPHA_TEST); /* the shader discards instead */

@@ -265,9 +265,21 @@ static void test_two_boxes(void)
     CHECK(nbad == 0 && nchecked > 4000);
     /* no surface: normal 0 0 0 */
     CHECK(id[0] == 0 && nrm[0] == 0 && nrm[1] == 0 && nrm[2] == 0);
-    /* any argument may be NULL */
+    /* again, after a colour pass: the same ids, normals and depth, and
+     * the colour pass's image untouched by it; any argument may be NULL */
+    uint8_t *rgba = malloc(n * 4), *rgba2 = malloc(n * 4);
+    uint32_t *id2 = malloc(n * sizeof *id2);
+    float *nrm2 = malloc(n * 3 * sizeof *nrm2);
+    gls_render_pass(r, &c, 0, 0);
+    gls_render_read_rgba(r, rgba);
+    CHECK(gls_gt_render(r, &c, id2, nrm2, NULL, err, sizeof err) == 0);
     CHECK(gls_gt_render(r, &c, NULL, NULL, z0, err, sizeof err) == 0);
+    gls_render_read_rgba(r, rgba2);
     CHECK(memcmp(z, z0, n * sizeof *z) == 0);
+    CHECK(memcmp(id, id2, n * sizeof *id) == 0);
+    CHECK(memcmp(nrm, nrm2, n * 3 * sizeof *nrm) == 0);
+    CHECK(memcmp(rgba, rgba2, n * 4) == 0);
+    free(rgba), free(rgba2), free(id2), free(nrm2);
     gt_run_end(&g);
     gls_scene_free(&s);
     gls_bundle_free(b);
