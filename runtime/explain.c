@@ -204,5 +204,9 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                 outputs & GLS_OUT_POINTS ? " points (PLY, world, double)" : "");
         if (outputs & GLS_OUT_MASK)
             fprintf(out, "  writes: mask (8-bit PNG, 255 where the samples of a pixel differ)\n");
+        if (outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS))
+            fprintf(out, "  ground truth: one extra pass (%s%s%s)\n", outputs & GLS_OUT_IDS ? "instance ids" : "",
+                    (outputs & GLS_OUT_IDS) && (outputs & GLS_OUT_NORMALS) ? ", " : "",
+                    outputs & GLS_OUT_NORMALS ? "normals" : "");
     }
 }

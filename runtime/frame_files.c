@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include "atomic_write.h"
 #include "frame_files.h"
+#include "out_gt.h"
 #include "outputs.h"
 #include "units.h"
 
@@ -33,6 +34,18 @@ static int encode(const gls_frame_files *f, unsigned bit, gls_buf *buf)
         return gls_encode_pfm(f->z, c->width, c->height, buf);
     case GLS_OUT_POINTS:
         return gls_encode_ply(c, f->z, f->rgba, buf, &np);
+    case GLS_OUT_INSTANCE:
+    case GLS_OUT_CLASS:
+        return gls_encode_ids_png(f->gt_inst, f->gt, bit == GLS_OUT_CLASS, c->width, c->height, buf);
+    case GLS_OUT_INSTANCE | GLS_OUT_CLASS: /* instances_F.json, with either */
+        return gls_encode_instances_json(f->gt_inst, f->gt, f->frame, f->name, c->width, c->height, buf);
+    case GLS_OUT_COCO: {
+        char image[64]; /* the image file's name, which COCO's "file_name" is */
+        snprintf(image, sizeof image, "image_%06u.%s", f->frame, f->image_format == GLS_IMG_PFM ? "pfm" : "png");
+        return gls_encode_coco(f->gt_inst, f->gt, f->frame, image, c->width, c->height, buf);
+    }
+    case GLS_OUT_NORMALS:
+        return gls_encode_pfm_rgb(f->normal, c->width, c->height, buf);
     default:
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -78,6 +91,8 @@ static void destroy(gls_write_job *job)
     free(f->mask);
     free(f->image);
     free(f->z);
+    free(f->gt_inst);
+    free(f->normal);
     free(f);
 }
 

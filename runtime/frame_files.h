@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "camera.h"
 #include "frame_writer.h"
+#include "gt_table.h"
 #include "player.h"
 
 #define GLS_FRAME_PATH 4096
@@ -24,12 +25,18 @@ typedef struct {
     uint8_t *rgba, *mask;
     void *image;
     float *z;
+    /* the ground-truth pass (gt_pass.h): instance per pixel, normals;
+     * gt, the run's ids (outlives the job); frame, for the JSON files */
+    uint32_t *gt_inst;
+    float *normal;
+    const gls_gt_table *gt;
+    uint32_t frame;
     uint64_t buffer_bytes; /* for the out-of-memory message */
     size_t nfiles;
     struct {
         unsigned bit; /* GLS_OUT_* */
         char path[GLS_FRAME_PATH];
-    } files[4];
+    } files[16];
     char record[GLS_FRAME_PATH], record_text[1024];
 } gls_frame_files;
 

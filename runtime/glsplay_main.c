@@ -24,7 +24,10 @@ static const char usage_text[] =
     "  --outputs LIST         comma-separated subset of image,depth,points,mask\n"
     "                         (default image,depth,points; mask: 255 where a pixel's\n"
     "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
-    "                         it needs --aa N with N > 1)\n"
+    "                         it needs --aa N with N > 1); ground truth from the pixel\n"
+    "                         centres, never blended (spec/outputs.md): instance and\n"
+    "                         class (16-bit PNG ids, with instances_F.json), coco\n"
+    "                         (COCO JSON, RLE masks), normals (camera-frame, PFM)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --write-calib          also write the cameras' calibration (spec/outputs.md):\n"
     "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
@@ -106,6 +109,14 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_POINTS;
         else if (strcmp(t, "mask") == 0)
             *bits |= GLS_OUT_MASK;
+        else if (strcmp(t, "instance") == 0)
+            *bits |= GLS_OUT_INSTANCE;
+        else if (strcmp(t, "class") == 0)
+            *bits |= GLS_OUT_CLASS;
+        else if (strcmp(t, "coco") == 0)
+            *bits |= GLS_OUT_COCO;
+        else if (strcmp(t, "normals") == 0)
+            *bits |= GLS_OUT_NORMALS;
         else
             return -1;
     }
@@ -231,7 +242,8 @@ int main(int argc, char **argv)
             o.outdir = argv[++i];
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
-                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, got '%s'",
+                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, mask, "
+                                 "instance, class, coco, normals, got '%s'",
                                  has_val ? argv[i + 1] : "");
                 goto done;
             }

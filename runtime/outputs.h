@@ -24,6 +24,9 @@ int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out);
 /* 8-bit greyscale PNG of one byte per pixel. */
 int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out);
 
+/* 16-bit greyscale PNG of one host-order uint16 per pixel. */
+int gls_encode_png_gray16(const uint16_t *g, uint32_t w, uint32_t h, gls_buf *out);
+
 /* Any of the above with other settings, for the bench: channels 1 or 3,
  * depth 8 or 16 (host-order samples), rgba: 8-bit pixels given as RGBA
  * (alpha dropped), level 0..9, filters SPNG_FILTER_CHOICE_* bits. */

@@ -11,8 +11,13 @@
 #include "glctx.h"
 #include "scene.h"
 
-/* mask: the mixed-pixel mask of an anti-aliased image (spec/antialiasing.md) */
+/* mask: the mixed-pixel mask of an anti-aliased image (spec/antialiasing.md);
+ * instance, class, coco, normals: from the ground-truth pass (gt_pass.h,
+ * spec/outputs.md "Instances and classes", "Normals") */
 enum { GLS_OUT_IMAGE = 1, GLS_OUT_DEPTH = 2, GLS_OUT_POINTS = 4, GLS_OUT_MASK = 8 };
+enum { GLS_OUT_INSTANCE = 16, GLS_OUT_CLASS = 32, GLS_OUT_COCO = 64, GLS_OUT_NORMALS = 128 };
+/* the outputs made from the ground-truth pass's instance ids */
+#define GLS_OUT_IDS (GLS_OUT_INSTANCE | GLS_OUT_CLASS | GLS_OUT_COCO)
 
 /* Image file format: 8-bit PNG, 16-bit PNG, float32 PFM ("PF", RGB). */
 typedef enum { GLS_IMG_PNG8 = 0, GLS_IMG_PNG16 = 1, GLS_IMG_PFM = 2 } gls_image_format;
