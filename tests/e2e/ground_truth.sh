@@ -38,3 +38,12 @@ if "$BIN/glsplay" "$t/many65535.glsb" --camera "$t/c.cam" --outputs instance --e
 else
     fail gt_accept_65535_instances "$(cat "$t/err")"
 fi
+# an unknown word names every output there is
+"$BIN/glsplay" "$t/many65535.glsb" --camera "$t/c.cam" --outputs image,instanse -o "$t/u" >/dev/null 2>"$t/err"
+rc=$?
+want="glsplay: error: --outputs needs a comma-separated list of image, depth, points, mask, instance, class, coco, normals, got 'image,instanse' (try glsplay --help)"
+if [ $rc -eq 2 ] && [ "$(cat "$t/err")" = "$want" ]; then
+    ok gt_outputs_usage
+else
+    fail gt_outputs_usage "exit $rc: $(cat "$t/err")"
+fi
