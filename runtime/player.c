@@ -276,7 +276,9 @@ static void say_failure(session *s, const char *msg)
  * for stratified); depth and points come from one extra unjittered pass
  * (the geometry at each pixel centre, never averaged across an edge),
  * drawn only when they are asked for; the points' colours come from that
- * pass too, so each point has the colour of the surface it lies on. */
+ * pass too, so each point has the colour of the surface it lies on.
+ * Instance ids and normals come from one more unjittered pass
+ * (gt_pass.h), drawn only when an output needs them. */
 static int play_camera(session *s, const gls_camera *c, const char *name, uint32_t frame)
 {
     static const char lower_size[] = "lower --size (or the camera's width and height)";

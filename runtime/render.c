@@ -5,7 +5,9 @@
  * colour, texture env REPLACE/MODULATE, alpha test), llvmpipe compiles the
  * fixed-function state into the same LLVM code a GLSL shader would give,
  * and there is no shader source to embed, compile and diagnose.  Matrices
- * go in with glLoadMatrixf after being formed in double on the CPU.
+ * go in with glLoadMatrixf after being formed in double on the CPU.  (The
+ * ground-truth pass, gt_pass.c, draws the same items through
+ * gls_render_hooked with a small GLSL program of its own.)
  *
  * Over 500 lines because it is the one file that speaks GL (the context
  * aside, glctx_*.c): textures, framebuffers, state per draw key, the
