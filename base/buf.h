@@ -31,4 +31,10 @@ typedef struct {
 int gls_buf_reserve(gls_buf *b, size_t extra);
 /* Append n bytes; 0, or -1 when out of memory. */
 int gls_buf_put(gls_buf *b, const void *p, size_t n);
+/* Append printf-formatted text (no terminating NUL); 0, or -1. */
+int gls_buf_printf(gls_buf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Append s double-quoted for JSON (json != 0) or YAML: '"' and '\' escaped,
+ * control bytes as \u00NN (JSON) or \xNN (YAML), other bytes as they
+ * are.  0, or -1. */
+int gls_buf_quoted(gls_buf *b, const char *s, int json);
 #endif

@@ -13,26 +13,7 @@
 
 #define MAXPATH 4096
 
-static int putf(gls_buf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static int putf(gls_buf *b, const char *fmt, ...)
-{
-    char small[256];
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(small, sizeof small, fmt, ap);
-    va_end(ap);
-    if (n < 0)
-        return -1;
-    if ((size_t)n < sizeof small)
-        return gls_buf_put(b, small, (size_t)n);
-    if (gls_buf_reserve(b, (size_t)n + 1))
-        return -1;
-    va_start(ap, fmt);
-    vsnprintf((char *)b->data + b->len, (size_t)n + 1, fmt, ap);
-    va_end(ap);
-    b->len += (size_t)n;
-    return 0;
-}
+#define putf gls_buf_printf
 
 /* Number styles: the shortest text that reads back as the same double
  * (gls_fmt_double) everywhere; in YAML with a '.' in the mantissa, so that
@@ -65,22 +46,7 @@ static int nums(gls_buf *b, const double *v, size_t n, const char *sep, numstyle
     return 0;
 }
 
-/* A double-quoted string for YAML or JSON: '"' and '\' escaped, control
- * bytes as \xNN (YAML) or \u00NN (JSON); other bytes as they are. */
-static int quoted(gls_buf *b, const char *s, int json)
-{
-    if (putf(b, "\""))
-        return -1;
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        int e = c == '"' || c == '\\' ? putf(b, "\\%c", c)
-                : c < 0x20 || c == 0x7f ? putf(b, json ? "\\u%04x" : "\\x%02x", c)
-                                        : putf(b, "%c", c);
-        if (e)
-            return -1;
-    }
-    return putf(b, "\"");
-}
+#define quoted gls_buf_quoted
 
 static void camera_k(const gls_camera *c, double K[9])
 {

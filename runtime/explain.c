@@ -217,5 +217,9 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
                     !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"
                                                                          : "one extra unjittered pass (--aa)");
+        if (outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS))
+            fprintf(out, "  ground truth: one extra pass (%s%s%s)\n", outputs & GLS_OUT_IDS ? "instance ids" : "",
+                    (outputs & GLS_OUT_IDS) && (outputs & GLS_OUT_NORMALS) ? ", " : "",
+                    outputs & GLS_OUT_NORMALS ? "normals" : "");
     }
 }

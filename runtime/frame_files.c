@@ -8,6 +8,7 @@
 #include "frame_files.h"
 #include "numfmt.h"
 #include "out_disparity.h"
+#include "out_gt.h"
 #include "out_npy.h"
 #include "out_png16.h"
 #include "outputs.h"
@@ -95,6 +96,19 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
         return gls_encode_scaled16(disp, c->width, c->height, 256.0, buf, &bad);
     case GLS_OUT_DEPTH16:
         return gls_encode_scaled16(f->z, c->width, c->height, f->depth_scale, buf, &bad);
+    case GLS_OUT_INSTANCE:
+    case GLS_OUT_CLASS:
+        return gls_encode_ids_png(f->gt_inst, f->gt, bit == GLS_OUT_CLASS, c->width, c->height, buf);
+    case GLS_OUT_INSTANCE | GLS_OUT_CLASS: /* instances_F.json, with either */
+        return gls_encode_instances_json(f->gt_inst, f->gt, f->frame, f->name, c->width, c->height, buf);
+    case GLS_OUT_COCO: {
+        char image[64]; /* the image file's name, which COCO's "file_name" is */
+        snprintf(image, sizeof image, "image_%06u.%s", f->frame,
+                 f->image_format != GLS_IMG_PFM ? "png" : f->float_format == GLS_FLOAT_NPY ? "npy" : "pfm");
+        return gls_encode_coco(f->gt_inst, f->gt, f->frame, image, c->width, c->height, buf);
+    }
+    case GLS_OUT_NORMALS:
+        return encode_float(f, f->normal, 3, buf);
     default: /* edges, and the same map as mask */
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -161,6 +175,8 @@ static void destroy(gls_write_job *job)
     free(f->image);
     free(f->z);
     gls_landmarks_free(f->landmarks);
+    free(f->gt_inst);
+    free(f->normal);
     free(f);
 }
 

@@ -10,6 +10,7 @@
 #include "camera.h"
 #include "gt_landmarks.h"
 #include "frame_writer.h"
+#include "gt_table.h"
 #include "player.h"
 
 #define GLS_FRAME_PATH 4096
@@ -19,7 +20,7 @@ typedef struct {
     gls_write_job job; /* first: the writer sees this */
     gls_camera cam;    /* size; the points' back-projection */
     const char *name;  /* camera name, for messages (outlives the job) */
-    uint32_t frame;    /* for messages */
+    uint32_t frame;    /* for messages and the JSON files */
     gls_image_format image_format;
     gls_float_format float_format; /* depth, disparity, a pfm image */
     double fxB;        /* disparity: fx B of the rectified pair (out_disparity.h) */
@@ -32,6 +33,11 @@ typedef struct {
     void *image;
     float *z;
     gls_landmarks *landmarks; /* --outputs landmarks: this frame's, or NULL */
+    /* the ground-truth pass (gt_pass.h): instance per pixel, normals;
+     * gt, the run's ids (outlives the job) */
+    uint32_t *gt_inst;
+    float *normal;
+    const gls_gt_table *gt;
     uint64_t buffer_bytes; /* for the out-of-memory message */
     size_t nfiles;
     struct {

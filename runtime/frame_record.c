@@ -43,7 +43,7 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                  (unsigned long long)(o->aa.pattern == GLS_AA_STRATIFIED ? o->aa.seed : 0), mem);
     /* the float format of depth, disparity and a pfm image; depth16's
      * scale ("-" when no output uses them) */
-    int floats = (out & (GLS_OUT_DEPTH | GLS_OUT_DISPARITY)) || (image && o->image_format == GLS_IMG_PFM);
+    int floats = (out & (GLS_OUT_DEPTH | GLS_OUT_DISPARITY | GLS_OUT_NORMALS)) || (image && o->image_format == GLS_IMG_PFM);
     char scale[32] = "-";
     if (out & GLS_OUT_DEPTH16)
         gls_fmt_double(scale, sizeof scale, o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI);
@@ -51,7 +51,7 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                      "glsplay frame record 1\n"
                      "frame %u\n"
                      "camera %s %ux%u\n"
-                     "outputs%s%s%s%s%s%s%s%s%s\n"
+                     "outputs%s%s%s%s%s%s%s%s%s%s%s%s%s\n"
                      "image-format %s\n"
                      "float-format %s\n"
                      "depth-scale %s\n"
@@ -63,6 +63,8 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                      out & GLS_OUT_EDGES ? " edges" : "", out & GLS_OUT_EDGES_AS_MASK ? " mask" : "",
                      out & GLS_OUT_DISPARITY ? " disparity" : "", out & GLS_OUT_DISPARITY16 ? " disparity16" : "",
                      out & GLS_OUT_DEPTH16 ? " depth16" : "", out & GLS_OUT_LANDMARKS ? " landmarks" : "",
+                     out & GLS_OUT_INSTANCE ? " instance" : "", out & GLS_OUT_CLASS ? " class" : "",
+                     out & GLS_OUT_COCO ? " coco" : "", out & GLS_OUT_NORMALS ? " normals" : "",
                      image ? fmt[o->image_format] : "-",
                      floats ? (o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm") : "-", scale, aa,
                      o->anisotropy > 1 ? o->anisotropy : 1, bg[0], bg[1], bg[2]);

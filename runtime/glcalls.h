@@ -24,7 +24,7 @@
 
 #define GLS_GLCALLS(X)                                                                                  \
     X(glAlphaFunc) X(glBindTexture) X(glClear) X(glClearColor) X(glClearDepth) X(glColor4ub)            \
-    X(glColorPointer) X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDrawArrays) X(glDrawBuffer)   \
+    X(glColorPointer) X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDisableClientState) X(glDrawArrays) X(glDrawBuffer)   \
     X(glEnable) X(glEnableClientState) X(glFinish) X(glFlush) X(glGenTextures) X(glGetError)            \
     X(glGetFloatv) X(glGetIntegerv) X(glGetString) X(glLoadMatrixf) X(glMatrixMode) X(glPixelStorei)    \
     X(glReadBuffer) X(glReadPixels) X(glScissor) X(glTexCoord2f) X(glTexCoordPointer) X(glTexEnvi)      \
@@ -52,6 +52,7 @@ extern _Thread_local const gls_glcalls *gls_glcalls_current;
 #define glDeleteTextures (gls_glcalls_current->p_glDeleteTextures)
 #define glDepthFunc (gls_glcalls_current->p_glDepthFunc)
 #define glDisable (gls_glcalls_current->p_glDisable)
+#define glDisableClientState (gls_glcalls_current->p_glDisableClientState)
 #define glDrawArrays (gls_glcalls_current->p_glDrawArrays)
 #define glDrawBuffer (gls_glcalls_current->p_glDrawBuffer)
 #define glEnable (gls_glcalls_current->p_glEnable)

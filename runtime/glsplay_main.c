@@ -22,8 +22,9 @@ static const char usage_text[] =
     "  --camera CAM, -c CAM   camera file (repeatable)\n"
     "  -o OUTDIR              output directory (created if missing)\n"
     "  --outputs LIST         comma-separated subset of image,depth,points,edges,\n"
-    "                         disparity,disparity16,depth16,landmarks (default\n"
-    "                         image,depth,points; spec/outputs.md):\n"
+    "                         disparity,disparity16,depth16,landmarks,instance,class,\n"
+    "                         coco,normals (default image,depth,points;\n"
+    "                         spec/outputs.md):\n"
     "                         edges: edges_F.png, 255 where a pixel's anti-aliasing\n"
     "                         samples differ, i.e. it straddles an edge; it needs --aa N\n"
     "                         with N > 1 (mask: the same map as mask_F.png, its old\n"
@@ -33,10 +34,15 @@ static const char usage_text[] =
     "                         disparity16: the same as KITTI's 16-bit PNG (d * 256)\n"
     "                         depth16: 16-bit PNG of Zc * --depth-scale, 0: no surface\n"
     "                         landmarks: the scene's marks projected, landmarks_F.csv\n"
+    "                         ground truth from the pixel centres, never blended:\n"
+    "                         instance and class (16-bit PNG ids, with\n"
+    "                         instances_F.json), coco (COCO JSON, RLE masks),\n"
+    "                         normals (camera-frame, float)\n"
     "  --depth-scale S        depth16's scale: a positive number, kitti (256, the\n"
     "                         default) or tum (5000)\n"
     "  --float-format F       pfm (default) or npy (NumPy float32): the file format of\n"
-    "                         depth, disparity and the image with --image-format pfm\n"
+    "                         depth, disparity, normals and the image with\n"
+    "                         --image-format pfm\n"
     "  --size WxH             override every camera's width and height\n"
     "  --write-calib          also write the cameras' calibration (spec/outputs.md):\n"
     "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
@@ -128,6 +134,14 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_DEPTH16;
         else if (strcmp(t, "landmarks") == 0)
             *bits |= GLS_OUT_LANDMARKS;
+        else if (strcmp(t, "instance") == 0)
+            *bits |= GLS_OUT_INSTANCE;
+        else if (strcmp(t, "class") == 0)
+            *bits |= GLS_OUT_CLASS;
+        else if (strcmp(t, "coco") == 0)
+            *bits |= GLS_OUT_COCO;
+        else if (strcmp(t, "normals") == 0)
+            *bits |= GLS_OUT_NORMALS;
         else
             return -1;
     }
@@ -254,7 +268,7 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
                 rc = usage_error("--outputs needs a comma-separated list of image, depth, points, edges, disparity, "
-                                 "disparity16, depth16, landmarks, got '%s'",
+                                 "disparity16, depth16, landmarks, instance, class, coco, normals, got '%s'",
                                  has_val ? argv[i + 1] : "");
                 goto done;
             }

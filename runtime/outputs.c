@@ -92,14 +92,14 @@ int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out)
     return encode_spng(g, w, h, 1, 8, 0, PNG_LEVEL, PNG_FILTERS, out);
 }
 
-int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out)
-{
-    return encode_spng(rgb, w, h, 3, 16, 0, PNG_LEVEL, PNG_FILTERS, out);
-}
-
 int gls_encode_png16_gray(const uint16_t *g, uint32_t w, uint32_t h, gls_buf *out)
 {
     return encode_spng(g, w, h, 1, 16, 0, PNG_LEVEL, PNG_FILTERS, out);
+}
+
+int gls_encode_png16(const uint16_t *rgb, uint32_t w, uint32_t h, gls_buf *out)
+{
+    return encode_spng(rgb, w, h, 3, 16, 0, PNG_LEVEL, PNG_FILTERS, out);
 }
 
 /* PFM, channels 1 ("Pf") or 3 ("PF"), float32 little-endian (scale

@@ -23,6 +23,8 @@
 #include "frame_writer.h"
 #include "glctx.h"
 #include "gt_landmarks.h"
+#include "gt_pass.h"
+#include "gt_table.h"
 #include "mkdirs.h"
 #include "motion.h"
 #include "out_disparity.h"
@@ -79,7 +81,12 @@ static const struct {
             {GLS_OUT_DISPARITY, "disparity", NULL},
             {GLS_OUT_DISPARITY16, "disparity16", "png"},
             {GLS_OUT_DEPTH16, "depth16", "png"},
-            {GLS_OUT_LANDMARKS, "landmarks", "csv"}};
+            {GLS_OUT_LANDMARKS, "landmarks", "csv"},
+            {GLS_OUT_INSTANCE, "instance", "png"},
+            {GLS_OUT_CLASS, "class", "png"},
+            {GLS_OUT_INSTANCE | GLS_OUT_CLASS, "instances", "json"}, /* the JSON table, with either */
+            {GLS_OUT_COCO, "coco", "json"},
+            {GLS_OUT_NORMALS, "normals", NULL}};
 #define NOUTS (sizeof outs / sizeof outs[0])
 
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
@@ -190,6 +197,7 @@ typedef struct {
     double t0;                  /* when rendering began                 */
     int estimated;              /* the estimate was made (printed or not) */
     double baseline;            /* disparity: B of the rectified pair   */
+    const gls_gt_table *gt;     /* instance and class ids, when asked   */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -260,6 +268,10 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
         b += n;
     if (out & GLS_OUT_POINTS)
         enc = 27 * n; /* x y z double, r g b */
+    if (out & GLS_OUT_IDS) /* ids per pixel; 16-bit image or COCO runs */
+        b += 4 * n, enc = enc > 16 * n ? enc : 16 * n;
+    if (out & GLS_OUT_NORMALS)
+        b += 12 * n, enc = enc > 12 * n ? enc : 12 * n;
     return b + enc;
 }
 
@@ -281,7 +293,9 @@ static void say_failure(session *s, const char *msg)
  * for stratified); depth and points come from one extra unjittered pass
  * (the geometry at each pixel centre, never averaged across an edge),
  * drawn only when they are asked for; the points' colours come from that
- * pass too, so each point has the colour of the surface it lies on. */
+ * pass too, so each point has the colour of the surface it lies on.
+ * Instance ids and normals come from one more unjittered pass
+ * (gt_pass.h), drawn only when an output needs them. */
 static int play_camera(session *s, const gls_camera *c, const char *name, uint32_t frame)
 {
     static const char lower_size[] = "lower --size (or the camera's width and height)";
@@ -294,7 +308,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
     int centre = !aa || (o->outputs & GLS_OUT_FROM_Z);
     uint8_t *rgba = NULL, *mask = NULL;
-    float *z = NULL;
+    float *z = NULL, *normal = NULL;
+    uint32_t *gt_inst = NULL;
     void *img = NULL; /* image in its output format when not rgba */
     gls_accum acc;
     memset(&acc, 0, sizeof acc);
@@ -317,6 +332,17 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             if (!z)
                 goto oom;
             gls_render_read_z(r, z);
+        }
+    }
+    if (o->outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS)) {
+        /* ground truth: the centre sample again, ids and normals
+         * (gt_pass.h), never blended whatever --aa is */
+        if (((o->outputs & GLS_OUT_IDS) && !(gt_inst = malloc(n * sizeof *gt_inst))) ||
+            ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))))
+            goto oom;
+        if (gls_gt_render(r, c, gt_inst, normal, NULL, err, sizeof err)) {
+            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
+            goto out;
         }
     }
     if (aa) {
@@ -410,7 +436,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if ((o->outputs & GLS_OUT_LANDMARKS) && !(f->landmarks = gls_landmarks_take(s->scene)))
         goto oom;
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
-    rgba = mask = NULL, z = NULL, img = NULL;
+    f->gt_inst = gt_inst, f->normal = normal, f->gt = s->gt;
+    rgba = mask = NULL, z = NULL, img = NULL, gt_inst = NULL, normal = NULL;
     gls_write_job *job = &f->job;
     f = NULL; /* the writer's now, submitted or freed */
     if (gls_writer_submit(s->w, job, msg, sizeof msg))
@@ -431,6 +458,8 @@ out:
     free(z);
     free(img);
     free(mask);
+    free(gt_inst);
+    free(normal);
     return rc;
 }
 
@@ -641,6 +670,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     char **names = calloc(o->ncameras ? o->ncameras : 1, sizeof *names);
     gls_bundle *b = NULL;
     gls_aa_plan plan;
+    gls_gt_table gt;
+    memset(&gt, 0, sizeof gt);
     gls_aa_opts aao = o->aa;
     double baseline = 0;
     if (aao.n == 0)
@@ -697,6 +728,20 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if (motion_load(o, &ms, errs) || (!o->trajectory && motion_check(&ms, o->frame, errs)))
         goto out;
+    if (o->outputs & GLS_OUT_IDS) {
+        /* the ids of the whole run, from the bundle's object names */
+        uint32_t count;
+        int k = gls_gt_table_build(&gt, b, &scene, &count);
+        if (k == 1) {
+            fprintf(errs, "glsplay: error: %s: %u instances draw something, more than the %u ids of the 16-bit "
+                          "instance image (--outputs instance, class, coco)\n", o->bundle, count, GLS_GT_MAX_IDS);
+            goto out;
+        }
+        if (k) {
+            fprintf(errs, "glsplay: error: out of memory\n");
+            goto out;
+        }
+    }
     /* the context before the plan, which reports it */
     ctx = gls_glctx_create(o->backend, err, sizeof err);
     if (!ctx) {
@@ -745,7 +790,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline};
+    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline, &gt};
     if (!o->trajectory) {
         int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
         if (o->resume)
@@ -774,6 +819,7 @@ out:
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);
     motion_free(&ms);
+    gls_gt_table_free(&gt);
     gls_scene_free(&scene);
     gls_bundle_free(b);
     for (size_t i = 0; names && i < o->ncameras; i++)

@@ -5,7 +5,9 @@
  * colour, texture env REPLACE/MODULATE, alpha test), llvmpipe compiles the
  * fixed-function state into the same LLVM code a GLSL shader would give,
  * and there is no shader source to embed, compile and diagnose.  Matrices
- * go in with glLoadMatrixf after being formed in double on the CPU.
+ * go in with glLoadMatrixf after being formed in double on the CPU.  (The
+ * ground-truth pass, gt_pass.c, draws the same items through
+ * gls_render_hooked with a small GLSL program of its own.)
  *
  * Over 500 lines because it is the one file that speaks GL (the context
  * aside, glctx_*.c): textures, framebuffers, state per draw key, the
@@ -53,6 +55,7 @@ struct gls_renderer {
     GLS_GLFUNCS(GLS_X_FN)
 #undef GLS_X_FN
     const gls_scene *scene;
+    gls_glctx *ctx;
     GLuint vbo, fbo, rb_color, rb_depth;
     GLuint near_vbo;       /* per-pass vertices of re-anchored chunks */
     uint8_t *near_buf;
@@ -69,6 +72,10 @@ struct gls_renderer {
     uint32_t nnear;        /* near chunks prepared by gls_render_prepare */
     float *dbuf;           /* depth read-back scratch */
     char gl_name[128], gl_version[128];
+    gls_render_item_hook hook; /* called before each item's draw: the  */
+    void *hook_ud;             /* ground-truth pass (gls_render_hooked) */
+    void *ext;                 /* gls_renderer_set_ext: freed with r    */
+    void (*ext_free)(void *);
 };
 
 void gls_mat_to_gl(const double rm[16], float cm[16])
@@ -161,6 +168,7 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
         return NULL;
     }
     r->scene = scene;
+    r->ctx = ctx;
 #define GLS_X_LOAD(type, name)                                                    \
     r->name = (type)(uintptr_t)gls_glctx_proc(ctx, #name);                        \
     if (!r->name) {                                                               \
@@ -187,19 +195,29 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
     if (scene->features & GLS_FEAT_ALPHA_TEST) {
         glEnable(GL_ALPHA_TEST);
         glAlphaFunc(GL_GEQUAL, 0.5f);
+    } else {
+        glDisable(GL_ALPHA_TEST); /* a context may outlive an earlier renderer */
     }
 
     r->glGenBuffers(1, &r->vbo);
     r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
     r->glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)scene->nverts * scene->stride), scene->verts,
                     GL_STATIC_DRAW);
+    /* arrays the scene lacks are disabled, not just left alone: an
+     * earlier renderer of the same context may have enabled them, and a
+     * shader reading every attribute (gt_pass.c) would fetch through
+     * its stale pointers */
     glEnableClientState(GL_VERTEX_ARRAY);
     if (scene->has_color)
         glEnableClientState(GL_COLOR_ARRAY);
-    if (scene->has_texcoord)
-        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
     else
+        glDisableClientState(GL_COLOR_ARRAY);
+    if (scene->has_texcoord) {
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    } else {
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glTexCoord2f(0, 0); /* texcoords absent: (0, 0) */
+    }
     set_pointers(scene);
     r->glGenBuffers(1, &r->near_vbo);
     r->near_list = malloc((scene->nitems ? scene->nitems : 1) * sizeof *r->near_list);
@@ -392,6 +410,8 @@ static void draw_item(gls_renderer *r, const gls_camera *c, const gls_item *it, 
         item_modelview(c, r->scene->inst[it->inst].world, ch->anchor, MV);
     gls_mat_to_gl(MV, f);
     glLoadMatrixf(f);
+    if (r->hook)
+        r->hook(r->hook_ud, r->scene, it);
     glDrawArrays(GL_TRIANGLES, (GLint)first, (GLsizei)ch->count);
 }
 
@@ -515,6 +535,29 @@ void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const do
         load_projection(r, c, du[t], dv[t]);
         draw_all(r, c, C, nnear, r->vis);
     }
+}
+
+void gls_render_hooked(gls_renderer *r, const gls_camera *c, gls_render_item_hook hook, void *ud)
+{
+    double C[3];
+    gls_camera_centre(c, C);
+    uint32_t nnear = prepare_near(r, c, C);
+    gls_scene_cull(r->scene, c, r->ivis, r->vis, &r->cull);
+    load_projection(r, c, 0.0, 0.0);
+    r->hook = hook, r->hook_ud = ud;
+    draw_all(r, c, C, nnear, r->vis);
+    r->hook = NULL, r->hook_ud = NULL;
+}
+
+gls_glctx *gls_renderer_glctx(const gls_renderer *r) { return r->ctx; }
+const gls_scene *gls_renderer_scene(const gls_renderer *r) { return r->scene; }
+void *gls_renderer_ext(const gls_renderer *r) { return r->ext; }
+
+void gls_renderer_set_ext(gls_renderer *r, void *ext, void (*ext_free)(void *))
+{
+    if (r->ext && r->ext_free)
+        r->ext_free(r->ext);
+    r->ext = ext, r->ext_free = ext_free;
 }
 
 uint32_t gls_renderer_nchunks(const gls_renderer *r) { return r->scene->nitems; }
@@ -647,6 +690,7 @@ void gls_renderer_destroy(gls_renderer *r)
 {
     if (!r)
         return;
+    gls_renderer_set_ext(r, NULL, NULL); /* its GL objects, while the context is there */
     if (r->tex) {
         for (uint32_t i = 0; i < r->ntex; i++)
             if (r->tex[i])

@@ -60,6 +60,24 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
  * with n = 1. */
 void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv);
 
+/* The centre sample (no jitter) drawn into whatever framebuffer is bound,
+ * in the current viewport, without clearing it: the same items, culling,
+ * order, matrices and depth test as gls_render_pass, with hook(ud, scene,
+ * item) called just before each item's draw call (its modelview and draw
+ * key are set by then).  For passes that draw other quantities than
+ * colour with their own program (gt_pass.h). */
+typedef void (*gls_render_item_hook)(void *ud, const gls_scene *s, const gls_item *it);
+void gls_render_hooked(gls_renderer *r, const gls_camera *c, gls_render_item_hook hook, void *ud);
+/* The scene r draws. */
+const gls_scene *gls_renderer_scene(const gls_renderer *r);
+/* The context r was created in (for GL entry points a pass loads itself). */
+gls_glctx *gls_renderer_glctx(const gls_renderer *r);
+/* One extension's state hangs off the renderer (the ground-truth pass's
+ * program and framebuffer): set replaces (and frees) the previous one;
+ * ext_free(ext) runs at gls_renderer_destroy, while the context lives. */
+void gls_renderer_set_ext(gls_renderer *r, void *ext, void (*ext_free)(void *));
+void *gls_renderer_ext(const gls_renderer *r);
+
 /* Fine-framebuffer passes (one-pass anti-aliasing, aa_onepass.c).
  * Image-space bounds of every draw item (an instance's chunk; the
  * lattice's "chunks") for camera c, b[i] = {u0, v0, u1,

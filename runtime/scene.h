@@ -76,6 +76,7 @@ typedef struct {
  * identity unless --motion moves a named instance, gls_scene_move). */
 typedef struct {
     uint32_t proto;        /* its geometry, GLS_NONE if it draws nothing   */
+    uint32_t object;       /* the bundle object called (the top's: top)    */
     uint32_t parent;       /* GLS_NONE for the top (instance 0)            */
     double local[16];      /* call-site transform in the parent's frame    */
     double motion[16];     /* per frame, object-to-parent (--motion)       */

@@ -347,6 +347,7 @@ static void enter(walker *w, uint32_t oi, state st, uint32_t parent, const char 
     gls_instance *n = &w->inst[i];
     memset(n, 0, sizeof *n);
     n->parent = parent;
+    n->object = oi;
     memcpy(n->local, st.M, sizeof n->local);
     identity(n->motion);
     if (name) {
