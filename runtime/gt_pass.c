@@ -356,6 +356,8 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
     glGetIntegerv(GL_SCISSOR_TEST, &scissor);
     glGetIntegerv(GL_ALPHA_TEST, &alpha);
     int rc = gt_size(g, w, h, err, errlen);
+    /* bound on every call: gt_size binds it only when it (re)allocates */
+    g->glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
     if (rc == 0 && normal)
         rc = gt_normals(g, gls_renderer_scene(r), err, errlen);
     if (rc == 0) {

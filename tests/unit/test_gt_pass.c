@@ -268,6 +268,17 @@ static void test_two_boxes(void)
     /* any argument may be NULL */
     CHECK(gls_gt_render(r, &c, NULL, NULL, z0, err, sizeof err) == 0);
     CHECK(memcmp(z, z0, n * sizeof *z) == 0);
+    /* again at the same size after a colour pass: it draws into its own
+     * framebuffer (the same ids) and leaves the colour pass's untouched */
+    uint8_t *rgba0 = malloc(4 * n), *rgba1 = malloc(4 * n);
+    uint32_t *id2 = malloc(n * sizeof *id2);
+    gls_render_pass(r, &c, 0, 0);
+    gls_render_read_rgba(r, rgba0);
+    CHECK(gls_gt_render(r, &c, id2, NULL, NULL, err, sizeof err) == 0);
+    CHECK(memcmp(id, id2, n * sizeof *id) == 0);
+    gls_render_read_rgba(r, rgba1);
+    CHECK(memcmp(rgba0, rgba1, 4 * n) == 0);
+    free(rgba0), free(rgba1), free(id2);
     gt_run_end(&g);
     gls_scene_free(&s);
     gls_bundle_free(b);
