@@ -204,5 +204,8 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                 outputs & GLS_OUT_POINTS ? " points (PLY, world, double)" : "");
         if (outputs & GLS_OUT_MASK)
             fprintf(out, "  writes: mask (8-bit PNG, 255 where the samples of a pixel differ)\n");
+        if (outputs & GLS_OUT_FLOW_ALL)
+            fprintf(out, "  flow: 2 extra centre passes (the ground truth of frame t, the depth of frame t+1 with "
+                         "its poses); writes flow (KITTI PNG), .flo, flowmask (PNG)\n");
     }
 }

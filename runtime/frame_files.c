@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include "atomic_write.h"
 #include "frame_files.h"
+#include "out_flow.h"
 #include "outputs.h"
 #include "units.h"
 
@@ -33,6 +34,12 @@ static int encode(const gls_frame_files *f, unsigned bit, gls_buf *buf)
         return gls_encode_pfm(f->z, c->width, c->height, buf);
     case GLS_OUT_POINTS:
         return gls_encode_ply(c, f->z, f->rgba, buf, &np);
+    case GLS_OUT_FLOW:
+        return gls_encode_flow_kitti(f->flow, f->flowmask, c->width, c->height, buf);
+    case GLS_OUT_FLOW_FLO:
+        return gls_encode_flo(f->flow, c->width, c->height, buf);
+    case GLS_OUT_FLOW_MASK:
+        return gls_encode_png_gray(f->flowmask, c->width, c->height, buf);
     default:
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -78,6 +85,8 @@ static void destroy(gls_write_job *job)
     free(f->mask);
     free(f->image);
     free(f->z);
+    free(f->flow);
+    free(f->flowmask);
     free(f);
 }
 

@@ -22,6 +22,8 @@ typedef struct {
      * rgba (a plain render's image, the points' colours), image (the image
      * in its output format when it is not rgba), z (depth), mask */
     uint8_t *rgba, *mask;
+    float *flow;        /* u v a pixel (gt_flow.h)               */
+    uint8_t *flowmask;  /* GLS_FLOW_* a pixel                    */
     void *image;
     float *z;
     uint64_t buffer_bytes; /* for the out-of-memory message */
@@ -29,7 +31,7 @@ typedef struct {
     struct {
         unsigned bit; /* GLS_OUT_* */
         char path[GLS_FRAME_PATH];
-    } files[4];
+    } files[16];
     char record[GLS_FRAME_PATH], record_text[1024];
 } gls_frame_files;
 

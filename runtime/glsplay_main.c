@@ -21,10 +21,13 @@ static const char usage_text[] =
     "options:\n"
     "  --camera CAM, -c CAM   camera file (repeatable)\n"
     "  -o OUTDIR              output directory (created if missing)\n"
-    "  --outputs LIST         comma-separated subset of image,depth,points,mask\n"
+    "  --outputs LIST         comma-separated subset of image,depth,points,mask,flow\n"
     "                         (default image,depth,points; mask: 255 where a pixel's\n"
     "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
-    "                         it needs --aa N with N > 1)\n"
+    "                         it needs --aa N with N > 1; flow: optical flow to the\n"
+    "                         trajectory's next frame, NAME/flow_F.png (KITTI),\n"
+    "                         flow_F.flo (Middlebury), flowmask_F.png (0 no surface,\n"
+    "                         1 visible, 2 occluded, 3 out of view); needs --trajectory)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --write-calib          also write the cameras' calibration (spec/outputs.md):\n"
     "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
@@ -106,6 +109,8 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_POINTS;
         else if (strcmp(t, "mask") == 0)
             *bits |= GLS_OUT_MASK;
+        else if (strcmp(t, "flow") == 0)
+            *bits |= GLS_OUT_FLOW_ALL;
         else
             return -1;
     }
@@ -231,7 +236,7 @@ int main(int argc, char **argv)
             o.outdir = argv[++i];
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
-                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, got '%s'",
+                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, mask, flow, got '%s'",
                                  has_val ? argv[i + 1] : "");
                 goto done;
             }
@@ -446,6 +451,11 @@ int main(int argc, char **argv)
     /* the flattened path inlines every call: there is no instance to move */
     if (o.flatten && o.nmotions) {
         rc = usage_error("%s--motion moves instances, and --flatten draws none; leave out --flatten", "");
+        goto done;
+    }
+    /* flow goes from each frame of a trajectory to the next */
+    if ((o.outputs & GLS_OUT_FLOW_ALL) && !o.trajectory) {
+        rc = usage_error("%s--outputs flow needs a --trajectory: the flow goes from each frame to the next", "");
         goto done;
     }
     if (frames && !o.trajectory) {

@@ -13,6 +13,11 @@
 
 /* mask: the mixed-pixel mask of an anti-aliased image (spec/antialiasing.md) */
 enum { GLS_OUT_IMAGE = 1, GLS_OUT_DEPTH = 2, GLS_OUT_POINTS = 4, GLS_OUT_MASK = 8 };
+/* flow (--outputs flow, spec/outputs.md "Optical flow"): three files from
+ * frame t to the next of the trajectory, each its own bit: the KITTI PNG,
+ * the Middlebury .flo and the mask of visible, occluded, out-of-view */
+enum { GLS_OUT_FLOW = 1u << 20, GLS_OUT_FLOW_FLO = 1u << 21, GLS_OUT_FLOW_MASK = 1u << 22 };
+#define GLS_OUT_FLOW_ALL (GLS_OUT_FLOW | GLS_OUT_FLOW_FLO | GLS_OUT_FLOW_MASK)
 
 /* Image file format: 8-bit PNG, 16-bit PNG, float32 PFM ("PF", RGB). */
 typedef enum { GLS_IMG_PNG8 = 0, GLS_IMG_PNG16 = 1, GLS_IMG_PFM = 2 } gls_image_format;
