@@ -31,4 +31,7 @@ typedef struct {
 int gls_buf_reserve(gls_buf *b, size_t extra);
 /* Append n bytes; 0, or -1 when out of memory. */
 int gls_buf_put(gls_buf *b, const void *p, size_t n);
+/* Append printf-formatted text (no terminating NUL counted in len; one is
+ * left after it); 0, or -1 when out of memory or on a format error. */
+int gls_buf_printf(gls_buf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 #endif

@@ -13,26 +13,8 @@
 
 #define MAXPATH 4096
 
-static int putf(gls_buf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static int putf(gls_buf *b, const char *fmt, ...)
-{
-    char small[256];
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(small, sizeof small, fmt, ap);
-    va_end(ap);
-    if (n < 0)
-        return -1;
-    if ((size_t)n < sizeof small)
-        return gls_buf_put(b, small, (size_t)n);
-    if (gls_buf_reserve(b, (size_t)n + 1))
-        return -1;
-    va_start(ap, fmt);
-    vsnprintf((char *)b->data + b->len, (size_t)n + 1, fmt, ap);
-    va_end(ap);
-    b->len += (size_t)n;
-    return 0;
-}
+/* every text here is appended with base's printf into a buffer */
+#define putf gls_buf_printf
 
 /* Number styles: the shortest text that reads back as the same double
  * (gls_fmt_double) everywhere; in YAML with a '.' in the mantissa, so that
