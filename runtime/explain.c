@@ -207,5 +207,8 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         if (outputs & GLS_OUT_FLOW_ALL)
             fprintf(out, "  flow: 2 extra centre passes (the ground truth of frame t, the depth of frame t+1 with "
                          "its poses); writes flow (KITTI PNG), .flo, flowmask (PNG)\n");
+        if (outputs & GLS_OUT_BOXES_ALL)
+            fprintf(out, "  boxes: the ground-truth pass (instance ids; shared with flow) and one pass per visible "
+                         "instance drawn alone (its occlusion); writes boxes (KITTI labels, JSON)\n");
     }
 }

@@ -40,6 +40,10 @@ static int encode(const gls_frame_files *f, unsigned bit, gls_buf *buf)
         return gls_encode_flo(f->flow, c->width, c->height, buf);
     case GLS_OUT_FLOW_MASK:
         return gls_encode_png_gray(f->flowmask, c->width, c->height, buf);
+    case GLS_OUT_BOXES:
+        return gls_encode_boxes_kitti(f->boxes, f->nboxes, f->box_names, buf);
+    case GLS_OUT_BOXES_JSON:
+        return gls_encode_boxes_json(f->boxes, f->nboxes, f->box_names, c, f->name, f->frame, buf);
     default:
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -87,6 +91,7 @@ static void destroy(gls_write_job *job)
     free(f->z);
     free(f->flow);
     free(f->flowmask);
+    free(f->boxes);
     free(f);
 }
 

@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "camera.h"
 #include "frame_writer.h"
+#include "out_boxes.h"
 #include "player.h"
 
 #define GLS_FRAME_PATH 4096
@@ -24,6 +25,10 @@ typedef struct {
     uint8_t *rgba, *mask;
     float *flow;        /* u v a pixel (gt_flow.h)               */
     uint8_t *flowmask;  /* GLS_FLOW_* a pixel                    */
+    gls_box *boxes;     /* boxes of the frame (gt_boxes.h)       */
+    size_t nboxes;
+    const gls_box_names *box_names; /* the run's, outlives the job */
+    uint32_t frame;     /* for the boxes' JSON                   */
     void *image;
     float *z;
     uint64_t buffer_bytes; /* for the out-of-memory message */

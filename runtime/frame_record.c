@@ -45,14 +45,15 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                      "glsplay frame record 1\n"
                      "frame %u\n"
                      "camera %s %ux%u\n"
-                     "outputs%s%s%s%s%s\n"
+                     "outputs%s%s%s%s%s%s\n"
                      "image-format %s\n"
                      "aa %s\n"
                      "anisotropic %u\n"
                      "background %s %s %s\n",
                      frame, name, c->width, c->height, out & GLS_OUT_IMAGE ? " image" : "",
                      out & GLS_OUT_DEPTH ? " depth" : "", out & GLS_OUT_POINTS ? " points" : "",
-                     out & GLS_OUT_MASK ? " mask" : "", out & GLS_OUT_FLOW_ALL ? " flow" : "", image ? fmt[o->image_format] : "-", aa,
+                     out & GLS_OUT_MASK ? " mask" : "", out & GLS_OUT_FLOW_ALL ? " flow" : "",
+                     out & GLS_OUT_BOXES_ALL ? " boxes" : "", image ? fmt[o->image_format] : "-", aa,
                      o->anisotropy > 1 ? o->anisotropy : 1, bg[0], bg[1], bg[2]);
     return k < 0 || (size_t)k >= len ? -1 : 0;
 }

@@ -21,13 +21,15 @@ static const char usage_text[] =
     "options:\n"
     "  --camera CAM, -c CAM   camera file (repeatable)\n"
     "  -o OUTDIR              output directory (created if missing)\n"
-    "  --outputs LIST         comma-separated subset of image,depth,points,mask,flow\n"
+    "  --outputs LIST         comma-separated subset of image,depth,points,mask,flow,boxes\n"
     "                         (default image,depth,points; mask: 255 where a pixel's\n"
     "                         anti-aliasing samples differ, i.e. it straddles an edge;\n"
     "                         it needs --aa N with N > 1; flow: optical flow to the\n"
     "                         trajectory's next frame, NAME/flow_F.png (KITTI),\n"
     "                         flow_F.flo (Middlebury), flowmask_F.png (0 no surface,\n"
-    "                         1 visible, 2 occluded, 3 out of view); needs --trajectory)\n"
+    "                         1 visible, 2 occluded, 3 out of view); needs --trajectory;\n"
+    "                         boxes: each visible instance's 2D and 3D box,\n"
+    "                         NAME/boxes_F.txt (KITTI labels), boxes_F.json)\n"
     "  --size WxH             override every camera's width and height\n"
     "  --write-calib          also write the cameras' calibration (spec/outputs.md):\n"
     "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
@@ -111,6 +113,8 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_MASK;
         else if (strcmp(t, "flow") == 0)
             *bits |= GLS_OUT_FLOW_ALL;
+        else if (strcmp(t, "boxes") == 0)
+            *bits |= GLS_OUT_BOXES_ALL;
         else
             return -1;
     }
@@ -236,7 +240,7 @@ int main(int argc, char **argv)
             o.outdir = argv[++i];
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
-                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, mask, flow, got '%s'",
+                rc = usage_error("--outputs needs a comma-separated list of image, depth, points, mask, flow, boxes, got '%s'",
                                  has_val ? argv[i + 1] : "");
                 goto done;
             }

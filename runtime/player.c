@@ -23,6 +23,7 @@
 #include "frame_record.h"
 #include "frame_writer.h"
 #include "glctx.h"
+#include "gt_boxes.h"
 #include "gt_flow.h"
 #include "gt_pass.h"
 #include "mkdirs.h"
@@ -73,7 +74,8 @@ static const struct {
     unsigned bit;
     const char *kind;
 } outs[] = {{GLS_OUT_IMAGE, "image"}, {GLS_OUT_DEPTH, "depth"}, {GLS_OUT_POINTS, "points"}, {GLS_OUT_MASK, "mask"},
-              {GLS_OUT_FLOW, "flow"}, {GLS_OUT_FLOW_FLO, "flow"}, {GLS_OUT_FLOW_MASK, "flowmask"}};
+              {GLS_OUT_FLOW, "flow"}, {GLS_OUT_FLOW_FLO, "flow"}, {GLS_OUT_FLOW_MASK, "flowmask"},
+              {GLS_OUT_BOXES, "boxes"}, {GLS_OUT_BOXES_JSON, "boxes"}};
 #define NOUTS (sizeof outs / sizeof outs[0])
 
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
@@ -82,6 +84,8 @@ static int output_file(char *path, size_t len, const gls_play_opts *o, const cha
     const char *ext = outs[k].bit == GLS_OUT_DEPTH ? "pfm" : outs[k].bit == GLS_OUT_POINTS ? "ply" : "png";
     if (outs[k].bit == GLS_OUT_FLOW_FLO)
         ext = "flo";
+    if (outs[k].bit & GLS_OUT_BOXES_ALL)
+        ext = outs[k].bit == GLS_OUT_BOXES ? "txt" : "json";
     if (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM)
         ext = "pfm";
     return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
@@ -190,6 +194,7 @@ typedef struct {
     const gls_traj_pose *next;
     const gls_camera *rel;
     gls_flow_moves *moves;
+    const gls_box_names *box_names; /* boxes: the objects' names */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -276,35 +281,32 @@ static int output_on(const session *s, size_t k)
     return (s->o->outputs & outs[k].bit) && (s->next || !(outs[k].bit & GLS_OUT_FLOW_ALL));
 }
 
-/* The flow of camera c from frame to the trajectory's next row (gt_flow.h):
- * the ground-truth pass of this frame, then the depth of the next (its
- * camera pose and motions; an extra centre pass), the scene posed back
- * for this frame's other cameras.  0 with *uv and *mask, or -1 with the
- * whole line in msg (empty: out of memory). */
-static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_t frame, float **uv, uint8_t **mask,
-                      char *msg, size_t msglen)
+/* The flow of camera c from frame to the trajectory's next row (gt_flow.h),
+ * from this frame's ground-truth pass (inst, z): the depth of the next
+ * (its camera pose and motions; an extra centre pass), then the scene
+ * posed back for this frame's other cameras.  0 with *uv and *mask, or -1
+ * with the whole line in msg (empty: out of memory). */
+static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_t frame, const uint32_t *inst,
+                      const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height;
-    uint32_t *inst = malloc(n * sizeof *inst);
-    float *z = malloc(n * sizeof *z), *z1 = malloc(n * sizeof *z1);
+    float *z1 = malloc(n * sizeof *z1);
     char err[512];
     int rc = -1;
     *uv = malloc(2 * n * sizeof **uv);
     *mask = malloc(n ? n : 1);
-    if (!inst || !z || !z1 || !*uv || !*mask)
+    if (!z1 || !*uv || !*mask)
         goto out;
     gls_camera c1 = *c;
     gls_traj_compose(s->rel->R, s->rel->T, s->next->R, s->next->T, c1.R, c1.T);
-    if (gls_gt_render(s->r, c, inst, NULL, z, err, sizeof err) == 0) {
-        gls_flow_moves_take(s->moves, s->ms->scene, 0);
-        if (s->ms->n) {
-            motion_apply(s->ms, s->next->frame);
-            gls_flow_moves_take(s->moves, s->ms->scene, 1);
-        }
-        rc = gls_gt_render(s->r, &c1, NULL, NULL, z1, err, sizeof err);
-        if (s->ms->n)
-            motion_apply(s->ms, frame);
+    gls_flow_moves_take(s->moves, s->ms->scene, 0);
+    if (s->ms->n) {
+        motion_apply(s->ms, s->next->frame);
+        gls_flow_moves_take(s->moves, s->ms->scene, 1);
     }
+    rc = gls_gt_render(s->r, &c1, NULL, NULL, z1, err, sizeof err);
+    if (s->ms->n)
+        motion_apply(s->ms, frame);
     if (rc) {
         snprintf(msg, msglen, "glsplay: error: camera %s: %s", name, err);
         goto out;
@@ -321,8 +323,6 @@ static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_
         rc = -1;
     }
 out:
-    free(inst);
-    free(z);
     free(z1);
     if (rc) {
         free(*uv);
@@ -353,7 +353,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
     int centre = !aa || (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS));
     uint8_t *rgba = NULL, *mask = NULL, *flowmask = NULL;
-    float *z = NULL, *flow = NULL;
+    float *z = NULL, *flow = NULL, *gt_z = NULL;
+    uint32_t *gt_ids = NULL; /* the ground-truth pass (gt_pass.h), for flow and boxes */
+    gls_box *boxes = NULL;
+    size_t nboxes = 0;
     void *img = NULL; /* image in its output format when not rgba */
     gls_accum acc;
     memset(&acc, 0, sizeof acc);
@@ -440,8 +443,20 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
-    if (s->next && (o->outputs & GLS_OUT_FLOW_ALL) &&
-        flow_frame(s, c, name, frame, &flow, &flowmask, msg, sizeof msg)) {
+    int want_flow = s->next && (o->outputs & GLS_OUT_FLOW_ALL), want_boxes = (o->outputs & GLS_OUT_BOXES_ALL) != 0;
+    if (want_flow || want_boxes) {
+        gt_ids = malloc(n * sizeof *gt_ids);
+        gt_z = want_flow ? malloc(n * sizeof *gt_z) : NULL;
+        if (!gt_ids || (want_flow && !gt_z))
+            goto oom;
+        if (gls_gt_render(r, c, gt_ids, NULL, gt_z, err, sizeof err)) {
+            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
+            goto out;
+        }
+    }
+    if (want_boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
+        goto oom;
+    if (want_flow && flow_frame(s, c, name, frame, gt_ids, gt_z, &flow, &flowmask, msg, sizeof msg)) {
         if (msg[0])
             goto out;
         goto oom;
@@ -469,7 +484,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     }
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
     f->flow = flow, f->flowmask = flowmask;
-    rgba = mask = flowmask = NULL, z = flow = NULL, img = NULL;
+    f->boxes = boxes, f->nboxes = nboxes, f->box_names = s->box_names, f->frame = frame;
+    rgba = mask = flowmask = NULL, z = flow = NULL, img = NULL, boxes = NULL;
     gls_write_job *job = &f->job;
     f = NULL; /* the writer's now, submitted or freed */
     if (gls_writer_submit(s->w, job, msg, sizeof msg))
@@ -492,6 +508,9 @@ out:
     free(mask);
     free(flow);
     free(flowmask);
+    free(gt_ids);
+    free(gt_z);
+    free(boxes);
     return rc;
 }
 
@@ -727,6 +746,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     motion_set ms = {&scene, 0, NULL, NULL};
     gls_flow_moves moves;
     memset(&moves, 0, sizeof moves);
+    gls_box_names box_names;
+    memset(&box_names, 0, sizeof box_names);
     gls_glctx *ctx = NULL;
     gls_renderer *r = NULL;
     gls_writer *wr = NULL;
@@ -824,6 +845,10 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
+    if ((o->outputs & GLS_OUT_BOXES_ALL) && gls_box_names_init(&box_names, b, &scene)) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        goto out;
+    }
     /* The bundle's texels and code are on the GPU side or in the scene
      * now: free them before the per-camera buffers are allocated. */
     gls_bundle_free(b);
@@ -838,7 +863,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, NULL, NULL, &moves};
+    session ses = {o, &ms, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, NULL, NULL, &moves, &box_names};
     if (!o->trajectory) {
         int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame, 0);
         if (o->resume)
@@ -868,6 +893,7 @@ out:
     gls_glctx_destroy(ctx);
     motion_free(&ms);
     gls_flow_moves_free(&moves);
+    gls_box_names_free(&box_names);
     gls_scene_free(&scene);
     gls_bundle_free(b);
     for (size_t i = 0; names && i < o->ncameras; i++)

@@ -14,17 +14,9 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import flow_scene as S  # noqa: E402
+import gt_checks  # noqa: E402
 
-fails = 0
-
-
-def result(name, good, why=""):
-    global fails
-    if good:
-        print("ok " + name)
-    else:
-        fails += 1
-        print("FAIL %s: %s" % (name, why))
+result = gt_checks.result
 
 
 def box_at(at, k, moving):
@@ -150,7 +142,7 @@ def main(out):
         # .flo gives the flow of occluded and out-of-view points too
         oc = (mask == 2) | ((mask == 3) & front)
         result("flow_flo_occluded_given_%s" % f, oc.any() and err[oc].max() < 1e-3, "")
-    return 1 if fails else 0
+    return 1 if gt_checks.fails else 0
 
 
 if __name__ == "__main__":

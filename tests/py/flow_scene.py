@@ -9,6 +9,8 @@ a green unit box at (-2.5, 1, 10) that stays.  The rig moves forward and
 yaws; camera "cam" is the rig's camera (identity relative to it)."""
 import numpy as np
 
+import gt_checks
+
 W, H = 320, 240
 FX, FY, CX, CY = 300.0, 300.0, 159.5, 119.5
 NEAR, FAR = 0.1, 100.0
@@ -27,18 +29,7 @@ push; trans(0, 1, 8); call("objects.BoxRed", "mover"); pop;
 push; trans(-2.5, 1, 10); call("objects.BoxGreen"); pop;
 """
 
-CAM = """pose rig
-width %d
-height %d
-fx %r
-fy %r
-cx %r
-cy %r
-R 1 0 0  0 1 0  0 0 1
-T 0 0 0
-near %r
-far %r
-""" % (W, H, FX, FY, CX, CY, NEAR, FAR)
+CAM = gt_checks.camera_text("rig", W, H, FX, FY, CX, CY, NEAR, FAR)
 
 
 def rig_pose(k):
