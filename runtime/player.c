@@ -261,6 +261,13 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
         b += n;
     if (out & GLS_OUT_POINTS)
         enc = 27 * n; /* x y z double, r g b */
+    if (out & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))
+        b += 8 * n; /* the ground-truth pass's ids and depth (the boxes' passes: depth) */
+    if (out & GLS_OUT_FLOW_ALL) {
+        b += 13 * n; /* next frame's depth, u v, mask */
+        if (8 * n > enc)
+            enc = 8 * n; /* the .flo */
+    }
     return b + enc;
 }
 
