@@ -1,7 +1,7 @@
 """Optical flow outputs (spec/outputs.md "Optical flow") against geometry
 computed here: each pixel's depth (depth_F.pfm) back-projected with K, R,
-T of frame t, moved with the mover's known motion when the point lies in
-its box, projected with frame t+1's pose.  Occlusion and view by casting
+T of frame t, moved with the mover's known motion (a translation and a
+turn) when the point lies in its box, projected with frame t+1's pose.  Occlusion and view by casting
 rays at frame t+1 against the two boxes.  Usage: check_flow.py OUTDIR
 (the glsplay output of tests/py/flow_scene.py's scene).  Prints "ok NAME"
 / "FAIL NAME: why"."""
@@ -19,17 +19,23 @@ import gt_checks  # noqa: E402
 result = gt_checks.result
 
 
-def box_at(at, k, moving):
-    off = at + (S.MOVE * k if moving else 0)
-    return off + S.BOX_LO, off + S.BOX_HI
+def in_box(P, k, moving, tol=1e-4):
+    """Points P (... x 3, world) inside a box at frame k (within tol: the
+    depth is float; the floor meets the box within a millimetre)."""
+    R, t = S.box_pose(k, moving)
+    Q = (P - t) @ R  # R^T (P - t)
+    return np.all((Q >= S.BOX_LO - tol) & (Q <= S.BOX_HI + tol), axis=-1)
 
 
-def ray_box_depth(C, D, lo, hi):
+def ray_box_depth(C, D, k, moving):
     """Camera depth (the ray's parameter, D having z = 1 in the camera) at
-    which rays C + t D (D: N x 3) enter the box; inf where they miss."""
+    which rays C + t D (D: N x 3, world) enter a box at frame k (slabs in
+    the box's frame); inf where they miss."""
+    R, t = S.box_pose(k, moving)
+    Cb, Db = R.T @ (C - t), D @ R
     with np.errstate(divide="ignore", invalid="ignore"):
-        t1 = (lo - C) / D
-        t2 = (hi - C) / D
+        t1 = (S.BOX_LO - Cb) / Db
+        t2 = (S.BOX_HI - Cb) / Db
     tmin = np.nanmax(np.minimum(t1, t2), axis=1)
     tmax = np.nanmin(np.maximum(t1, t2), axis=1)
     hit = (tmin <= tmax) & (tmax > 0)
@@ -45,9 +51,13 @@ def expected(z, k):
     Pc = np.stack([(u - S.CX) / S.FX * Z, (v - S.CY) / S.FY * Z, Z], axis=-1)
     with np.errstate(invalid="ignore"):
         P = (Pc - T0) @ R0  # R0^T (Pc - T0), row vectors
-    lo, hi = box_at(S.MOVER_AT, k, True)
-    moving = np.all((P >= lo - 1e-3) & (P <= hi + 1e-3), axis=-1) & np.isfinite(Z)
-    P1 = P + np.where(moving[..., None], S.MOVE, 0.0)
+    moving = in_box(P, k, True) & np.isfinite(Z)
+    # the mover's points: into its frame at k, out with its pose of k + 1
+    Ra, ta = S.box_pose(k, True)
+    Rb, tb = S.box_pose(k + 1, True)
+    with np.errstate(invalid="ignore"):
+        Pm = ((P - ta) @ Ra) @ Rb.T + tb
+    P1 = np.where(moving[..., None], Pm, P)
     Pc1 = P1 @ R1.T + T1
     with np.errstate(divide="ignore", invalid="ignore"):
         u1 = S.FX * Pc1[..., 0] / Pc1[..., 2] + S.CX
@@ -62,11 +72,11 @@ def occluded_at(k1, u1, v1, Z1):
     -1 otherwise (undecided here)."""
     R1, T1 = S.rig_pose(k1)
     C = -R1.T @ T1
-    boxes = [box_at(S.MOVER_AT, k1, True), box_at(S.STILL_AT, k1, False)]
+    boxes = [True, False]
     hits, clear = [], []
     for du, dv in ((0, 0), (-0.75, -0.75), (0.75, -0.75), (-0.75, 0.75), (0.75, 0.75)):
         d = np.stack([(u1 + du - S.CX) / S.FX, (v1 + dv - S.CY) / S.FY, np.ones_like(u1)], axis=-1) @ R1
-        t = np.min([ray_box_depth(C, d, lo, hi) for lo, hi in boxes], axis=0)
+        t = np.min([ray_box_depth(C, d, k1, mv) for mv in boxes], axis=0)
         hits.append(t < Z1 - 0.05)
         clear.append(t > Z1 - 1e-3)  # no box in front (a point on a box meets it at itself)
     hits, clear = np.array(hits), np.array(clear)
@@ -124,8 +134,7 @@ def main(out):
         result("flow_visible_marked_%s" % f, vis.sum() > 30000 and (mask[vis] == 1).all(),
                "%d px expected visible, %d not 1" % (vis.sum(), (mask[vis] != 1).sum()))
         # behind the mover's new place: the background it now covers
-        slo, shi = box_at(S.STILL_AT, k, False)
-        in_still = np.all((P >= slo - 1e-3) & (P <= shi + 1e-3), axis=-1)
+        in_still = in_box(P, k, False)
         bg = hid & ~moving & ~in_still
         result("flow_occluded_behind_moving_box_%s" % f, bg.sum() > 50 and (mask[bg] == 2).all(),
                "%d floor and wall px hidden at t+1" % bg.sum())

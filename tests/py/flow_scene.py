@@ -4,7 +4,8 @@ one description (tests/e2e/outputs_flow.sh, tests/py/check_flow.py).
 World frame: the camera frame of frame 0 (x right, y down, z forward).
 A wall at z = 20 (x -100..100, y -5..2), a floor at y = 2 (z 0.5..20),
 a red unit box "mover" (objects.Box: x -0.5..0.5, y 0..1, z -0.5..0.5 in
-its frame) placed at (0, 1, 8) and moved by MOVE per frame (--motion),
+its frame) placed at (0, 1, 8) and moved by --motion: MOVE per frame and
+turned by TURN degrees per frame about its vertical axis,
 a green unit box at (-2.5, 1, 10) that stays.  The rig moves forward and
 yaws; camera "cam" is the rig's camera (identity relative to it)."""
 import numpy as np
@@ -17,6 +18,7 @@ NEAR, FAR = 0.1, 100.0
 MOVER_AT = np.array([0.0, 1.0, 8.0])
 STILL_AT = np.array([-2.5, 1.0, 10.0])
 MOVE = np.array([0.3, 0.0, 0.0])  # per frame
+TURN = 6.0  # degrees per frame, about the box's y axis
 BOX_LO = np.array([-0.5, 0.0, -0.5])
 BOX_HI = np.array([0.5, 1.0, 0.5])
 NFRAMES = 3
@@ -43,7 +45,18 @@ def rig_pose(k):
 
 
 def mover_motion(k):
-    return np.eye(3), MOVE * k
+    """The mover's motion of frame k, object-to-parent (R, T)."""
+    a = np.radians(TURN * k)
+    R = np.array([[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]])
+    return R, MOVE * k
+
+
+def box_pose(k, moving):
+    """Box-frame to world (R, t) of the mover (moving) or the still box."""
+    if not moving:
+        return np.eye(3), STILL_AT
+    R, T = mover_motion(k)
+    return R, MOVER_AT + T
 
 
 def trajectory_text(pose=rig_pose, n=NFRAMES):
