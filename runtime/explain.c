@@ -217,9 +217,17 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
                     !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"
                                                                          : "one extra unjittered pass (--aa)");
-        if (outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS))
-            fprintf(out, "  ground truth: one extra pass (%s%s%s)\n", outputs & GLS_OUT_IDS ? "instance ids" : "",
-                    (outputs & GLS_OUT_IDS) && (outputs & GLS_OUT_NORMALS) ? ", " : "",
-                    outputs & GLS_OUT_NORMALS ? "normals" : "");
+        if (outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) {
+            int ids = (outputs & (GLS_OUT_IDS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) != 0;
+            fprintf(out, "  ground truth: one extra pass (%s%s%s%s)\n", ids ? "instance ids" : "",
+                    ids && (outputs & GLS_OUT_NORMALS) ? ", " : "", outputs & GLS_OUT_NORMALS ? "normals" : "",
+                    outputs & GLS_OUT_FLOW_ALL ? ", depth of frame t" : "");
+        }
+        if (outputs & GLS_OUT_FLOW_ALL)
+            fprintf(out, "  flow: 1 more centre pass (the depth of frame t+1 with its poses); writes flow (KITTI "
+                         "PNG), .flo, flowmask (PNG)\n");
+        if (outputs & GLS_OUT_BOXES_ALL)
+            fprintf(out, "  boxes: the ground-truth pass's instance ids and one pass per visible instance drawn "
+                         "alone (its occlusion); writes boxes (KITTI labels, JSON)\n");
     }
 }

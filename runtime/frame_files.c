@@ -8,6 +8,7 @@
 #include "frame_files.h"
 #include "numfmt.h"
 #include "out_disparity.h"
+#include "out_flow.h"
 #include "out_gt.h"
 #include "out_npy.h"
 #include "out_png16.h"
@@ -109,6 +110,16 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
     }
     case GLS_OUT_NORMALS:
         return encode_float(f, f->normal, 3, buf);
+    case GLS_OUT_FLOW:
+        return gls_encode_flow_kitti(f->flow, f->flowmask, c->width, c->height, buf);
+    case GLS_OUT_FLOW_FLO:
+        return gls_encode_flo(f->flow, c->width, c->height, buf);
+    case GLS_OUT_FLOW_MASK:
+        return gls_encode_png_gray(f->flowmask, c->width, c->height, buf);
+    case GLS_OUT_BOXES:
+        return gls_encode_boxes_kitti(f->boxes, f->nboxes, f->box_names, buf);
+    case GLS_OUT_BOXES_JSON:
+        return gls_encode_boxes_json(f->boxes, f->nboxes, f->box_names, c, f->name, f->frame, buf);
     default: /* edges, and the same map as mask */
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -177,6 +188,9 @@ static void destroy(gls_write_job *job)
     gls_landmarks_free(f->landmarks);
     free(f->gt_inst);
     free(f->normal);
+    free(f->flow);
+    free(f->flowmask);
+    free(f->boxes);
     free(f);
 }
 

@@ -11,6 +11,7 @@
 #include "gt_landmarks.h"
 #include "frame_writer.h"
 #include "gt_table.h"
+#include "out_boxes.h"
 #include "player.h"
 
 #define GLS_FRAME_PATH 4096
@@ -30,6 +31,11 @@ typedef struct {
      * in its output format when it is not rgba), z (depth), mask (the
      * edges map); the disparity is made from z by the writer */
     uint8_t *rgba, *mask;
+    float *flow;        /* u v a pixel (gt_flow.h)               */
+    uint8_t *flowmask;  /* GLS_FLOW_* a pixel                    */
+    gls_box *boxes;     /* boxes of the frame (gt_boxes.h)       */
+    size_t nboxes;
+    const gls_box_names *box_names; /* the run's, outlives the job */
     void *image;
     float *z;
     gls_landmarks *landmarks; /* --outputs landmarks: this frame's, or NULL */

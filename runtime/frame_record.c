@@ -51,7 +51,7 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                      "glsplay frame record 1\n"
                      "frame %u\n"
                      "camera %s %ux%u\n"
-                     "outputs%s%s%s%s%s%s%s%s%s%s%s%s%s\n"
+                     "outputs%s%s%s%s%s%s%s%s%s%s%s%s%s%s%s\n"
                      "image-format %s\n"
                      "float-format %s\n"
                      "depth-scale %s\n"
@@ -65,6 +65,7 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                      out & GLS_OUT_DEPTH16 ? " depth16" : "", out & GLS_OUT_LANDMARKS ? " landmarks" : "",
                      out & GLS_OUT_INSTANCE ? " instance" : "", out & GLS_OUT_CLASS ? " class" : "",
                      out & GLS_OUT_COCO ? " coco" : "", out & GLS_OUT_NORMALS ? " normals" : "",
+                     out & GLS_OUT_FLOW_ALL ? " flow" : "", out & GLS_OUT_BOXES_ALL ? " boxes" : "",
                      image ? fmt[o->image_format] : "-",
                      floats ? (o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm") : "-", scale, aa,
                      o->anisotropy > 1 ? o->anisotropy : 1, bg[0], bg[1], bg[2]);

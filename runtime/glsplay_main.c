@@ -23,7 +23,7 @@ static const char usage_text[] =
     "  -o OUTDIR              output directory (created if missing)\n"
     "  --outputs LIST         comma-separated subset of image,depth,points,edges,\n"
     "                         disparity,disparity16,depth16,landmarks,instance,class,\n"
-    "                         coco,normals (default image,depth,points;\n"
+    "                         coco,normals,flow,boxes (default image,depth,points;\n"
     "                         spec/outputs.md):\n"
     "                         edges: edges_F.png, 255 where a pixel's anti-aliasing\n"
     "                         samples differ, i.e. it straddles an edge; it needs --aa N\n"
@@ -38,6 +38,12 @@ static const char usage_text[] =
     "                         instance and class (16-bit PNG ids, with\n"
     "                         instances_F.json), coco (COCO JSON, RLE masks),\n"
     "                         normals (camera-frame, float)\n"
+    "                         flow: optical flow to the trajectory's next frame,\n"
+    "                         flow_F.png (KITTI), flow_F.flo (Middlebury),\n"
+    "                         flowmask_F.png (0 no surface, 1 visible, 2 occluded,\n"
+    "                         3 out of view), needs --trajectory\n"
+    "                         boxes: each visible instance's 2D and 3D box,\n"
+    "                         boxes_F.txt (KITTI labels), boxes_F.json\n"
     "  --depth-scale S        depth16's scale: a positive number, kitti (256, the\n"
     "                         default) or tum (5000)\n"
     "  --float-format F       pfm (default) or npy (NumPy float32): the file format of\n"
@@ -142,6 +148,10 @@ static int parse_outputs(const char *s, unsigned *bits)
             *bits |= GLS_OUT_COCO;
         else if (strcmp(t, "normals") == 0)
             *bits |= GLS_OUT_NORMALS;
+        else if (strcmp(t, "flow") == 0)
+            *bits |= GLS_OUT_FLOW_ALL;
+        else if (strcmp(t, "boxes") == 0)
+            *bits |= GLS_OUT_BOXES_ALL;
         else
             return -1;
     }
@@ -268,7 +278,7 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--outputs") == 0) {
             if (!has_val || parse_outputs(argv[i + 1], &o.outputs)) {
                 rc = usage_error("--outputs needs a comma-separated list of image, depth, points, edges, disparity, "
-                                 "disparity16, depth16, landmarks, instance, class, coco, normals, got '%s'",
+                                 "disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, got '%s'",
                                  has_val ? argv[i + 1] : "");
                 goto done;
             }
@@ -506,6 +516,11 @@ int main(int argc, char **argv)
     /* the flattened path inlines every call: there is no instance to move */
     if (o.flatten && o.nmotions) {
         rc = usage_error("%s--motion moves instances, and --flatten draws none; leave out --flatten", "");
+        goto done;
+    }
+    /* flow goes from each frame of a trajectory to the next */
+    if ((o.outputs & GLS_OUT_FLOW_ALL) && !o.trajectory) {
+        rc = usage_error("%s--outputs flow needs a --trajectory: the flow goes from each frame to the next", "");
         goto done;
     }
     if (frames && !o.trajectory) {

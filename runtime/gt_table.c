@@ -6,8 +6,14 @@
 
 void gls_gt_class_of(const char *object, char *buf, size_t len)
 {
-    const char *dot = strrchr(object, '.');
-    size_t n = dot ? (size_t)(dot - object) : strlen(object);
+    /* a specialised object's name ends in its values, "pkg.Sign(h=1.5)":
+     * the package is what comes before the last dot of the name itself */
+    size_t n = strcspn(object, "(");
+    size_t dot = n;
+    while (dot > 0 && object[dot - 1] != '.')
+        dot--;
+    if (dot > 1)
+        n = dot - 1;
     if (len == 0)
         return;
     if (n >= len)

@@ -10,6 +10,7 @@
  * frame_record.c, progress.c, trajectory.c); splitting the camera and the
  * trajectory loops apart would cut through that shared state. */
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -22,12 +23,15 @@
 #include "frame_record.h"
 #include "frame_writer.h"
 #include "glctx.h"
+#include "gt_boxes.h"
+#include "gt_flow.h"
 #include "gt_landmarks.h"
 #include "gt_pass.h"
 #include "gt_table.h"
 #include "mkdirs.h"
 #include "motion.h"
 #include "out_disparity.h"
+#include "out_flow.h"
 #include "outputs.h"
 #include "player.h"
 #include "progress.h"
@@ -86,7 +90,12 @@ static const struct {
             {GLS_OUT_CLASS, "class", "png"},
             {GLS_OUT_INSTANCE | GLS_OUT_CLASS, "instances", "json"}, /* the JSON table, with either */
             {GLS_OUT_COCO, "coco", "json"},
-            {GLS_OUT_NORMALS, "normals", NULL}};
+            {GLS_OUT_NORMALS, "normals", NULL},
+            {GLS_OUT_FLOW, "flow", "png"},
+            {GLS_OUT_FLOW_FLO, "flow", "flo"},
+            {GLS_OUT_FLOW_MASK, "flowmask", "png"},
+            {GLS_OUT_BOXES, "boxes", "txt"},
+            {GLS_OUT_BOXES_JSON, "boxes", "json"}};
 #define NOUTS (sizeof outs / sizeof outs[0])
 
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
@@ -198,6 +207,13 @@ typedef struct {
     int estimated;              /* the estimate was made (printed or not) */
     double baseline;            /* disparity: B of the rectified pair   */
     const gls_gt_table *gt;     /* instance and class ids, when asked   */
+    /* flow (gt_flow.h): the next row of the trajectory (NULL: none, the
+     * frame writes no flow), the camera's pose relative to the rig, and
+     * the moving instances' transforms */
+    const gls_traj_pose *next;
+    const gls_camera *rel;
+    gls_flow_moves *moves;
+    const gls_box_names *box_names; /* boxes: the objects' names */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -268,10 +284,17 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
         b += n;
     if (out & GLS_OUT_POINTS)
         enc = 27 * n; /* x y z double, r g b */
-    if (out & GLS_OUT_IDS) /* ids per pixel; 16-bit image or COCO runs */
+    if (out & (GLS_OUT_IDS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) /* ids per pixel; 16-bit image or COCO runs */
         b += 4 * n, enc = enc > 16 * n ? enc : 16 * n;
     if (out & GLS_OUT_NORMALS)
         b += 12 * n, enc = enc > 12 * n ? enc : 12 * n;
+    if (out & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))
+        b += 4 * n; /* the ground-truth pass's depth (the boxes' passes: depth) */
+    if (out & GLS_OUT_FLOW_ALL) {
+        b += 13 * n; /* next frame's depth, u v, mask */
+        if (8 * n > enc)
+            enc = 8 * n; /* the .flo */
+    }
     return b + enc;
 }
 
@@ -283,6 +306,64 @@ static void say_failure(session *s, const char *msg)
 {
     char earlier[1024];
     fprintf(s->errs, "%s\n", gls_writer_finish(s->w, earlier, sizeof earlier) ? earlier : msg);
+}
+
+/* Is output k written for this camera frame?  Flow only when the
+ * trajectory has a next row. */
+static int output_on(const session *s, size_t k)
+{
+    return (s->o->outputs & outs[k].bit) && (s->next || !(outs[k].bit & GLS_OUT_FLOW_ALL));
+}
+
+/* The flow of camera c from frame to the trajectory's next row (gt_flow.h),
+ * from this frame's ground-truth pass (inst, z): the depth of the next
+ * (its camera pose and motions; an extra centre pass), then the scene
+ * posed back for this frame's other cameras.  0 with *uv and *mask, or -1
+ * with the whole line in msg (empty: out of memory). */
+static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_t frame, const uint32_t *inst,
+                      const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
+{
+    size_t n = (size_t)c->width * c->height;
+    float *z1 = malloc(n * sizeof *z1);
+    char err[512];
+    int rc = -1;
+    *uv = malloc(2 * n * sizeof **uv);
+    *mask = malloc(n ? n : 1);
+    if (!z1 || !*uv || !*mask)
+        goto out;
+    gls_camera c1 = *c;
+    gls_traj_compose(s->rel->R, s->rel->T, s->next->R, s->next->T, c1.R, c1.T);
+    gls_flow_moves_take(s->moves, s->ms->scene, 0);
+    if (s->ms->n) {
+        motion_apply(s->ms, s->next->frame);
+        gls_flow_moves_take(s->moves, s->ms->scene, 1);
+    }
+    rc = gls_gt_render(s->r, &c1, NULL, NULL, z1, err, sizeof err);
+    if (s->ms->n)
+        motion_apply(s->ms, frame);
+    if (rc) {
+        snprintf(msg, msglen, "glsplay: error: camera %s: %s", name, err);
+        goto out;
+    }
+    gls_flow_compute(c, &c1, inst, z, z1, s->moves, *uv, *mask);
+    uint32_t x, y;
+    float fu, fv;
+    if ((s->o->outputs & GLS_OUT_FLOW) && gls_flow_kitti_check(*uv, *mask, c->width, c->height, &x, &y, &fu, &fv)) {
+        int along_u = !(fabsf(fv) > fabsf(fu));
+        snprintf(msg, msglen,
+                 "glsplay: error: camera %s, frame %u: the flow at pixel (%u, %u) moves %.2f px along %c, beyond the "
+                 "-512..512 px a KITTI flow PNG holds; leave out flow or move less between frames",
+                 name, frame, x, y, along_u ? fu : fv, along_u ? 'u' : 'v');
+        rc = -1;
+    }
+out:
+    free(z1);
+    if (rc) {
+        free(*uv);
+        free(*mask);
+        *uv = NULL, *mask = NULL;
+    }
+    return rc;
 }
 
 /* Render one camera and write what was asked for.
@@ -307,9 +388,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     size_t n = (size_t)c->width * c->height;
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
     int centre = !aa || (o->outputs & GLS_OUT_FROM_Z);
-    uint8_t *rgba = NULL, *mask = NULL;
-    float *z = NULL, *normal = NULL;
-    uint32_t *gt_inst = NULL;
+    uint8_t *rgba = NULL, *mask = NULL, *flowmask = NULL;
+    float *z = NULL, *normal = NULL, *flow = NULL, *gt_z = NULL;
+    uint32_t *gt_ids = NULL; /* the ground-truth pass (gt_pass.h): ids for instance, class, coco, flow, boxes */
+    gls_box *boxes = NULL;
+    size_t nboxes = 0;
     void *img = NULL; /* image in its output format when not rgba */
     gls_accum acc;
     memset(&acc, 0, sizeof acc);
@@ -334,13 +417,17 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             gls_render_read_z(r, z);
         }
     }
-    if (o->outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS)) {
-        /* ground truth: the centre sample again, ids and normals
-         * (gt_pass.h), never blended whatever --aa is */
-        if (((o->outputs & GLS_OUT_IDS) && !(gt_inst = malloc(n * sizeof *gt_inst))) ||
-            ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))))
+    int want_flow = s->next && (o->outputs & GLS_OUT_FLOW_ALL), want_boxes = (o->outputs & GLS_OUT_BOXES_ALL) != 0;
+    int want_ids = (o->outputs & GLS_OUT_IDS) || want_flow || want_boxes;
+    if (want_ids || (o->outputs & GLS_OUT_NORMALS)) {
+        /* ground truth: the centre sample again, one pass for ids, normals
+         * and the depth flow starts from (gt_pass.h), never blended
+         * whatever --aa is */
+        if ((want_ids && !(gt_ids = malloc(n * sizeof *gt_ids))) ||
+            ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))) ||
+            (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
             goto oom;
-        if (gls_gt_render(r, c, gt_inst, normal, NULL, err, sizeof err)) {
+        if (gls_gt_render(r, c, gt_ids, normal, gt_z, err, sizeof err)) {
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
@@ -407,6 +494,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
+    if (want_boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
+        goto oom;
+    if (want_flow && flow_frame(s, c, name, frame, gt_ids, gt_z, &flow, &flowmask, msg, sizeof msg)) {
+        if (msg[0])
+            goto out;
+        goto oom;
+    }
     /* The files go to the writer (frame_writer.h, frame_files.h), which
      * encodes and writes them, with its thread while the next frame
      * renders, and writes the frame record after the last one. */
@@ -424,7 +518,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame);
     for (size_t k = 0; k < NOUTS && !too_long; k++)
-        if (o->outputs & outs[k].bit) {
+        if (output_on(s, k)) {
             f->files[f->nfiles].bit = outs[k].bit;
             too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
         }
@@ -436,8 +530,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if ((o->outputs & GLS_OUT_LANDMARKS) && !(f->landmarks = gls_landmarks_take(s->scene)))
         goto oom;
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
-    f->gt_inst = gt_inst, f->normal = normal, f->gt = s->gt;
-    rgba = mask = NULL, z = NULL, img = NULL, gt_inst = NULL, normal = NULL;
+    /* the writer needs the ids only for the id images and tables */
+    f->gt_inst = (o->outputs & GLS_OUT_IDS) ? gt_ids : NULL, f->normal = normal, f->gt = s->gt;
+    f->flow = flow, f->flowmask = flowmask;
+    f->boxes = boxes, f->nboxes = nboxes, f->box_names = s->box_names;
+    if (o->outputs & GLS_OUT_IDS)
+        gt_ids = NULL;
+    rgba = mask = flowmask = NULL, z = flow = normal = NULL, img = NULL, boxes = NULL;
     gls_write_job *job = &f->job;
     f = NULL; /* the writer's now, submitted or freed */
     if (gls_writer_submit(s->w, job, msg, sizeof msg))
@@ -458,15 +557,20 @@ out:
     free(z);
     free(img);
     free(mask);
-    free(gt_inst);
     free(normal);
+    free(flow);
+    free(flowmask);
+    free(gt_ids);
+    free(gt_z);
+    free(boxes);
     return rc;
 }
 
 /* Is this frame complete: for every camera, a record that covers what o
  * asks for (written after the camera's last file, frame_record.h), and
  * every requested output file still there? */
-static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char *const *names, uint32_t frame)
+static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char *const *names, uint32_t frame,
+                      int has_next)
 {
     char path[MAXPATH], text[1024];
     for (size_t i = 0; i < o->ncameras; i++) {
@@ -475,7 +579,7 @@ static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char
             !gls_frame_record_matches(path, text))
             return 0;
         for (size_t k = 0; k < NOUTS; k++) {
-            if (!(o->outputs & outs[k].bit))
+            if (!(o->outputs & outs[k].bit) || (!has_next && (outs[k].bit & GLS_OUT_FLOW_ALL)))
                 continue;
             struct stat st;
             if (output_file(path, sizeof path, o, names[i], k, frame) ||
@@ -497,12 +601,32 @@ static gls_traj *open_trajectory(const char *path, FILE *notes, FILE *errs)
     return t;
 }
 
+/* The frame of the trajectory's last row (the one frame with no flow
+ * from it), or UINT64_MAX if it cannot be read (the scan says why). */
+static uint64_t trajectory_last_frame(const char *path)
+{
+    char err[1024];
+    gls_traj *t = gls_traj_open(path, NULL, err, sizeof err);
+    if (!t)
+        return UINT64_MAX;
+    gls_traj_pose p;
+    uint64_t last = UINT64_MAX;
+    int got;
+    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1)
+        last = p.frame;
+    gls_traj_close(t);
+    return got < 0 ? UINT64_MAX : last;
+}
+
 /* The trajectory read once before anything is rendered: every line up
  * to the end of the range is checked, the frames in the range counted
- * and, with --resume, the complete ones among them.  0, or 1 after a
- * message. */
+ * and, with --resume, the complete ones among them (last: the frame of the
+ * trajectory's last row, which writes no flow).  With flow, the row after
+ * the range is read too, and its motions checked: the last frame's flow
+ * goes to it.  0, or 1 after a message. */
 static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const gls_camera *rel,
-                           const char *const *names, FILE *errs, uint64_t *inrange, uint64_t *complete)
+                           const char *const *names, uint64_t last, FILE *errs, uint64_t *inrange,
+                           uint64_t *complete)
 {
     char err[1024];
     gls_traj *t = open_trajectory(o->trajectory, errs, errs);
@@ -514,8 +638,11 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
     while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
         if (p.frame < o->frame_first)
             continue;
-        if (p.frame >= o->frame_end)
+        if (p.frame >= o->frame_end) {
+            if ((o->outputs & GLS_OUT_FLOW_ALL) && motion_check(ms, p.frame, errs))
+                rc = 1;
             break;
+        }
         if (p.frame > UINT32_MAX) {
             fprintf(errs, "%s:%u: error: frame %llu: frame numbers above %u are not supported\n", o->trajectory,
                     p.line, (unsigned long long)p.frame, UINT32_MAX);
@@ -527,7 +654,7 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
             break;
         }
         (*inrange)++;
-        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
+        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last))
             (*complete)++;
     }
     if (got < 0) {
@@ -558,7 +685,9 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     const gls_play_opts *o = s->o;
     FILE *errs = s->errs;
     uint64_t inrange, complete;
-    if (scan_trajectory(o, s->ms, rel, names, errs, &inrange, &complete))
+    int flow = (o->outputs & GLS_OUT_FLOW_ALL) != 0;
+    uint64_t last = flow ? trajectory_last_frame(o->trajectory) : UINT64_MAX;
+    if (scan_trajectory(o, s->ms, rel, names, last, errs, &inrange, &complete))
         return 1;
     if (o->resume)
         resume_note(errs, complete, inrange);
@@ -568,21 +697,38 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
     if (!t)
         return 1;
-    gls_traj_pose p;
-    int got = 0, rc = 0;
-    double last = 0;
+    /* flow: a second reader one row ahead gives each frame's next row */
+    gls_traj *ahead = flow ? open_trajectory(o->trajectory, NULL, errs) : NULL;
+    if (flow && !ahead) {
+        gls_traj_close(t);
+        return 1;
+    }
+    gls_traj_pose p, pn;
+    int got = 0, rc = 0, have = ahead ? gls_traj_next(ahead, &pn, err, sizeof err) : 0, noted = 0;
+    double shown = 0;
     s->t0 = gls_now();
     while (done < todo && (got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
         if (p.frame < o->frame_first)
             continue;
         if (p.frame >= o->frame_end || p.frame > UINT32_MAX) /* checked by the scan */
             break;
-        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame))
+        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last))
             continue;
+        while (have == 1 && pn.frame <= p.frame)
+            have = gls_traj_next(ahead, &pn, err, sizeof err);
+        if (have < 0) { /* read by the scan: only if the file changed since */
+            got = have;
+            break;
+        }
+        s->next = have == 1 ? &pn : NULL;
+        if (flow && !s->next && !noted++)
+            fprintf(errs, "glsplay: note: frame %llu is the last of %s: no flow from it (flow goes from a frame to "
+                          "the next)\n", (unsigned long long)p.frame, o->trajectory);
         motion_apply(s->ms, p.frame);
         for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
             gls_camera c = rel[i];
             gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
+            s->rel = &rel[i];
             if (play_camera(s, &c, names[i], (uint32_t)p.frame))
                 rc = 1;
         }
@@ -597,8 +743,8 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
             break;
         }
         double now = gls_now();
-        if (o->progress && (done == todo || now - last >= 0.5)) {
-            last = now;
+        if (o->progress && (done == todo || now - shown >= 0.5)) {
+            shown = now;
             gls_progress_frames(errs, done, todo, now - s->t0, done == todo);
         }
     }
@@ -607,6 +753,8 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
         rc = 1;
     }
     gls_traj_close(t);
+    if (ahead)
+        gls_traj_close(ahead);
     return rc;
 }
 
@@ -663,6 +811,10 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_scene scene;
     memset(&scene, 0, sizeof scene);
     motion_set ms = {&scene, 0, NULL, NULL};
+    gls_flow_moves moves;
+    memset(&moves, 0, sizeof moves);
+    gls_box_names box_names;
+    memset(&box_names, 0, sizeof box_names);
     gls_glctx *ctx = NULL;
     gls_renderer *r = NULL;
     gls_writer *wr = NULL;
@@ -742,6 +894,10 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
             goto out;
         }
     }
+    if ((o->outputs & GLS_OUT_FLOW_ALL) && gls_flow_moves_init(&moves, &scene, ms.inst, ms.n)) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        goto out;
+    }
     /* the context before the plan, which reports it */
     ctx = gls_glctx_create(o->backend, err, sizeof err);
     if (!ctx) {
@@ -776,6 +932,10 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
+    if ((o->outputs & GLS_OUT_BOXES_ALL) && gls_box_names_init(&box_names, b, &scene)) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        goto out;
+    }
     /* The bundle's texels and code are on the GPU side or in the scene
      * now: free them before the per-camera buffers are allocated. */
     gls_bundle_free(b);
@@ -790,9 +950,9 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline, &gt};
+    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline, &gt, NULL, NULL, &moves, &box_names};
     if (!o->trajectory) {
-        int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
+        int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame, 0);
         if (o->resume)
             resume_note(errs, skip, 1);
         motion_apply(&ms, o->frame);
@@ -820,6 +980,8 @@ out:
     gls_glctx_destroy(ctx);
     motion_free(&ms);
     gls_gt_table_free(&gt);
+    gls_flow_moves_free(&moves);
+    gls_box_names_free(&box_names);
     gls_scene_free(&scene);
     gls_bundle_free(b);
     for (size_t i = 0; names && i < o->ncameras; i++)

@@ -49,6 +49,14 @@ enum {
 /* Format of the float outputs (depth, disparity, normals, the image with
  * --image-format pfm): PFM, or NumPy .npy (out_npy.h). */
 typedef enum { GLS_FLOAT_PFM = 0, GLS_FLOAT_NPY = 1 } gls_float_format;
+/* flow (--outputs flow, spec/outputs.md "Optical flow"): three files from
+ * frame t to the next of the trajectory, each its own bit: the KITTI PNG,
+ * the Middlebury .flo and the mask of visible, occluded, out-of-view */
+enum { GLS_OUT_FLOW = 1u << 20, GLS_OUT_FLOW_FLO = 1u << 21, GLS_OUT_FLOW_MASK = 1u << 22 };
+#define GLS_OUT_FLOW_ALL (GLS_OUT_FLOW | GLS_OUT_FLOW_FLO | GLS_OUT_FLOW_MASK)
+/* boxes (--outputs boxes, spec/outputs.md "Boxes"): KITTI labels and JSON */
+enum { GLS_OUT_BOXES = 1u << 23, GLS_OUT_BOXES_JSON = 1u << 24 };
+#define GLS_OUT_BOXES_ALL (GLS_OUT_BOXES | GLS_OUT_BOXES_JSON)
 
 /* Image file format: 8-bit PNG, 16-bit PNG, float32 PFM ("PF", RGB). */
 typedef enum { GLS_IMG_PNG8 = 0, GLS_IMG_PNG16 = 1, GLS_IMG_PFM = 2 } gls_image_format;

@@ -8,7 +8,9 @@
 # the trajectory (--trajectory, with the rig cameras examples/road/rig/*.cam
 # giving poses relative to the rig) and moves each vehicle along its motion
 # file (--motion NAME=FILE).  The selected frames are the trajectory's
-# lines for them (a trajectory may hold a selection of frames).
+# lines for them (a trajectory may hold a selection of frames).  A fourth
+# command renders a clip of consecutive frames (ROAD_CLIP, default
+# 200:203) with optical flow and object boxes into OUTDIR/clip.
 set -e
 B=$1
 OUT=$2
@@ -29,6 +31,12 @@ for m in "$OUT"/road/motion/*.txt; do
 done
 "$B/glsplay" "$OUT/road.glsb" $CAMS --trajectory "$tmp/trajectory.txt" "$@" --outputs image,depth,points,landmarks \
     --background 0.55,0.7,0.9 -o "$OUT"
+# optical flow and boxes on a short clip of consecutive frames (flow goes
+# from each frame to the trajectory's next line, so the whole trajectory):
+# OUTDIR/clip/left and right, with the vehicles moving
+CLIP=${ROAD_CLIP:-200:203}
+"$B/glsplay" "$OUT/road.glsb" $CAMS --trajectory "$OUT/road/trajectory.txt" "$@" --frames "$CLIP" \
+    --outputs image,depth,flow,boxes --background 0.55,0.7,0.9 -o "$OUT/clip"
 if [ -n "$STRIP" ]; then
     # four frames of the left camera, 300 px wide each (the PNG stays under
     # 300 KB: asphalt and grass textures compress poorly)
@@ -43,3 +51,4 @@ if [ -n "$STRIP" ]; then
     echo "strip: $STRIP"
 fi
 echo "demo-road: frames in $OUT/left and $OUT/right (images, depth, points, landmarks); road outputs in $OUT/road"
+echo "demo-road: frames $CLIP with flow and boxes in $OUT/clip/left and $OUT/clip/right"

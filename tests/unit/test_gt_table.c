@@ -23,6 +23,11 @@ static void test_class_of(void)
     CHECK(strcmp(c, "Wall") == 0);
     gls_gt_class_of("a.B", c, 2); /* cut to the buffer */
     CHECK(strcmp(c, "a") == 0);
+    /* a specialised object: its values' dots are not package dots */
+    gls_gt_class_of("road.signs.Sign(h=1.5,w=0.75)", c, sizeof c);
+    CHECK(strcmp(c, "road.signs") == 0);
+    gls_gt_class_of("Sign(h=1.5)", c, sizeof c);
+    CHECK(strcmp(c, "Sign") == 0);
 }
 
 /* Top calls a.B twice, then c.d.Leaf, then Solo; a.B draws nothing and
