@@ -10,6 +10,7 @@
 #include "camera.h"
 #include "frame_writer.h"
 #include "player.h"
+#include "progress_json.h"
 
 #define GLS_FRAME_PATH 4096
 
@@ -31,6 +32,9 @@ typedef struct {
         char path[GLS_FRAME_PATH];
     } files[4];
     char record[GLS_FRAME_PATH], record_text[1024];
+    /* --progress json: told once the record is written (NULL: not) */
+    gls_progress_json *json;
+    uint32_t frame;
 } gls_frame_files;
 
 /* A zeroed job with its run and destroy set, or NULL. */
