@@ -94,7 +94,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
+.PHONY: gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -273,6 +273,31 @@ gallery: demo
 	cp out/demo/right/image_000000.png docs/demo_right.png
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
 	cp out/gallery/ex_*.png docs/
+
+# make install PREFIX=/usr/local DESTDIR=: the tools into PREFIX/bin, the
+# standard library bundle (what `make` builds of scenelib/, textures
+# included) into PREFIX/share/glscene/, a man page per tool
+# (docs/man/*.1) into PREFIX/share/man/man1.  DESTDIR is prepended to
+# every path (staged installs, packaging); nothing is written outside it.
+# make uninstall removes exactly those files (tests/e2e/install.sh).
+# TODO(libglscene): install the static and shared libraries, their public
+# header and a pkg-config file glscene.pc once a public library header
+# exists.  None does yet (runtime/player.h is internal), so no library,
+# header or .pc is installed: issue 17's libglscene will add them here.
+PREFIX ?= /usr/local
+DESTDIR ?=
+INSTALL_BIN := $(DESTDIR)$(PREFIX)/bin
+INSTALL_SHARE := $(DESTDIR)$(PREFIX)/share/glscene
+INSTALL_MAN := $(DESTDIR)$(PREFIX)/share/man/man1
+MAN_PAGES := $(TOOLS:$(B)/%=docs/man/%.1)
+install: $(TOOLS) $(SCENELIB) $(MAN_PAGES)
+	install -d $(INSTALL_BIN) $(INSTALL_SHARE) $(INSTALL_MAN)
+	install -m 755 $(TOOLS) $(INSTALL_BIN)/
+	install -m 644 $(B)/scenelib.glsb $(INSTALL_SHARE)/scenelib.glsb
+	install -m 644 $(MAN_PAGES) $(INSTALL_MAN)/
+uninstall:
+	rm -f $(TOOLS:$(B)/%=$(INSTALL_BIN)/%) $(INSTALL_SHARE)/scenelib.glsb $(MAN_PAGES:docs/man/%=$(INSTALL_MAN)/%)
+	-rmdir $(INSTALL_SHARE) 2>/dev/null
 
 bench-compile: $(B)/glsc
 	@sh bench/compile.sh $(B)
