@@ -275,6 +275,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     const gls_aa_plan *plan = s->plan;
     gls_renderer *r = s->r;
     FILE *errs = s->errs;
+    FILE *bar = o->progress == GLS_PROGRESS_BAR ? errs : NULL; /* the samples' progress line */
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK));
@@ -311,7 +312,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         if (gls_aa_fine_ok(plan)) {
             /* lattice and grid: the samples are the pixels of a fine
              * framebuffer drawn in tiles (aa_onepass.h) */
-            gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress == GLS_PROGRESS_BAR ? errs : NULL, name, estimate_from_tiles, s};
+            gls_aa_fine_opts fo = {o->aa_memory, 0, 0, bar, name, estimate_from_tiles, s};
             if (gls_aa_render_fine(r, c, plan, &fo, &acc, NULL, err, sizeof err)) {
                 char mem[32];
                 gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
@@ -322,7 +323,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         } else {
             /* stratified, grid Gaussian: one jittered pass per sample,
              * several per GL pass (aa_render.h) */
-            gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress == GLS_PROGRESS_BAR ? errs : NULL, name, estimate_from_passes, s};
+            gls_aa_run_opts ro = {o->aa_tiles, 0, bar, name, estimate_from_passes, s};
             if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
                 uint32_t kx, ky;
                 gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);

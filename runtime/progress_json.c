@@ -33,7 +33,8 @@ void gls_progress_json_frame(gls_progress_json *p, uint32_t frame, const char *c
     snprintf(s, sizeof s, "{\"event\": \"frame\", \"frame\": %u, \"camera\": ", frame);
     put(&b, s);
     gls_buf_quoted(&b, camera, 1);
-    snprintf(s, sizeof s, ", \"done\": %llu, \"total\": %llu, \"elapsed_s\": %.3f, \"rate_fps\": %.3f, \"eta_s\": %.3f}\n",
+    snprintf(s, sizeof s,
+             ", \"done\": %llu, \"total\": %llu, \"elapsed_s\": %.3f, \"rate_fps\": %.3f, \"eta_s\": %.3f}\n",
              (unsigned long long)p->done, (unsigned long long)p->total, el, rate, eta);
     put(&b, s);
     put_line(p->f, &b);

@@ -96,7 +96,8 @@ void gls_shard_explain(FILE *out, const gls_shard *s, int sequence, uint64_t fir
     if (s->count == 0)
         return;
     if (sequence)
-        fprintf(out, "shard %llu/%llu: the frames f with (f - %llu) mod %llu = %llu: %llu of the %llu frame%s in range\n",
+        fprintf(out,
+                "shard %llu/%llu: the frames f with (f - %llu) mod %llu = %llu: %llu of the %llu frame%s in range\n",
                 (unsigned long long)s->index, (unsigned long long)s->count, (unsigned long long)first,
                 (unsigned long long)s->count, (unsigned long long)s->index, (unsigned long long)mine,
                 (unsigned long long)inrange, inrange == 1 ? "" : "s");
