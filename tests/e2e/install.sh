@@ -3,8 +3,8 @@
 # temporary DESTDIR, exactly the listed files and nothing outside it; the
 # installed tools run (--help) and render the road demo with the installed
 # library bundle, byte for byte as the build's tools do; the man pages
-# pass groff's and man's checks, and each names every option its tool's
-# --help lists.  Prints ok/FAIL lines.
+# pass groff's and man's checks, and each has an entry for every option
+# its tool's --help lists.  Prints ok/FAIL lines.
 BIN=${GLS_BIN:-build}
 ok() { echo "ok $1"; }
 fail() { echo "FAIL $1: $2"; }
@@ -79,19 +79,21 @@ else
 fi
 
 # the man pages: clean under groff's and man's warnings, and every option
-# of each tool's --help in its page
+# of each tool's --help with an entry in its page
 manbad=0
 for t in glsc glsdis glsplay glsroad; do
     page=$P/share/man/man1/$t.1
     w=$(groff -man -ww -z "$page" 2>&1; man --warnings -l "$page" 2>&1 >/dev/null)
     [ -z "$w" ] || { fail man_page_lint "$t.1: $w"; manbad=1; }
-    # the page's text as written: \- is -, font escapes dropped
-    sed 's/\\-/-/g; s/\\f[BIRP]//g' "$page" >"$tmp/page"
+    # the tags of the page's option entries (the line after each .TP), as
+    # written: \- is -, font escapes dropped; an option must have an entry
+    # of its own, not just a mention in another's text
+    sed 's/\\-/-/g; s/\\f[BIRP]//g' "$page" | awk 'tag { print; tag = 0 } /^\.TP/ { tag = 1 }' >"$tmp/page"
     missing=""
     for opt in $("$BIN/$t" --help | grep -oE '(^|[^A-Za-z0-9_-])--?[A-Za-z][A-Za-z0-9-]*' | sed -E 's/^[^-]+//' | sort -u); do
         grep -qE -- "(^|[^A-Za-z0-9-])$opt([^A-Za-z0-9-]|\$)" "$tmp/page" || missing="$missing $opt"
     done
-    [ -z "$missing" ] || { fail man_page_options "$t.1 lacks$missing (in $t --help)"; manbad=1; }
+    [ -z "$missing" ] || { fail man_page_options "$t.1 has no entry for$missing (in $t --help)"; manbad=1; }
 done
 [ $manbad -eq 0 ] && ok man_pages_lint_and_options
 
