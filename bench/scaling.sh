@@ -24,11 +24,7 @@ OUT=docs/scaling.txt
 t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
 export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
 
-"$B/glsroad" examples/road/demo.road -o "$t/road" >/dev/null &&
-    "$B/glsc" -I "$B/scenelib.glsb" -I "$t/road" -o "$t/road.glsb" "$t/road/road.scene" &&
-    "$B/bench/play_bench" --write "$t" || exit 1
-ROAD="$t/road.glsb --camera examples/road/rig/left.cam --trajectory $t/road/trajectory.txt --background 0.55,0.7,0.9"
-TERRAIN="$t/terrain.glsb --camera $t/rig.cam --trajectory $t/trajectory.txt"
+. bench/sequences.sh # the road and the terrain, ROAD and TERRAIN
 
 now() { date +%s.%N; }
 # fps PROCS THREADS ARGS...: frames per second of PROCS shards run at once
