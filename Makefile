@@ -94,7 +94,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
+.PHONY: gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -128,6 +128,8 @@ SEES_test_instances := runtime
 SEES_test_outputs := runtime
 SEES_test_writer := runtime
 SEES_test_progress := runtime
+SEES_test_progress_json := runtime
+SEES_test_shard := runtime
 SEES_test_rotation := runtime
 SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
@@ -279,6 +281,31 @@ gallery: demo
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
 	cp out/gallery/ex_*.png docs/
 
+# make install PREFIX=/usr/local DESTDIR=: the tools into PREFIX/bin, the
+# standard library bundle (what `make` builds of scenelib/, textures
+# included) into PREFIX/share/glscene/, a man page per tool
+# (docs/man/*.1) into PREFIX/share/man/man1.  DESTDIR is prepended to
+# every path (staged installs, packaging); nothing is written outside it.
+# make uninstall removes exactly those files (tests/e2e/install.sh).
+# TODO(libglscene): install the static and shared libraries, their public
+# header and a pkg-config file glscene.pc once a public library header
+# exists.  None does yet (runtime/player.h is internal), so no library,
+# header or .pc is installed: issue 17's libglscene will add them here.
+PREFIX ?= /usr/local
+DESTDIR ?=
+INSTALL_BIN := $(DESTDIR)$(PREFIX)/bin
+INSTALL_SHARE := $(DESTDIR)$(PREFIX)/share/glscene
+INSTALL_MAN := $(DESTDIR)$(PREFIX)/share/man/man1
+MAN_PAGES := $(TOOLS:$(B)/%=docs/man/%.1)
+install: $(TOOLS) $(SCENELIB) $(MAN_PAGES)
+	install -d $(INSTALL_BIN) $(INSTALL_SHARE) $(INSTALL_MAN)
+	install -m 755 $(TOOLS) $(INSTALL_BIN)/
+	install -m 644 $(B)/scenelib.glsb $(INSTALL_SHARE)/scenelib.glsb
+	install -m 644 $(MAN_PAGES) $(INSTALL_MAN)/
+uninstall:
+	rm -f $(TOOLS:$(B)/%=$(INSTALL_BIN)/%) $(INSTALL_SHARE)/scenelib.glsb $(MAN_PAGES:docs/man/%=$(INSTALL_MAN)/%)
+	-rmdir $(INSTALL_SHARE) 2>/dev/null
+
 bench-compile: $(B)/glsc
 	@sh bench/compile.sh $(B)
 
@@ -317,6 +344,12 @@ bench-encode: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench $(B)/bench/png_bench
 # pixel; writes docs/backends.txt.
 bench-backends: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/backends.sh $(B)
+
+# bench-scaling: frames per second with 1 and 2 processes (--shard) and
+# LP_NUM_THREADS 1, 2 and unset, the road sequence and the 100k-triangle
+# terrain; writes docs/scaling.txt (README "Run it on a cluster").
+bench-scaling: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
+	@sh bench/scaling.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.

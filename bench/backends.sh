@@ -31,11 +31,7 @@ done
 [ -n "$backends" ] || { echo "bench-backends: no backend to measure" >&2; exit 1; }
 
 # the inputs
-"$B/glsroad" examples/road/demo.road -o "$t/road" >/dev/null &&
-    "$B/glsc" -I "$B/scenelib.glsb" -I "$t/road" -o "$t/road.glsb" "$t/road/road.scene" &&
-    "$B/bench/play_bench" --write "$t" || exit 1
-ROAD="$t/road.glsb --camera examples/road/rig/left.cam --trajectory $t/road/trajectory.txt --background 0.55,0.7,0.9"
-TERRAIN="$t/terrain.glsb --camera $t/rig.cam --trajectory $t/trajectory.txt"
+. bench/sequences.sh # the road and the terrain, ROAD and TERRAIN
 
 now() { date +%s.%N; }
 # fps BACKEND FRAMES SCENE-ARGS...: frames per second of one glsplay run

@@ -26,9 +26,7 @@ OUT=docs/encode.txt
 t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
 export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
 
-"$B/glsroad" examples/road/demo.road -o "$t/road" >/dev/null &&
-    "$B/glsc" -I "$B/scenelib.glsb" -I "$t/road" -o "$t/road.glsb" "$t/road/road.scene" &&
-    "$B/bench/play_bench" --write "$t" || exit 1
+. bench/sequences.sh # the road and the terrain
 # camera CAM SCALE W H: CAM with fx fy cx cy scaled and the size set
 camera() {
     awk -v s="$2" -v w="$3" -v h="$4" '

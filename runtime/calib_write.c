@@ -8,6 +8,7 @@
 #include "atomic_write.h"
 #include "calib_write.h"
 #include "numfmt.h"
+#include "buf.h"
 #include "trajectory.h"
 #include "vec.h"
 
@@ -45,8 +46,6 @@ static int nums(gls_buf *b, const double *v, size_t n, const char *sep, numstyle
             return -1;
     return 0;
 }
-
-#define quoted gls_buf_quoted
 
 static void camera_k(const gls_camera *c, double K[9])
 {
@@ -99,7 +98,7 @@ int gls_calib_opencv_yaml(gls_buf *b, const gls_camera *c, const char *name, uin
 {
     double K[9];
     camera_k(c, K);
-    return putf(b, "%%YAML:1.0\n---\ncamera_name: ") || quoted(b, name, 0) ||
+    return putf(b, "%%YAML:1.0\n---\ncamera_name: ") || gls_buf_quoted(b, name, 0) ||
            putf(b, "\nframe: %u\nimage_width: %u\nimage_height: %u\n", frame, c->width, c->height) ||
            cv_matrix(b, "camera_matrix", K, 3, 3) || cv_matrix(b, "distortion_coefficients", zero5, 1, 5) ||
            cv_matrix(b, "R", c->R, 3, 3) || cv_matrix(b, "T", c->T, 3, 1) || putf(b, "near: ") ||
@@ -155,7 +154,7 @@ int gls_calib_ros_yaml(gls_buf *b, const gls_camera *cams, const char *const *na
                   putf(b, "): written as a monocular camera, P = [K | 0] (spec/outputs.md)\n")))
         return -1;
     return putf(b, "image_width: %u\nimage_height: %u\ncamera_name: ", c->width, c->height) ||
-           quoted(b, names[i], 0) || putf(b, "\n") || ros_matrix(b, "camera_matrix", K, 3, 3) ||
+           gls_buf_quoted(b, names[i], 0) || putf(b, "\n") || ros_matrix(b, "camera_matrix", K, 3, 3) ||
            putf(b, "distortion_model: plumb_bob\n") || ros_matrix(b, "distortion_coefficients", zero5, 1, 5) ||
            ros_matrix(b, "rectification_matrix", ident, 3, 3) || ros_matrix(b, "projection_matrix", P, 3, 4);
 }
@@ -188,7 +187,7 @@ static int calib_json(gls_buf *b, uint32_t frame, const double *time, const gls_
         if (rig)
             gls_calib_relative(&rig[0], &rig[i], R, t);
         projection(c, R, t, P);
-        if (putf(b, "    {\"name\": ") || quoted(b, names[i], 1) ||
+        if (putf(b, "    {\"name\": ") || gls_buf_quoted(b, names[i], 1) ||
             putf(b, ", \"image_width\": %u, \"image_height\": %u,\n     ", c->width, c->height) ||
             json_matrix(b, "K", K, 3, 3) || putf(b, ", \"dist\": [") || nums(b, zero5, 5, ", ", NUM_PLAIN) ||
             putf(b, "],\n     \"pose_frame\": \"world\", ") || json_matrix(b, "R", c->R, 3, 3) ||
@@ -257,8 +256,11 @@ int gls_calib_write(const gls_play_opts *o, const gls_camera *cams, const char *
                       gls_calib_ros_yaml(&b, cams, names, i)))
             goto out;
     }
+    /* the files of each frame follow --shard (shard.h); the rig's, above,
+       are the same bytes from every shard */
     if (!o->trajectory) {
-        rc = write_frame(o, cams, NULL, names, o->frame, NULL, &b, errs);
+        rc = gls_shard_has(&o->shard, o->frame, o->frame) ? write_frame(o, cams, NULL, names, o->frame, NULL, &b, errs)
+                                                          : 0;
         goto out;
     }
     /* every frame of the range, read as the renderer read them (the
@@ -277,6 +279,8 @@ int gls_calib_write(const gls_play_opts *o, const gls_camera *cams, const char *
             continue;
         if (p.frame >= o->frame_end || p.frame > UINT32_MAX)
             break;
+        if (!gls_shard_has(&o->shard, o->frame_first, p.frame))
+            continue;
         for (size_t i = 0; i < o->ncameras; i++) {
             world[i] = cams[i];
             gls_traj_compose(cams[i].R, cams[i].T, p.R, p.T, world[i].R, world[i].T);

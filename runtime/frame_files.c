@@ -13,6 +13,7 @@
 #include "out_npy.h"
 #include "out_png16.h"
 #include "outputs.h"
+#include "progress.h"
 #include "units.h"
 
 void gls_frame_oom_message(char *buf, size_t len, const char *name, uint32_t w, uint32_t h, uint64_t bytes)
@@ -171,6 +172,7 @@ static int run(gls_write_job *job, char *err, size_t errlen)
         snprintf(err, errlen, "glsplay: error: cannot write %s: %s", f->record, strerror(errno));
         goto out;
     }
+    gls_progress_json_frame(f->json, f->frame, f->name, gls_now());
     rc = 0;
 out:
     free(buf.data);

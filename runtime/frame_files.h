@@ -13,6 +13,7 @@
 #include "gt_table.h"
 #include "out_boxes.h"
 #include "player.h"
+#include "progress_json.h"
 
 #define GLS_FRAME_PATH 4096
 #define GLS_FRAME_MAX_FILES 16
@@ -51,6 +52,8 @@ typedef struct {
         char path[GLS_FRAME_PATH];
     } files[GLS_FRAME_MAX_FILES];
     char record[GLS_FRAME_PATH], record_text[1024];
+    /* --progress json: told once the record is written (NULL: not) */
+    gls_progress_json *json;
 } gls_frame_files;
 
 /* A zeroed job with its run and destroy set, or NULL. */

@@ -79,6 +79,11 @@ static const char usage_text[] =
     "  --resume               skip frames that are complete: every camera has the record\n"
     "                         NAME/.frame_F.done, written after its last file, for the\n"
     "                         same outputs and settings, and every file is there\n"
+    "  --shard I/N            only the frames F with (F - A) mod N = I, A the first of\n"
+    "                         --frames (0 without it): N processes, I = 0..N-1, render a\n"
+    "                         sequence between them into one OUTDIR (a single render is\n"
+    "                         shard 0's); --shard slurm: I and N from a Slurm job array's\n"
+    "                         SLURM_ARRAY_TASK_ID, _COUNT (and _MIN, _STEP)\n"
     "anti-aliasing (spec/antialiasing.md):\n"
     "  --aa N                 NxN samples per pixel, N in 1..4096 (default 1: one pass)\n"
     "  --samples M            M samples per pixel, M in 1..16777216 (lattice: any M;\n"
@@ -104,6 +109,8 @@ static const char usage_text[] =
     "  on a terminal, stderr shows progress: frames done, frames/s and time left for a\n"
     "  sequence, samples done for a long anti-aliased camera frame\n"
     "  --progress             show it even when stderr is not a terminal\n"
+    "  --progress json        instead, one JSON object a line on stderr per camera frame\n"
+    "                         written and one at the end, for cluster logs\n"
     "  --writer-threads N     1 (default): encode and write a frame's files on a thread of\n"
     "                         their own while the next frame renders; 0: in turn, on one\n"
     "                         thread.  The files are the same either way\n"
@@ -233,7 +240,7 @@ int main(int argc, char **argv)
     const char *frames = NULL;
     o.outputs = GLS_OUT_IMAGE | GLS_OUT_DEPTH | GLS_OUT_POINTS;
     o.aa = gls_aa_defaults();
-    o.progress = isatty(2);
+    o.progress = isatty(2) ? GLS_PROGRESS_BAR : GLS_PROGRESS_OFF;
     double subpixel = 0;
     int have_aa = 0, have_samples = 0;
     const char **cams = calloc((size_t)argc, sizeof *cams);
@@ -438,7 +445,23 @@ int main(int argc, char **argv)
             }
             mot[o.nmotions++] = argv[++i];
         } else if (strcmp(a, "--progress") == 0) {
-            o.progress = 1;
+            /* an optional value: only these words are taken as one */
+            o.progress = GLS_PROGRESS_BAR;
+            if (has_val && strcmp(argv[i + 1], "json") == 0)
+                o.progress = GLS_PROGRESS_JSON, i++;
+            else if (has_val && strcmp(argv[i + 1], "bar") == 0)
+                i++;
+        } else if (strcmp(a, "--shard") == 0) {
+            char msg[512];
+            if (!has_val) {
+                rc = usage_error("%s--shard needs I/N with 0 <= I < N (or slurm)", "");
+                goto done;
+            }
+            if (gls_shard_parse(argv[i + 1], getenv, &o.shard, msg, sizeof msg)) {
+                rc = usage_error("%s", msg);
+                goto done;
+            }
+            i++;
         } else if (strcmp(a, "--trajectory") == 0) {
             if (!has_val) {
                 rc = usage_error("%s--trajectory needs a trajectory file", "");

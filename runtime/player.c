@@ -35,6 +35,8 @@
 #include "outputs.h"
 #include "player.h"
 #include "progress.h"
+#include "progress_json.h"
+#include "shard.h"
 #include "suggest.h"
 #include "trajectory.h"
 #include "render.h"
@@ -201,6 +203,7 @@ typedef struct {
     const gls_aa_plan *plan;
     gls_renderer *r;
     gls_writer *w;              /* where each camera frame's files go   */
+    gls_progress_json *json;    /* --progress json: told of each written frame */
     FILE *errs;
     uint64_t views, views_done; /* camera frames to render, rendered    */
     double t0;                  /* when rendering began                 */
@@ -384,6 +387,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     const gls_aa_plan *plan = s->plan;
     gls_renderer *r = s->r;
     FILE *errs = s->errs;
+    FILE *bar = o->progress == GLS_PROGRESS_BAR ? errs : NULL; /* the samples' progress line */
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
     int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
@@ -438,7 +442,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         if (gls_aa_fine_ok(plan)) {
             /* lattice and grid: the samples are the pixels of a fine
              * framebuffer drawn in tiles (aa_onepass.h) */
-            gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress ? errs : NULL, name, estimate_from_tiles, s};
+            gls_aa_fine_opts fo = {o->aa_memory, 0, 0, bar, name, estimate_from_tiles, s};
             if (gls_aa_render_fine(r, c, plan, &fo, &acc, NULL, err, sizeof err)) {
                 char mem[32];
                 gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
@@ -449,7 +453,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         } else {
             /* stratified, grid Gaussian: one jittered pass per sample,
              * several per GL pass (aa_render.h) */
-            gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name, estimate_from_passes, s};
+            gls_aa_run_opts ro = {o->aa_tiles, 0, bar, name, estimate_from_passes, s};
             if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
                 uint32_t kx, ky;
                 gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
@@ -515,6 +519,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     f->fxB = c->fx * s->baseline;
     f->depth_scale = o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI;
     f->buffer_bytes = camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n);
+    f->json = s->json;
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame);
     for (size_t k = 0; k < NOUTS && !too_long; k++)
@@ -619,13 +624,14 @@ static uint64_t trajectory_last_frame(const char *path)
 }
 
 /* The trajectory read once before anything is rendered: every line up
- * to the end of the range is checked, the frames in the range counted
- * and, with --resume, the complete ones among them (last: the frame of the
- * trajectory's last row, which writes no flow).  With flow, the row after
- * the range is read too, and its motions checked: the last frame's flow
- * goes to it.  0, or 1 after a message. */
+ * to the end of the range is checked, the frames in the range counted,
+ * those of this --shard (mine; all without one) and, with --resume, the
+ * complete ones among them (last: the frame of the trajectory's last row,
+ * which writes no flow).  With flow, the row after the range is read too,
+ * and its motions checked: the last frame's flow goes to it.  0, or 1
+ * after a message. */
 static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const gls_camera *rel,
-                           const char *const *names, uint64_t last, FILE *errs, uint64_t *inrange,
+                           const char *const *names, uint64_t last, FILE *errs, uint64_t *inrange, uint64_t *mine,
                            uint64_t *complete)
 {
     char err[1024];
@@ -634,7 +640,7 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
         return 1;
     gls_traj_pose p;
     int got, rc = 0;
-    *inrange = *complete = 0;
+    *inrange = *mine = *complete = 0;
     while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
         if (p.frame < o->frame_first)
             continue;
@@ -654,6 +660,9 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
             break;
         }
         (*inrange)++;
+        if (!gls_shard_has(&o->shard, o->frame_first, p.frame))
+            continue;
+        (*mine)++;
         if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last))
             (*complete)++;
     }
@@ -684,15 +693,24 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
 {
     const gls_play_opts *o = s->o;
     FILE *errs = s->errs;
-    uint64_t inrange, complete;
+    uint64_t inrange, mine, complete;
     int flow = (o->outputs & GLS_OUT_FLOW_ALL) != 0;
     uint64_t last = flow ? trajectory_last_frame(o->trajectory) : UINT64_MAX;
-    if (scan_trajectory(o, s->ms, rel, names, last, errs, &inrange, &complete))
+    if (scan_trajectory(o, s->ms, rel, names, last, errs, &inrange, &mine, &complete))
         return 1;
+    /* more shards than frames: this one has none, which is no error */
+    if (mine == 0) {
+        fprintf(errs, "glsplay: note: --shard %llu/%llu: none of the %llu frame%s in range is this shard's; "
+                      "nothing to render\n", (unsigned long long)o->shard.index, (unsigned long long)o->shard.count,
+                (unsigned long long)inrange, inrange == 1 ? "" : "s");
+        return 0;
+    }
     if (o->resume)
-        resume_note(errs, complete, inrange);
-    uint64_t todo = inrange - complete, done = 0;
+        resume_note(errs, complete, mine);
+    uint64_t todo = mine - complete, done = 0;
     s->views = todo * o->ncameras;
+    s->json->total = s->views;
+    s->json->skipped = complete;
     char err[1024];
     gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
     if (!t)
@@ -706,13 +724,14 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     gls_traj_pose p, pn;
     int got = 0, rc = 0, have = ahead ? gls_traj_next(ahead, &pn, err, sizeof err) : 0, noted = 0;
     double shown = 0;
-    s->t0 = gls_now();
+    s->t0 = s->json->t0 = gls_now();
     while (done < todo && (got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
         if (p.frame < o->frame_first)
             continue;
         if (p.frame >= o->frame_end || p.frame > UINT32_MAX) /* checked by the scan */
             break;
-        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last))
+        if (!gls_shard_has(&o->shard, o->frame_first, p.frame) ||
+            (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last)))
             continue;
         while (have == 1 && pn.frame <= p.frame)
             have = gls_traj_next(ahead, &pn, err, sizeof err);
@@ -743,7 +762,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
             break;
         }
         double now = gls_now();
-        if (o->progress && (done == todo || now - shown >= 0.5)) {
+        if (o->progress == GLS_PROGRESS_BAR && (done == todo || now - shown >= 0.5)) {
             shown = now;
             gls_progress_frames(errs, done, todo, now - s->t0, done == todo);
         }
@@ -759,11 +778,15 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
 }
 
 /* --explain counts culling in the first frame: with a trajectory, the
- * cameras and motions are posed for its first frame in range (the
- * cameras in place, they are posed again per frame when rendering).  0,
- * or 1 after a message. */
-static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls_camera *posed, FILE *errs)
+ * cameras and motions are posed for its first frame in range (of the
+ * --shard, if one is given; the cameras in place, they are posed again
+ * per frame when rendering).  With --shard, the frames in range and the
+ * shard's are counted (*inrange, *mine).  0, or 1 after a message. */
+static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls_camera *posed, uint64_t *inrange,
+                               uint64_t *mine, FILE *errs)
 {
+    *inrange = 1;
+    *mine = (uint64_t)gls_shard_has(&o->shard, o->frame, o->frame);
     if (!o->trajectory) {
         motion_apply(ms, o->frame);
         return 0;
@@ -772,13 +795,25 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
     gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
     if (!t)
         return 1;
-    gls_traj_pose p;
-    int got;
-    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1 && p.frame < o->frame_first)
-        ;
+    gls_traj_pose p, first;
+    int got, have = 0;
+    *inrange = *mine = 0;
+    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1 && p.frame < o->frame_end) {
+        if (p.frame < o->frame_first)
+            continue;
+        (*inrange)++;
+        if (!gls_shard_has(&o->shard, o->frame_first, p.frame))
+            continue;
+        (*mine)++;
+        if (!have)
+            first = p, have = 1;
+        if (!o->shard.count)
+            break; /* nothing to count: the first frame is all it needs */
+    }
     gls_traj_close(t);
-    if (got != 1 || p.frame >= o->frame_end)
+    if (!have)
         return 0; /* the scan before rendering says what is wrong */
+    p = first;
     if (motion_check(ms, p.frame, errs) == 0)
         motion_apply(ms, p.frame);
     for (size_t i = 0; i < o->ncameras; i++) {
@@ -824,6 +859,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_aa_plan plan;
     gls_gt_table gt;
     memset(&gt, 0, sizeof gt);
+    gls_progress_json json = {0};
+    int started = 0; /* rendering began: --progress json ends with a line */
     gls_aa_opts aao = o->aa;
     double baseline = 0;
     if (aao.n == 0)
@@ -908,8 +945,11 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         gls_camera *posed = malloc((o->ncameras ? o->ncameras : 1) * sizeof *posed);
         if (posed)
             memcpy(posed, cams, o->ncameras * sizeof *posed);
-        if (posed && explain_first_frame(o, &ms, posed, errs) == 0)
+        uint64_t inrange, mine;
+        if (posed && explain_first_frame(o, &ms, posed, &inrange, &mine, errs) == 0) {
             gls_explain(out, o->bundle, b, &scene, posed, (const char *const *)names, o->ncameras, o, ctx);
+            gls_shard_explain(out, &o->shard, o->trajectory != NULL, o->frame_first, mine, inrange);
+        }
         free(posed);
     }
     if (!o->outdir) {
@@ -950,11 +990,23 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline, &gt, NULL, NULL, &moves, &box_names};
+    json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
+    json.cameras = o->ncameras;
+    json.t0 = gls_now();
+    session ses = {o, &ms, &scene, &plan, r, wr, &json, errs, o->ncameras, 0, json.t0, 0, baseline, &gt, NULL, NULL, &moves, &box_names};
+    started = 1;
     if (!o->trajectory) {
-        int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame, 0);
-        if (o->resume)
+        /* a single frame is shard 0's (shard.h) */
+        int mine = gls_shard_has(&o->shard, o->frame, o->frame);
+        if (!mine)
+            fprintf(errs, "glsplay: note: --shard %llu/%llu: a single render (no --trajectory) is shard 0's; "
+                          "nothing to render\n", (unsigned long long)o->shard.index,
+                    (unsigned long long)o->shard.count);
+        int skip = !mine || (o->resume && frame_done(o, cams, (const char *const *)names, o->frame, 0));
+        if (o->resume && mine)
             resume_note(errs, skip, 1);
+        json.total = skip ? 0 : o->ncameras;
+        json.skipped = mine && skip;
         motion_apply(&ms, o->frame);
         if (!skip)
             for (size_t i = 0; i < o->ncameras; i++)
@@ -976,6 +1028,9 @@ out:
     /* first: it waits for the files in flight, whose jobs name the
      * cameras */
     gls_writer_destroy(wr);
+    /* after the writer, whose last jobs may still say their frames */
+    if (started)
+        gls_progress_json_end(&json, rc == 0, gls_now());
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);
     motion_free(&ms);

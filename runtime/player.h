@@ -10,6 +10,7 @@
 #include "camera.h"
 #include "glctx.h"
 #include "scene.h"
+#include "shard.h"
 
 /* edges: the mixed-pixel map of an anti-aliased image (spec/antialiasing.md);
  * EDGES_AS_MASK: the same map under its old name mask_F.png (--outputs mask,
@@ -61,6 +62,10 @@ enum { GLS_OUT_BOXES = 1u << 23, GLS_OUT_BOXES_JSON = 1u << 24 };
 /* Image file format: 8-bit PNG, 16-bit PNG, float32 PFM ("PF", RGB). */
 typedef enum { GLS_IMG_PNG8 = 0, GLS_IMG_PNG16 = 1, GLS_IMG_PFM = 2 } gls_image_format;
 
+/* --progress: nothing, the terminal line (progress.h), or one JSON
+ * object a line per camera frame (progress_json.h) */
+enum { GLS_PROGRESS_OFF = 0, GLS_PROGRESS_BAR = 1, GLS_PROGRESS_JSON = 2 };
+
 typedef struct {
     const char *bundle;          /* path of the .glsb                    */
     const char *const *cameras;  /* camera file paths                    */
@@ -76,6 +81,8 @@ typedef struct {
     uint64_t frame_first, frame_end; /* --frames A:B: frames A..B-1 of the
                                     trajectory; end UINT64_MAX = all    */
     int resume;                  /* skip complete frames (frame_record.h) */
+    gls_shard shard;             /* --shard I/N: only frames f with
+                                    (f - frame_first) mod N = I (shard.h) */
     float background[3];         /* clear colour, 0..1 (default black)   */
     gls_aa_opts aa;              /* anti-aliasing; n = 0 is taken as 1   */
     gls_image_format image_format;
@@ -86,7 +93,7 @@ typedef struct {
                                     fine framebuffer's tiles, 0 = default */
     uint32_t anisotropy;         /* anisotropic texture filtering up to N x;
                                     0 or 1 = off (the fast default)     */
-    int progress;                /* progress lines on errs               */
+    int progress;                /* GLS_PROGRESS_*: what goes to errs     */
     gls_backend backend;         /* GL backend (glctx.h); 0 = auto       */
     int write_calib;             /* --write-calib: calibration files
                                     (calib_write.h)                     */

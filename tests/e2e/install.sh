@@ -1,0 +1,106 @@
+#!/bin/sh
+# make install / make uninstall (Makefile, README "Install"): into a
+# temporary DESTDIR, exactly the listed files and nothing outside it; the
+# installed tools run (--help) and render the road demo with the installed
+# library bundle, byte for byte as the build's tools do; the man pages
+# pass groff's and man's checks, and each has an entry for every option
+# its tool's --help lists.  Prints ok/FAIL lines.
+BIN=${GLS_BIN:-build}
+ok() { echo "ok $1"; }
+fail() { echo "FAIL $1: $2"; }
+# the sanitizer pass (GLS_SANITIZED=1) would install the same files again
+[ "$GLS_SANITIZED" = 1 ] && exit 0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# a PREFIX that exists nowhere: if anything were written outside DESTDIR,
+# it would appear there
+PREFIX=/opt/glscene-install-test-$$
+D=$tmp/dest
+git status --porcelain --untracked-files=all >"$tmp/status.before" 2>/dev/null
+# the make of this checkout, with its build in $BIN, not the suite's make
+if ! env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s install B="$BIN" PREFIX="$PREFIX" \
+    DESTDIR="$D" >"$tmp/log" 2>&1; then
+    fail make_install "$(tail -5 "$tmp/log")"
+    exit 0
+fi
+(cd "$D" && find . -type f -o -type l | sort) >"$tmp/files"
+cat >"$tmp/want" <<EOF2
+.$PREFIX/bin/glsc
+.$PREFIX/bin/glsdis
+.$PREFIX/bin/glsplay
+.$PREFIX/bin/glsroad
+.$PREFIX/share/glscene/scenelib.glsb
+.$PREFIX/share/man/man1/glsc.1
+.$PREFIX/share/man/man1/glsdis.1
+.$PREFIX/share/man/man1/glsplay.1
+.$PREFIX/share/man/man1/glsroad.1
+EOF2
+if cmp -s "$tmp/files" "$tmp/want"; then
+    ok install_files
+else
+    fail install_files "$(diff "$tmp/want" "$tmp/files" | tr '\n' ' ')"
+fi
+git status --porcelain --untracked-files=all >"$tmp/status.after" 2>/dev/null
+if [ ! -e "$PREFIX" ] && cmp -s "$tmp/status.before" "$tmp/status.after"; then
+    ok install_nothing_outside_destdir
+else
+    fail install_nothing_outside_destdir "$PREFIX exists, or the checkout changed: $(diff "$tmp/status.before" "$tmp/status.after" | tr '\n' ' ')"
+fi
+P=$D$PREFIX
+for t in glsc glsdis glsplay glsroad; do
+    [ -x "$P/bin/$t" ] && cmp -s "$P/bin/$t" "$BIN/$t" || fail install_tools "$P/bin/$t is not $BIN/$t"
+done
+if "$P/bin/glsplay" --help >"$tmp/help" 2>&1 && grep -q '^usage: glsplay' "$tmp/help"; then
+    ok installed_glsplay_help
+else
+    fail installed_glsplay_help "$(head -3 "$tmp/help")"
+fi
+
+# the road demo with the installed tools and library bundle, run from
+# elsewhere (nothing of the checkout but the demo's inputs)
+cp -r examples/road "$tmp/in"
+(
+    cd "$tmp" &&
+        "$P/bin/glsroad" in/demo.road -o road >/dev/null &&
+        "$P/bin/glsc" -I road -I "$P/share/glscene/scenelib.glsb" -o road.glsb road/road.scene &&
+        "$P/bin/glsplay" road.glsb --camera in/rig/left.cam --camera in/rig/right.cam --trajectory road/trajectory.txt \
+            --frames 0:2 --motion lead=road/motion/lead.txt -o inst
+) >"$tmp/log" 2>&1
+rc=$?
+"$BIN/glsroad" examples/road/demo.road -o "$tmp/road_b" >/dev/null 2>&1 &&
+    "$BIN/glsc" -I "$tmp/road_b" -I "$BIN/scenelib.glsb" -o "$tmp/road_b.glsb" "$tmp/road_b/road.scene" &&
+    "$BIN/glsplay" "$tmp/road_b.glsb" --camera examples/road/rig/left.cam --camera examples/road/rig/right.cam \
+        --trajectory "$tmp/road_b/trajectory.txt" --frames 0:2 --motion lead="$tmp/road_b/motion/lead.txt" \
+        -o "$tmp/ref" 2>>"$tmp/log"
+if [ $rc -eq 0 ] && [ -f "$tmp/inst/left/image_000001.png" ] && diff -r "$tmp/ref" "$tmp/inst" >>"$tmp/log" 2>&1; then
+    ok installed_tools_render_demo
+else
+    fail installed_tools_render_demo "exit $rc: $(tail -5 "$tmp/log")"
+fi
+
+# the man pages: clean under groff's and man's warnings, and every option
+# of each tool's --help with an entry in its page
+manbad=0
+for t in glsc glsdis glsplay glsroad; do
+    page=$P/share/man/man1/$t.1
+    w=$(groff -man -ww -z "$page" 2>&1; man --warnings -l "$page" 2>&1 >/dev/null)
+    [ -z "$w" ] || { fail man_page_lint "$t.1: $w"; manbad=1; }
+    # the tags of the page's option entries (the line after each .TP), as
+    # written: \- is -, font escapes dropped; an option must have an entry
+    # of its own, not just a mention in another's text
+    sed 's/\\-/-/g; s/\\f[BIRP]//g' "$page" | awk 'tag { print; tag = 0 } /^\.TP/ { tag = 1 }' >"$tmp/page"
+    missing=""
+    for opt in $("$BIN/$t" --help | grep -oE '(^|[^A-Za-z0-9_-])--?[A-Za-z][A-Za-z0-9-]*' | sed -E 's/^[^-]+//' | sort -u); do
+        grep -qE -- "(^|[^A-Za-z0-9-])$opt([^A-Za-z0-9-]|\$)" "$tmp/page" || missing="$missing $opt"
+    done
+    [ -z "$missing" ] || { fail man_page_options "$t.1 has no entry for$missing (in $t --help)"; manbad=1; }
+done
+[ $manbad -eq 0 ] && ok man_pages_lint_and_options
+
+# make uninstall: every installed file gone, the package's own directory too
+if env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s uninstall B="$BIN" PREFIX="$PREFIX" \
+    DESTDIR="$D" >"$tmp/log" 2>&1 && [ -z "$(find "$D" -type f)" ] && [ ! -e "$P/share/glscene" ]; then
+    ok make_uninstall
+else
+    fail make_uninstall "$(cat "$tmp/log"; find "$D" -type f)"
+fi
