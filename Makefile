@@ -92,7 +92,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
-            $(B)/road_montage $(B)/rawseed
+            $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
 .PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
@@ -225,6 +225,11 @@ SCENELIB_SRC := $(shell find scenelib -name '*.scene' 2>/dev/null)
 SCENELIB_DIRS := $(shell find scenelib -type d 2>/dev/null)
 $(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC) $(SCENELIB_DIRS)
 	$(B)/glsc -I $(B)/textures --lib scenelib -o $@
+
+# distort_project: the lens model as a filter, for tests/py/check_distortion.py
+$(B)/distort_project: $(B)/tools/distort_project.o $(LIB_runtime)
+	$(CC) $(LDFLAGS) $< -o $@ $(LIB_runtime) $(LDLIBS) $(GL_LIBS)
+$(B)/tools/distort_project.o: LAYER_INC = $(INC_runtime)
 
 $(B)/depth2png: $(B)/tools/depth2png.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm

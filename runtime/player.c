@@ -18,6 +18,7 @@
 #include "aa_render.h"
 #include "atomic_write.h"
 #include "calib_write.h"
+#include "distort.h"
 #include "frame_files.h"
 #include "frame_record.h"
 #include "frame_writer.h"
@@ -587,6 +588,23 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
     return 0;
 }
 
+/* A camera with lens distortion: the model must be one-to-one over the
+ * image as --size makes it (the file was checked at its own size).  0,
+ * or -1 after a message. */
+static int lens_check(const gls_camera *c, const gls_play_opts *o, FILE *errs)
+{
+    char why[400];
+    if (o->width && gls_distort_check(c, 0, why, sizeof why)) {
+        fprintf(errs, "glsplay: error: --size %ux%u: %s\n", o->width, o->height, why);
+        return -1;
+    }
+    if (gls_distort_on(c)) { /* until the image is drawn through the lens (next commit) */
+        fprintf(errs, "glsplay: error: lens distortion is not rendered yet\n");
+        return -1;
+    }
+    return 0;
+}
+
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
@@ -631,6 +649,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         }
         if (o->width)
             cams[i].width = o->width, cams[i].height = o->height;
+        if (lens_check(&cams[i], o, errs))
+            goto out;
         names[i] = camera_name(o->cameras[i]);
         if (!names[i]) {
             fprintf(errs, "glsplay: error: out of memory\n");
