@@ -151,6 +151,12 @@ void gls_distort_setup(gls_distortion *d)
 
 int gls_distort_undistort(const gls_distortion *d, double xd, double yd, double x0, double y0, double *x, double *y)
 {
+    return gls_distort_undistort_tol(d, xd, yd, x0, y0, GLS_DISTORT_TOL, x, y);
+}
+
+int gls_distort_undistort_tol(const gls_distortion *d, double xd, double yd, double x0, double y0, double tol,
+                              double *x, double *y)
+{
     if (d->model == GLS_LENS_NONE) {
         *x = xd, *y = yd;
         return 0;
@@ -166,7 +172,7 @@ int gls_distort_undistort(const gls_distortion *d, double xd, double yd, double 
         int it;
         for (it = 0; it <= GLS_DISTORT_MAX_ITER; it++) {
             double dtd, td = fisheye_theta_d(d->k, th, &dtd);
-            if (fabs(td - tdt) <= GLS_DISTORT_TOL)
+            if (fabs(td - tdt) <= tol)
                 break;
             if (!(dtd > 0) || it == GLS_DISTORT_MAX_ITER)
                 return -1;
@@ -186,7 +192,7 @@ int gls_distort_undistort(const gls_distortion *d, double xd, double yd, double 
         double fx, fy, j[4];
         gls_distort_normalized(d, px, py, &fx, &fy, j);
         double ex = fx - xd, ey = fy - yd;
-        if (sqrt(ex * ex + ey * ey) <= GLS_DISTORT_TOL * (1 + sqrt(xd * xd + yd * yd)))
+        if (sqrt(ex * ex + ey * ey) <= tol * (1 + sqrt(xd * xd + yd * yd)))
             break;
         double det = j[0] * j[3] - j[1] * j[2];
         if (!(det > 0) || it == GLS_DISTORT_MAX_ITER)

@@ -39,6 +39,11 @@ void gls_distort_project(const gls_camera *c, const double Pc[3], double *u, dou
  * steps, the Jacobian vanished, or the point found lies beyond the
  * model's fold (max_r2 below). */
 int gls_distort_undistort(const gls_distortion *d, double xd, double yd, double x0, double y0, double *x, double *y);
+/* The same to a residual of tol (normalised units) instead of
+ * GLS_DISTORT_TOL: the image's anti-aliasing samples (distort_render.c)
+ * need their positions to 1e-7 px, not 1e-11. */
+int gls_distort_undistort_tol(const gls_distortion *d, double xd, double yd, double x0, double y0, double tol,
+                              double *x, double *y);
 
 /* Pixel (u, v) of camera c -> the normalised undistorted ray (x, y, 1);
  * -1 as gls_distort_undistort. */

@@ -19,6 +19,7 @@
 #include "atomic_write.h"
 #include "calib_write.h"
 #include "distort.h"
+#include "distort_render.h"
 #include "frame_files.h"
 #include "frame_record.h"
 #include "frame_writer.h"
@@ -284,29 +285,49 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     memset(&acc, 0, sizeof acc);
     gls_frame_files *f = NULL;
     int rc = -1;
+    /* a lens: one undistorted fine image, read through the inverse model
+       (distort_render.h) */
+    int lens = gls_distort_on(c);
+    gls_distort_frame df;
+    memset(&df, 0, sizeof df);
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
+    if (lens && gls_distort_frame_render(&df, r, c, plan, (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK | GLS_OUT_POINTS)) != 0,
+                                         (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) != 0, err, sizeof err)) {
+        snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
+        goto out;
+    }
     if (centre) {
-        gls_render_pass(r, c, 0.0, 0.0);
+        if (!lens)
+            gls_render_pass(r, c, 0.0, 0.0);
         if ((!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK))) || (o->outputs & GLS_OUT_POINTS)) {
             rgba = malloc(n * 4);
             if (!rgba)
                 goto oom;
-            gls_render_read_rgba(r, rgba);
+            if (lens)
+                gls_distort_frame_centre(&df, c, rgba, NULL);
+            else
+                gls_render_read_rgba(r, rgba);
         }
         if (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) {
             z = malloc(n * sizeof *z);
             if (!z)
                 goto oom;
-            gls_render_read_z(r, z);
+            if (lens)
+                gls_distort_frame_centre(&df, c, NULL, z);
+            else
+                gls_render_read_z(r, z);
         }
     }
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_MASK) != 0))
             goto oom;
-        if (gls_aa_fine_ok(plan)) {
+        if (lens) {
+            if (gls_distort_frame_accum(&df, c, plan, &acc))
+                goto oom;
+        } else if (gls_aa_fine_ok(plan)) {
             /* lattice and grid: the samples are the pixels of a fine
              * framebuffer drawn in tiles (aa_onepass.h) */
             gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress ? errs : NULL, name, estimate_from_tiles, s};
@@ -404,6 +425,7 @@ out:
     if (f)
         f->job.destroy(&f->job);
     gls_accum_free(&acc);
+    gls_distort_frame_free(&df);
     free(rgba);
     free(z);
     free(img);
@@ -589,17 +611,15 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
 }
 
 /* A camera with lens distortion: the model must be one-to-one over the
- * image as --size makes it (the file was checked at its own size).  0,
- * or -1 after a message. */
-static int lens_check(const gls_camera *c, const gls_play_opts *o, FILE *errs)
+ * image as --size makes it (the file was checked at its own size) and the
+ * anti-aliasing window beyond it, before anything is drawn.  0, or -1
+ * after a message. */
+static int lens_check(const gls_camera *c, const char *path, const gls_aa_plan *plan, FILE *errs)
 {
-    char why[400];
-    if (o->width && gls_distort_check(c, 0, why, sizeof why)) {
-        fprintf(errs, "glsplay: error: --size %ux%u: %s\n", o->width, o->height, why);
-        return -1;
-    }
-    if (gls_distort_on(c)) { /* until the image is drawn through the lens (next commit) */
-        fprintf(errs, "glsplay: error: lens distortion is not rendered yet\n");
+    gls_distort_layout lay;
+    char why[600];
+    if (gls_distort_on(c) && gls_distort_layout_make(c, plan, 0, &lay, why, sizeof why)) {
+        fprintf(errs, "glsplay: error: %s: %s\n", path, why);
         return -1;
     }
     return 0;
@@ -649,7 +669,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         }
         if (o->width)
             cams[i].width = o->width, cams[i].height = o->height;
-        if (lens_check(&cams[i], o, errs))
+        if (lens_check(&cams[i], o->cameras[i], &plan, errs))
             goto out;
         names[i] = camera_name(o->cameras[i]);
         if (!names[i]) {

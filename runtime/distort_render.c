@@ -1,0 +1,259 @@
+/* The image through a distorted lens (distort_render.h; spec/camera.md
+ * "The distorted image"). */
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+#include "distort.h"
+#include "distort_render.h"
+
+/* Fine pixels of the fine image's own border: the bilinear read of a
+ * sample at the edge of the covered field needs its right and lower
+ * neighbours. */
+#define FINE_BORDER 2
+/* Newton's residual for the anti-aliasing samples, normalised units:
+ * 1e-7 px at f = 1000, far below what a sample's colour can tell. */
+#define SAMPLE_TOL 1e-10
+
+/* Smallest singular value of d(fx x + cx, fy y + cy) / d(u, v) at the
+ * undistorted ray (x, y): how many undistorted pixels one image pixel
+ * spans, at least, in any direction. */
+static double least_stretch(const gls_camera *c, double x, double y)
+{
+    double xd, yd, j[4];
+    gls_distort_normalized(&c->dist, x, y, &xd, &yd, j);
+    double det = j[0] * j[3] - j[1] * j[2];
+    /* M = diag(fx, fy) J^-1 diag(1/fx, 1/fy) */
+    double m[4] = {j[3] / det, -j[1] / det * c->fx / c->fy, -j[2] / det * c->fy / c->fx, j[0] / det};
+    double t = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] + m[3] * m[3], d = m[0] * m[3] - m[1] * m[2];
+    double disc = t * t - 4 * d * d;
+    return sqrt(fmax(0, (t - sqrt(fmax(0, disc))) / 2));
+}
+
+int gls_distort_layout_make(const gls_camera *c, const gls_aa_plan *p, uint32_t maxdim, gls_distort_layout *lay,
+                            char *err, size_t errlen)
+{
+    memset(lay, 0, sizeof *lay);
+    /* samples reach span/2 beyond a pixel's centre; the border pixel's
+       centre is 0.5 inside the image */
+    double margin = p->count > 1 ? p->span / 2 : 0;
+    char why[400];
+    if (gls_distort_check(c, margin, why, sizeof why)) {
+        snprintf(err, errlen, "%s%s", why,
+                 margin > 0 ? " (including the anti-aliasing window beyond the image border)" : "");
+        return -1;
+    }
+    /* the covered field: the rays of the grown border (the models map the
+       border of the image onto the border of the field), and the least
+       stretch over a grid of the image */
+    double u0 = -0.5 - margin, u1 = c->width - 0.5 + margin, v0 = -0.5 - margin, v1 = c->height - 0.5 + margin;
+    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY, mag = INFINITY;
+    uint32_t nu = (uint32_t)ceil(u1 - u0) + 1, nv = (uint32_t)ceil(v1 - v0) + 1;
+    for (uint32_t j = 0; j <= nv; j++)
+        for (uint32_t i = 0; i <= nu; i++) {
+            int edge = i == 0 || j == 0 || i == nu || j == nv;
+            if (!edge && (i % 8 || j % 8))
+                continue;
+            double u = u0 + (u1 - u0) * i / nu, v = v0 + (v1 - v0) * j / nv, x, y;
+            if (gls_distort_pixel_ray(c, u, v, &x, &y) < 0) {
+                snprintf(err, errlen, "no ray for pixel (%.1f, %.1f) through the lens", u, v);
+                return -1;
+            }
+            xmin = fmin(xmin, x), xmax = fmax(xmax, x), ymin = fmin(ymin, y), ymax = fmax(ymax, y);
+            mag = fmin(mag, least_stretch(c, x, y));
+        }
+    double s = GLS_DISTORT_SCALE / mag;
+    gls_camera *f = &lay->fine;
+    *f = *c;
+    memset(&f->dist, 0, sizeof f->dist);
+    f->skew = 0;
+    f->fx = s * c->fx;
+    f->fy = s * c->fy;
+    double w = ceil(f->fx * (xmax - xmin)) + 1 + 2 * FINE_BORDER, h = ceil(f->fy * (ymax - ymin)) + 1 + 2 * FINE_BORDER;
+    uint32_t lim = maxdim ? maxdim : GLS_CAMERA_MAX_DIM;
+    if (w > lim || h > lim) {
+        snprintf(err, errlen, "the lens' field of view needs an undistorted image of %.0fx%.0f pixels (%g per image "
+                              "pixel), more than %u a side", w, h, GLS_DISTORT_SCALE, lim);
+        return -1;
+    }
+    f->width = (uint32_t)w;
+    f->height = (uint32_t)h;
+    f->cx = FINE_BORDER - f->fx * xmin;
+    f->cy = FINE_BORDER - f->fy * ymin;
+    lay->margin = margin;
+    lay->mag = s * mag;
+    return 0;
+}
+
+int gls_distort_frame_render(gls_distort_frame *fr, gls_renderer *r, const gls_camera *c, const gls_aa_plan *p,
+                             int want_rgba, int want_z, char *err, size_t errlen)
+{
+    memset(fr, 0, sizeof *fr);
+    if (gls_distort_layout_make(c, p, gls_renderer_max_dim(r), &fr->lay, err, errlen))
+        return -1;
+    const gls_camera *f = &fr->lay.fine;
+    size_t n = (size_t)c->width * c->height, nf = (size_t)f->width * f->height;
+    fr->ray = malloc(2 * n * sizeof *fr->ray);
+    fr->jinv = malloc(4 * n * sizeof *fr->jinv);
+    fr->rgba = want_rgba ? malloc(4 * nf) : NULL;
+    fr->z = want_z ? malloc(nf * sizeof *fr->z) : NULL;
+    if (!fr->ray || !fr->jinv || (want_rgba && !fr->rgba) || (want_z && !fr->z)) {
+        snprintf(err, errlen, "out of memory for the %ux%u undistorted image", f->width, f->height);
+        return -1;
+    }
+    for (uint32_t v = 0; v < c->height; v++)
+        for (uint32_t u = 0; u < c->width; u++) {
+            double *xy = fr->ray + 2 * ((size_t)v * c->width + u);
+            /* checked over the border, so every pixel has its ray */
+            if (gls_distort_pixel_ray(c, u, v, &xy[0], &xy[1]) < 0) {
+                snprintf(err, errlen, "no ray for pixel (%u, %u) through the lens", u, v);
+                return -1;
+            }
+            /* the inverse's Jacobian, per pixel unit: J^-1 diag(1/fx, 1/fy) */
+            double xd, yd, j[4], *ji = fr->jinv + 4 * ((size_t)v * c->width + u);
+            gls_distort_normalized(&c->dist, xy[0], xy[1], &xd, &yd, j);
+            double det = j[0] * j[3] - j[1] * j[2];
+            ji[0] = j[3] / det / c->fx, ji[1] = -j[1] / det / c->fy;
+            ji[2] = -j[2] / det / c->fx, ji[3] = j[0] / det / c->fy;
+        }
+    if (gls_renderer_set_size(r, f->width, f->height, err, errlen))
+        return -1;
+    gls_render_pass(r, f, 0.0, 0.0);
+    if (fr->rgba)
+        gls_render_read_rgba(r, fr->rgba);
+    if (fr->z)
+        gls_render_read_z(r, fr->z);
+    return 0;
+}
+
+/* The fine pixel nearest to the ray (x, y). */
+static size_t nearest(const gls_camera *f, double x, double y)
+{
+    double fu = f->fx * x + f->cx, fv = f->fy * y + f->cy;
+    size_t i = (size_t)floor(fu + 0.5), j = (size_t)floor(fv + 0.5);
+    return j * f->width + i;
+}
+
+void gls_distort_frame_centre(const gls_distort_frame *fr, const gls_camera *c, uint8_t *rgba, float *z)
+{
+    const gls_camera *f = &fr->lay.fine;
+    size_t n = (size_t)c->width * c->height;
+    for (size_t i = 0; i < n; i++) {
+        size_t k = nearest(f, fr->ray[2 * i], fr->ray[2 * i + 1]);
+        if (rgba)
+            memcpy(rgba + 4 * i, fr->rgba + 4 * k, 4);
+        if (z)
+            z[i] = fr->z[k];
+    }
+}
+
+/* Bilinear RGBA8 of the fine image at the ray (x, y), with weights in
+ * 1/256 of a fine pixel (1/1024 of an image pixel at the least scale). */
+static void bilinear(const gls_camera *f, const uint8_t *img, double x, double y, uint8_t *out)
+{
+    double fu = f->fx * x + f->cx, fv = f->fy * y + f->cy;
+    double iu = floor(fu), iv = floor(fv);
+    uint32_t a = (uint32_t)((fu - iu) * 256 + 0.5), b = (uint32_t)((fv - iv) * 256 + 0.5);
+    const uint8_t *p = img + 4 * ((size_t)iv * f->width + (size_t)iu), *q = p + 4 * (size_t)f->width;
+    uint32_t w00 = (256 - a) * (256 - b), w10 = a * (256 - b), w01 = (256 - a) * b, w11 = a * b;
+    for (int ch = 0; ch < 4; ch++)
+        out[ch] = (uint8_t)((p[ch] * w00 + p[4 + ch] * w10 + q[ch] * w01 + q[4 + ch] * w11 + 32768) >> 16);
+}
+
+/* One sample's image, rows v0..v1-1: the sample at offset (ou, ov) of
+ * every pixel, through the lens, read in the fine image. */
+typedef struct {
+    const gls_distort_frame *fr;
+    const gls_camera *c;
+    double ou, ov;
+    uint32_t v0, v1;
+    uint8_t *img;
+} sample_rows;
+
+static void *sample_image(void *arg)
+{
+    const sample_rows *t = arg;
+    const gls_distort_frame *fr = t->fr;
+    const gls_camera *c = t->c, *f = &fr->lay.fine;
+    double ou = t->ou, ov = t->ov;
+    for (uint32_t v = t->v0; v < t->v1; v++) {
+        double yd = (v + ov - c->cy) / c->fy;
+        for (uint32_t u = 0; u < c->width; u++) {
+            size_t i = (size_t)v * c->width + u;
+            const double *r0 = fr->ray + 2 * i, *ji = fr->jinv + 4 * i;
+            double xd = (u + ou - c->cx) / c->fx, x, y;
+            /* from the centre's ray moved along the inverse's tangent:
+               Newton's method is one step from there; the layout checked
+               that every sample has a ray */
+            double gx = r0[0] + ji[0] * ou + ji[1] * ov, gy = r0[1] + ji[2] * ou + ji[3] * ov;
+            if (gls_distort_undistort_tol(&c->dist, xd, yd, gx, gy, SAMPLE_TOL, &x, &y) < 0)
+                x = r0[0], y = r0[1];
+            bilinear(f, fr->rgba, x, y, t->img + 4 * i);
+        }
+    }
+    return NULL;
+}
+
+int gls_distort_frame_accum(const gls_distort_frame *fr, const gls_camera *c, const gls_aa_plan *p, gls_accum *acc)
+{
+    size_t n = (size_t)c->width * c->height;
+    uint8_t *img = malloc(4 * n);
+    if (!img)
+        return -1;
+    for (uint64_t k = 0; k < p->count; k++) {
+        uint64_t w;
+        sample_rows part[2] = {{fr, c, 0, 0, 0, c->height / 2, img}, {fr, c, 0, 0, c->height / 2, c->height, img}};
+        gls_aa_sample(p, k, &part[0].ou, &part[0].ov, &w);
+        if (!w)
+            continue; /* outside a lattice Gaussian's window */
+        part[1].ou = part[0].ou, part[1].ov = part[0].ov;
+        /* the lower half on a second thread (the same bytes either way:
+           each pixel is computed alone) */
+        pthread_t th;
+        int two = pthread_create(&th, NULL, sample_image, &part[1]) == 0;
+        sample_image(&part[0]);
+        if (two)
+            pthread_join(th, NULL);
+        else
+            sample_image(&part[1]);
+        gls_accum_add(acc, img, 4 * (size_t)c->width, w);
+    }
+    free(img);
+    return 0;
+}
+
+void gls_distort_frame_free(gls_distort_frame *f)
+{
+    free(f->rgba);
+    free(f->z);
+    free(f->ray);
+    free(f->jinv);
+    memset(f, 0, sizeof *f);
+}
+
+void gls_distort_explain(FILE *out, const gls_camera *c, const gls_aa_plan *p)
+{
+    if (!gls_distort_on(c))
+        return;
+    static const char *const brown[8] = {"k1", "k2", "p1", "p2", "k3", "k4", "k5", "k6"};
+    static const char *const fish[4] = {"k1", "k2", "k3", "k4"};
+    fprintf(out, "  lens: %s (%s):", gls_distort_model_name(&c->dist),
+            c->dist.model == GLS_LENS_FISHEYE ? "cv::fisheye" : "cv::projectPoints");
+    for (unsigned i = 0; i < c->dist.n; i++)
+        fprintf(out, " %s %g", c->dist.model == GLS_LENS_FISHEYE ? fish[i] : brown[i], c->dist.k[i]);
+    fprintf(out, "\n");
+    gls_distort_layout lay;
+    char err[400];
+    if (gls_distort_layout_make(c, p, 0, &lay, err, sizeof err)) {
+        fprintf(out, "  lens: %s\n", err);
+        return;
+    }
+    fprintf(out, "  lens: drawn once undistorted at %ux%u (fx %g fy %g, at least %.3g pixels per image pixel, %g "
+                 "beyond the border), then %s; depth%s: the nearest of those pixels to each pixel centre's ray "
+                 "(inverse model, Newton), never blended\n",
+            lay.fine.width, lay.fine.height, lay.fine.fx, lay.fine.fy, lay.mag, lay.margin,
+            p->count > 1 ? "each anti-aliasing sample's position mapped through the inverse model and read "
+                           "there bilinearly"
+                         : "each pixel centre's ray read at the nearest of those pixels",
+            ", points and their colours");
+}
