@@ -94,7 +94,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-distortion units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -315,6 +315,12 @@ bench-encode: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench $(B)/bench/png_bench
 # pixel; writes docs/backends.txt.
 bench-backends: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/backends.sh $(B)
+
+# bench-distortion: lens distortion's time per frame (road demo), edge
+# accuracy and the 15-view calibration (docs/distortion.txt; DB_BASELINE=
+# a glsplay from before the lens adds its pinhole time).
+bench-distortion: $(TOOLS) $(SCENELIB)
+	@sh bench/distortion.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.

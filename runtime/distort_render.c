@@ -4,6 +4,7 @@
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include "aa_onepass.h"
 #include "distort.h"
 #include "distort_render.h"
 
@@ -30,13 +31,13 @@ static double least_stretch(const gls_camera *c, double x, double y)
     return sqrt(fmax(0, (t - sqrt(fmax(0, disc))) / 2));
 }
 
-int gls_distort_layout_make(const gls_camera *c, const gls_aa_plan *p, uint32_t maxdim, gls_distort_layout *lay,
-                            char *err, size_t errlen)
+int gls_distort_layout_make(const gls_camera *c, const gls_aa_plan *p, double scale, uint32_t maxdim,
+                            gls_distort_layout *lay, char *err, size_t errlen)
 {
     memset(lay, 0, sizeof *lay);
     /* samples reach span/2 beyond a pixel's centre; the border pixel's
        centre is 0.5 inside the image */
-    double margin = p->count > 1 ? p->span / 2 : 0;
+    double margin = p && p->count > 1 ? p->span / 2 : 0;
     char why[400];
     if (gls_distort_check(c, margin, why, sizeof why)) {
         snprintf(err, errlen, "%s%s", why,
@@ -62,7 +63,7 @@ int gls_distort_layout_make(const gls_camera *c, const gls_aa_plan *p, uint32_t 
             xmin = fmin(xmin, x), xmax = fmax(xmax, x), ymin = fmin(ymin, y), ymax = fmax(ymax, y);
             mag = fmin(mag, least_stretch(c, x, y));
         }
-    double s = GLS_DISTORT_SCALE / mag;
+    double s = scale / mag;
     gls_camera *f = &lay->fine;
     *f = *c;
     memset(&f->dist, 0, sizeof f->dist);
@@ -73,7 +74,7 @@ int gls_distort_layout_make(const gls_camera *c, const gls_aa_plan *p, uint32_t 
     uint32_t lim = maxdim ? maxdim : GLS_CAMERA_MAX_DIM;
     if (w > lim || h > lim) {
         snprintf(err, errlen, "the lens' field of view needs an undistorted image of %.0fx%.0f pixels (%g per image "
-                              "pixel), more than %u a side", w, h, GLS_DISTORT_SCALE, lim);
+                              "pixel), more than %u a side", w, h, scale, lim);
         return -1;
     }
     f->width = (uint32_t)w;
@@ -85,11 +86,48 @@ int gls_distort_layout_make(const gls_camera *c, const gls_aa_plan *p, uint32_t 
     return 0;
 }
 
+uint64_t gls_distort_fine_samples(const gls_aa_plan *p)
+{
+    double s2 = GLS_DISTORT_AA_SCALE * GLS_DISTORT_AA_SCALE;
+    uint64_t m = (uint64_t)ceil((double)p->m / s2);
+    return m < 4 ? 4 : m;
+}
+
+/* The anti-aliased fine image: the one-pass lattice (box) through the
+ * fine camera, as 16-bit RGB. */
+static int render_aa(gls_distort_frame *fr, gls_renderer *r, const gls_aa_plan *p, uint64_t aa_memory, char *err,
+                     size_t errlen)
+{
+    const gls_camera *f = &fr->lay_aa.fine;
+    gls_aa_opts o = gls_aa_defaults();
+    o.samples = gls_distort_fine_samples(p);
+    gls_aa_plan fp;
+    gls_accum acc;
+    memset(&acc, 0, sizeof acc);
+    if (gls_aa_plan_init(&fp, &o, err, errlen))
+        return -1;
+    size_t nf = (size_t)f->width * f->height;
+    fr->rgb16 = malloc(3 * nf * sizeof *fr->rgb16);
+    if (!fr->rgb16 || gls_accum_init(&acc, f->width, f->height, 0, 0)) {
+        gls_accum_free(&acc);
+        snprintf(err, errlen, "out of memory for the %ux%u anti-aliased undistorted image", f->width, f->height);
+        return -1;
+    }
+    gls_aa_fine_opts fo = {aa_memory, 0, 0, NULL, NULL, NULL, NULL};
+    int rc = gls_aa_render_fine(r, f, &fp, &fo, &acc, NULL, err, errlen);
+    if (rc == 0)
+        gls_accum_rgb16(&acc, fr->rgb16);
+    gls_accum_free(&acc);
+    return rc;
+}
+
 int gls_distort_frame_render(gls_distort_frame *fr, gls_renderer *r, const gls_camera *c, const gls_aa_plan *p,
-                             int want_rgba, int want_z, char *err, size_t errlen)
+                             int want_rgba, int want_z, int want_aa, uint64_t aa_memory, char *err, size_t errlen)
 {
     memset(fr, 0, sizeof *fr);
-    if (gls_distort_layout_make(c, p, gls_renderer_max_dim(r), &fr->lay, err, errlen))
+    uint32_t maxd = gls_renderer_max_dim(r);
+    if (gls_distort_layout_make(c, NULL, GLS_DISTORT_SCALE, maxd, &fr->lay, err, errlen) ||
+        (want_aa && gls_distort_layout_make(c, p, GLS_DISTORT_AA_SCALE, maxd, &fr->lay_aa, err, errlen)))
         return -1;
     const gls_camera *f = &fr->lay.fine;
     size_t n = (size_t)c->width * c->height, nf = (size_t)f->width * f->height;
@@ -116,14 +154,16 @@ int gls_distort_frame_render(gls_distort_frame *fr, gls_renderer *r, const gls_c
             ji[0] = j[3] / det / c->fx, ji[1] = -j[1] / det / c->fy;
             ji[2] = -j[2] / det / c->fx, ji[3] = j[0] / det / c->fy;
         }
-    if (gls_renderer_set_size(r, f->width, f->height, err, errlen))
-        return -1;
-    gls_render_pass(r, f, 0.0, 0.0);
-    if (fr->rgba)
-        gls_render_read_rgba(r, fr->rgba);
-    if (fr->z)
-        gls_render_read_z(r, fr->z);
-    return 0;
+    if (want_rgba || want_z) {
+        if (gls_renderer_set_size(r, f->width, f->height, err, errlen))
+            return -1;
+        gls_render_pass(r, f, 0.0, 0.0);
+        if (fr->rgba)
+            gls_render_read_rgba(r, fr->rgba);
+        if (fr->z)
+            gls_render_read_z(r, fr->z);
+    }
+    return want_aa ? render_aa(fr, r, p, aa_memory, err, errlen) : 0;
 }
 
 /* The fine pixel nearest to the ray (x, y). */
@@ -147,17 +187,18 @@ void gls_distort_frame_centre(const gls_distort_frame *fr, const gls_camera *c, 
     }
 }
 
-/* Bilinear RGBA8 of the fine image at the ray (x, y), with weights in
- * 1/256 of a fine pixel (1/1024 of an image pixel at the least scale). */
-static void bilinear(const gls_camera *f, const uint8_t *img, double x, double y, uint8_t *out)
+/* Bilinear RGB of the anti-aliased fine image at the ray (x, y), to
+ * 8 bits (rounded; alpha 255). */
+static void bilinear(const gls_camera *f, const uint16_t *img, double x, double y, uint8_t *out)
 {
     double fu = f->fx * x + f->cx, fv = f->fy * y + f->cy;
-    double iu = floor(fu), iv = floor(fv);
-    uint32_t a = (uint32_t)((fu - iu) * 256 + 0.5), b = (uint32_t)((fv - iv) * 256 + 0.5);
-    const uint8_t *p = img + 4 * ((size_t)iv * f->width + (size_t)iu), *q = p + 4 * (size_t)f->width;
-    uint32_t w00 = (256 - a) * (256 - b), w10 = a * (256 - b), w01 = (256 - a) * b, w11 = a * b;
-    for (int ch = 0; ch < 4; ch++)
-        out[ch] = (uint8_t)((p[ch] * w00 + p[4 + ch] * w10 + q[ch] * w01 + q[4 + ch] * w11 + 32768) >> 16);
+    double iu = floor(fu), iv = floor(fv), a = fu - iu, b = fv - iv;
+    const uint16_t *p = img + 3 * ((size_t)iv * f->width + (size_t)iu), *q = p + 3 * (size_t)f->width;
+    for (int ch = 0; ch < 3; ch++) {
+        double top = p[ch] + a * (p[3 + ch] - p[ch]), bot = q[ch] + a * (q[3 + ch] - q[ch]);
+        out[ch] = (uint8_t)floor((top + b * (bot - top)) / 257.0 + 0.5);
+    }
+    out[3] = 255;
 }
 
 /* One sample's image, rows v0..v1-1: the sample at offset (ou, ov) of
@@ -174,7 +215,7 @@ static void *sample_image(void *arg)
 {
     const sample_rows *t = arg;
     const gls_distort_frame *fr = t->fr;
-    const gls_camera *c = t->c, *f = &fr->lay.fine;
+    const gls_camera *c = t->c, *f = &fr->lay_aa.fine;
     double ou = t->ou, ov = t->ov;
     for (uint32_t v = t->v0; v < t->v1; v++) {
         double yd = (v + ov - c->cy) / c->fy;
@@ -188,7 +229,7 @@ static void *sample_image(void *arg)
             double gx = r0[0] + ji[0] * ou + ji[1] * ov, gy = r0[1] + ji[2] * ou + ji[3] * ov;
             if (gls_distort_undistort_tol(&c->dist, xd, yd, gx, gy, SAMPLE_TOL, &x, &y) < 0)
                 x = r0[0], y = r0[1];
-            bilinear(f, fr->rgba, x, y, t->img + 4 * i);
+            bilinear(f, fr->rgb16, x, y, t->img + 4 * i);
         }
     }
     return NULL;
@@ -226,6 +267,7 @@ void gls_distort_frame_free(gls_distort_frame *f)
 {
     free(f->rgba);
     free(f->z);
+    free(f->rgb16);
     free(f->ray);
     free(f->jinv);
     memset(f, 0, sizeof *f);
@@ -242,18 +284,22 @@ void gls_distort_explain(FILE *out, const gls_camera *c, const gls_aa_plan *p)
     for (unsigned i = 0; i < c->dist.n; i++)
         fprintf(out, " %s %g", c->dist.model == GLS_LENS_FISHEYE ? fish[i] : brown[i], c->dist.k[i]);
     fprintf(out, "\n");
-    gls_distort_layout lay;
+    gls_distort_layout lay, la;
     char err[400];
-    if (gls_distort_layout_make(c, p, 0, &lay, err, sizeof err)) {
+    int aa = p->count > 1;
+    if (gls_distort_layout_make(c, NULL, GLS_DISTORT_SCALE, 0, &lay, err, sizeof err) ||
+        (aa && gls_distort_layout_make(c, p, GLS_DISTORT_AA_SCALE, 0, &la, err, sizeof err))) {
         fprintf(out, "  lens: %s\n", err);
         return;
     }
-    fprintf(out, "  lens: drawn once undistorted at %ux%u (fx %g fy %g, at least %.3g pixels per image pixel, %g "
-                 "beyond the border), then %s; depth%s: the nearest of those pixels to each pixel centre's ray "
-                 "(inverse model, Newton), never blended\n",
-            lay.fine.width, lay.fine.height, lay.fine.fx, lay.fine.fy, lay.mag, lay.margin,
-            p->count > 1 ? "each anti-aliasing sample's position mapped through the inverse model and read "
-                           "there bilinearly"
-                         : "each pixel centre's ray read at the nearest of those pixels",
-            ", points and their colours");
+    fprintf(out, "  lens: ground truth (depth, points and their colours%s): one plain pass undistorted at %ux%u (fx %g "
+                 "fy %g, at least %g pixels per image pixel), each pixel taking the nearest of those pixels to its "
+                 "centre's ray (inverse model, Newton), never blended\n",
+            aa ? "" : ", the image", lay.fine.width, lay.fine.height, lay.fine.fx, lay.fine.fy, lay.mag);
+    if (aa)
+        fprintf(out, "  lens: image: undistorted at %ux%u (at least %g pixels per image pixel, %g beyond the border) "
+                     "with %llu lattice samples per pixel (one pass), then each of the %llu anti-aliasing samples of "
+                     "a pixel mapped through the inverse model and read there bilinearly\n",
+                la.fine.width, la.fine.height, la.mag, la.margin, (unsigned long long)gls_distort_fine_samples(p),
+                (unsigned long long)p->count);
 }

@@ -294,8 +294,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
-    if (lens && gls_distort_frame_render(&df, r, c, plan, (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK | GLS_OUT_POINTS)) != 0,
-                                         (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) != 0, err, sizeof err)) {
+    if (lens && gls_distort_frame_render(&df, r, c, plan,
+                                         (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_MASK))) ||
+                                             (o->outputs & GLS_OUT_POINTS),
+                                         (o->outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) != 0, aa, o->aa_memory, err,
+                                         sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
@@ -618,7 +621,8 @@ static int lens_check(const gls_camera *c, const char *path, const gls_aa_plan *
 {
     gls_distort_layout lay;
     char why[600];
-    if (gls_distort_on(c) && gls_distort_layout_make(c, plan, 0, &lay, why, sizeof why)) {
+    if (gls_distort_on(c) && (gls_distort_layout_make(c, NULL, GLS_DISTORT_SCALE, 0, &lay, why, sizeof why) ||
+                              gls_distort_layout_make(c, plan, GLS_DISTORT_AA_SCALE, 0, &lay, why, sizeof why))) {
         fprintf(errs, "glsplay: error: %s: %s\n", path, why);
         return -1;
     }

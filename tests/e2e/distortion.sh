@@ -13,6 +13,8 @@ if ! $PY -c 'import cv2, numpy' 2>/dev/null; then
 fi
 mkdir "$t/model"
 $PY tests/py/check_distortion.py model "$BIN" "$t/model" || echo "FAIL distortion_model: check_distortion.py exited with status $?"
+mkdir "$t/edges"
+$PY tests/py/check_distortion.py edges "$BIN" "$t/edges" || echo "FAIL distortion_edges: check_distortion.py exited with status $?"
 mkdir "$t/truth"
 $PY tests/py/check_distortion.py truth "$BIN" "$t/truth" || echo "FAIL distortion_truth: check_distortion.py exited with status $?"
 # four views each (make bench-distortion runs fifteen)
