@@ -345,12 +345,6 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
         gls_text_error(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
         return -1;
     }
-    /* notes only for a file that is accepted */
-    if (rot > 0 && notes)
-        fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
-    if (!pose && use == GLS_POSE_RIG && notes)
-        fprintf(notes, "%s: note: no 'pose' key: R and T are taken relative to the rig, as a trajectory needs; add "
-                       "'pose rig' to say so\n", fname);
     memset(cam, 0, sizeof *cam);
     cam->width = (uint32_t)val[K_WIDTH][0];
     cam->height = (uint32_t)val[K_HEIGHT][0];
@@ -364,7 +358,15 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     cam->near = val[K_NEAR][0];
     cam->far = val[K_FAR][0];
     cam->pose = pose;
-    return lens_from_keys(keys, names, text, len, fname, cam, err, errlen);
+    if (lens_from_keys(keys, names, text, len, fname, cam, err, errlen))
+        return -1;
+    /* notes only for a file that is accepted */
+    if (rot > 0 && notes)
+        fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
+    if (!pose && use == GLS_POSE_RIG && notes)
+        fprintf(notes, "%s: note: no 'pose' key: R and T are taken relative to the rig, as a trajectory needs; add "
+                       "'pose rig' to say so\n", fname);
+    return 0;
 }
 
 int gls_camera_load(const char *path, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen)
