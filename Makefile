@@ -92,9 +92,9 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
-            $(B)/road_montage $(B)/rawseed
+            $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
-.PHONY: gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys
+.PHONY: gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -235,6 +235,11 @@ SCENELIB_DIRS := $(shell find scenelib -type d 2>/dev/null)
 $(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC) $(SCENELIB_DIRS)
 	$(B)/glsc -I $(B)/textures --lib scenelib -o $@
 
+# distort_project: the lens model as a filter, for tests/py/check_distortion.py
+$(B)/distort_project: $(B)/tools/distort_project.o $(LIB_runtime)
+	$(CC) $(LDFLAGS) $< -o $@ $(LIB_runtime) $(LDLIBS) $(GL_LIBS)
+$(B)/tools/distort_project.o: LAYER_INC = $(INC_runtime)
+
 $(B)/depth2png: $(B)/tools/depth2png.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
@@ -350,6 +355,11 @@ bench-backends: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 # terrain; writes docs/scaling.txt (README "Run it on a cluster").
 bench-scaling: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/scaling.sh $(B)
+# bench-distortion: lens distortion's time per frame (road demo), edge
+# accuracy and the 15-view calibration (docs/distortion.txt; DB_BASELINE=
+# a glsplay from before the lens adds its pinhole time).
+bench-distortion: $(TOOLS) $(SCENELIB)
+	@sh bench/distortion.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.

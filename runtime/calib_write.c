@@ -54,6 +54,25 @@ static void camera_k(const gls_camera *c, double K[9])
 }
 
 static const double zero5[5] = {0, 0, 0, 0, 0};
+
+/* The lens as the calibration files hold it (spec/outputs.md): the
+ * coefficients in OpenCV's order, at least 5 for plumb_bob (k3 = 0 when
+ * the camera gave 4), and ROS's model name; a pinhole camera's 5 zeros. */
+static const char *lens_coeffs(const gls_camera *c, double d[8], int *n)
+{
+    const gls_distortion *ds = &c->dist;
+    memcpy(d, zero5, sizeof zero5);
+    *n = 5;
+    if (ds->model == GLS_LENS_NONE)
+        return "plumb_bob";
+    memcpy(d, ds->k, ds->n * sizeof *d);
+    if (ds->model == GLS_LENS_FISHEYE) {
+        *n = 4;
+        return "equidistant";
+    }
+    *n = ds->n == 8 ? 8 : 5;
+    return ds->n == 8 ? "rational_polynomial" : "plumb_bob";
+}
 static const double ident[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
 
 void gls_calib_relative(const gls_camera *c0, const gls_camera *ci, double R[9], double t[3])
@@ -96,11 +115,14 @@ static int cv_matrix(gls_buf *b, const char *key, const double *v, int rows, int
 
 int gls_calib_opencv_yaml(gls_buf *b, const gls_camera *c, const char *name, uint32_t frame)
 {
-    double K[9];
+    double K[9], D[8];
+    int nd;
     camera_k(c, K);
+    lens_coeffs(c, D, &nd);
     return putf(b, "%%YAML:1.0\n---\ncamera_name: ") || gls_buf_quoted(b, name, 0) ||
            putf(b, "\nframe: %u\nimage_width: %u\nimage_height: %u\n", frame, c->width, c->height) ||
-           cv_matrix(b, "camera_matrix", K, 3, 3) || cv_matrix(b, "distortion_coefficients", zero5, 1, 5) ||
+           cv_matrix(b, "camera_matrix", K, 3, 3) || cv_matrix(b, "distortion_coefficients", D, 1, nd) ||
+           (c->dist.model == GLS_LENS_FISHEYE && putf(b, "distortion_model: fisheye\n")) ||
            cv_matrix(b, "R", c->R, 3, 3) || cv_matrix(b, "T", c->T, 3, 1) || putf(b, "near: ") ||
            num(b, c->near, NUM_YAML) || putf(b, "\nfar: ") || num(b, c->far, NUM_YAML) ||
            putf(b, "\npose: world\n");
@@ -153,9 +175,12 @@ int gls_calib_ros_yaml(gls_buf *b, const gls_camera *cams, const char *const *na
     if (!rect && (putf(b, "# not rectified with camera 0 (") || putf(b, "%s", names[0]) ||
                   putf(b, "): written as a monocular camera, P = [K | 0] (spec/outputs.md)\n")))
         return -1;
+    double D[8];
+    int nd;
+    const char *model = lens_coeffs(c, D, &nd);
     return putf(b, "image_width: %u\nimage_height: %u\ncamera_name: ", c->width, c->height) ||
            gls_buf_quoted(b, names[i], 0) || putf(b, "\n") || ros_matrix(b, "camera_matrix", K, 3, 3) ||
-           putf(b, "distortion_model: plumb_bob\n") || ros_matrix(b, "distortion_coefficients", zero5, 1, 5) ||
+           putf(b, "distortion_model: %s\n", model) || ros_matrix(b, "distortion_coefficients", D, 1, nd) ||
            ros_matrix(b, "rectification_matrix", ident, 3, 3) || ros_matrix(b, "projection_matrix", P, 3, 4);
 }
 
@@ -181,7 +206,9 @@ static int calib_json(gls_buf *b, uint32_t frame, const double *time, const gls_
         return -1;
     for (size_t i = 0; i < n; i++) {
         const gls_camera *c = &world[i];
-        double K[9], R[9], t[3], P[12];
+        double K[9], R[9], t[3], P[12], D[8];
+        int nd;
+        const char *model = lens_coeffs(c, D, &nd);
         camera_k(c, K);
         gls_calib_relative(&world[0], c, R, t);
         if (rig)
@@ -189,8 +216,9 @@ static int calib_json(gls_buf *b, uint32_t frame, const double *time, const gls_
         projection(c, R, t, P);
         if (putf(b, "    {\"name\": ") || gls_buf_quoted(b, names[i], 1) ||
             putf(b, ", \"image_width\": %u, \"image_height\": %u,\n     ", c->width, c->height) ||
-            json_matrix(b, "K", K, 3, 3) || putf(b, ", \"dist\": [") || nums(b, zero5, 5, ", ", NUM_PLAIN) ||
-            putf(b, "],\n     \"pose_frame\": \"world\", ") || json_matrix(b, "R", c->R, 3, 3) ||
+            json_matrix(b, "K", K, 3, 3) || putf(b, ", \"dist\": [") || nums(b, D, (size_t)nd, ", ", NUM_PLAIN) ||
+            putf(b, "]") || (c->dist.model && putf(b, ", \"distortion_model\": \"%s\"", model)) ||
+            putf(b, ",\n     \"pose_frame\": \"world\", ") || json_matrix(b, "R", c->R, 3, 3) ||
             putf(b, ", \"T\": [") || nums(b, c->T, 3, ", ", NUM_PLAIN) || putf(b, "],\n     \"near\": ") ||
             num(b, c->near, NUM_PLAIN) || putf(b, ", \"far\": ") || num(b, c->far, NUM_PLAIN) ||
             putf(b, ",\n     ") || json_matrix(b, "P_kitti", P, 3, 4))
@@ -247,7 +275,13 @@ int gls_calib_write(const gls_play_opts *o, const gls_camera *cams, const char *
     int rc = 1;
     gls_camera *world = NULL;
     gls_traj *t = NULL;
-    /* the rig's files: relative poses, the same in every frame */
+    /* the rig's files: relative poses, the same in every frame; KITTI's
+       calib.txt is for rectified images and holds no lens */
+    for (size_t i = 0; i < o->ncameras; i++)
+        if (cams[i].dist.model)
+            fprintf(errs, "glsplay: note: camera %s has lens distortion: calib.txt (KITTI, rectified images) holds "
+                          "only its pinhole part P = K [R | t]; the coefficients are in %s/calib_F.yml, "
+                          "%s/camera_info.yaml and calib_F.json\n", names[i], names[i], names[i]);
     if (write_out(errs, o->outdir, NULL, "calib.txt", &b, gls_calib_kitti(&b, cams, o->ncameras)))
         goto out;
     for (size_t i = 0; i < o->ncameras; i++) {

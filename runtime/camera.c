@@ -10,6 +10,7 @@
 #include <string.h>
 #include "camera.h"
 #include "camera_keys.h"
+#include "distort.h"
 #include "numfmt.h"
 #include "rotation.h"
 #include "srcline.h"
@@ -17,9 +18,11 @@
 #include "textfile.h"
 #include "vec.h"
 
-static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy", "skew",
-                                              "R", "T", "near", "far", "pose", "K", "rvec"};
-static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1, 9, 3}; /* pose: a word */
+static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx",   "cy",         "skew",
+                                              "R",     "T",      "near", "far", "pose", "K", "rvec", "distortion",
+                                              "fisheye"};
+/* pose: a word; distortion: 4, 5 or 8 (checked apart) */
+static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1, 9, 3, 8, 4};
 
 /* The key that gives the same thing as key k (K: fx fy cx cy skew; rvec:
  * R) and was seen already, or -1. */
@@ -35,6 +38,10 @@ static int given_already(int k, const unsigned *seen)
         return K_R;
     } else if (k == K_R && seen[K_RVEC]) {
         return K_RVEC;
+    } else if (k == K_DIST && seen[K_FISHEYE]) {
+        return K_FISHEYE;
+    } else if (k == K_FISHEYE && seen[K_DIST]) {
+        return K_DIST;
     }
     return -1;
 }
@@ -110,7 +117,8 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
             else
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
-                     "unknown key '%s' (keys: width height fx fy cx cy skew K R rvec T near far pose)", tok[0]);
+                     "unknown key '%s' (keys: width height fx fy cx cy skew K R rvec T near far pose distortion "
+                     "fisheye)", tok[0]);
             return -1;
         }
         if (seen[k]) {
@@ -120,11 +128,13 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         }
         int other = given_already(k, seen);
         if (other >= 0) {
+            int rot = k == K_R || k == K_RVEC, lens = k == K_DIST || k == K_FISHEYE;
             gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
                            "key '%s' and key '%s' (line %u) both give the %s: give %s", key_name[k], key_name[other],
-                           seen[other], k == K_R || k == K_RVEC ? "rotation" : "intrinsics",
-                           k == K_R || k == K_RVEC ? "R or rvec, not both"
-                                                   : "K, or fx fy cx cy and optionally skew, not both");
+                           seen[other], rot ? "rotation" : lens ? "lens distortion" : "intrinsics",
+                           rot    ? "R or rvec, not both"
+                           : lens ? "distortion (OpenCV's Brown-Conrady model) or fisheye (cv::fisheye), not both"
+                                  : "K, or fx fy cx cy and optionally skew, not both");
             return -1;
         }
         if (k == K_POSE) {
@@ -157,12 +167,20 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
                 return -1;
             }
         }
-        if (nt - 1 != key_arity[k]) {
+        if (k == K_DIST && nt - 1 != 4 && nt - 1 != 5 && nt - 1 != 8) {
+            gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
+                           "key 'distortion' takes 4, 5 or 8 numbers (k1 k2 p1 p2 [k3 [k4 k5 k6]], OpenCV's order), "
+                           "got %s%d", nt > MAX_TOKENS ? "more than " : "", nt - 1);
+            return -1;
+        }
+        if (k == K_DIST)
+            keys.ndist = (unsigned)(nt - 1);
+        else if (nt - 1 != key_arity[k]) {
             gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "key '%s' takes %d number%s, got %s%d", key_name[k],
                  key_arity[k], key_arity[k] == 1 ? "" : "s", nt > MAX_TOKENS ? "more than " : "", nt - 1);
             return -1;
         }
-        for (int j = 0; j < key_arity[k]; j++) {
+        for (int j = 0; j < (k == K_DIST ? (int)keys.ndist : key_arity[k]); j++) {
             keys.eline[k][j] = line;
             keys.ecol[k][j] = COL(tok[1 + j]);
             const char *why = gls_parse_double(tok[1 + j], &val[k][j]);
@@ -179,7 +197,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     }
     for (int k = 0; k < K_COUNT; k++) {
         /* optional: skew, pose; K and rvec stand for what they give */
-        int optional = k == K_SKEW || k == K_POSE || k == K_K || k == K_RVEC ||
+        int optional = k == K_SKEW || k == K_POSE || k == K_K || k == K_RVEC || k == K_DIST || k == K_FISHEYE ||
                        (k >= K_FX && k <= K_CY && seen[K_K]) || (k == K_R && seen[K_RVEC]);
         if (!seen[k] && !optional) {
             gls_text_error(err, errlen, text, len, fname, last ? last : 1, 1,
@@ -197,6 +215,36 @@ static const char *label(char *buf, size_t n, const gls_camera_keys *k, const ch
         return names[key];
     snprintf(buf, n, "%s (%s[%d][%d])", names[key], names[K_K], entry / 3, entry % 3);
     return buf;
+}
+
+/* The lens: distortion or fisheye, all zero meaning none (the pinhole
+ * path, unchanged); checked over the image (distort.h). */
+static int lens_from_keys(const gls_camera_keys *keys, const char *const *names, const char *text, size_t len,
+                          const char *fname, gls_camera *cam, char *err, size_t errlen)
+{
+    int k = keys->seen[K_FISHEYE] ? K_FISHEYE : keys->seen[K_DIST] ? K_DIST : -1;
+    if (k < 0)
+        return 0;
+    gls_distortion *d = &cam->dist;
+    d->n = k == K_FISHEYE ? 4 : keys->ndist;
+    int any = 0;
+    for (unsigned i = 0; i < d->n; i++) {
+        d->k[i] = keys->val[k][i];
+        any |= d->k[i] != 0;
+    }
+    if (!any) {
+        memset(d, 0, sizeof *d);
+        return 0;
+    }
+    d->model = k == K_FISHEYE ? GLS_LENS_FISHEYE : GLS_LENS_BROWN;
+    gls_distort_setup(d);
+    char why[300];
+    if (gls_distort_check(cam, 0, why, sizeof why)) {
+        gls_text_error(err, errlen, text, len, fname, keys->eline[k][0], keys->ecol[k][0], "key '%s': %s", names[k],
+                       why);
+        return -1;
+    }
+    return 0;
 }
 
 int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const char *text, size_t len,
@@ -297,12 +345,6 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
         gls_text_error(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
         return -1;
     }
-    /* notes only for a file that is accepted */
-    if (rot > 0 && notes)
-        fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
-    if (!pose && use == GLS_POSE_RIG && notes)
-        fprintf(notes, "%s: note: no 'pose' key: R and T are taken relative to the rig, as a trajectory needs; add "
-                       "'pose rig' to say so\n", fname);
     memset(cam, 0, sizeof *cam);
     cam->width = (uint32_t)val[K_WIDTH][0];
     cam->height = (uint32_t)val[K_HEIGHT][0];
@@ -316,6 +358,14 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     cam->near = val[K_NEAR][0];
     cam->far = val[K_FAR][0];
     cam->pose = pose;
+    if (lens_from_keys(keys, names, text, len, fname, cam, err, errlen))
+        return -1;
+    /* notes only for a file that is accepted */
+    if (rot > 0 && notes)
+        fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
+    if (!pose && use == GLS_POSE_RIG && notes)
+        fprintf(notes, "%s: note: no 'pose' key: R and T are taken relative to the rig, as a trajectory needs; add "
+                       "'pose rig' to say so\n", fname);
     return 0;
 }
 
@@ -394,6 +444,8 @@ void gls_camera_unproject(const gls_camera *c, double u, double v, double Zc, do
 {
     double y = (v - c->cy) / c->fy;                  /* Yc / Zc */
     double x = ((u - c->cx) - c->skew * y) / c->fx;  /* Xc / Zc */
+    if (gls_distort_on(c) && gls_distort_pixel_ray(c, u, v, &x, &y) < 0)
+        x = y = NAN; /* not for a pixel of a checked camera's image */
     Pc[0] = x * Zc;
     Pc[1] = y * Zc;
     Pc[2] = Zc;

@@ -23,6 +23,21 @@
  * and T; GLS_POSE_UNDECLARED then means "either, no check". */
 typedef enum { GLS_POSE_UNDECLARED = 0, GLS_POSE_WORLD = 1, GLS_POSE_RIG = 2 } gls_pose;
 
+/* Lens distortion (spec/camera.md "Lens distortion"; the model in
+ * distort.h): none (an ideal pinhole, the default), OpenCV's
+ * Brown-Conrady model of cv::projectPoints (k1 k2 p1 p2 [k3 [k4 k5 k6]])
+ * or its fisheye model of cv::fisheye (k1 k2 k3 k4).  A camera whose
+ * coefficients are all zero has model GLS_LENS_NONE: the pinhole path,
+ * unchanged. */
+typedef enum { GLS_LENS_NONE = 0, GLS_LENS_BROWN = 1, GLS_LENS_FISHEYE = 2 } gls_lens_model;
+typedef struct {
+    gls_lens_model model;
+    unsigned n;            /* coefficients given: Brown 4, 5 or 8; fisheye 4 */
+    double k[8];           /* Brown: k1 k2 p1 p2 k3 k4 k5 k6; fisheye: k1..k4 */
+    double max_r2;         /* undistorted r^2 where the model folds back,
+                              gls_distort_setup (distort.h)             */
+} gls_distortion;
+
 typedef struct {
     uint32_t width, height;
     double fx, fy, cx, cy, skew;
@@ -30,6 +45,7 @@ typedef struct {
     double T[3];           /* Pc = R * P + T                               */
     double near, far;      /* clipping distances along +Z, scene units    */
     gls_pose pose;         /* as the file declares it                     */
+    gls_distortion dist;   /* lens distortion; model 0: none              */
 } gls_camera;
 
 /* Parse a camera file's text.  fname is used only in messages.  use is
@@ -80,7 +96,9 @@ void gls_camera_modelview(const gls_camera *c, const double anchor[3], double MV
 double gls_camera_depth_to_z(const gls_camera *c, double d);
 
 /* Camera-frame point of pixel (u, v) at depth Zc (exact inverse of the
- * projection, skew included), and the same point in world coordinates. */
+ * projection, skew included; through the inverse lens model, distort.h,
+ * when the camera has distortion), and the same point in world
+ * coordinates. */
 void gls_camera_unproject(const gls_camera *c, double u, double v, double Zc, double Pc[3]);
 void gls_camera_to_world(const gls_camera *c, const double Pc[3], double P[3]);
 

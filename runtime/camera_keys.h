@@ -12,6 +12,8 @@ enum {
     K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE,
     K_K,    /* the 3x3 camera matrix, instead of fx fy cx cy skew */
     K_RVEC, /* a Rodrigues vector, instead of R                   */
+    K_DIST, /* Brown-Conrady k1 k2 p1 p2 [k3 [k4 k5 k6]]          */
+    K_FISHEYE, /* cv::fisheye k1 k2 k3 k4, instead of K_DIST      */
     K_COUNT
 };
 
@@ -22,6 +24,7 @@ typedef struct {
     unsigned eline[K_COUNT][9];   /* line and column of each value         */
     unsigned ecol[K_COUNT][9];
     gls_pose pose;                /* the 'pose' word, if seen              */
+    unsigned ndist;               /* K_DIST: numbers given (4, 5 or 8)     */
 } gls_camera_keys;
 
 /* Check the values of a parsed camera file whose required keys are all

@@ -19,11 +19,12 @@ int gls_camera_is_opencv(const char *text, size_t len)
 }
 
 /* the keys read, and what glsplay's messages call them */
-enum { Y_DIST = K_COUNT, Y_TVEC, Y_COUNT };
+enum { Y_TVEC = K_COUNT, Y_DMODEL, Y_COUNT };
 static const char *const yname[Y_COUNT] = {
     [K_WIDTH] = "image_width", [K_HEIGHT] = "image_height", [K_K] = "camera_matrix", [K_R] = "R",
     [K_RVEC] = "rvec",         [K_T] = "T",                 [K_NEAR] = "near",       [K_FAR] = "far",
-    [K_POSE] = "pose",         [Y_DIST] = "distortion_coefficients",                 [Y_TVEC] = "tvec",
+    [K_POSE] = "pose",         [K_DIST] = "distortion_coefficients",                 [Y_TVEC] = "tvec",
+    [Y_DMODEL] = "distortion_model",
     /* not keys of the file; named in messages about K's entries */
     [K_FX] = "fx", [K_FY] = "fy", [K_CX] = "cx", [K_CY] = "cy", [K_SKEW] = "skew"};
 /* OpenCV's distortion coefficients, in its order */
@@ -150,19 +151,25 @@ static int matrix_end(const src *s, matrix *m, gls_camera_keys *keys)
         return fail(s, m->line, m->col, "key '%s': %dx%d needs %d numbers, data has %zu", name, m->rows, m->cols,
                     m->rows * m->cols, m->n);
     int key = m->key;
-    if (key == Y_DIST) {
-        if ((m->rows != 1 && m->cols != 1) || m->n > 14)
-            return fail(s, m->line, m->col, "key '%s' must be a 1xN or Nx1 matrix of up to 14 numbers, got %dx%d", name,
-                        m->rows, m->cols);
-        for (size_t i = 0; i < m->n; i++)
+    if (key == K_DIST) {
+        size_t n = m->n;
+        if ((m->rows != 1 && m->cols != 1) || (n != 4 && n != 5 && n != 8 && n != 12 && n != 14))
+            return fail(s, m->line, m->col, "key '%s' must be a 1xN or Nx1 matrix, N = 4, 5, 8, 12 or 14 (OpenCV's "
+                        "sizes), got %dx%d", name, m->rows, m->cols);
+        /* thin prism and tilt: not modelled, so they must be 0 */
+        for (size_t i = 8; i < n; i++)
             if (m->v[i] != 0) {
                 char num[40];
                 gls_fmt_double(num, sizeof num, m->v[i]);
                 return fail(s, m->vline[i], m->vcol[i],
-                            "key '%s': %s is %s: glsplay renders an ideal pinhole camera, without lens distortion; "
-                            "every coefficient must be 0 (undistort the images, or calibrate without distortion)",
-                            name, dist_name[i], num);
+                            "key '%s': %s is %s: glsplay models k1 k2 p1 p2 k3 k4 k5 k6 (and cv::fisheye); the "
+                            "thin-prism s1..s4 and tilt tx ty coefficients must be 0", name, dist_name[i], num);
             }
+        keys->ndist = n < 8 ? (unsigned)n : 8;
+        memcpy(keys->val[K_DIST], m->v, keys->ndist * sizeof *m->v);
+        memcpy(keys->eline[K_DIST], m->vline, keys->ndist * sizeof *m->vline);
+        memcpy(keys->ecol[K_DIST], m->vcol, keys->ndist * sizeof *m->vcol);
+        keys->vcol[K_DIST] = m->vcol[0];
         return 0;
     }
     int square = key == K_K || key == K_R;
@@ -204,6 +211,25 @@ static int scalar(const src *s, gls_camera_keys *keys, int k, char *v, unsigned 
     return why ? fail(s, line, vc, "key '%s': '%s' %s", yname[k], v, why) : 0;
 }
 
+/* distortion_model: which model the coefficients are for (spec/camera.md
+ * "OpenCV camera files"): plumb_bob or rational_polynomial (cv::projectPoints,
+ * the default) or fisheye / equidistant (cv::fisheye); ROS's names. */
+static int lens_model(const src *s, char *v, unsigned line, unsigned vc, int *fisheye)
+{
+    char *end = v + strcspn(v, " \t#");
+    *end = 0;
+    if (*v == '"' && end > v + 1 && end[-1] == '"')
+        end[-1] = 0, v++, vc++;
+    if (strcmp(v, "fisheye") == 0 || strcmp(v, "equidistant") == 0)
+        *fisheye = 1;
+    else if (strcmp(v, "plumb_bob") == 0 || strcmp(v, "rational_polynomial") == 0)
+        *fisheye = 0;
+    else
+        return fail(s, line, vc, "key 'distortion_model': '%s' is none of plumb_bob, rational_polynomial "
+                    "(cv::projectPoints), fisheye, equidistant (cv::fisheye)", v);
+    return 0;
+}
+
 int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes,
                             gls_camera *cam, char *err, size_t errlen)
 {
@@ -211,6 +237,7 @@ int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls
     static gls_camera_keys zero;
     gls_camera_keys keys = zero;
     unsigned seen[Y_COUNT] = {0}, last = 1;
+    int fisheye = 0; /* distortion_model: fisheye (or equidistant) */
     matrix m = {.key = -1};
     int skipping = 0; /* inside the value of a key glsplay does not read */
     gls_text_lines it = {text, len, 0, 0};
@@ -272,13 +299,18 @@ int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls
         }
         seen[k] = line;
         last = line;
-        if (k != Y_DIST)
+        if (k != Y_DMODEL)
             keys.seen[k == Y_TVEC ? K_T : k] = line;
-        if (k == K_K || k == K_R || k == K_RVEC || k == K_T || k == Y_DIST || k == Y_TVEC) {
+        if (k == K_K || k == K_R || k == K_RVEC || k == K_T || k == K_DIST || k == Y_TVEC) {
             if (strncmp(v, "!!opencv-matrix", 15) != 0 || v[15 + strspn(v + 15, " \t")] != 0)
                 return fail(&s, line, vc, "key '%s' must be an !!opencv-matrix (as cv::FileStorage writes a cv::Mat)",
                             p);
             m = (matrix){.key = k, .line = line, .col = col, .rows = -1, .cols = -1};
+            continue;
+        }
+        if (k == Y_DMODEL) {
+            if (lens_model(&s, v, line, vc, &fisheye))
+                return -1;
             continue;
         }
         if (scalar(&s, &keys, k, v, line, vc))
@@ -296,8 +328,24 @@ int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls
                         k == K_NEAR || k == K_FAR ? "; OpenCV files hold no clipping range: add near: and far:, "
                                                     "in scene units" : "");
     }
+    /* distortion_model: fisheye makes the coefficients cv::fisheye's */
+    if (fisheye && !seen[K_DIST])
+        return fail(&s, seen[Y_DMODEL], 1, "key 'distortion_model' is fisheye, but there is no "
+                    "distortion_coefficients (k1 k2 k3 k4)");
+    if (fisheye && keys.ndist != 4)
+        return fail(&s, seen[K_DIST], 1, "key 'distortion_coefficients': the fisheye model (distortion_model, "
+                    "line %u) takes 4 coefficients, k1 k2 k3 k4; got %u", seen[Y_DMODEL], keys.ndist);
+    if (fisheye) {
+        memcpy(keys.val[K_FISHEYE], keys.val[K_DIST], sizeof keys.val[K_DIST]);
+        keys.seen[K_FISHEYE] = keys.seen[K_DIST];
+        keys.vcol[K_FISHEYE] = keys.vcol[K_DIST];
+        memcpy(keys.eline[K_FISHEYE], keys.eline[K_DIST], sizeof keys.eline[K_DIST]);
+        memcpy(keys.ecol[K_FISHEYE], keys.ecol[K_DIST], sizeof keys.ecol[K_DIST]);
+        keys.seen[K_DIST] = 0;
+    }
     const char *names[K_COUNT];
     memcpy(names, yname, sizeof names);
+    names[K_FISHEYE] = yname[K_DIST];
     if (seen[Y_TVEC])
         names[K_T] = "tvec";
     return gls_camera_from_keys(&keys, names, text, len, fname, use, notes, cam, err, errlen);

@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "distort.h"
 #include "gt_landmarks.h"
 #include "numfmt.h"
 
@@ -101,9 +102,14 @@ int gls_encode_landmarks_csv(const gls_landmarks *l, const gls_camera *c, const 
         double pc[3];
         for (int r = 0; r < 3; r++)
             pc[r] = R[3 * r] * X[0] + R[3 * r + 1] * X[1] + R[3 * r + 2] * X[2] + c->T[r];
-        /* spec/camera.md: u = (fx Xc + skew Yc) / Zc + cx, v = fy Yc / Zc + cy */
+        /* spec/camera.md: u = (fx Xc + skew Yc) / Zc + cx, v = fy Yc / Zc + cy,
+         * through the lens model in front of a distorted camera (the
+         * model is not defined behind it: the pinhole formula there too,
+         * so the row says where the point is, out of the image) */
         double u = NAN, v = NAN;
-        if (pc[2] != 0) {
+        if (pc[2] > 0 && gls_distort_on(c)) {
+            gls_distort_project(c, pc, &u, &v);
+        } else if (pc[2] != 0) {
             u = (c->fx * pc[0] + c->skew * pc[1]) / pc[2] + c->cx;
             v = c->fy * pc[1] / pc[2] + c->cy;
         }

@@ -19,6 +19,8 @@
 #include "aa_render.h"
 #include "atomic_write.h"
 #include "calib_write.h"
+#include "distort.h"
+#include "distort_render.h"
 #include "frame_files.h"
 #include "frame_record.h"
 #include "frame_writer.h"
@@ -402,23 +404,42 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     memset(&acc, 0, sizeof acc);
     gls_frame_files *f = NULL;
     int rc = -1;
+    /* a lens: one undistorted fine image, read through the inverse model
+       (distort_render.h) */
+    int lens = gls_distort_on(c);
+    gls_distort_frame df;
+    memset(&df, 0, sizeof df);
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
+    if (lens && gls_distort_frame_render(&df, r, c, plan,
+                                         (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) ||
+                                             (o->outputs & GLS_OUT_POINTS),
+                                         (o->outputs & GLS_OUT_FROM_Z) != 0, aa, o->aa_memory, err, sizeof err)) {
+        snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
+        goto out;
+    }
     if (centre) {
-        gls_render_pass(r, c, 0.0, 0.0);
+        if (!lens)
+            gls_render_pass(r, c, 0.0, 0.0);
         if ((!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (o->outputs & GLS_OUT_POINTS)) {
             rgba = malloc(n * 4);
             if (!rgba)
                 goto oom;
-            gls_render_read_rgba(r, rgba);
+            if (lens)
+                gls_distort_frame_centre(&df, c, rgba, NULL);
+            else
+                gls_render_read_rgba(r, rgba);
         }
         if (o->outputs & GLS_OUT_FROM_Z) {
             z = malloc(n * sizeof *z);
             if (!z)
                 goto oom;
-            gls_render_read_z(r, z);
+            if (lens)
+                gls_distort_frame_centre(&df, c, NULL, z);
+            else
+                gls_render_read_z(r, z);
         }
     }
     int want_flow = s->next && (o->outputs & GLS_OUT_FLOW_ALL), want_boxes = (o->outputs & GLS_OUT_BOXES_ALL) != 0;
@@ -431,7 +452,27 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))) ||
             (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
             goto oom;
-        if (gls_gt_render(r, c, gt_ids, normal, gt_z, err, sizeof err)) {
+        if (lens) {
+            /* through the lens: the pass drawn by the plain fine camera,
+             * read at each pixel centre's ray (flow is refused with a
+             * lens before rendering, so gt_z is not wanted here) */
+            const gls_camera *fc = &df.lay.fine;
+            size_t fn = (size_t)fc->width * fc->height;
+            uint32_t *fids = gt_ids ? malloc(fn * sizeof *fids) : NULL;
+            float *fnrm = normal ? malloc(fn * 3 * sizeof *fnrm) : NULL;
+            if ((gt_ids && !fids) || (normal && !fnrm)) {
+                free(fids), free(fnrm);
+                goto oom;
+            }
+            int e = gls_gt_render(r, fc, fids, fnrm, NULL, err, sizeof err);
+            if (!e)
+                gls_distort_frame_gather(&df, c, fids, fnrm, gt_ids, normal);
+            free(fids), free(fnrm);
+            if (e) {
+                snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
+                goto out;
+            }
+        } else if (gls_gt_render(r, c, gt_ids, normal, gt_z, err, sizeof err)) {
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
@@ -439,7 +480,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
-        if (gls_aa_fine_ok(plan)) {
+        if (lens) {
+            if (gls_distort_frame_accum(&df, c, plan, &acc))
+                goto oom;
+        } else if (gls_aa_fine_ok(plan)) {
             /* lattice and grid: the samples are the pixels of a fine
              * framebuffer drawn in tiles (aa_onepass.h) */
             gls_aa_fine_opts fo = {o->aa_memory, 0, 0, bar, name, estimate_from_tiles, s};
@@ -558,6 +602,7 @@ out:
     if (f)
         f->job.destroy(&f->job);
     gls_accum_free(&acc);
+    gls_distort_frame_free(&df);
     free(rgba);
     free(z);
     free(img);
@@ -838,6 +883,45 @@ static int rectified_check(const gls_play_opts *o, const gls_camera *cams, const
     return 1;
 }
 
+/* The outputs not made through a lens: disparity (a rectified pair has no
+ * distortion: rectify first), flow and boxes (their reprojection and 3D
+ * boxes' truncation use the pinhole model).  0, or -1 after a message. */
+static int lens_outputs_check(const gls_play_opts *o, const gls_camera *c, const char *path, FILE *errs)
+{
+    static const struct {
+        unsigned bits;
+        const char *word, *why;
+    } no[] = {{GLS_OUT_DISPARITY, "disparity", "a rectified pair has no lens distortion"},
+              {GLS_OUT_DISPARITY16, "disparity16", "a rectified pair has no lens distortion"},
+              {GLS_OUT_FLOW_ALL, "flow", "flow is not made through a lens yet"},
+              {GLS_OUT_BOXES_ALL, "boxes", "boxes are not made through a lens yet"}};
+    if (!gls_distort_on(c))
+        return 0;
+    for (size_t i = 0; i < sizeof no / sizeof no[0]; i++)
+        if (o->outputs & no[i].bits) {
+            fprintf(errs, "glsplay: error: %s: --outputs %s needs a camera without lens distortion: %s\n", path,
+                    no[i].word, no[i].why);
+            return -1;
+        }
+    return 0;
+}
+
+/* A camera with lens distortion: the model must be one-to-one over the
+ * image as --size makes it (the file was checked at its own size) and the
+ * anti-aliasing window beyond it, before anything is drawn.  0, or -1
+ * after a message. */
+static int lens_check(const gls_camera *c, const char *path, const gls_aa_plan *plan, FILE *errs)
+{
+    gls_distort_layout lay;
+    char why[600];
+    if (gls_distort_on(c) && (gls_distort_layout_make(c, NULL, GLS_DISTORT_SCALE, 0, &lay, why, sizeof why) ||
+                              gls_distort_layout_make(c, plan, GLS_DISTORT_AA_SCALE, 0, &lay, why, sizeof why))) {
+        fprintf(errs, "glsplay: error: %s: %s\n", path, why);
+        return -1;
+    }
+    return 0;
+}
+
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
@@ -891,6 +975,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         }
         if (o->width)
             cams[i].width = o->width, cams[i].height = o->height;
+        if (lens_check(&cams[i], o->cameras[i], &plan, errs) || lens_outputs_check(o, &cams[i], o->cameras[i], errs))
+            goto out;
         names[i] = camera_name(o->cameras[i]);
         if (!names[i]) {
             fprintf(errs, "glsplay: error: out of memory\n");

@@ -354,8 +354,48 @@ static void test_k_rvec_yaml(void)
     CHECK(R0[0] == 1 && R0[4] == 1 && R0[8] == 1 && R0[1] == 0 && R0[5] == 0);
 }
 
+/* distortion and fisheye keys, .cam and OpenCV YAML (spec/camera.md
+ * "Lens distortion"); zero coefficients are no distortion at all */
+static void test_lens_keys(void)
+{
+    static const char base[] = "width 640\nheight 480\nfx 500\nfy 500\ncx 319.5\ncy 239.5\n"
+                               "R 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\n";
+    char text[1024], err[512] = "";
+    gls_camera pin, c;
+    CHECK_MSG(parse(base, &pin, err) == 0, "%s", err);
+    CHECK(pin.dist.model == GLS_LENS_NONE);
+    snprintf(text, sizeof text, "%sdistortion -0.3 0.08 0.0012 -0.0008\n", base);
+    CHECK_MSG(parse(text, &c, err) == 0, "%s", err);
+    CHECK(c.dist.model == GLS_LENS_BROWN && c.dist.n == 4 && c.dist.k[0] == -0.3 && c.dist.k[3] == -0.0008 &&
+          c.dist.k[4] == 0);
+    snprintf(text, sizeof text, "%sdistortion 0.1 0 0 0 0 0.2 0 0.01\n", base);
+    CHECK_MSG(parse(text, &c, err) == 0, "%s", err);
+    CHECK(c.dist.model == GLS_LENS_BROWN && c.dist.n == 8 && c.dist.k[5] == 0.2 && c.dist.k[7] == 0.01);
+    snprintf(text, sizeof text, "%sfisheye 0.05 -0.01 0.002 -0.0004\n", base);
+    CHECK_MSG(parse(text, &c, err) == 0, "%s", err);
+    CHECK(c.dist.model == GLS_LENS_FISHEYE && c.dist.n == 4 && c.dist.k[2] == 0.002);
+    snprintf(text, sizeof text, "%sdistortion 0 0 0 0 0\n", base);
+    CHECK_MSG(parse(text, &c, err) == 0, "%s", err);
+    CHECK(memcmp(&c, &pin, sizeof c) == 0);
+    static const char yfile[] =
+        "%YAML:1.0\n---\nimage_width: 640\nimage_height: 480\n"
+        "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n"
+        "   data: [ 500., 0., 319.5, 0., 500., 239.5, 0., 0., 1. ]\n"
+        "distortion_coefficients: !!opencv-matrix\n   rows: 4\n   cols: 1\n   dt: d\n"
+        "   data: [ 0.05, -0.01, 0.002, -0.0004 ]\n"
+        "R: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ 1., 0., 0., 0., 1., 0., 0., 0., 1. ]\n"
+        "T: !!opencv-matrix\n   rows: 3\n   cols: 1\n   dt: d\n   data: [ 0., 0., 0. ]\nnear: 0.1\nfar: 100.\n"
+        "distortion_model: fisheye\n";
+    gls_camera y;
+    CHECK_MSG(parse(yfile, &y, err) == 0, "%s", err);
+    CHECK(memcmp(&c, &y, sizeof c) != 0 && y.dist.model == GLS_LENS_FISHEYE);
+    snprintf(text, sizeof text, "%sfisheye 0.05 -0.01 0.002 -0.0004\n", base);
+    CHECK(parse(text, &c, err) == 0 && memcmp(&c, &y, sizeof c) == 0);
+}
+
 int main(void)
 {
+    RUN(test_lens_keys);
     RUN(test_k_rvec_yaml);
     RUN(test_parse_good);
     RUN(test_parse_errors);
