@@ -94,7 +94,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
-.PHONY: gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion
+.PHONY: gallery-truth gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -394,3 +394,9 @@ demo-road:
 	@sh tools/deps.sh
 	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/road_montage
 	sh examples/road/render.sh $(B) out/road docs/road_strip.png
+
+# The README's ground-truth gallery row (docs/gt_*.png): colour views of
+# the road clip's answer-key files (frame 200) and the stereo example's
+# disparity, made by tools/gt_gallery.py (cv2, numpy).
+gallery-truth: demo-road out/stereo/.stamp
+	/usr/bin/python3 tools/gt_gallery.py out/road/clip 200 out/stereo docs

@@ -88,19 +88,21 @@ int gls_encode_boxes_json(const gls_box *b, size_t n, const gls_box_names *nm, c
                           const char *camera, uint32_t frame, gls_buf *out)
 {
     static const char axis[3] = {'x', 'y', 'z'};
-    /* names are dotted identifiers with parameter values and instance
-     * names of [A-Za-z0-9_.-]: nothing to escape in JSON */
-    int e = gls_buf_printf(out, "{\n  \"camera\": \"%s\",\n  \"frame\": %u,\n  \"width\": %u,\n  \"height\": %u,\n"
-                                "  \"boxes\": [",
-                           camera, frame, c->width, c->height);
+    /* the camera's name is a file name: anything may be in it; object,
+     * class and instance names are quoted too, whatever they hold */
+    int e = gls_buf_printf(out, "{\n  \"camera\": ") || gls_buf_quoted(out, camera, 1) ||
+            gls_buf_printf(out, ",\n  \"frame\": %u,\n  \"width\": %u,\n  \"height\": %u,\n  \"boxes\": [", frame,
+                           c->width, c->height);
     for (size_t j = 0; j < n && !e; j++) {
         const gls_box *x = &b[j];
         char cls[256];
         gls_box_class(nm, x->inst, cls, sizeof cls);
         const char *name = name_of(nm->scene, x->inst);
-        e = gls_buf_printf(out, "%s\n    {\"id\": %u, \"instance\": %u, \"object\": \"%s\", \"class\": \"%s\", ",
-                           j ? "," : "", x->inst + 1, x->inst, object_of(nm, x->inst), cls) ||
-            (name ? gls_buf_printf(out, "\"name\": \"%s\",\n", name) : gls_buf_printf(out, "\"name\": null,\n")) ||
+        e = gls_buf_printf(out, "%s\n    {\"id\": %u, \"instance\": %u, \"object\": ", j ? "," : "", x->inst + 1,
+                           x->inst) ||
+            gls_buf_quoted(out, object_of(nm, x->inst), 1) || gls_buf_printf(out, ", \"class\": ") ||
+            gls_buf_quoted(out, cls, 1) || gls_buf_printf(out, ", \"name\": ") ||
+            (name ? gls_buf_quoted(out, name, 1) : gls_buf_printf(out, "null")) || gls_buf_printf(out, ",\n") ||
             gls_buf_printf(out, "     \"pixels\": %llu, \"pixels_alone\": %llu, ", (unsigned long long)x->pixels,
                            (unsigned long long)x->alone) ||
             num(out, "\"visible_fraction\": ", x->visible) || num(out, ", \"truncated\": ", x->truncated) ||

@@ -36,7 +36,7 @@ done
 # OUTDIR/clip/left and right, with the vehicles moving
 CLIP=${ROAD_CLIP:-200:203}
 "$B/glsplay" "$OUT/road.glsb" $CAMS --trajectory "$OUT/road/trajectory.txt" "$@" --frames "$CLIP" \
-    --outputs image,depth,flow,boxes --background 0.55,0.7,0.9 -o "$OUT/clip"
+    --outputs image,depth,flow,boxes,instance,normals,landmarks --background 0.55,0.7,0.9 -o "$OUT/clip"
 if [ -n "$STRIP" ]; then
     # four frames of the left camera, 300 px wide each (the PNG stays under
     # 300 KB: asphalt and grass textures compress poorly)
@@ -51,4 +51,4 @@ if [ -n "$STRIP" ]; then
     echo "strip: $STRIP"
 fi
 echo "demo-road: frames in $OUT/left and $OUT/right (images, depth, points, landmarks); road outputs in $OUT/road"
-echo "demo-road: frames $CLIP with flow and boxes in $OUT/clip/left and $OUT/clip/right"
+echo "demo-road: frames $CLIP with flow, boxes, instance ids, normals and landmarks in $OUT/clip/left and $OUT/clip/right"

@@ -43,3 +43,14 @@ sys.exit(int(json.load(open('$t/e/down/boxes_000000.json'))['boxes'] != [] or nu
 else
     fail boxes_none_empty "$(cat "$t/err") $(cat "$t/e/down/boxes_000000.json")"
 fi
+# a camera's name is its file name, quotes and backslashes included: the
+# JSON stays JSON (names are quoted, not pasted)
+cp "$t/cam.cam" "$t/we\"ird\\cam.cam"
+"$B/glsplay" "$t/b.glsb" --camera "$t/we\"ird\\cam.cam" --outputs boxes -o "$t/q" 2>"$t/err" ||
+    fail boxes_json_quoted_camera "$(cat "$t/err")"
+if $PY -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if d["camera"] == sys.argv[2] and d["boxes"] else 1)' \
+    "$t/q/we\"ird\\cam/boxes_000000.json" "we\"ird\\cam"; then
+    ok boxes_json_quoted_camera
+else
+    fail boxes_json_quoted_camera "boxes_000000.json does not parse or names another camera"
+fi
