@@ -238,11 +238,6 @@ $(B)/pic/runtime/glctx.o: $(GLCTX_CONFIG) | gl-backend-check
 $(B)/pic/runtime/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
 $(B)/pic/runtime/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
 $(B)/pic/runtime/aa.o: CFLAGS += -O3
-# glscene.pc (pkg-config): prefix-relative, written with make install's
-# PREFIX; Libs.private: what a static link needs besides the library
-$(B)/glscene.pc: lib/glscene.pc.in include/glscene.h Makefile
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(GLSCENE_VERSION)|' \
-	    -e 's|@LIBS_PRIVATE@|$(strip $(LDLIBS) $(GL_LIBS))|' lib/glscene.pc.in >$@.tmp && mv $@.tmp $@
 
 # Fuzz targets (tests/fuzz/README.md): `make fuzz-build`, then
 # `sh tests/fuzz/run.sh SECONDS` fuzzes every target.
@@ -337,24 +332,40 @@ gallery: demo
 # included) into PREFIX/share/glscene/, a man page per tool
 # (docs/man/*.1) into PREFIX/share/man/man1.  DESTDIR is prepended to
 # every path (staged installs, packaging); nothing is written outside it.
+# libglscene (docs/api.md): its header into PREFIX/include, the static and
+# shared libraries (with the libglscene.so.0 and libglscene.so links) and
+# glscene.pc into PREFIX/lib (pkgconfig/), the Python binding into
+# PREFIX/lib/python3/dist-packages/glscene (where Debian's python3 looks
+# for /usr/local and /usr; README "Use it from Python").
 # make uninstall removes exactly those files (tests/e2e/install.sh).
-# TODO(libglscene): install the static and shared libraries, their public
-# header and a pkg-config file glscene.pc once a public library header
-# exists.  None does yet (runtime/player.h is internal), so no library,
-# header or .pc is installed: issue 17's libglscene will add them here.
 PREFIX ?= /usr/local
 DESTDIR ?=
 INSTALL_BIN := $(DESTDIR)$(PREFIX)/bin
 INSTALL_SHARE := $(DESTDIR)$(PREFIX)/share/glscene
 INSTALL_MAN := $(DESTDIR)$(PREFIX)/share/man/man1
+INSTALL_INC := $(DESTDIR)$(PREFIX)/include
+INSTALL_LIB := $(DESTDIR)$(PREFIX)/lib
+INSTALL_PY := $(INSTALL_LIB)/python3/dist-packages/glscene
+GLSCENE_SO := libglscene.so.$(GLSCENE_VERSION)
 MAN_PAGES := $(TOOLS:$(B)/%=docs/man/%.1)
-install: $(TOOLS) $(SCENELIB) $(MAN_PAGES)
-	install -d $(INSTALL_BIN) $(INSTALL_SHARE) $(INSTALL_MAN)
+install: $(TOOLS) $(SCENELIB) $(MAN_PAGES) $(GLSCENE_LIBS) lib/glscene.pc.in python/glscene/__init__.py
+	install -d $(INSTALL_BIN) $(INSTALL_SHARE) $(INSTALL_MAN) $(INSTALL_INC) $(INSTALL_LIB)/pkgconfig $(INSTALL_PY)
 	install -m 755 $(TOOLS) $(INSTALL_BIN)/
 	install -m 644 $(B)/scenelib.glsb $(INSTALL_SHARE)/scenelib.glsb
 	install -m 644 $(MAN_PAGES) $(INSTALL_MAN)/
+	install -m 644 include/glscene.h $(INSTALL_INC)/
+	install -m 644 $(B)/libglscene.a $(INSTALL_LIB)/
+	install -m 755 $(B)/$(GLSCENE_SO) $(INSTALL_LIB)/
+	ln -sf $(GLSCENE_SO) $(INSTALL_LIB)/$(GLSCENE_SONAME)
+	ln -sf $(GLSCENE_SONAME) $(INSTALL_LIB)/libglscene.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(GLSCENE_VERSION)|' \
+	    -e 's|@LIBS_PRIVATE@|$(strip $(LDLIBS) $(GL_LIBS))|' lib/glscene.pc.in >$(INSTALL_LIB)/pkgconfig/glscene.pc
+	install -m 644 python/glscene/__init__.py $(INSTALL_PY)/
 uninstall:
 	rm -f $(TOOLS:$(B)/%=$(INSTALL_BIN)/%) $(INSTALL_SHARE)/scenelib.glsb $(MAN_PAGES:docs/man/%=$(INSTALL_MAN)/%)
+	rm -f $(INSTALL_INC)/glscene.h $(INSTALL_LIB)/libglscene.a $(INSTALL_LIB)/$(GLSCENE_SO) \
+	    $(INSTALL_LIB)/$(GLSCENE_SONAME) $(INSTALL_LIB)/libglscene.so $(INSTALL_LIB)/pkgconfig/glscene.pc
+	rm -rf $(INSTALL_PY)
 	-rmdir $(INSTALL_SHARE) 2>/dev/null
 
 bench-compile: $(B)/glsc
