@@ -49,18 +49,18 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
     if (!opt)
         opt = &defaults;
     if (!bundle_path) {
-        glscene_fail(e, "glscene_open: no bundle path");
+        gls_api_fail(e, "glscene_open: no bundle path");
         return NULL;
     }
     if (opt->backend < GLSCENE_BACKEND_AUTO || opt->backend > GLSCENE_BACKEND_OSMESA ||
         opt->pattern < GLSCENE_AA_LATTICE || opt->pattern > GLSCENE_AA_STRATIFIED) {
-        glscene_fail(e, "glscene_open: options: backend %d or pattern %d is not one of the enum's values",
+        gls_api_fail(e, "glscene_open: options: backend %d or pattern %d is not one of the enum's values",
                      (int)opt->backend, (int)opt->pattern);
         return NULL;
     }
     glscene_player *p = calloc(1, sizeof *p);
     if (!p) {
-        glscene_fail(e, "out of memory");
+        gls_api_fail(e, "out of memory");
         return NULL;
     }
     gls_aa_opts aa = gls_aa_defaults();
@@ -71,37 +71,37 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
     aa.seed = opt->seed;
     gls_bundle *b = NULL;
     if (gls_aa_plan_init(&p->plan, &aa, err, sizeof err)) {
-        glscene_fail(e, "%s", err);
+        gls_api_fail(e, "%s", err);
         goto fail;
     }
     b = gls_bundle_read_file(bundle_path, &gerr);
     if (!b) {
-        glscene_fail(e, "%s", gerr.msg); /* the message names the file */
+        gls_api_fail(e, "%s", gerr.msg); /* the message names the file */
         goto fail;
     }
     if (b->top == GLS_NONE) {
-        glscene_fail(e, "%s: a library bundle (no top-level object) cannot be played; compile a scene with a "
+        gls_api_fail(e, "%s: a library bundle (no top-level object) cannot be played; compile a scene with a "
                         "top-level object", bundle_path);
         goto fail;
     }
     if (gls_scene_load(b, &p->scene, err, sizeof err)) {
-        glscene_fail(e, "%s: %s", bundle_path, err);
+        gls_api_fail(e, "%s: %s", bundle_path, err);
         goto fail;
     }
     int k = gls_gt_table_build(&p->gt, b, &p->scene, &p->drawing);
     if (k < 0) {
-        glscene_fail(e, "out of memory");
+        gls_api_fail(e, "out of memory");
         goto fail;
     }
     p->have_gt = k == 0;
     p->ctx = gls_glctx_create(backend_of(opt->backend), err, sizeof err);
     if (!p->ctx) {
-        glscene_fail(e, "%s", err);
+        gls_api_fail(e, "%s", err);
         goto fail;
     }
     p->r = gls_renderer_create(p->ctx, b, &p->scene, err, sizeof err);
     if (!p->r) {
-        glscene_fail(e, "%s", err);
+        gls_api_fail(e, "%s", err);
         goto fail;
     }
     gls_renderer_set_background(p->r, opt->background);
@@ -131,7 +131,7 @@ int glscene_move_instance(glscene_player *p, const char *name, const double R[9]
 {
     uint32_t i = name && strlen(name) <= GLS_INSTANCE_NAME_MAX ? gls_scene_find_instance(&p->scene, name) : GLS_NONE;
     if (i == GLS_NONE)
-        return glscene_fail(e, "the scene has no instance named '%s'", name ? name : "(null)");
+        return gls_api_fail(e, "the scene has no instance named '%s'", name ? name : "(null)");
     double r[9], t[3] = {0, 0, 0};
     char why[300];
     if (R) {
@@ -140,10 +140,10 @@ int glscene_move_instance(glscene_player *p, const char *name, const double R[9]
             memcpy(t, T, sizeof t);
         for (int k = 0; k < 12; k++)
             if (!isfinite(k < 9 ? r[k] : t[k - 9]))
-                return glscene_fail(e, "move %s: %s[%d] is not a finite number", name, k < 9 ? "R" : "T",
+                return gls_api_fail(e, "move %s: %s[%d] is not a finite number", name, k < 9 ? "R" : "T",
                                     k < 9 ? k : k - 9);
         if (gls_rotation_check(r, why, sizeof why) < 0)
-            return glscene_fail(e, "move %s: R: %s", name, why);
+            return gls_api_fail(e, "move %s: R: %s", name, why);
     }
     gls_scene_move(&p->scene, i, R ? r : NULL, t);
     gls_scene_update(&p->scene);
@@ -166,7 +166,7 @@ static int render_aa(glscene_player *p, const gls_camera *c, gls_accum *acc, gls
 {
     char err[512];
     if (gls_accum_init(acc, c->width, c->height, gls_aa_weighted(&p->plan), 0))
-        return glscene_fail(e, "out of memory for a %ux%u anti-aliased image", c->width, c->height);
+        return gls_api_fail(e, "out of memory for a %ux%u anti-aliased image", c->width, c->height);
     int rc;
     if (gls_aa_fine_ok(&p->plan)) {
         gls_aa_fine_opts fo = {0, 0, 0, NULL, "glscene", NULL, NULL};
@@ -175,7 +175,7 @@ static int render_aa(glscene_player *p, const gls_camera *c, gls_accum *acc, gls
         gls_aa_run_opts ro = {0, 0, NULL, "glscene", NULL, NULL};
         rc = gls_aa_render(p->r, c, &p->plan, &ro, acc, NULL, err, sizeof err);
     }
-    return rc ? glscene_fail(e, "%s", err) : 0;
+    return rc ? gls_api_fail(e, "%s", err) : 0;
 }
 
 static void rgba_to_rgb(const uint8_t *rgba, size_t n, uint8_t *rgb)
@@ -189,16 +189,16 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
     gls_camera c;
     char err[512];
     if (!p || !cam || !out)
-        return glscene_fail(e, "glscene_render: a NULL player, camera or buffers");
-    if (glscene_camera_to_internal(cam, &c, e))
+        return gls_api_fail(e, "glscene_render: a NULL player, camera or buffers");
+    if (gls_api_camera(cam, &c, e))
         return -1;
-    if ((out->instance || out->normals) && !p->have_gt)
-        return glscene_fail(e, "%u instances draw something, more than the %u instance ids", p->drawing,
+    if (out->instance && !p->have_gt)
+        return gls_api_fail(e, "%u instances draw something, more than the %u instance ids", p->drawing,
                             GLS_GT_MAX_IDS);
     if (gls_glctx_make_current(p->ctx))
-        return glscene_fail(e, "cannot make the player's GL context current on this thread");
+        return gls_api_fail(e, "cannot make the player's GL context current on this thread");
     if (gls_renderer_set_size(p->r, c.width, c.height, err, sizeof err))
-        return glscene_fail(e, "%s", err);
+        return gls_api_fail(e, "%s", err);
     size_t n = (size_t)c.width * c.height;
     int image = out->rgb8 || out->rgbf, aa = image && p->plan.count > 1;
     uint8_t *rgba = NULL;
@@ -220,7 +220,7 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
         if (out->instance && !(ids = malloc(n * sizeof *ids)))
             goto oom;
         if (gls_gt_render(p->r, &c, ids, out->normals, NULL, err, sizeof err)) {
-            glscene_fail(e, "%s", err);
+            gls_api_fail(e, "%s", err);
             goto done;
         }
         /* scene instance index + 1 -> the id glsplay's instance output has */
@@ -247,7 +247,7 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
     rc = 0;
     goto done;
 oom:
-    glscene_fail(e, "out of memory for a %ux%u image", c.width, c.height);
+    gls_api_fail(e, "out of memory for a %ux%u image", c.width, c.height);
 done:
     gls_accum_free(&acc);
     free(rgba);

@@ -10,7 +10,7 @@
 #include "numfmt.h"
 #include "rotation.h"
 
-int glscene_fail(glscene_error *e, const char *fmt, ...)
+int gls_api_fail(glscene_error *e, const char *fmt, ...)
 {
     if (e) {
         va_list ap;
@@ -27,7 +27,7 @@ int glscene_camera_from_file(const char *path, glscene_camera *out, glscene_erro
     char err[sizeof e->message];
     /* notes (a re-orthonormalised R) are dropped: the library never prints */
     if (!path || gls_camera_load(path, GLS_POSE_WORLD, NULL, &c, err, sizeof err))
-        return glscene_fail(e, "%s", path ? err : "glscene_camera_from_file: no path");
+        return gls_api_fail(e, "%s", path ? err : "glscene_camera_from_file: no path");
     memset(out, 0, sizeof *out);
     out->width = c.width, out->height = c.height;
     out->fx = c.fx, out->fy = c.fy, out->cx = c.cx, out->cy = c.cy, out->skew = c.skew;
@@ -44,39 +44,39 @@ static int check(glscene_camera *c, glscene_error *e)
     static const char *const name[] = {"fx", "fy", "cx", "cy", "skew", "near", "far"};
     for (size_t i = 0; i < sizeof num / sizeof num[0]; i++)
         if (!isfinite(*num[i]))
-            return glscene_fail(e, "camera: %s is not a finite number", name[i]);
+            return gls_api_fail(e, "camera: %s is not a finite number", name[i]);
     for (int i = 0; i < 12; i++)
         if (!isfinite(i < 9 ? c->R[i] : c->T[i - 9]))
-            return glscene_fail(e, "camera: %s[%d] is not a finite number", i < 9 ? "R" : "T", i < 9 ? i : i - 9);
+            return gls_api_fail(e, "camera: %s[%d] is not a finite number", i < 9 ? "R" : "T", i < 9 ? i : i - 9);
     if (c->width < 1 || c->width > GLS_CAMERA_MAX_DIM || c->height < 1 || c->height > GLS_CAMERA_MAX_DIM)
-        return glscene_fail(e, "camera: %s %u must be a whole number in 1..%u",
+        return gls_api_fail(e, "camera: %s %u must be a whole number in 1..%u",
                             c->width < 1 || c->width > GLS_CAMERA_MAX_DIM ? "width" : "height",
                             c->width < 1 || c->width > GLS_CAMERA_MAX_DIM ? c->width : c->height,
                             GLS_CAMERA_MAX_DIM);
     if (!(c->fx > 0))
-        return glscene_fail(e, "camera: fx must be > 0 (focal length in pixels)");
+        return gls_api_fail(e, "camera: fx must be > 0 (focal length in pixels)");
     if (!(c->fy > 0))
-        return glscene_fail(e, "camera: fy must be > 0 (focal length in pixels)");
+        return gls_api_fail(e, "camera: fy must be > 0 (focal length in pixels)");
     if (!(c->near > 0))
-        return glscene_fail(e, "camera: near must be > 0");
+        return gls_api_fail(e, "camera: near must be > 0");
     char a[40], b[40];
     gls_fmt_double(a, sizeof a, c->far);
     gls_fmt_double(b, sizeof b, c->near);
     if (!(c->far > c->near))
-        return glscene_fail(e, "camera: far (%s) must be greater than near (%s)", a, b);
+        return gls_api_fail(e, "camera: far (%s) must be greater than near (%s)", a, b);
     double nmin, nmax;
     if (gls_camera_depth_range(c->near, c->far, &nmin, &nmax)) {
         int small = c->near < nmin;
         char lim[40];
         gls_fmt_double(lim, sizeof lim, small ? nmin : nmax);
-        return glscene_fail(e,
+        return gls_api_fail(e,
                             "camera: near %s is too %s for far %s: the float depth buffer would lose precision; "
                             "near must be %s %s (spec/camera.md, Depth range)",
                             b, small ? "small" : "large", a, small ? "at least" : "at most", lim);
     }
     char why[300];
     if (gls_rotation_check(c->R, why, sizeof why) < 0)
-        return glscene_fail(e, "camera: R: %s", why);
+        return gls_api_fail(e, "camera: R: %s", why);
     return 0;
 }
 
@@ -94,7 +94,7 @@ int glscene_camera_set(glscene_camera *out, uint32_t width, uint32_t height, dou
     return 0;
 }
 
-int glscene_camera_to_internal(const glscene_camera *c, gls_camera *out, glscene_error *e)
+int gls_api_camera(const glscene_camera *c, gls_camera *out, glscene_error *e)
 {
     glscene_camera k = *c;
     if (check(&k, e))

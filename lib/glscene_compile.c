@@ -24,19 +24,19 @@ static void diagnostics_to_error(const char *text, glscene_error *e)
     }
     while (len && text[len - 1] == '\n')
         len--;
-    glscene_fail(e, "%.*s", (int)len, text);
+    gls_api_fail(e, "%.*s", (int)len, text);
 }
 
 int glscene_compile(const char *scene_path, const char *const *roots, size_t nroots, const char *out_bundle,
                     glscene_error *e)
 {
     if (!scene_path || !out_bundle || (nroots && !roots))
-        return glscene_fail(e, "glscene_compile: a NULL scene, roots or output path");
+        return gls_api_fail(e, "glscene_compile: a NULL scene, roots or output path");
     char *diag = NULL;
     size_t dlen = 0;
     FILE *d = open_memstream(&diag, &dlen);
     if (!d)
-        return glscene_fail(e, "out of memory");
+        return gls_api_fail(e, "out of memory");
     gls_compiler *c = gls_compiler_new(d);
     int rc = c ? 0 : -1;
     for (size_t i = 0; i < nroots && rc == 0; i++)
@@ -49,7 +49,7 @@ int glscene_compile(const char *scene_path, const char *const *roots, size_t nro
     fclose(d);
     if (rc) {
         if (!c || !diag || !diag[0])
-            glscene_fail(e, "%s: the compiler failed and said nothing (out of memory?)", scene_path);
+            gls_api_fail(e, "%s: the compiler failed and said nothing (out of memory?)", scene_path);
         else
             diagnostics_to_error(diag, e);
     } else {
@@ -57,12 +57,12 @@ int glscene_compile(const char *scene_path, const char *const *roots, size_t nro
         size_t len;
         gls_error err;
         if (gls_bundle_write(b, &bytes, &len, &err)) {
-            rc = glscene_fail(e, "%s", err.msg);
+            rc = gls_api_fail(e, "%s", err.msg);
         } else {
             if (gls_mkdir_parents(out_bundle))
-                rc = glscene_fail(e, "cannot create the directory of %s: %s", out_bundle, strerror(errno));
+                rc = gls_api_fail(e, "cannot create the directory of %s: %s", out_bundle, strerror(errno));
             else if (gls_write_file_atomic(out_bundle, bytes, len))
-                rc = glscene_fail(e, "cannot write %s: %s", out_bundle, gls_write_error(out_bundle, errno));
+                rc = gls_api_fail(e, "cannot write %s: %s", out_bundle, gls_write_error(out_bundle, errno));
             free(bytes);
         }
     }

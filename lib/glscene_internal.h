@@ -6,10 +6,10 @@
 #include "glscene.h"
 
 /* Write the formatted message into e (if not NULL); returns -1, so that
- * a failing call can `return glscene_fail(e, ...)`. */
-int glscene_fail(glscene_error *e, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+ * a failing call can `return gls_api_fail(e, ...)`. */
+int gls_api_fail(glscene_error *e, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Check c as glscene_camera_set does and convert it (pose: the world).
  * 0, or -1 with e. */
-int glscene_camera_to_internal(const glscene_camera *c, gls_camera *out, glscene_error *e);
+int gls_api_camera(const glscene_camera *c, gls_camera *out, glscene_error *e);
 #endif

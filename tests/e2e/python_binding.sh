@@ -11,3 +11,20 @@ PY=/usr/bin/python3
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 PYTHONDONTWRITEBYTECODE=1 $PY tests/py/check_python.py "$B" "$t" 2>"$t/err" || echo "FAIL python_binding: $(tail -5 "$t/err")"
+
+# README "Use it from Python": its python block, run as the README says
+# (repository root after make, PYTHONPATH=python), in a directory that
+# has the checkout's examples/ and build/, so that out/ is written there
+awk '/^## Use it from Python/ { sec = 1 } sec && /^```python/ { on = 1; next } on && /^```/ { exit } on' README.md \
+    >"$t/example.py"
+mkdir "$t/root"
+ln -s "$(pwd)/examples" "$t/root/examples"
+ln -s "$(cd "$B" && pwd)" "$t/root/build"
+want=$(sed -n 's/^It prints `\(.*\)`: the image.*/\1/p' README.md)
+lib=$(cd "$B" && pwd)/libglscene.so.0
+got=$(cd "$t/root" && GLSCENE_LIBRARY=$lib PYTHONDONTWRITEBYTECODE=1 PYTHONPATH="$OLDPWD/python" $PY "$t/example.py" 2>&1)
+if [ "$(wc -l <"$t/example.py")" -eq 5 ] && [ -n "$want" ] && [ "$got" = "$want" ]; then
+    echo "ok readme_python_example"
+else
+    echo "FAIL readme_python_example: $(wc -l <"$t/example.py") lines; printed '$got', the README says '$want'"
+fi
