@@ -28,13 +28,8 @@ int glscene_camera_from_file(const char *path, glscene_camera *out, glscene_erro
     /* notes (a re-orthonormalised R) are dropped: the library never prints */
     if (!path || gls_camera_load(path, GLS_POSE_WORLD, NULL, &c, err, sizeof err))
         return gls_api_fail(e, "%s", path ? err : "glscene_camera_from_file: no path");
-    memset(out, 0, sizeof *out);
-    out->width = c.width, out->height = c.height;
-    out->fx = c.fx, out->fy = c.fy, out->cx = c.cx, out->cy = c.cy, out->skew = c.skew;
-    memcpy(out->R, c.R, sizeof out->R);
-    memcpy(out->T, c.T, sizeof out->T);
-    out->near = c.near, out->far = c.far;
-    return 0;
+    /* checked already; the file's values pass the same checks */
+    return glscene_camera_set(out, c.width, c.height, c.fx, c.fy, c.cx, c.cy, c.skew, c.R, c.T, c.near, c.far, e);
 }
 
 /* The checks of runtime/camera.c's gls_camera_from_keys, on numbers. */

@@ -58,6 +58,16 @@ static int camera(glscene_camera *c)
     return glscene_camera_set(c, W, H, FX, FX, CX, CY, 0, NULL, NULL, 0.1, 100, &e);
 }
 
+/* The wall's player with the default options, and the camera. */
+static glscene_player *open_wall(glscene_camera *c)
+{
+    glscene_error e;
+    glscene_player *p = glscene_open(bundle, NULL, &e);
+    CHECK_MSG(p != NULL, "%s", e.message);
+    CHECK(camera(c) == 0);
+    return p;
+}
+
 static void test_glscene_compile(void)
 {
     glscene_error e;
@@ -77,12 +87,10 @@ static void test_glscene_compile(void)
 static void test_glscene_render_depth_ids(void)
 {
     glscene_error e;
-    glscene_player *p = glscene_open(bundle, NULL, &e);
-    CHECK_MSG(p != NULL, "%s", e.message);
+    glscene_camera c;
+    glscene_player *p = open_wall(&c);
     if (!p)
         return;
-    glscene_camera c;
-    CHECK(camera(&c) == 0);
     static float z[W * H], nrm[W * H * 3];
     static uint32_t id[W * H];
     static uint8_t rgb[W * H * 3];
@@ -110,12 +118,10 @@ static void test_glscene_render_depth_ids(void)
 static void test_glscene_move(void)
 {
     glscene_error e;
-    glscene_player *p = glscene_open(bundle, NULL, &e);
-    CHECK_MSG(p != NULL, "%s", e.message);
+    glscene_camera c;
+    glscene_player *p = open_wall(&c);
     if (!p)
         return;
-    glscene_camera c;
-    CHECK(camera(&c) == 0);
     static float z[W * H];
     glscene_buffers b = {NULL, NULL, z, NULL, NULL};
     size_t mid = (size_t)24 * W + 32;
