@@ -11,11 +11,12 @@
  * located "file:line:col: error: ..." of a camera file, with its source
  * line and caret).  The library never prints, never exits.
  *
- * Threads and GL: a player owns its GL context (glscene_open creates it).
- * Use one player from one thread at a time; players on different threads
- * are independent.  Each call that draws makes the player's context
- * current on the calling thread first, so several players may share a
- * thread. */
+ * Threads and GL: a player owns its GL context (glscene_open creates it
+ * and makes it current on the calling thread).  Use a player only from
+ * the thread that opened it (an EGL context current on one thread cannot
+ * be made current on another); players of different threads are
+ * independent.  Each call that draws makes the player's context current
+ * first, so several players may share a thread. */
 #ifndef GLSCENE_H
 #define GLSCENE_H
 

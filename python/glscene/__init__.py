@@ -9,7 +9,7 @@ python3 and python3-numpy are all it needs.
     out["image"]   # H x W x 3 uint8; out["depth"]: H x W float32 Zc, inf: nothing
 
 Errors raise glscene.Error with the library's message.  A Player owns a GL
-context: use it from one thread at a time.
+context: use it only from the thread that made it.
 
 The library is looked for in this order: $GLSCENE_LIBRARY (a path), beside
 this package, the lib/ directory of the prefix it is installed in

@@ -185,10 +185,12 @@ for t in glsc glsdis glsplay glsroad; do
 done
 [ $manbad -eq 0 ] && ok man_pages_lint_and_options
 
-# make uninstall: every installed file gone, the package's own directory too
+# make uninstall: every installed file and link gone, the package's own
+# directories too
 if env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s uninstall B="$BIN" PREFIX="$PREFIX" \
-    DESTDIR="$D" >"$tmp/log" 2>&1 && [ -z "$(find "$D" -type f)" ] && [ ! -e "$P/share/glscene" ]; then
+    DESTDIR="$D" >"$tmp/log" 2>&1 && [ -z "$(find "$D" -type f -o -type l)" ] && [ ! -e "$P/share/glscene" ] &&
+    [ ! -e "$P/lib/python3/dist-packages/glscene" ]; then
     ok make_uninstall
 else
-    fail make_uninstall "$(cat "$tmp/log"; find "$D" -type f)"
+    fail make_uninstall "$(cat "$tmp/log"; find "$D" -type f -o -type l; ls -d "$P/lib/python3/dist-packages/glscene" 2>&1)"
 fi
