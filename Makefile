@@ -40,6 +40,9 @@ INC_compiler := -Icompiler -I$(B)/gen $(INC_format)
 # $(B)/gen/runtime: glctx_backends.h, which GL backends this build has (below)
 INC_runtime  := -Iruntime -I$(B)/gen/runtime $(INC_format)
 INC_roads    := -Iroads $(INC_base)
+# libglscene (lib/, docs/api.md): the public API over the compiler and the
+# runtime; include/ holds its one public header
+INC_lib      := -Ilib -Iinclude $(INC_compiler) $(INC_runtime)
 # glsroad's main also reads camera files and trajectories (runtime/)
 INC_glsroad  := $(INC_roads) $(INC_runtime)
 # An object sees the layer of its top directory (base/x.c: base).
@@ -74,6 +77,7 @@ BASE_OBJ     := $(BASE_SRC:%.c=$(B)/%.o)
 FORMAT_OBJ   := $(FORMAT_SRC:%.c=$(B)/%.o)
 COMPILER_OBJ := $(COMPILER_SRC:%.c=$(B)/%.o) $(B)/gen/lexer.o $(B)/gen/grammar.o
 RUNTIME_OBJ  := $(RUNTIME_SRC:%.c=$(B)/%.o)
+LIB_SRC      := $(wildcard lib/*.c)
 
 # the libraries of each layer, in link order (a layer before those below it)
 LIB_base     := $(B)/libglsbase.a
@@ -81,8 +85,11 @@ LIB_format   := $(B)/libglsformat.a $(LIB_base)
 LIB_compiler := $(B)/libglscompiler.a $(LIB_format)
 LIB_runtime  := $(B)/libglsruntime.a $(LIB_format)
 LIB_roads    := $(B)/libglsroad.a $(LIB_base)
+LIB_lib      := $(B)/libglscene.a
 
 TOOLS := $(B)/glsc $(B)/glsdis $(B)/glsplay $(B)/glsroad
+# libglscene, static and shared (below)
+GLSCENE_LIBS := $(B)/libglscene.a $(B)/libglscene.so
 # the scene library: textures, precompiled library bundle
 SCENELIB := $(B)/textures.stamp $(B)/scenelib.glsb
 
@@ -95,7 +102,7 @@ PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)
             $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
 .PHONY: gallery-truth gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion
-all: $(TOOLS) $(SCENELIB)
+all: $(TOOLS) $(SCENELIB) $(GLSCENE_LIBS)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
 
@@ -137,6 +144,7 @@ SEES_test_road_geo := roads
 SEES_test_road_nurbs := roads
 SEES_test_road_motion := roads runtime
 SEES_test_road_traj := roads runtime
+SEES_test_glscene := lib
 # a program's include paths and libraries from the layers it sees
 sees_inc = $(foreach l,$(1),$(INC_$(l)))
 sees_lib = $(foreach l,$(1),$(LIB_$(l)))
@@ -190,8 +198,46 @@ $(B)/glsc: $(B)/compiler/glsc_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 $(B)/glsdis: $(B)/compiler/glsdis_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-$(B)/glsplay: $(B)/runtime/glsplay_main.o $(LIB_runtime)
+# glsplay links the runtime through libglscene.a (its main calls the
+# runtime's gls_play, not the public API); base for the tools' usage and
+# standard output helpers, which the library leaves out.
+$(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglscene.a $(LIB_base)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
+
+# libglscene (docs/api.md): lib/ over every layer but roads, without the
+# tools' helpers that print (base/usage.c, base/stdout_check.c): the
+# library never writes to the standard streams.  The static library is
+# the tools' objects; the shared one is a second set compiled with -fPIC
+# under $(B)/pic/, so that the tools' code stays as it was.  The shared
+# library exports glscene_* only (lib/glscene.map) and has the soname
+# libglscene.so.MAJOR of include/glscene.h's GLSCENE_VERSION.
+GLSCENE_VERSION := $(shell sed -n 's/^\#define GLSCENE_VERSION "\(.*\)"$$/\1/p' include/glscene.h)
+GLSCENE_SONAME := libglscene.so.$(firstword $(subst ., ,$(GLSCENE_VERSION)))
+GLSCENE_OBJ := $(LIB_SRC:%.c=$(B)/%.o) $(filter-out $(B)/base/usage.o $(B)/base/stdout_check.o,$(BASE_OBJ)) \
+               $(FORMAT_OBJ) $(COMPILER_OBJ) $(RUNTIME_OBJ)
+GLSCENE_PIC_OBJ := $(GLSCENE_OBJ:$(B)/%=$(B)/pic/%)
+$(B)/libglscene.a: $(GLSCENE_OBJ) lib base format compiler runtime
+	$(ARCHIVE)
+# the undefined-symbol check, except under the sanitizers, whose runtime
+# the program that loads the library brings
+GLSCENE_NO_UNDEFINED := $(if $(filter 1,$(SANITIZE) $(FUZZ)),,-Wl,--no-undefined)
+$(B)/libglscene.so.$(GLSCENE_VERSION): $(GLSCENE_PIC_OBJ) lib/glscene.map
+	$(CC) $(LDFLAGS) -shared -Wl,-soname,$(GLSCENE_SONAME) -Wl,--version-script=lib/glscene.map \
+	    $(GLSCENE_NO_UNDEFINED) $(GLSCENE_PIC_OBJ) -o $@ $(LDLIBS) $(GL_LIBS)
+$(B)/libglscene.so: $(B)/libglscene.so.$(GLSCENE_VERSION)
+	ln -sf libglscene.so.$(GLSCENE_VERSION) $(B)/$(GLSCENE_SONAME)
+	ln -sf $(GLSCENE_SONAME) $@
+$(B)/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC $(LAYER_INC) $(DEPFLAGS) -c $< -o $@
+$(B)/pic/gen/%.o: $(B)/gen/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC $(INC_compiler) -Wno-unused-parameter -Wno-unused-variable $(DEPFLAGS) -c $< -o $@
+$(GLSCENE_PIC_OBJ): | $(B)/gen/grammar.h
+$(B)/pic/runtime/glctx.o: $(GLCTX_CONFIG) | gl-backend-check
+$(B)/pic/runtime/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
+$(B)/pic/runtime/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
+$(B)/pic/runtime/aa.o: CFLAGS += -O3
 
 # Fuzz targets (tests/fuzz/README.md): `make fuzz-build`, then
 # `sh tests/fuzz/run.sh SECONDS` fuzzes every target.
@@ -291,24 +337,40 @@ gallery: demo
 # included) into PREFIX/share/glscene/, a man page per tool
 # (docs/man/*.1) into PREFIX/share/man/man1.  DESTDIR is prepended to
 # every path (staged installs, packaging); nothing is written outside it.
+# libglscene (docs/api.md): its header into PREFIX/include, the static and
+# shared libraries (with the libglscene.so.0 and libglscene.so links) and
+# glscene.pc into PREFIX/lib (pkgconfig/), the Python binding into
+# PREFIX/lib/python3/dist-packages/glscene (where Debian's python3 looks
+# for /usr/local and /usr; README "Use it from Python").
 # make uninstall removes exactly those files (tests/e2e/install.sh).
-# TODO(libglscene): install the static and shared libraries, their public
-# header and a pkg-config file glscene.pc once a public library header
-# exists.  None does yet (runtime/player.h is internal), so no library,
-# header or .pc is installed: issue 17's libglscene will add them here.
 PREFIX ?= /usr/local
 DESTDIR ?=
 INSTALL_BIN := $(DESTDIR)$(PREFIX)/bin
 INSTALL_SHARE := $(DESTDIR)$(PREFIX)/share/glscene
 INSTALL_MAN := $(DESTDIR)$(PREFIX)/share/man/man1
+INSTALL_INC := $(DESTDIR)$(PREFIX)/include
+INSTALL_LIB := $(DESTDIR)$(PREFIX)/lib
+INSTALL_PY := $(INSTALL_LIB)/python3/dist-packages/glscene
+GLSCENE_SO := libglscene.so.$(GLSCENE_VERSION)
 MAN_PAGES := $(TOOLS:$(B)/%=docs/man/%.1)
-install: $(TOOLS) $(SCENELIB) $(MAN_PAGES)
-	install -d $(INSTALL_BIN) $(INSTALL_SHARE) $(INSTALL_MAN)
+install: $(TOOLS) $(SCENELIB) $(MAN_PAGES) $(GLSCENE_LIBS) lib/glscene.pc.in python/glscene/__init__.py
+	install -d $(INSTALL_BIN) $(INSTALL_SHARE) $(INSTALL_MAN) $(INSTALL_INC) $(INSTALL_LIB)/pkgconfig $(INSTALL_PY)
 	install -m 755 $(TOOLS) $(INSTALL_BIN)/
 	install -m 644 $(B)/scenelib.glsb $(INSTALL_SHARE)/scenelib.glsb
 	install -m 644 $(MAN_PAGES) $(INSTALL_MAN)/
+	install -m 644 include/glscene.h $(INSTALL_INC)/
+	install -m 644 $(B)/libglscene.a $(INSTALL_LIB)/
+	install -m 755 $(B)/$(GLSCENE_SO) $(INSTALL_LIB)/
+	ln -sf $(GLSCENE_SO) $(INSTALL_LIB)/$(GLSCENE_SONAME)
+	ln -sf $(GLSCENE_SONAME) $(INSTALL_LIB)/libglscene.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(GLSCENE_VERSION)|' \
+	    -e 's|@LIBS_PRIVATE@|$(strip $(LDLIBS) $(GL_LIBS))|' lib/glscene.pc.in >$(INSTALL_LIB)/pkgconfig/glscene.pc
+	install -m 644 python/glscene/__init__.py $(INSTALL_PY)/
 uninstall:
 	rm -f $(TOOLS:$(B)/%=$(INSTALL_BIN)/%) $(INSTALL_SHARE)/scenelib.glsb $(MAN_PAGES:docs/man/%=$(INSTALL_MAN)/%)
+	rm -f $(INSTALL_INC)/glscene.h $(INSTALL_LIB)/libglscene.a $(INSTALL_LIB)/$(GLSCENE_SO) \
+	    $(INSTALL_LIB)/$(GLSCENE_SONAME) $(INSTALL_LIB)/libglscene.so $(INSTALL_LIB)/pkgconfig/glscene.pc
+	rm -rf $(INSTALL_PY)
 	-rmdir $(INSTALL_SHARE) 2>/dev/null
 
 bench-compile: $(B)/glsc

@@ -16,7 +16,8 @@ t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
 
 # LAYER  a file of it  the directories it may see (gen: the compiler's
 # generated grammar.h); glsroad is the glsroad tool's main, which also reads
-# camera files and trajectories
+# camera files and trajectories; lib is libglscene (docs/api.md), over the
+# compiler and the runtime, with its public header in include/
 table='
 base     base/buf.c                 base
 format   format/insn.c              format base
@@ -24,8 +25,9 @@ compiler compiler/unit.c            compiler gen format base
 runtime  runtime/camera.c           runtime format base
 roads    roads/nurbs.c              roads base
 glsroad  roads/glsroad_main.c       roads runtime format base
+lib      lib/glscene.c              lib include compiler gen runtime format base
 '
-dirs="base format compiler gen runtime roads"
+dirs="base format compiler gen runtime roads lib include"
 headers() { # DIR: the headers of a layer directory
     case $1 in
     gen) echo "$B/gen/grammar.h" ;;
@@ -60,7 +62,7 @@ echo "$table" | while read -r layer file sees; do
 done
 
 # no relative include reaches out of its directory
-esc=$(grep -n '#[[:space:]]*include[[:space:]]*"\.\./' base/* format/* compiler/* runtime/* roads/* \
+esc=$(grep -n '#[[:space:]]*include[[:space:]]*"\.\./' base/* format/* compiler/* runtime/* roads/* lib/* include/* \
       tests/unit/* tests/fuzz/*.c bench/* tools/*.c scenelib/gen/*.c 2>/dev/null | head -5)
 if [ -z "$esc" ]; then echo "ok build_layers_no_relative_includes"
 else echo "FAIL build_layers_no_relative_includes: $(echo "$esc" | tr '\n' ' ')"; fi

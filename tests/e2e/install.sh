@@ -4,7 +4,9 @@
 # installed tools run (--help) and render the road demo with the installed
 # library bundle, byte for byte as the build's tools do; the man pages
 # pass groff's and man's checks, and each has an entry for every option
-# its tool's --help lists.  Prints ok/FAIL lines.
+# its tool's --help lists; a C program built against the installed
+# libglscene with pkg-config (shared and static) renders the demo, and the
+# installed Python binding imports and renders.  Prints ok/FAIL lines.
 BIN=${GLS_BIN:-build}
 ok() { echo "ok $1"; }
 fail() { echo "FAIL $1: $2"; }
@@ -29,6 +31,13 @@ cat >"$tmp/want" <<EOF2
 .$PREFIX/bin/glsdis
 .$PREFIX/bin/glsplay
 .$PREFIX/bin/glsroad
+.$PREFIX/include/glscene.h
+.$PREFIX/lib/libglscene.a
+.$PREFIX/lib/libglscene.so
+.$PREFIX/lib/libglscene.so.0
+.$PREFIX/lib/libglscene.so.0.1.0
+.$PREFIX/lib/pkgconfig/glscene.pc
+.$PREFIX/lib/python3/dist-packages/glscene/__init__.py
 .$PREFIX/share/glscene/scenelib.glsb
 .$PREFIX/share/man/man1/glsc.1
 .$PREFIX/share/man/man1/glsdis.1
@@ -78,6 +87,85 @@ else
     fail installed_tools_render_demo "exit $rc: $(tail -5 "$tmp/log")"
 fi
 
+# libglscene through pkg-config (README "Use it from C"): the .pc names
+# the install's prefix; --define-variable moves it into DESTDIR.  The
+# program renders the demo's left camera and checks the depth at a pixel
+# of the road (the plane y = 0.01) against the camera model.
+cat >"$tmp/use.c" <<'EOF2'
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <glscene.h>
+int main(int argc, char **argv)
+{
+    glscene_error e;
+    glscene_camera c;
+    if (argc != 5)
+        return 2;
+    const char *roots[] = {argv[2], argv[3]};
+    if (glscene_compile(argv[1], roots, 2, argv[4], &e) || glscene_camera_from_file("left.cam", &c, &e)) {
+        printf("%s\n", e.message);
+        return 1;
+    }
+    glscene_player *p = glscene_open(argv[4], NULL, &e);
+    float *z = malloc(sizeof *z * c.width * c.height);
+    glscene_buffers b = {0};
+    b.depth = z;
+    if (!p || !z || glscene_render(p, &c, &b, &e)) {
+        printf("%s\n", e.message);
+        return 1;
+    }
+    /* pixel (400, 460): ray d = K^-1 (u, v, 1); world P = R^T (Zc d - T), P_y = 0.01 */
+    double d[3] = {(400 - c.cx) / c.fx, (460 - c.cy) / c.fy, 1}, rd = 0, rt = 0;
+    for (int i = 0; i < 3; i++)
+        rd += c.R[3 * i + 1] * d[i], rt += c.R[3 * i + 1] * c.T[i];
+    double want = (0.01 + rt) / rd, got = z[460 * c.width + 400];
+    printf("%s depth %.7g want %.7g\n", glscene_version(), got, want);
+    glscene_close(p);
+    free(z);
+    return fabs(got - want) <= 1e-5 * want ? 0 : 1;
+}
+EOF2
+PC="env PKG_CONFIG_PATH=$P/lib/pkgconfig pkg-config --define-variable=prefix=$P"
+cp examples/demo/left.cam "$tmp/left.cam"
+# shared: -lglscene finds libglscene.so; static: pkg-config --static adds
+# Libs.private, and -Bstatic makes -lglscene take libglscene.a
+libs_shared=$($PC --libs glscene)
+libs_static=$($PC --static --libs glscene | sed 's/-lglscene/-Wl,-Bstatic -lglscene -Wl,-Bdynamic/')
+for kind in shared static; do
+    eval "libs=\$libs_$kind"
+    # shellcheck disable=SC2086
+    if ! ${CC:-cc} -o "$tmp/use_$kind" "$tmp/use.c" $($PC --cflags glscene) $libs -lm >"$tmp/log" 2>&1; then
+        fail "pkg_config_${kind}_build" "$(tail -5 "$tmp/log")"
+        continue
+    fi
+    (cd "$tmp" && LD_LIBRARY_PATH=$P/lib ./use_$kind "$OLDPWD/examples/demo/Demo.scene" "$OLDPWD/examples/demo" \
+        "$OLDPWD/$BIN/textures" demo_$kind.glsb) >"$tmp/log" 2>&1
+    if [ $? -eq 0 ]; then
+        ok "pkg_config_${kind}_render_demo"
+    else
+        fail "pkg_config_${kind}_render_demo" "$(tail -3 "$tmp/log")"
+    fi
+done
+# the shared program loads the installed libglscene.so.0, the static one none
+LD_LIBRARY_PATH=$P/lib ldd "$tmp/use_shared" 2>/dev/null | grep -q "libglscene.so.0 => $P/lib/libglscene.so.0" &&
+    ! LD_LIBRARY_PATH=$P/lib ldd "$tmp/use_static" 2>/dev/null | grep -q libglscene &&
+    ok pkg_config_shared_and_static_links ||
+    fail pkg_config_shared_and_static_links "$(LD_LIBRARY_PATH=$P/lib ldd "$tmp/use_shared" "$tmp/use_static" | grep -e glscene -e :)"
+
+# the installed Python binding finds the installed library (PREFIX/lib)
+# by itself
+if (cd "$tmp" && PYTHONDONTWRITEBYTECODE=1 PYTHONPATH=$P/lib/python3/dist-packages /usr/bin/python3 -c '
+import glscene, sys
+assert glscene._lib._name.startswith(sys.argv[1]), glscene._lib._name
+c = glscene.Camera.from_file("left.cam")
+z = glscene.Player("demo_shared.glsb").render(c, outputs=("depth",))["depth"]
+print(z.shape, z[460, 400])' "$P/lib/") >"$tmp/log" 2>&1; then
+    ok installed_python_binding
+else
+    fail installed_python_binding "$(tail -3 "$tmp/log")"
+fi
+
 # the man pages: clean under groff's and man's warnings, and every option
 # of each tool's --help with an entry in its page
 manbad=0
@@ -97,10 +185,12 @@ for t in glsc glsdis glsplay glsroad; do
 done
 [ $manbad -eq 0 ] && ok man_pages_lint_and_options
 
-# make uninstall: every installed file gone, the package's own directory too
+# make uninstall: every installed file and link gone, the package's own
+# directories too
 if env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s uninstall B="$BIN" PREFIX="$PREFIX" \
-    DESTDIR="$D" >"$tmp/log" 2>&1 && [ -z "$(find "$D" -type f)" ] && [ ! -e "$P/share/glscene" ]; then
+    DESTDIR="$D" >"$tmp/log" 2>&1 && [ -z "$(find "$D" -type f -o -type l)" ] && [ ! -e "$P/share/glscene" ] &&
+    [ ! -e "$P/lib/python3/dist-packages/glscene" ]; then
     ok make_uninstall
 else
-    fail make_uninstall "$(cat "$tmp/log"; find "$D" -type f)"
+    fail make_uninstall "$(cat "$tmp/log"; find "$D" -type f -o -type l; ls -d "$P/lib/python3/dist-packages/glscene" 2>&1)"
 fi

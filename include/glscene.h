@@ -1,0 +1,144 @@
+/* libglscene: the glscene renderer as a C library (docs/api.md).
+ *
+ * Open a compiled bundle (.glsb), set cameras from camera files or from
+ * numbers, render frames into buffers the caller owns (image, depth,
+ * instance ids, normals), move named instances, close.  The only public
+ * header: nothing else is installed.
+ *
+ * Errors come back as values: a function that can fail returns NULL or
+ * -1 and, when e is not NULL, writes one line saying why into e->message
+ * (the same words glsplay and glsc print after "tool: error: ", or the
+ * located "file:line:col: error: ..." of a camera file, with its source
+ * line and caret).  The library never prints, never exits.
+ *
+ * Threads and GL: a player owns its GL context (glscene_open creates it
+ * and makes it current on the calling thread).  Use a player only from
+ * the thread that opened it (an EGL context current on one thread cannot
+ * be made current on another); players of different threads are
+ * independent.  Each call that draws makes the player's context current
+ * first, so several players may share a thread. */
+#ifndef GLSCENE_H
+#define GLSCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GLSCENE_VERSION "0.1.0"
+
+/* The reason a call failed: one line, possibly followed by a source line
+ * and a caret line (camera files, scene sources), NUL-terminated. */
+typedef struct {
+    char message[1024];
+} glscene_error;
+
+/* The GL backend (spec/backends.md): AUTO: EGL where it gives a context,
+ * OSMesa otherwise. */
+typedef enum {
+    GLSCENE_BACKEND_AUTO = 0,
+    GLSCENE_BACKEND_EGL = 1,
+    GLSCENE_BACKEND_OSMESA = 2
+} glscene_backend;
+
+/* Anti-aliasing sample pattern (spec/antialiasing.md); LATTICE is the
+ * default, as in glsplay. */
+typedef enum { GLSCENE_AA_LATTICE = 0, GLSCENE_AA_GRID = 1, GLSCENE_AA_STRATIFIED = 2 } glscene_aa_pattern;
+
+/* Options of glscene_open.  All zero (or NULL) is the default: automatic
+ * backend, one sample a pixel, lattice pattern, black background. */
+typedef struct {
+    glscene_backend backend;
+    uint32_t aa;                /* N: N x N samples a pixel (glsplay --aa N); 0 or 1: one */
+    glscene_aa_pattern pattern; /* glsplay --pattern                                     */
+    uint64_t seed;              /* stratified jitter seed (--seed)                      */
+    float background[3];        /* colour where no surface is, 0..1 (--background)      */
+} glscene_options;
+
+/* An OpenCV pinhole camera (spec/camera.md): Pc = R P + T, R row-major
+ * world to camera; the image is width x height pixels, pixel (u, v) is
+ * column u, row v, top row first. */
+typedef struct {
+    uint32_t width, height;
+    double fx, fy, cx, cy, skew;
+    double R[9];
+    double T[3];
+    double near, far;
+} glscene_camera;
+
+/* Where glscene_render writes, caller-owned, row-major, top row first,
+ * width x height pixels of the camera; any may be NULL (not rendered).
+ *   rgb8:     3 bytes a pixel, the image as glsplay's PNG has it
+ *   rgbf:     3 floats a pixel, 0..1, the image as glsplay's PFM has it
+ *   depth:    Zc (distance along the optical axis), +inf where no surface
+ *   instance: the instance id as glsplay's instance output numbers it
+ *             (1 + rank among the instances that draw, call-path order;
+ *             0: background); glscene_instance_path names it
+ *   normals:  3 floats a pixel, unit camera-frame normal (x right, y down,
+ *             z forward), 0 0 0 where no surface
+ * The image is anti-aliased as the options say; depth, instance and
+ * normals come from the pixel centre (never blended), as glsplay's. */
+typedef struct {
+    uint8_t *rgb8;
+    float *rgbf;
+    float *depth;
+    uint32_t *instance;
+    float *normals;
+} glscene_buffers;
+
+typedef struct glscene_player glscene_player;
+
+/* The library's version, GLSCENE_VERSION of the build. */
+const char *glscene_version(void);
+
+/* Load and check a bundle, build its scene, create the GL context and the
+ * renderer.  opt NULL: the defaults.  NULL with e->message on failure. */
+glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt, glscene_error *e);
+
+/* Free everything the player holds, its GL context included.  NULL: nothing. */
+void glscene_close(glscene_player *p);
+
+/* Read a camera file (.cam, or OpenCV YAML), the pose in the world, as
+ * glsplay --camera without a trajectory.  0, or -1 with e. */
+int glscene_camera_from_file(const char *path, glscene_camera *out, glscene_error *e);
+
+/* Fill *out from numbers, checked as a camera file's values are: width
+ * and height whole in 1..16384, fx, fy > 0, 0 < near < far within the
+ * float depth range, R a rotation (re-orthonormalised within 1e-4, as a
+ * file's).  R NULL: identity; T NULL: zero.  0, or -1 with e. */
+int glscene_camera_set(glscene_camera *out, uint32_t width, uint32_t height, double fx, double fy, double cx,
+                       double cy, double skew, const double R[9], const double T[3], double near, double far,
+                       glscene_error *e);
+
+/* Move the instance the scene names `name` (a named call, as glsplay
+ * --motion NAME=FILE): R, T object-to-parent (R row-major; NULL R: back
+ * to the identity, T ignored).  Holds for every later render.  0, or -1
+ * with e (no such instance, R not a rotation). */
+int glscene_move_instance(glscene_player *p, const char *name, const double R[9], const double T[3],
+                          glscene_error *e);
+
+/* Render one frame through camera c into out.  0, or -1 with e (the
+ * camera's size beyond what GL allows, out of memory). */
+int glscene_render(glscene_player *p, const glscene_camera *c, const glscene_buffers *out, glscene_error *e);
+
+/* The call path of instance id (glscene_buffers.instance), e.g.
+ * "Demo > Car#2"; NULL for 0 or an id the scene does not have.  The
+ * string lives as long as the player. */
+const char *glscene_instance_path(glscene_player *p, uint32_t id);
+/* The number of instance ids (the largest id). */
+uint32_t glscene_instance_count(glscene_player *p);
+
+/* What glsc does: compile the scene file (or dotted top-level name)
+ * scene_path, searching the nroots roots (directories or library
+ * bundles, in order; none: the current directory), into out_bundle
+ * (written whole or not at all).  0, or -1 with e (the compiler's
+ * messages, the first of them whole when they do not all fit). */
+int glscene_compile(const char *scene_path, const char *const *roots, size_t nroots, const char *out_bundle,
+                    glscene_error *e);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

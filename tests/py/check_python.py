@@ -1,0 +1,119 @@
+"""The Python binding (python/glscene, README "Use it from Python") under
+/usr/bin/python3, run by tests/e2e/python_binding.sh:
+    check_python.py BUILD TMPDIR
+Compiles a wall with a named tile in front of it, renders it through a
+turned and moved camera and checks the depth against the camera model in
+numpy; checks ids, a moved instance, the image against glsplay's PNG of
+the demo (same camera, --aa, background), the depth against glsplay's
+PFM, and that errors raise glscene.Error with the library's message.
+Prints "ok NAME" / "FAIL NAME: why"."""
+import os
+import subprocess
+import sys
+
+import cv2
+import numpy as np
+
+BUILD, TMP = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+os.environ["GLSCENE_LIBRARY"] = os.path.join(BUILD, "libglscene.so.0")
+import glscene  # noqa: E402
+
+import gt_checks  # noqa: E402
+
+result = gt_checks.result
+
+WALL = """// a wall at z = 10, a 1 x 1 tile named "mover" at z = 5
+color(0.5, 0.5, 0.5);
+poly { vert(-100, -100, 10); vert(100, -100, 10); vert(100, 100, 10); vert(-100, 100, 10); }
+push; trans(0, 0, 5); call("parts.Tile", "mover"); pop;
+"""
+TILE = """color(1, 0, 0);
+poly { vert(-0.5, -0.5, 0); vert(0.5, -0.5, 0); vert(0.5, 0.5, 0); vert(-0.5, 0.5, 0); }
+"""
+os.makedirs(os.path.join(TMP, "parts"), exist_ok=True)
+with open(os.path.join(TMP, "Wall.scene"), "w") as f:
+    f.write(WALL)
+with open(os.path.join(TMP, "parts", "Tile.scene"), "w") as f:
+    f.write(TILE)
+bundle = os.path.join(TMP, "wall.glsb")
+result("python_compile", glscene.compile("Wall", [TMP], bundle) == bundle and os.path.getsize(bundle) > 0)
+
+# a camera turned 20 degrees about y and 10 about x, away from the origin
+W, H = 160, 120
+a, b = np.radians(20), np.radians(10)
+Ry = np.array([[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]])
+Rx = np.array([[1, 0, 0], [0, np.cos(b), -np.sin(b)], [0, np.sin(b), np.cos(b)]])
+R = Rx @ Ry
+C = np.array([0.7, -0.4, -1.3])  # the camera centre in the world
+T = -R @ C
+cam = glscene.Camera(width=W, height=H, fx=120.0, fy=110.0, cx=79.3, cy=61.8, R=R, T=T, near=0.1, far=100.0)
+player = glscene.Player(bundle)
+out = player.render(cam, outputs=("depth", "instance", "normals"))
+z, ids = out["depth"], out["instance"]
+result("python_outputs_asked_for", sorted(out) == ["depth", "instance", "normals"] and z.dtype == np.float32
+       and z.shape == (H, W) and ids.dtype == np.uint32 and out["normals"].shape == (H, W, 3))
+
+# the wall's depth from the model: pixel (u, v) -> ray d = K^-1 (u, v, 1)
+# in the camera, P = R^T (Zc d - T) in the world, P_z = 10
+u, v = np.meshgrid(np.arange(W, dtype=np.float64), np.arange(H, dtype=np.float64))
+d = np.stack([(u - cam.K[0, 2]) / cam.K[0, 0], (v - cam.K[1, 2]) / cam.K[1, 1], np.ones_like(u)], axis=-1)
+Rtd = d @ R  # rows: R^T d
+Zexp = (10.0 + (R.T @ T)[2]) / Rtd[..., 2]
+wall_id = [i for i in range(1, player.instance_count + 1) if player.instance_path(i) == "Wall"]
+tile_id = [i for i in range(1, player.instance_count + 1) if player.instance_path(i) == "Wall > parts.Tile#1"]
+on_wall = ids == (wall_id[0] if wall_id else -1)
+err = np.abs(z[on_wall] - Zexp[on_wall]) / Zexp[on_wall]
+result("python_depth_camera_model", on_wall.sum() > W * H // 2 and err.max() <= 2 ** -21,
+       "%d wall pixels, largest relative error %.3g" % (on_wall.sum(), err.max() if err.size else -1))
+result("python_instance_paths", len(wall_id) == 1 and len(tile_id) == 1 and player.instance_count == 2
+       and (ids == tile_id[0]).sum() > 0 and player.instance_path(0) is None)
+
+# the tile moved 3 further along its z: its pixels' depth grows (the tile's
+# plane is z = 8 in the world), and it covers fewer pixels
+player.move("mover", np.eye(3), [0, 0, 3])
+z2, ids2 = (lambda o: (o["depth"], o["instance"]))(player.render(cam, outputs=("depth", "instance")))
+on_tile = ids2 == tile_id[0]
+Zt = (8.0 + (R.T @ T)[2]) / Rtd[..., 2]
+terr = np.abs(z2[on_tile] - Zt[on_tile]) / Zt[on_tile]
+result("python_move_instance", 0 < on_tile.sum() < (ids == tile_id[0]).sum() and terr.max() <= 2 ** -21,
+       "%d tile pixels after, %d before, relative error %.3g" % (on_tile.sum(), (ids == tile_id[0]).sum(),
+                                                                 terr.max() if terr.size else -1))
+player.move("mover")
+result("python_move_back", np.array_equal(player.render(cam, outputs=("depth",))["depth"], z))
+
+
+def raises(call, want):
+    try:
+        call()
+    except glscene.Error as e:
+        return str(e) == want, str(e)
+    return False, "no exception"
+
+
+good, got = raises(lambda: player.move("mvoer", np.eye(3), [0, 0, 1]), "the scene has no instance named 'mvoer'")
+result("python_error_move", good, got)
+good, got = raises(lambda: glscene.Camera(width=W, height=H, fx=0, fy=1, cx=0, cy=0),
+                   "camera: fx must be > 0 (focal length in pixels)")
+result("python_error_camera", good, got)
+missing = os.path.join(TMP, "missing.glsb")
+try:
+    glscene.Player(missing)
+    result("python_error_open", False, "no exception")
+except glscene.Error as e:
+    result("python_error_open", str(e).startswith(missing + ": "), str(e))
+player.close()
+
+# the demo: the image byte for byte as glsplay's PNG, depth as its PFM
+demo = os.path.join(TMP, "demo.glsb")
+glscene.compile("examples/demo/Demo.scene", ["examples/demo", os.path.join(BUILD, "textures")], demo)
+left = "examples/demo/left.cam"
+subprocess.run([os.path.join(BUILD, "glsplay"), demo, "--camera", left, "--aa", "4", "--background",
+                "0.55,0.7,0.9", "-o", os.path.join(TMP, "play")], check=True)
+with glscene.Player(demo, aa=4, background=(0.55, 0.7, 0.9)) as p:
+    o = p.render(glscene.Camera.from_file(left), outputs=("image", "depth"))
+png = cv2.imread(os.path.join(TMP, "play", "left", "image_000000.png"), cv2.IMREAD_UNCHANGED)
+pfm = cv2.imread(os.path.join(TMP, "play", "left", "depth_000000.pfm"), cv2.IMREAD_UNCHANGED)
+result("python_image_equals_glsplay_png", png is not None and np.array_equal(o["image"], png[..., ::-1]),
+       "differs in %d values" % (np.count_nonzero(o["image"] != png[..., ::-1]) if png is not None else -1))
+result("python_depth_equals_glsplay_pfm", pfm is not None and np.array_equal(o["depth"], pfm))

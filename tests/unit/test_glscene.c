@@ -1,0 +1,234 @@
+/* libglscene's C API (include/glscene.h, docs/api.md), through the
+ * public header only: compile a small scene, render it, check depth
+ * against the camera model, instance ids and their paths, a moved named
+ * instance, anti-aliasing, and that errors come back as messages. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "check.h"
+#include "glscene.h"
+
+/* A wall at z = 10 and a 1 x 1 red tile "mover" at z = 5 in front of it;
+ * the camera at the origin looks along +z (R = I: world = camera frame). */
+static char dir[64], bundle[128];
+enum { W = 64, H = 48 };
+static const double FX = 50, CX = 31.5, CY = 23.5;
+
+static void write_file(const char *rel, const char *text)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", dir, rel);
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(text, f) < 0 || fclose(f)) {
+        printf("FAIL test_glscene: cannot write %s\n", path);
+        exit(1);
+    }
+}
+
+static void make_scene(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/test_glscene.XXXXXX");
+    if (!mkdtemp(dir)) {
+        printf("FAIL test_glscene: mkdtemp\n");
+        exit(1);
+    }
+    char sub[128];
+    snprintf(sub, sizeof sub, "%s/parts", dir);
+    if (mkdir(sub, 0755)) {
+        printf("FAIL test_glscene: mkdir %s\n", sub);
+        exit(1);
+    }
+    write_file("Wall.scene", "color(0.5, 0.5, 0.5);\n"
+                             "poly { vert(-100, -100, 10); vert(100, -100, 10); vert(100, 100, 10); "
+                             "vert(-100, 100, 10); }\n"
+                             "push; trans(0, 0, 5); call(\"parts.Tile\", \"mover\"); pop;\n");
+    write_file("parts/Tile.scene", "color(1, 0, 0);\n"
+                                   "poly { vert(-0.5, -0.5, 0); vert(0.5, -0.5, 0); vert(0.5, 0.5, 0); "
+                                   "vert(-0.5, 0.5, 0); }\n");
+    write_file("Bad.scene", "color(1, 0, 0;\n");
+    snprintf(bundle, sizeof bundle, "%s/out/wall.glsb", dir);
+}
+
+static int camera(glscene_camera *c)
+{
+    glscene_error e;
+    return glscene_camera_set(c, W, H, FX, FX, CX, CY, 0, NULL, NULL, 0.1, 100, &e);
+}
+
+/* The wall's player with the default options, and the camera. */
+static glscene_player *open_wall(glscene_camera *c)
+{
+    glscene_error e;
+    glscene_player *p = glscene_open(bundle, NULL, &e);
+    CHECK_MSG(p != NULL, "%s", e.message);
+    CHECK(camera(c) == 0);
+    return p;
+}
+
+static void test_glscene_compile(void)
+{
+    glscene_error e;
+    const char *roots[] = {dir};
+    CHECK(glscene_compile("Wall", roots, 1, bundle, &e) == 0);
+    CHECK(access(bundle, R_OK) == 0);
+    char out2[160];
+    snprintf(out2, sizeof out2, "%s/bad.glsb", dir);
+    CHECK(glscene_compile("Bad", roots, 1, out2, &e) == -1);
+    char want[512];
+    snprintf(want, sizeof want, "%s/Bad.scene:1:", dir);
+    CHECK_MSG(strncmp(e.message, want, strlen(want)) == 0 && strstr(e.message, ": error: "), "%s", e.message);
+    CHECK(access(out2, F_OK) != 0);
+    CHECK_STR(glscene_version(), GLSCENE_VERSION);
+}
+
+static void test_glscene_render_depth_ids(void)
+{
+    glscene_error e;
+    glscene_camera c;
+    glscene_player *p = open_wall(&c);
+    if (!p)
+        return;
+    static float z[W * H], nrm[W * H * 3];
+    static uint32_t id[W * H];
+    static uint8_t rgb[W * H * 3];
+    glscene_buffers b = {rgb, NULL, z, id, nrm};
+    CHECK_MSG(glscene_render(p, &c, &b, &e) == 0, "%s", e.message);
+    /* the wall's Zc is 10 at every pixel it shows, to float precision */
+    CHECK_NEAR(z[0], 10.0, 10.0 * 2e-7);
+    CHECK_NEAR(z[W * H - 1], 10.0, 10.0 * 2e-7);
+    /* the tile covers |u - cx|, |v - cy| < 5 px: Zc 5 at the centre */
+    size_t mid = (size_t)24 * W + 32;
+    CHECK_NEAR(z[mid], 5.0, 5.0 * 2e-7);
+    CHECK(rgb[3 * mid] == 255 && rgb[3 * mid + 1] == 0 && rgb[3 * mid + 2] == 0);
+    CHECK(rgb[0] == 128 && rgb[1] == 128 && rgb[2] == 128);
+    /* ids: the wall (the top) and the tile, with their call paths */
+    CHECK(glscene_instance_count(p) == 2);
+    CHECK(id[0] != 0 && id[mid] != 0 && id[0] != id[mid]);
+    CHECK_STR(glscene_instance_path(p, id[mid]), "Wall > parts.Tile#1");
+    CHECK_STR(glscene_instance_path(p, id[0]), "Wall");
+    CHECK(glscene_instance_path(p, 0) == NULL && glscene_instance_path(p, 3) == NULL);
+    /* normals face the camera: 0 0 -1 */
+    CHECK_NEAR(nrm[3 * mid + 2], -1.0, 1e-6);
+    glscene_close(p);
+}
+
+static void test_glscene_move(void)
+{
+    glscene_error e;
+    glscene_camera c;
+    glscene_player *p = open_wall(&c);
+    if (!p)
+        return;
+    static float z[W * H];
+    glscene_buffers b = {NULL, NULL, z, NULL, NULL};
+    size_t mid = (size_t)24 * W + 32;
+    /* 3 further away: Zc 8, the tile 6.25 px wide: u 31.5 +- 3.125 */
+    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, T[3] = {0, 0, 3};
+    CHECK_MSG(glscene_move_instance(p, "mover", I, T, &e) == 0, "%s", e.message);
+    CHECK(glscene_render(p, &c, &b, &e) == 0);
+    CHECK_NEAR(z[mid + 2], 8.0, 8.0 * 2e-7);
+    CHECK_NEAR(z[mid + 4], 10.0, 10.0 * 2e-7);
+    /* back to the identity */
+    CHECK(glscene_move_instance(p, "mover", NULL, NULL, &e) == 0);
+    CHECK(glscene_render(p, &c, &b, &e) == 0);
+    CHECK_NEAR(z[mid + 4], 5.0, 5.0 * 2e-7);
+    CHECK(glscene_move_instance(p, "mvoer", I, T, &e) == -1);
+    CHECK_STR(e.message, "the scene has no instance named 'mvoer'");
+    const double bad[9] = {1, 0, 0, 0, 2, 0, 0, 0, 1};
+    CHECK(glscene_move_instance(p, "mover", bad, T, &e) == -1);
+    CHECK_MSG(strncmp(e.message, "move mover: R: ", 15) == 0, "%s", e.message);
+    glscene_close(p);
+}
+
+/* --aa 4: the image anti-aliased, depth still the centre sample's */
+static void test_glscene_aa(void)
+{
+    glscene_error e;
+    glscene_options o = {GLSCENE_BACKEND_AUTO, 4, GLSCENE_AA_LATTICE, 0, {0, 0, 0}};
+    glscene_player *p = glscene_open(bundle, &o, &e), *q = glscene_open(bundle, NULL, &e);
+    CHECK(p && q);
+    if (!p || !q) {
+        glscene_close(p);
+        glscene_close(q);
+        return;
+    }
+    /* cx off the half pixel: the tile's edges cross pixels */
+    glscene_camera c;
+    CHECK(glscene_camera_set(&c, W, H, FX, FX, CX - 0.3, CY - 0.3, 0, NULL, NULL, 0.1, 100, &e) == 0);
+    static uint8_t a[W * H * 3], s[W * H * 3];
+    static float za[W * H], zs[W * H], fa[W * H * 3];
+    glscene_buffers ba = {a, fa, za, NULL, NULL}, bs = {s, NULL, zs, NULL, NULL};
+    CHECK(glscene_render(p, &c, &ba, &e) == 0 && glscene_render(q, &c, &bs, &e) == 0);
+    CHECK(memcmp(za, zs, sizeof za) == 0);
+    /* inside the tile the same colour; at its edges mixed ones */
+    size_t mid = (size_t)24 * W + 32;
+    CHECK(memcmp(a + 3 * mid, s + 3 * mid, 3) == 0);
+    int mixed = 0;
+    for (size_t i = 0; i < (size_t)W * H * 3; i++)
+        mixed += a[i] != s[i];
+    CHECK(mixed > 0);
+    CHECK_NEAR(fa[3 * mid], 1.0, 1e-6);
+    glscene_close(p);
+    glscene_close(q);
+}
+
+static void test_glscene_errors(void)
+{
+    glscene_error e;
+    glscene_camera c;
+    CHECK(glscene_camera_set(&c, W, H, 0, FX, CX, CY, 0, NULL, NULL, 0.1, 100, &e) == -1);
+    CHECK_STR(e.message, "camera: fx must be > 0 (focal length in pixels)");
+    CHECK(glscene_camera_set(&c, 0, H, FX, FX, CX, CY, 0, NULL, NULL, 0.1, 100, &e) == -1);
+    CHECK_STR(e.message, "camera: width 0 must be a whole number in 1..16384");
+    CHECK(glscene_camera_set(&c, W, H, FX, FX, CX, CY, 0, NULL, NULL, 1, 0.5, &e) == -1);
+    CHECK_STR(e.message, "camera: far (0.5) must be greater than near (1)");
+    const double R[9] = {0, 1, 0, 1, 0, 0, 0, 0, 1}; /* a reflection */
+    CHECK(glscene_camera_set(&c, W, H, FX, FX, CX, CY, 0, R, NULL, 0.1, 100, &e) == -1);
+    CHECK_MSG(strncmp(e.message, "camera: R: ", 11) == 0, "%s", e.message);
+    CHECK(glscene_open("/nonexistent/x.glsb", NULL, &e) == NULL);
+    CHECK_MSG(strstr(e.message, "/nonexistent/x.glsb") != NULL, "%s", e.message);
+    CHECK(glscene_camera_from_file("/nonexistent/x.cam", &c, &e) == -1);
+    CHECK_MSG(strncmp(e.message, "/nonexistent/x.cam: error: ", 27) == 0, "%s", e.message);
+    char cam[160];
+    snprintf(cam, sizeof cam, "%s/c.cam", dir);
+    write_file("c.cam", "width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\n"
+                        "far 100\n");
+    glscene_camera f, n;
+    CHECK(glscene_camera_from_file(cam, &f, &e) == 0 && camera(&n) == 0);
+    CHECK(memcmp(&f, &n, sizeof f) == 0);
+    write_file("c.cam", "width 64\nheight 48\nfx -50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\n"
+                        "near 0.1\nfar 100\n");
+    CHECK(glscene_camera_from_file(cam, &f, &e) == -1);
+    char want[512];
+    snprintf(want, sizeof want, "%s:3:4: error: fx must be > 0 (focal length in pixels)\n", cam);
+    CHECK_MSG(strncmp(e.message, want, strlen(want)) == 0, "%s", e.message);
+    /* a lens is refused, not dropped: the API's camera is a pinhole */
+    write_file("c.cam", "width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\n"
+                        "far 100\ndistortion -0.2 0.01 0 0\n");
+    CHECK(glscene_camera_from_file(cam, &f, &e) == -1);
+    snprintf(want, sizeof want, "%s: lens distortion ('distortion' or 'fisheye') is not in the library's camera yet; "
+                                "glsplay renders it", cam);
+    CHECK_STR(e.message, want);
+    /* options outside the enums */
+    glscene_error e2;
+    CHECK(glscene_open(bundle, &(glscene_options){.pattern = 7}, &e2) == NULL);
+    CHECK_STR(e2.message, "glscene_open: options: backend 0 or pattern 7 is not one of the enum's values");
+}
+
+int main(void)
+{
+    make_scene();
+    RUN(test_glscene_compile);
+    RUN(test_glscene_render_depth_ids);
+    RUN(test_glscene_move);
+    RUN(test_glscene_aa);
+    RUN(test_glscene_errors);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (system(cmd)) {
+    }
+    CHECK_EXIT();
+}
