@@ -100,3 +100,23 @@ if "$B/glsc" -I "$t/lib.glsb" -I "$B/scenelib.glsb" -o "$t/once.glsb" "$t/Once.s
 else
     fail classes_library_kept "$(cat "$t/oerr")"
 fi
+
+# the scene library's classes: every part of a Sedan is a Car (its wheels
+# and body give none), a Stop sign's post is a Sign, a Van a Van
+printf 'push; trans(-2.5, 0, 14); rot(90, 0, 1, 0); call("road.vehicles.Sedan"); pop;\npush; trans(2, 0, 12); call("road.signs.Stop"); pop;\npush; trans(5, 0, 20); call("road.vehicles.Van"); pop;\n' \
+    >"$t/Lib.scene"
+sed 's/^T 0 0 0/T 0 -1.5 0/' "$t/cam.cam" >"$t/lib.cam"
+"$B/glsc" -I "$B/scenelib.glsb" -o "$t/lib2.glsb" "$t/Lib.scene" 2>"$t/err" &&
+    "$B/glsplay" "$t/lib2.glsb" --camera "$t/lib.cam" --outputs instance -o "$t/l" 2>>"$t/err" ||
+    fail classes_scenelib "$(cat "$t/err")"
+$PY - "$t/l/lib/instances_000000.json" <<'PYCHECK'
+import json, sys
+inst = json.load(open(sys.argv[1]))["instances"]
+want = {"road.vehicles.Sedan": "Car", "road.signs.Stop": "Sign", "road.vehicles.Van": "Van"}
+got = {}
+for i in inst:
+    top = i["path"].split(" > ")[1].split("#")[0]
+    got.setdefault(top, set()).add(i["class"])
+good = {k: {v} for k, v in want.items()} == got and len(inst) > 3
+print("ok classes_scenelib" if good else "FAIL classes_scenelib: %r" % got)
+PYCHECK
