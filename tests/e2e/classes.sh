@@ -79,13 +79,14 @@ result("classes_png", good and (ci[ii == 0] == 0).all(), "class ids do not follo
 coco = json.load(open(d + "/coco_000000.json"))
 cats = {c["id"]: c["name"] for c in coco["categories"]}
 cid = {a["id"]: a["category_id"] for a in coco["annotations"]}
-result("classes_coco", cats == table and all(cid[i["id"]] == i["class_id"] for i in inst), "%r %r" % (cats, cid))
+expect = {k + 1: n for k, n in enumerate(names)}
+result("classes_coco", cats == expect and all(cid[i["id"]] == i["class_id"] for i in inst), "%r %r" % (cats, cid))
 # KITTI labels: the type is the class; the JSON's boxes in the same order
 rows = [l.split()[0] for l in open(d + "/boxes_000000.txt")]
 bj = json.load(open(d + "/boxes_000000.json"))["boxes"]
 bycls = {i["id"]: i["class"] for i in inst}
 result("classes_kitti_type", len(rows) == len(bj) == len(inst) and
-       sorted(rows) == sorted(bycls.values()) and all(b["class"] == r for b, r in zip(bj, rows)),
+       sorted(rows) == sorted(bycls.values()) == sorted(want.values()) and all(b["class"] == r for b, r in zip(bj, rows)),
        "%r / %r" % (rows, [b["class"] for b in bj]))
 sys.exit(0)
 PYCHECK
