@@ -92,7 +92,8 @@ sys.exit(0)
 PYCHECK
 
 # a library keeps the classes: the same classes from the library bundle
-(cd "$t" && "$OLDPWD/$B/glsc" --lib . -I "$OLDPWD/$B/scenelib.glsb" -o "$t/lib.glsb") 2>"$t/lerr" ||
+BIN=$(cd "$B" && pwd)
+(cd "$t" && "$BIN/glsc" --lib . -I "$BIN/scenelib.glsb" -o "$t/lib.glsb") 2>"$t/lerr" ||
     fail classes_library "$(cat "$t/lerr")"
 printf 'call("cls.Car");\n' >"$t/Once.scene"
 if "$B/glsc" -I "$t/lib.glsb" -I "$B/scenelib.glsb" -o "$t/once.glsb" "$t/Once.scene" 2>"$t/oerr" &&
