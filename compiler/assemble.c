@@ -83,31 +83,34 @@ static int cmp_str(const void *a, const void *b)
 typedef const gls_ref *(*names_of)(const gls_unit *u, uint32_t *n);
 static const gls_ref *instnames_of(const gls_unit *u, uint32_t *n) { *n = u->ninstnames; return u->instnames; }
 static const gls_ref *marknames_of(const gls_unit *u, uint32_t *n) { *n = u->nmarknames; return u->marknames; }
+static const gls_ref *classnames_of(const gls_unit *u, uint32_t *n) { *n = u->nclassnames; return u->classnames; }
 
-/* A name table of the bundle (*out, *nout) from the units' names of one
- * kind (units[0..nu), get): sorted, each once (a library may name calls
- * alike in different objects, and objects place landmarks of one name;
- * in a scene instance names are unique, instnames.c).  0, or -1 when out
- * of memory. */
-static int add_names(char ***out, uint32_t *nout, gls_unit **units, uint32_t nu, names_of get)
+/* A name table of the bundle (*out, *nout) from the units' names of the
+ * kinds get[0..nget) (units[0..nu)): sorted, each once (a library may name
+ * calls alike in different objects, objects place landmarks of one name,
+ * and landmarks and classes share a table; in a scene instance names are
+ * unique, instnames.c).  0, or -1 when out of memory. */
+static int add_names(char ***out, uint32_t *nout, gls_unit **units, uint32_t nu, const names_of *get, int nget)
 {
     size_t total = 0;
     uint32_t n;
-    for (uint32_t i = 0; i < nu; i++) {
-        get(units[i], &n);
-        total += n;
-    }
+    for (uint32_t i = 0; i < nu; i++)
+        for (int g = 0; g < nget; g++) {
+            get[g](units[i], &n);
+            total += n;
+        }
     if (!total)
         return 0;
     char **names = malloc(total * sizeof *names);
     if (!names)
         return -1;
     size_t k = 0;
-    for (uint32_t i = 0; i < nu; i++) {
-        const gls_ref *refs = get(units[i], &n);
-        for (uint32_t j = 0; j < n; j++)
-            names[k++] = refs[j].name;
-    }
+    for (uint32_t i = 0; i < nu; i++)
+        for (int g = 0; g < nget; g++) {
+            const gls_ref *refs = get[g](units[i], &n);
+            for (uint32_t j = 0; j < n; j++)
+                names[k++] = refs[j].name;
+        }
     qsort(names, total, sizeof *names, cmp_str);
     *out = calloc(total, sizeof **out);
     if (!*out) {
@@ -188,8 +191,9 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
             goto oom;
         memcpy(b->textures[i].rgba, texs[i]->tex.rgba, (size_t)texs[i]->tex.width * texs[i]->tex.height * 4);
     }
-    if (add_names(&b->instnames, &b->ninstnames, units, nu, instnames_of) ||
-        add_names(&b->marknames, &b->nmarknames, units, nu, marknames_of))
+    static const names_of inst_kinds[] = {instnames_of}, mark_kinds[] = {marknames_of, classnames_of};
+    if (add_names(&b->instnames, &b->ninstnames, units, nu, inst_kinds, 1) ||
+        add_names(&b->marknames, &b->nmarknames, units, nu, mark_kinds, 2))
         goto oom;
     b->pos = malloc(npos * sizeof *b->pos + 1);
     b->col = malloc(ncol * sizeof *b->col + 1);
@@ -230,6 +234,7 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
                 case GLS_KIND_FIRST_TC: if (*v != GLS_NONE) *v += t0; break;
                 case GLS_KIND_INSTNAME: *v = find_name(b->instnames, b->ninstnames, u->instnames[*v].name); break;
                 case GLS_KIND_MARKNAME: *v = find_name(b->marknames, b->nmarknames, u->marknames[*v].name); break;
+                case GLS_KIND_CLASSNAME: *v = find_name(b->marknames, b->nmarknames, u->classnames[*v].name); break;
                 case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
                 case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
                     break; /* not an index */

@@ -73,6 +73,10 @@ static int import_operand(gls_unit *u, const gls_bundle *b, gls_insn *in, uint32
         nm = b->marknames[*v];
         *v = gls_unit_add_ref(&u->marknames, &u->nmarknames, &u->marknames_cap, nm, strlen(nm), loc);
         break;
+    case GLS_KIND_CLASSNAME: /* a class name of the same table */
+        nm = b->marknames[*v];
+        *v = gls_unit_add_ref(&u->classnames, &u->nclassnames, &u->classnames_cap, nm, strlen(nm), loc);
+        break;
     case GLS_KIND_FIRST_POS:
         *v = append(&u->pos, &u->npos, &u->pos_cap, b->pos + *v, s.n, sizeof *u->pos);
         break;

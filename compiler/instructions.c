@@ -352,6 +352,45 @@ static void h_mark(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     sema_emit(ctx, &in, name.line);
 }
 
+/* class("name"): the object's class, which ground truth gives its
+ * instances instead of its package (spec/language.md 7, spec/outputs.md).
+ * Names are those of landmarks (they share the bundle's MARK_NAMES).  An
+ * object has one class: a second `class` is an error with a note at the
+ * first, and one in a loop body meets itself on the second iteration. */
+static void h_class(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    gls_unit *u = ctx->u;
+    const char *s = a[0].s + 1;
+    size_t len = a[0].len - 2;
+    if (!gls_valid_mark_name(s, len)) {
+        ERR(ctx, a[0].line, a[0].col,
+            "%.*s is not a valid class name (1 to %u letters, digits, '_', '.' or '-', like \"Car\")",
+            (int)a[0].len, a[0].s, GLS_MAX_MARK_NAME_BYTES);
+        return;
+    }
+    if (u->nclassnames) {
+        gls_loc was = u->classnames[0].loc;
+        if (was.line == a[0].line && was.col == a[0].col) /* the same class, run again by a loop */
+            ERR(ctx, a[0].line, a[0].col,
+                "class is given on every iteration of this loop, but an object has one class (give it before "
+                "the loop)");
+        else {
+            ERR(ctx, a[0].line, a[0].col, "this object's class is given twice (an object has one class)");
+            gls_note_at(ctx->d, was, "its class is first given here, as \"%s\"", u->classnames[0].name);
+        }
+        return;
+    }
+    gls_insn in = {.op = GLS_OP_CLASS};
+    in.u[GLS_ARG_CLASS_NAME] = gls_unit_add_ref(&u->classnames, &u->nclassnames, &u->classnames_cap, s, len,
+                                                gls_tok_loc(ctx, a[0].line, a[0].col));
+    if (in.u[GLS_ARG_CLASS_NAME] == GLS_NONE) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return;
+    }
+    sema_emit(ctx, &in, name.line);
+}
+
 /* The instructions (sema.h says what each field means). */
 const sema_instr sema_instrs[] = {
     {"vert", 1, 4, "nnnn", WHERE_PRIM, h_vert},
@@ -369,5 +408,6 @@ const sema_instr sema_instrs[] = {
     {"pop", 0, 0, "", WHERE_OUTSIDE, h_pop},
     {"call", 1, 2, "ss", WHERE_OUTSIDE, h_call},
     {"mark", 4, 4, "snnn", WHERE_OUTSIDE, h_mark},
+    {"class", 1, 1, "s", WHERE_OUTSIDE, h_class},
 };
 const size_t sema_ninstrs = sizeof sema_instrs / sizeof sema_instrs[0];

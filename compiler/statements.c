@@ -9,7 +9,8 @@
 
 const char *const sema_words[] = {"vert",  "col", "tex",   "color",     "texmode", "texture", "notexture",
                                   "trans", "rot", "scale", "transform", "push",    "pop",     "call",    "mark",
-                                  "poly",  "qstrip", "tstrip", "tfan",  "const",   "param",   "repeat"};
+                                  "poly",  "qstrip", "tstrip", "tfan",  "const",   "param",   "repeat",
+                                  "class"};
 const size_t sema_nwords = sizeof sema_words / sizeof sema_words[0];
 
 /* Names people bring from OpenGL and other scene languages, for "did you
@@ -29,6 +30,7 @@ const gls_alias sema_aliases[] = {
     {"pushmatrix", "push"},     {"save", "push"},           {"popmatrix", "pop"},          {"restore", "pop"},
     {"multmatrix", "transform"}, {"matrix", "transform"},
     {"landmark", "mark"},       {"marker", "mark"},         {"keypoint", "mark"},
+    {"category", "class"},      {"classname", "class"},
     {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},
     {"define", "const"},        {"let", "const"},           {"var", "const"},
     {"for", "repeat"},          {"loop", "repeat"},         {"while", "repeat"},           {"times", "repeat"},

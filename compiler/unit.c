@@ -30,6 +30,9 @@ void gls_unit_free(gls_unit *u)
     for (uint32_t i = 0; i < u->nmarknames; i++)
         free(u->marknames[i].name);
     free(u->marknames);
+    for (uint32_t i = 0; i < u->nclassnames; i++)
+        free(u->classnames[i].name);
+    free(u->classnames);
     free(u->refs);
     free(u->texrefs);
     free(u->pos);

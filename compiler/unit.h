@@ -7,6 +7,7 @@
  *   FIRST_POS, FIRST_COL, FIRST_TC -> indices into the unit's vertex arrays
  *   INSTNAME (calln)             -> index into unit->instnames
  *   MARKNAME (mark)              -> index into unit->marknames
+ *   CLASSNAME (class)            -> index into unit->classnames
  */
 #ifndef GLS_UNIT_H
 #define GLS_UNIT_H
@@ -61,6 +62,10 @@ typedef struct gls_unit {
                                 is written, in MARK order; unique         */
     uint32_t nmarknames;
     size_t marknames_cap;
+    gls_ref *classnames;     /* the class the object's `class` gives, with
+                                where it is written: at most one          */
+    uint32_t nclassnames;
+    size_t classnames_cap;
     gls_vec4 *pos; uint32_t npos; size_t pos_cap;
     gls_rgba *col; uint32_t ncol; size_t col_cap;
     gls_st *tc;    uint32_t ntc;  size_t tc_cap;

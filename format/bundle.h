@@ -211,6 +211,10 @@ int gls_valid_instance_name(const char *s, size_t n);
  * [A-Za-z0-9_.-]? */
 int gls_valid_mark_name(const char *s, size_t n);
 
+/* The class object oi declares with `class` (its CLASS instruction's
+ * name), or NULL when it declares none.  b is validated. */
+const char *gls_object_class(const gls_bundle *b, uint32_t oi);
+
 /* Is s[0..n) a valid dotted name: identifiers ([A-Za-z_][A-Za-z0-9_]*)
  * joined by single dots, at most GLS_MAX_NAME_BYTES long? */
 int gls_valid_name(const char *s, size_t n);

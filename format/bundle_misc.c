@@ -32,6 +32,7 @@ static uint32_t operand_features(const gls_bundle *b, const gls_insn *in, uint32
     case GLS_KIND_OBJECT:
     case GLS_KIND_FIRST_POS:
     case GLS_KIND_INSTNAME:
+    case GLS_KIND_CLASSNAME: /* a class draws nothing: no feature */
     case GLS_KIND_COUNT:
         break;
     }

@@ -2,6 +2,7 @@
  * textures are printed in name order, references by name, and no index or
  * offset that would shift when an unrelated object changes is printed.
  * Numbers print in their shortest exact form, so they round-trip. */
+#include <stdlib.h>
 #include <zlib.h>
 #include "disasm.h"
 #include "numfmt.h"
@@ -90,6 +91,7 @@ static void print_insn(const gls_bundle *b, const gls_insn *in, FILE *out)
             fprintf(out, " \"%s\"", b->instnames[v]);
             break;
         case GLS_KIND_MARKNAME: /* quoted, as mark wrote it */
+        case GLS_KIND_CLASSNAME: /* likewise, as class wrote it */
             fprintf(out, " \"%s\"", b->marknames[v]);
             break;
         case GLS_KIND_PRIMKIND:  /* printed as the name */
@@ -120,16 +122,29 @@ void gls_disassemble(const gls_bundle *b, FILE *out, int with_source)
             b->ntemplates, b->npos);
     if (b->ninstnames) /* a line only where there are names: other dumps stay as they were */
         fprintf(out, "instance names: %u\n", b->ninstnames);
-    if (b->nmarknames) { /* likewise: marks (instructions) and their distinct names */
-        uint64_t nmarks = 0;
-        for (uint32_t i = 0; i < b->nobjects; i++) {
+    if (b->nmarknames) { /* likewise: marks (instructions) and their distinct names, */
+        uint64_t nmarks = 0;  /* and the objects given a class, and their classes      */
+        uint32_t nlandmarks = 0, nclassed = 0, nclasses = 0;
+        uint8_t *use = calloc(b->nmarknames, 1); /* per name: 1 mark, 2 class */
+        for (uint32_t i = 0; use && i < b->nobjects; i++) {
             size_t pos = 0;
             gls_insn in;
             while (pos < b->objects[i].code_len &&
-                   gls_insn_decode(b->objects[i].code, b->objects[i].code_len, &pos, &in) == 0)
+                   gls_insn_decode(b->objects[i].code, b->objects[i].code_len, &pos, &in) == 0) {
                 nmarks += in.op == GLS_OP_MARK;
+                nclassed += in.op == GLS_OP_CLASS;
+                uint32_t v = in.op == GLS_OP_MARK ? in.u[GLS_ARG_MARK_NAME] : in.u[GLS_ARG_CLASS_NAME];
+                if ((in.op == GLS_OP_MARK || in.op == GLS_OP_CLASS) && v < b->nmarknames)
+                    use[v] |= in.op == GLS_OP_MARK ? 1 : 2;
+            }
         }
-        fprintf(out, "marks: %llu, landmark names: %u\n", (unsigned long long)nmarks, b->nmarknames);
+        for (uint32_t i = 0; use && i < b->nmarknames; i++)
+            nlandmarks += use[i] & 1, nclasses += use[i] >> 1;
+        free(use);
+        if (nmarks)
+            fprintf(out, "marks: %llu, landmark names: %u\n", (unsigned long long)nmarks, nlandmarks);
+        if (nclassed)
+            fprintf(out, "classes: %u objects, %u classes\n", nclassed, nclasses);
     }
 
     for (uint32_t i = 0; i < b->ntextures; i++) {

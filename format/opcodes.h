@@ -37,6 +37,9 @@
  *   MARK       place the named landmark (MARK_NAMES) at M * (x, y, z, 1):
  *              draws nothing; a player reports where it is (glsplay
  *              --outputs landmarks, spec/outputs.md)
+ *   CLASS      the object's class (a name of MARK_NAMES), at most one per
+ *              object: draws nothing; ground truth names the object's
+ *              instances with it instead of its package (spec/outputs.md)
  *   PRIM       draw a primitive: kind (0 poly, 1 qstrip, 2 tstrip, 3 tfan),
  *              vertex count, first position, first colour (or NONE: use the
  *              current colour), first texcoord (or NONE: texcoord 0,0).
@@ -72,6 +75,7 @@
  *   INSTNAME   an instance name (INSTANCE_NAMES)
  *   MARKNAME   a landmark name (MARK_NAMES); one object places each name
  *              at most once
+ *   CLASSNAME  a class name, kept in the same table (MARK_NAMES)
  */
 #define GLS_OPERAND_KINDS(K)                                      \
     K(NUM,       F64, 0,              NULL,             NULL)     \
@@ -87,7 +91,8 @@
     K(FIRST_COL, U32, 0,              NULL,             NULL)     \
     K(FIRST_TC,  U32, 0,              NULL,             NULL)     \
     K(INSTNAME,  U32, 0,              NULL,             NULL)     \
-    K(MARKNAME,  U32, 0,              NULL,             NULL)
+    K(MARKNAME,  U32, 0,              NULL,             NULL)     \
+    K(CLASSNAME, U32, 0,              NULL,             NULL)
 
 /* How an instruction moves the walk of an object's code (validator):
  *   NEXT  on to the next instruction
@@ -120,7 +125,8 @@ typedef enum { GLS_FLOW_NEXT, GLS_FLOW_PUSH, GLS_FLOW_POP, GLS_FLOW_END } gls_fl
                                     O(FIRST_TC, PRIM_TC))                              \
     X(CALLN,     "calln",     NEXT, O(OBJECT, CALLN_OBJECT) O(INSTNAME, CALLN_NAME))   \
     X(MARK,      "mark",      NEXT, O(MARKNAME, MARK_NAME)                              \
-                                    O(NUM, MARK_X) O(NUM, MARK_Y) O(NUM, MARK_Z))
+                                    O(NUM, MARK_X) O(NUM, MARK_Y) O(NUM, MARK_Z))      \
+    X(CLASS,     "class",     NEXT, O(CLASSNAME, CLASS_NAME))
 
 typedef enum {
 #define GLS_X_ENUM(e, name, flow, operands) GLS_OP_##e,

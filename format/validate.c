@@ -249,6 +249,10 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
         if (v >= b->nmarknames)
             FAIL("object %s, instruction %u (%s): landmark name %u >= %u names", o->name, k, nm, v, b->nmarknames);
         break;
+    case GLS_KIND_CLASSNAME: /* class names share the landmarks' table */
+        if (v >= b->nmarknames)
+            FAIL("object %s, instruction %u (%s): class name %u >= %u names", o->name, k, nm, v, b->nmarknames);
+        break;
     case GLS_KIND_NVERT: {
         int pk = gls_op_find(in->op, GLS_KIND_PRIMKIND);
         gls_primkind kind = (gls_primkind)in->u[pk];

@@ -1,8 +1,9 @@
-/* Landmark names (spec/bundle.md 7.9, 12.2): the MARK_NAMES table and the
- * `mark` instructions that use it.  A landmark is looked up by its name
- * within its object's instance, so one object places a name at most once;
- * the table lists each name once, in order, and only names some mark
- * places (one encoding per content). */
+/* Landmark and class names (spec/bundle.md 7.9, 12.2): the MARK_NAMES
+ * table and the `mark` and `class` instructions that use it.  A landmark
+ * is looked up by its name within its object's instance, so one object
+ * places a name at most once; an object has at most one class.  The table
+ * lists each name once, in order, and only names some mark or class uses
+ * (one encoding per content). */
 #include <stdlib.h>
 #include <string.h>
 #include "bundle.h"
@@ -26,8 +27,19 @@ int gls_valid_mark_name(const char *s, size_t n)
     return 1;
 }
 
+const char *gls_object_class(const gls_bundle *b, uint32_t oi)
+{
+    const gls_object *o = &b->objects[oi];
+    size_t pos = 0;
+    gls_insn in;
+    while (pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0)
+        if (in.op == GLS_OP_CLASS && in.u[GLS_ARG_CLASS_NAME] < b->nmarknames)
+            return b->marknames[in.u[GLS_ARG_CLASS_NAME]];
+    return NULL;
+}
+
 /* Runs after every object's code has been checked (check_code): the
- * MARKNAME operands are in range. */
+ * MARKNAME and CLASSNAME operands are in range. */
 int gls_check_mark_names(const gls_bundle *b, gls_error *err)
 {
     uint32_t *last = NULL; /* per name: 1 + the object that placed it last */
@@ -47,9 +59,17 @@ int gls_check_mark_names(const gls_bundle *b, gls_error *err)
         FAIL("out of memory");
     for (uint32_t oi = 0; oi < b->nobjects; oi++) {
         const gls_object *o = &b->objects[oi];
+        uint32_t nclass = 0;
         size_t pos = 0;
         gls_insn in;
         for (uint32_t k = 0; pos < o->code_len && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0; k++) {
+            if (in.op == GLS_OP_CLASS) {
+                if (nclass++)
+                    FAIL("object %s, instruction %u (class): the object has a second class %s", o->name, k,
+                         b->marknames[in.u[GLS_ARG_CLASS_NAME]]);
+                used[in.u[GLS_ARG_CLASS_NAME]] = 1;
+                continue;
+            }
             int arg = gls_op_find(in.op, GLS_KIND_MARKNAME);
             if (arg < 0)
                 continue;
@@ -63,7 +83,7 @@ int gls_check_mark_names(const gls_bundle *b, gls_error *err)
     }
     for (uint32_t i = 0; i < b->nmarknames; i++)
         if (!used[i])
-            FAIL("landmark name %s: no mark places it", b->marknames[i]);
+            FAIL("landmark name %s: no mark or class uses it", b->marknames[i]);
     free(last), free(used);
     return 0;
 fail:

@@ -1,10 +1,11 @@
 /* The instance and class ids of a run (gt_table.h). */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "buf.h"
 #include "gt_table.h"
 
-void gls_gt_class_of(const char *object, char *buf, size_t len)
+void gls_gt_package_of(const char *object, char *buf, size_t len)
 {
     /* a specialised object's name ends in its values, "pkg.Sign(h=1.5)":
      * the package is what comes before the last dot of the name itself */
@@ -20,6 +21,18 @@ void gls_gt_class_of(const char *object, char *buf, size_t len)
         n = len - 1;
     memcpy(buf, object, n);
     buf[n] = 0;
+}
+
+void gls_gt_class_of(const gls_scene *s, uint32_t i, const char *const *names, const char *const *declared,
+                     char *buf, size_t len)
+{
+    for (uint32_t j = i; j != GLS_NONE; j = s->inst[j].parent)
+        if (declared[s->inst[j].object]) {
+            if (len)
+                snprintf(buf, len, "%s", declared[s->inst[j].object]);
+            return;
+        }
+    gls_gt_package_of(names[s->inst[i].object], buf, len);
 }
 
 /* Instances sorted by (parent, object, index): the k of OBJECT#k. */
@@ -86,9 +99,14 @@ int gls_gt_table_build(gls_gt_table *t, const gls_bundle *b, const gls_scene *s,
     uint32_t *k = calloc(s->ninst ? s->ninst : 1, sizeof *k);
     call_key *keys = malloc((s->ninst ? s->ninst : 1) * sizeof *keys);
     char **cls = calloc(m, sizeof *cls); /* per id - 1, before numbering */
+    const char **names = calloc(b->nobjects ? b->nobjects : 1, sizeof *names);
+    const char **declared = calloc(b->nobjects ? b->nobjects : 1, sizeof *declared);
     int rc = -1;
-    if (!t->id || !t->path || !t->name || !t->object || !t->class_id || !t->classes || !k || !keys || !cls)
+    if (!t->id || !t->path || !t->name || !t->object || !t->class_id || !t->classes || !k || !keys || !cls ||
+        !names || !declared)
         goto out;
+    for (uint32_t oi = 0; oi < b->nobjects; oi++)
+        names[oi] = b->objects[oi].name, declared[oi] = gls_object_class(b, oi);
     for (uint32_t i = 0; i < s->ninst; i++)
         keys[i] = (call_key){s->inst[i].parent, s->inst[i].object, i};
     qsort(keys, s->ninst, sizeof *keys, key_cmp);
@@ -103,7 +121,7 @@ int gls_gt_table_build(gls_gt_table *t, const gls_bundle *b, const gls_scene *s,
         t->id[i] = (uint16_t)++id;
         const char *obj = b->objects[s->inst[i].object].name;
         char c[256];
-        gls_gt_class_of(obj, c, sizeof c);
+        gls_gt_class_of(s, i, names, declared, c, sizeof c);
         t->path[id - 1] = call_path(b, s, k, i);
         t->object[id - 1] = strdup(obj);
         cls[id - 1] = strdup(c);
@@ -142,6 +160,8 @@ out:
     free(cls);
     free(keys);
     free(k);
+    free(names);
+    free(declared);
     return rc;
 }
 

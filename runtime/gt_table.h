@@ -35,12 +35,21 @@ typedef struct {
     uint32_t nclasses;
 } gls_gt_table;
 
-/* The class of an object: its package, the name up to its last '.'
- * (road.vegetation for road.vegetation.Birch), or the name itself when it
- * has none.  The one place a class is decided, so that a `class`
- * statement can later override it.  Writes at most len bytes (with the
- * NUL). */
-void gls_gt_class_of(const char *object, char *buf, size_t len);
+/* The package of an object name: the name up to its last '.'
+ * (road.vegetation for road.vegetation.Birch; a specialised object's
+ * values are not part of it), or the name itself when it has none.
+ * Writes at most len bytes (with the NUL). */
+void gls_gt_package_of(const char *object, char *buf, size_t len);
+
+/* The class of scene instance i: the one its object's `class` gives (a
+ * specialised object's is its template's: the same code), else the one
+ * of its nearest caller whose object gives one (the parts a `Car` calls
+ * are the car's), else its object's package.  names[oi], declared[oi]:
+ * bundle object oi's name and the class it gives or NULL (arrays, so
+ * that it works once the bundle is freed).  The one place a class is
+ * decided.  Writes at most len bytes (with the NUL). */
+void gls_gt_class_of(const gls_scene *s, uint32_t i, const char *const *names, const char *const *declared,
+                     char *buf, size_t len);
 
 /* Number the scene's instances (b: the bundle s was built from).  0; 1
  * when more than GLS_GT_MAX_IDS instances draw something (*count says how

@@ -11,22 +11,32 @@ int gls_box_names_init(gls_box_names *nm, const gls_bundle *b, const gls_scene *
     nm->scene = s;
     nm->nobjects = b->nobjects;
     nm->objects = calloc(b->nobjects ? b->nobjects : 1, sizeof *nm->objects);
-    if (!nm->objects)
+    nm->declared = calloc(b->nobjects ? b->nobjects : 1, sizeof *nm->declared);
+    if (!nm->objects || !nm->declared) {
+        gls_box_names_free(nm);
         return -1;
-    for (uint32_t i = 0; i < b->nobjects; i++)
-        if (!(nm->objects[i] = strdup(b->objects[i].name))) {
+    }
+    for (uint32_t i = 0; i < b->nobjects; i++) {
+        const char *c = gls_object_class(b, i);
+        if (!(nm->objects[i] = strdup(b->objects[i].name)) || (c && !(nm->declared[i] = strdup(c)))) {
             gls_box_names_free(nm);
             return -1;
         }
+    }
     return 0;
 }
 
 void gls_box_names_free(gls_box_names *nm)
 {
-    for (uint32_t i = 0; nm->objects && i < nm->nobjects; i++)
-        free(nm->objects[i]);
+    for (uint32_t i = 0; i < nm->nobjects; i++) {
+        if (nm->objects)
+            free(nm->objects[i]);
+        if (nm->declared)
+            free(nm->declared[i]);
+    }
     free(nm->objects);
-    nm->objects = NULL;
+    free(nm->declared);
+    nm->objects = nm->declared = NULL;
 }
 
 static const char *object_of(const gls_box_names *nm, uint32_t i)
@@ -36,7 +46,7 @@ static const char *object_of(const gls_box_names *nm, uint32_t i)
 
 void gls_box_class(const gls_box_names *nm, uint32_t i, char *buf, size_t len)
 {
-    gls_gt_class_of(object_of(nm, i), buf, len);
+    gls_gt_class_of(nm->scene, i, (const char *const *)nm->objects, (const char *const *)nm->declared, buf, len);
 }
 
 /* The instance's name, or its nearest named ancestor's; NULL if none. */

@@ -16,6 +16,7 @@
 typedef struct {
     const gls_scene *scene;
     char **objects;   /* by bundle object index */
+    char **declared;  /* likewise: the class each gives, or NULL      */
     uint32_t nobjects;
 } gls_box_names;
 
@@ -23,9 +24,9 @@ typedef struct {
 int gls_box_names_init(gls_box_names *nm, const gls_bundle *b, const gls_scene *s);
 void gls_box_names_free(gls_box_names *nm);
 
-/* The class of instance i: its object's package (the dotted name without
- * its parameter values and its last component; "objects" for
- * "objects.Box(red=1)"), or the whole name when it has no package. */
+/* The class of instance i (gls_gt_class_of): the one its object's or its
+ * nearest caller's `class` gives, else its object's package ("objects"
+ * for "objects.Box(red=1)"). */
 void gls_box_class(const gls_box_names *nm, uint32_t i, char *buf, size_t len);
 
 /* One KITTI label line a box: type truncated occluded alpha left top right

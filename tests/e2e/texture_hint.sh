@@ -9,7 +9,7 @@ trap 'rm -rf "$t"' EXIT
 [ -x "$B/glsc" ] && [ -f "$B/textures/road/vegetation/tex/Birch.tga" ] || { echo "FAIL texture_hint: no $B/glsc or textures"; exit 0; }
 "$B/glsc" -I scenelib -o "$t/box.glsb" scenelib/road/vegetation/Birch.scene 2>"$t/err"
 rc=$?
-want="scenelib/road/vegetation/Birch.scene:17:10: error: unknown texture 'road.vegetation.tex.Birch' (searched: scenelib; extensions .tga .png .jpg .jpeg .bmp); the build generates it in $B/textures: add -I $B/textures"
+want="scenelib/road/vegetation/Birch.scene:18:10: error: unknown texture 'road.vegetation.tex.Birch' (searched: scenelib; extensions .tga .png .jpg .jpeg .bmp); the build generates it in $B/textures: add -I $B/textures"
 if [ $rc -eq 1 ] && [ "$(head -1 "$t/err")" = "$want" ] && [ "$(wc -l <"$t/err")" -eq 3 ]; then
     echo "ok texture_hint_scenelib"
 else

@@ -437,7 +437,8 @@ static void test_opcode_table(void)
         [GLS_OP_END] = 1,   [GLS_OP_COLOR] = 33, [GLS_OP_TEXMODE] = 2,    [GLS_OP_TEXTURE] = 5,
         [GLS_OP_NOTEXTURE] = 1, [GLS_OP_TRANS] = 25, [GLS_OP_ROT] = 33,   [GLS_OP_SCALE] = 25,
         [GLS_OP_TRANSFORM] = 129, [GLS_OP_PUSH] = 1, [GLS_OP_POP] = 1,    [GLS_OP_CALL] = 5,
-        [GLS_OP_PRIM] = 18, [GLS_OP_CALLN] = 9, [GLS_OP_MARK] = 29};
+        [GLS_OP_PRIM] = 18, [GLS_OP_CALLN] = 9, [GLS_OP_MARK] = 29,
+        [GLS_OP_CLASS] = 5};
     for (int op = 0; op < GLS_OP_COUNT; op++) {
         gls_buf code = {0};
         gls_insn in = {.op = (gls_opcode)op};
@@ -691,12 +692,54 @@ static void test_mark_names(void)
     expect_message(make_marked_bundle(two, 2, again, 3),
                    "object a.Tri, instruction 2 (mark): landmark post.top is placed twice in the object");
     /* every name is placed by some mark */
-    expect_message(make_marked_bundle(two, 2, first, 1), "landmark name post.top: no mark places it");
+    expect_message(make_marked_bundle(two, 2, first, 1), "landmark name post.top: no mark or class uses it");
     /* the operand: an index into the table */
     expect_code_message(&(gls_insn){.op = GLS_OP_MARK, .u = {0}}, 1,
                         "object a.Tri, instruction 0 (mark): landmark name 0 >= 0 names");
     expect_code_message(&(gls_insn){.op = GLS_OP_MARK, .u = {0}, .d = {0, 1, NAN, 3}}, 1,
                         "object a.Tri, instruction 0 (mark): operand 3 is not finite");
+}
+
+/* CLASS (spec/bundle.md 7.9, 9.1, 12): a class name lives in MARK_NAMES
+ * with the landmark names; a round trip; gls_object_class; an object has
+ * at most one; the table's rules cover class names; the operand is an
+ * index into the table. */
+static void test_class_names(void)
+{
+    static const char *const names[] = {"Car", "post.top"};
+    gls_bundle *b = make_marked_bundle(names, 2, (const uint32_t[]){1}, 1);
+    set_code(b, 1, (gls_insn[]){{.op = GLS_OP_CLASS, .u = {0}}, {.op = GLS_OP_MARK, .u = {1}, .d = {0, 1, 2, 3}}}, 2);
+    gls_error err = {{0}, 0};
+    CHECK_MSG(gls_bundle_validate(b, &err) == 0, "%s", err.msg);
+    CHECK(gls_object_class(b, 0) == NULL && gls_object_class(b, 1) && strcmp(gls_object_class(b, 1), "Car") == 0);
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_REQUIRED + 1);
+    gls_bundle *r = data ? gls_bundle_read(data, len, &err) : NULL;
+    CHECK_MSG(r != NULL, "%s", err.msg);
+    if (r) {
+        CHECK(r->nmarknames == 2 && gls_object_class(r, 1) && strcmp(gls_object_class(r, 1), "Car") == 0);
+        CHECK(gls_bundle_validate(r, &err) == 0);
+    }
+    gls_bundle_free(r);
+    free(data);
+    gls_bundle_free(b);
+
+    /* a second class in one object */
+    b = make_marked_bundle(names, 2, NULL, 0);
+    set_code(b, 1, (gls_insn[]){{.op = GLS_OP_CLASS, .u = {0}}, {.op = GLS_OP_CLASS, .u = {1}}}, 2);
+    expect_message(b, "object a.Tri, instruction 1 (class): the object has a second class post.top");
+    /* a malformed class name, an unused one */
+    static const char *const bad[] = {"Person sitting"};
+    b = make_marked_bundle(bad, 1, NULL, 0);
+    set_code(b, 1, (gls_insn[]){{.op = GLS_OP_CLASS, .u = {0}}}, 1);
+    expect_message(b, "landmark name 0 is not a valid name ([A-Za-z0-9_.-], 1 to 64 bytes)");
+    b = make_marked_bundle(names, 2, NULL, 0);
+    set_code(b, 1, (gls_insn[]){{.op = GLS_OP_CLASS, .u = {0}}}, 1);
+    expect_message(b, "landmark name post.top: no mark or class uses it");
+    /* the operand: an index into the table */
+    expect_code_message(&(gls_insn){.op = GLS_OP_CLASS, .u = {0}}, 1,
+                        "object a.Tri, instruction 0 (class): class name 0 >= 0 names");
 }
 
 int main(void)
@@ -714,5 +757,6 @@ int main(void)
     RUN(test_expansion_bomb_refused);
     RUN(test_instance_names);
     RUN(test_mark_names);
+    RUN(test_class_names);
     CHECK_EXIT();
 }

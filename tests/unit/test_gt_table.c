@@ -17,16 +17,16 @@ static void tri(tb *t)
 static void test_class_of(void)
 {
     char c[64];
-    gls_gt_class_of("road.vegetation.Birch", c, sizeof c);
+    gls_gt_package_of("road.vegetation.Birch", c, sizeof c);
     CHECK(strcmp(c, "road.vegetation") == 0);
-    gls_gt_class_of("Wall", c, sizeof c);
+    gls_gt_package_of("Wall", c, sizeof c);
     CHECK(strcmp(c, "Wall") == 0);
-    gls_gt_class_of("a.B", c, 2); /* cut to the buffer */
+    gls_gt_package_of("a.B", c, 2); /* cut to the buffer */
     CHECK(strcmp(c, "a") == 0);
     /* a specialised object: its values' dots are not package dots */
-    gls_gt_class_of("road.signs.Sign(h=1.5,w=0.75)", c, sizeof c);
+    gls_gt_package_of("road.signs.Sign(h=1.5,w=0.75)", c, sizeof c);
     CHECK(strcmp(c, "road.signs") == 0);
-    gls_gt_class_of("Sign(h=1.5)", c, sizeof c);
+    gls_gt_package_of("Sign(h=1.5)", c, sizeof c);
     CHECK(strcmp(c, "Sign") == 0);
 }
 
