@@ -2,8 +2,10 @@
  * linear intensity -> vignetting -> gain -> shot noise -> read noise ->
  * clip -> quantise -> Bayer mosaic. */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "sensor.h"
 #include "sensor_rng.h"
 
@@ -41,40 +43,105 @@ uint64_t gls_sensor_camera_key(const char *name)
  * so switching one on does not change the other's numbers. */
 enum { STREAM_SHOT = 1, STREAM_READ = 2 };
 
+/* One band of rows, [y0, y1), of gls_sensor_apply's image. */
+typedef struct {
+    const gls_sensor *s;
+    float *rgb;
+    uint32_t w, y0, y1;
+    double cx, cy, fx;
+    void (*ray)(void *ctx, double u, double v, double *x, double *y);
+    void *ctx;
+    uint64_t kshot, kread;
+} band;
+
+static void *apply_band(void *arg)
+{
+    const band *b = arg;
+    const gls_sensor *s = b->s;
+    int shot = (s->on & GLS_SENSOR_SHOT) != 0, rd = (s->on & GLS_SENSOR_READ) != 0;
+    double g = s->gain, K = s->shot_k, sigma = s->read_sigma;
+    gls_poisson pois[3]; /* per channel: the last mean's constants */
+    for (int c = 0; c < 3; c++)
+        gls_poisson_setup(&pois[c], 0);
+    for (uint32_t v = b->y0; v < b->y1; v++)
+        for (uint32_t u = 0; u < b->w; u++) {
+            size_t i = (size_t)v * b->w + u;
+            double f = 1;
+            if (s->vignetting) {
+                double x = 0, y = 0;
+                if (s->vignetting == GLS_VIGNETTING_COS4)
+                    b->ray(b->ctx, u, v, &x, &y);
+                f = gls_sensor_vignetting(s, u, v, b->cx, b->cy, b->fx, x, y);
+            }
+            float *px = b->rgb + 3 * i;
+            for (int c = 0; c < 3; c++) {
+                double J = px[c] * f;
+                if (shot) {
+                    /* the photons collected, before the gain amplifies
+                     * them: variance G^2 J / K after the gain */
+                    gls_rng r = gls_rng_stream(gls_rng_key(b->kshot, 3 * (uint64_t)i + (uint64_t)c));
+                    if (K * J != pois[c].lambda)
+                        gls_poisson_setup(&pois[c], K * J);
+                    J = gls_rng_poisson(&r, &pois[c]) / K;
+                }
+                J *= g;
+                if (rd) {
+                    gls_rng r = gls_rng_stream(gls_rng_key(b->kread, 3 * (uint64_t)i + (uint64_t)c));
+                    J += sigma * gls_rng_normal(&r);
+                }
+                px[c] = (float)(J < 0 ? 0 : J > 1 ? 1 : J);
+            }
+        }
+    return NULL;
+}
+
+/* Bands of at least this many pixels each, at most MAX_THREADS of them. */
+#define BAND_PIXELS 65536
+#define MAX_THREADS 16
+
 void gls_sensor_apply(const gls_sensor *s, float *rgb, uint32_t w, uint32_t h, double cx, double cy, double fx,
                       void (*ray)(void *ctx, double u, double v, double *x, double *y), void *ctx,
                       uint64_t camera, uint32_t frame)
 {
     uint64_t key = gls_rng_key(gls_rng_key(gls_rng_key(0, s->seed), camera), frame);
-    uint64_t kshot = gls_rng_key(key, STREAM_SHOT), kread = gls_rng_key(key, STREAM_READ);
-    int shot = (s->on & GLS_SENSOR_SHOT) != 0, rd = (s->on & GLS_SENSOR_READ) != 0;
-    double g = s->gain, K = s->shot_k, sigma = s->read_sigma;
-    for (uint32_t v = 0; v < h; v++)
-        for (uint32_t u = 0; u < w; u++) {
-            size_t i = (size_t)v * w + u;
-            double f = 1;
-            if (s->vignetting) {
-                double x = 0, y = 0;
-                if (s->vignetting == GLS_VIGNETTING_COS4)
-                    ray(ctx, u, v, &x, &y);
-                f = gls_sensor_vignetting(s, u, v, cx, cy, fx, x, y);
-            }
-            for (int c = 0; c < 3; c++) {
-                double J = rgb[3 * i + c] * f;
-                if (shot) {
-                    /* the photons collected, before the gain amplifies
-                     * them: variance G^2 J / K after the gain */
-                    gls_rng r = gls_rng_stream(gls_rng_key(kshot, 3 * (uint64_t)i + (uint64_t)c));
-                    J = gls_rng_poisson(&r, K * J) / K;
-                }
-                J *= g;
-                if (rd) {
-                    gls_rng r = gls_rng_stream(gls_rng_key(kread, 3 * (uint64_t)i + (uint64_t)c));
-                    J += sigma * gls_rng_normal(&r);
-                }
-                rgb[3 * i + c] = (float)(J < 0 ? 0 : J > 1 ? 1 : J);
-            }
-        }
+    band proto = {s, rgb, w, 0, h, cx, cy, fx, ray, ctx, gls_rng_key(key, STREAM_SHOT), gls_rng_key(key, STREAM_READ)};
+    /* Each pixel's noise is keyed by the pixel, so the bands may run on
+     * threads in any order and give the same numbers. */
+    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    uint64_t n = (uint64_t)w * h, nb = n / BAND_PIXELS;
+    if (nb > (uint64_t)(cpus > 0 ? cpus : 1))
+        nb = (uint64_t)(cpus > 0 ? cpus : 1);
+    /* GLS_SENSOR_THREADS=N sets the number of bands (tests: the same
+     * image whatever it is) */
+    const char *env = getenv("GLS_SENSOR_THREADS");
+    if (env && atoi(env) > 0)
+        nb = (uint64_t)atoi(env);
+    if (nb > MAX_THREADS)
+        nb = MAX_THREADS;
+    if (nb > h)
+        nb = h;
+    if (nb <= 1) {
+        apply_band(&proto);
+        return;
+    }
+    band bands[MAX_THREADS];
+    pthread_t th[MAX_THREADS];
+    int started[MAX_THREADS] = {0};
+    for (uint64_t k = 0; k < nb; k++) {
+        bands[k] = proto;
+        bands[k].y0 = (uint32_t)(h * k / nb);
+        bands[k].y1 = (uint32_t)(h * (k + 1) / nb);
+        /* the first band on this thread; the others on their own, or here
+         * when a thread cannot be had */
+        if (k > 0)
+            started[k] = pthread_create(&th[k], NULL, apply_band, &bands[k]) == 0;
+    }
+    for (uint64_t k = 0; k < nb; k++)
+        if (k == 0 || !started[k])
+            apply_band(&bands[k]);
+    for (uint64_t k = 1; k < nb; k++)
+        if (started[k])
+            pthread_join(th[k], NULL);
 }
 
 int gls_sensor_bayer_channel(const char *pattern, uint32_t x, uint32_t y)

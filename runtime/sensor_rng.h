@@ -38,8 +38,14 @@ double gls_rng_normal(gls_rng *r);
 
 /* Poisson with mean lambda >= 0, exact: the multiplication method
  * (Knuth) below mean 10, Hormann's transformed rejection with squeeze
- * (PTRS, 1993) from 10 up, as NumPy's generator does; a finite number of
- * draws each. */
-double gls_rng_poisson(gls_rng *r, double lambda);
+ * (PTRS, 1993) from 10 up, as NumPy's generator does.  The constants of a
+ * mean are set up once (gls_poisson_setup) and kept while the mean
+ * repeats, as it does over a surface of one colour. */
+typedef struct {
+    double lambda, limit;                            /* limit: exp(-lambda), below 10 */
+    double slam, loglam, a, b, invalpha, vr, lgia;   /* PTRS                          */
+} gls_poisson;
+void gls_poisson_setup(gls_poisson *p, double lambda);
+double gls_rng_poisson(gls_rng *r, const gls_poisson *p);
 
 #endif
