@@ -94,7 +94,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed
 
-.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode units programs spec-road-keys
+.PHONY: gl-backend-check all deps test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-effects units programs spec-road-keys
 all: $(TOOLS) $(SCENELIB)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -317,6 +317,11 @@ bench-encode: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench $(B)/bench/png_bench
 # pixel; writes docs/backends.txt.
 bench-backends: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/backends.sh $(B)
+
+# bench-effects: the effects' cost, and none when unused, against the build
+# before issue 16 (bench/effects.sh, docs/effects.txt).
+bench-effects: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
+	@sh bench/effects.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
