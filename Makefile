@@ -251,8 +251,8 @@ demo-render: all out/demo/.stamp demo-examples
 DEMO_SRC := $(shell find examples/demo -name '*.scene' 2>/dev/null)
 $(B)/demo.glsb: $(B)/glsc $(B)/textures.stamp $(DEMO_SRC)
 	$(B)/glsc -I examples/demo -I $(B)/textures -o $@ examples/demo/Demo.scene
-out/demo/.stamp: $(B)/demo.glsb $(B)/glsplay $(B)/depth2png examples/demo/left.cam examples/demo/right.cam
-	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
+out/demo/.stamp: $(B)/demo.glsb $(B)/glsplay $(B)/depth2png examples/demo/left.cam examples/demo/right.cam examples/demo/left_sensor.cam
+	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --camera examples/demo/left_sensor.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
 	$(B)/depth2png out/demo/left/depth_000000.pfm out/demo/left/depth_000000_view.png
 	@touch $@
 
@@ -277,6 +277,7 @@ gallery: demo
 	cp out/demo/left/image_000000.png docs/demo_left.png
 	cp out/demo/right/image_000000.png docs/demo_right.png
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
+	cp out/demo/left_sensor/image_000000.png docs/demo_left_sensor.png
 	cp out/gallery/ex_*.png docs/
 
 bench-compile: $(B)/glsc

@@ -293,6 +293,22 @@ m = cv2.imread(dd + '/image_000000.png', cv2.IMREAD_UNCHANGED)
 result('sensor_bayer_png16_is_16bit', m is not None and m.dtype == np.uint16 and m.ndim == 2,
        'not a one-channel 16-bit PNG')
 
+# OpenCV demosaics the mosaics by its own names for them (it names a
+# pattern by the second row's second and third pixels): over the flat wall
+# every demosaiced pixel away from the border is the wall's colour
+CV = {'RGGB': cv2.COLOR_BayerBG2BGR, 'BGGR': cv2.COLOR_BayerRG2BGR, 'GRBG': cv2.COLOR_BayerGB2BGR,
+      'GBRG': cv2.COLOR_BayerGR2BGR}
+why = []
+for pat, code in CV.items():
+    dd = render(D + '/wall.glsb', camera(D + '/cv/%s/cam.cam' % pat, 'bayer %s\n' % pat), D + '/cv_' + pat,
+                '--outputs', 'image')
+    m = cv2.imread(dd + '/image_000000.png', cv2.IMREAD_UNCHANGED)
+    bgr = cv2.cvtColor(m, code)[2:-2, 2:-2].reshape(-1, 3)
+    want = np.round(255 * I[::-1])
+    if not (bgr == want).all():
+        why.append('%s: demosaiced %s, the wall is %s' % (pat, bgr[0], want))
+result('sensor_bayer_opencv_demosaic', not why, '; '.join(why))
+
 # ---- ground truth is untouched ------------------------------------------
 GT = 'depth,points,edges,normals,instance,class,depth16'
 allfx = 'vignetting cos4\ngain 1.7\nshot_noise 50\nread_noise 0.05\nnoise_seed 1\nbayer GRBG\n'
