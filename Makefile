@@ -101,7 +101,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
-.PHONY: gallery-truth gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion
+.PHONY: gallery-truth gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
 all: $(TOOLS) $(SCENELIB) $(GLSCENE_LIBS)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -304,8 +304,8 @@ demo-render: all out/demo/.stamp demo-examples
 DEMO_SRC := $(shell find examples/demo -name '*.scene' 2>/dev/null)
 $(B)/demo.glsb: $(B)/glsc $(B)/textures.stamp $(DEMO_SRC)
 	$(B)/glsc -I examples/demo -I $(B)/textures -o $@ examples/demo/Demo.scene
-out/demo/.stamp: $(B)/demo.glsb $(B)/glsplay $(B)/depth2png examples/demo/left.cam examples/demo/right.cam
-	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
+out/demo/.stamp: $(B)/demo.glsb $(B)/glsplay $(B)/depth2png examples/demo/left.cam examples/demo/right.cam examples/demo/left_sensor.cam
+	$(B)/glsplay $(B)/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --camera examples/demo/left_sensor.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
 	$(B)/depth2png out/demo/left/depth_000000.pfm out/demo/left/depth_000000_view.png
 	@touch $@
 
@@ -330,6 +330,7 @@ gallery: demo
 	cp out/demo/left/image_000000.png docs/demo_left.png
 	cp out/demo/right/image_000000.png docs/demo_right.png
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
+	cp out/demo/left_sensor/image_000000.png docs/demo_left_sensor.png
 	cp out/gallery/ex_*.png docs/
 
 # make install PREFIX=/usr/local DESTDIR=: the tools into PREFIX/bin, the
@@ -422,6 +423,10 @@ bench-scaling: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 # a glsplay from before the lens adds its pinhole time).
 bench-distortion: $(TOOLS) $(SCENELIB)
 	@sh bench/distortion.sh $(B)
+# bench-effects: the effects' cost, and none when unused, against the build
+# before issue 16 (bench/effects.sh, docs/effects.txt).
+bench-effects: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
+	@sh bench/effects.sh $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.

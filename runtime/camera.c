@@ -13,6 +13,7 @@
 #include "distort.h"
 #include "numfmt.h"
 #include "rotation.h"
+#include "sensor_keys.h"
 #include "srcline.h"
 #include "suggest.h"
 #include "textfile.h"
@@ -48,7 +49,8 @@ static int given_already(int k, const unsigned *seen)
 
 static const char *suggest(const char *word)
 {
-    return gls_suggest(word, strlen(word), key_name, K_COUNT);
+    const char *s = gls_suggest(word, strlen(word), key_name, K_COUNT);
+    return s ? s : gls_suggest(word, strlen(word), gls_sensor_key_names, GLS_SENSOR_NKEYS);
 }
 
 int gls_camera_depth_range(double near, double far, double *near_min, double *near_max)
@@ -80,6 +82,8 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         return gls_camera_parse_opencv(text, len, fname, use, notes, cam, err, errlen);
     static gls_camera_keys zero;
     gls_camera_keys keys = zero;
+    gls_sensor_keys sensor; /* the sensor's keys, read apart (sensor_keys.h) */
+    gls_sensor_keys_init(&sensor);
     double (*val)[9] = keys.val;
     unsigned *seen = keys.seen; /* line where each key was given, 0 = absent */
     unsigned *vcol = keys.vcol; /* column of its first value              */
@@ -111,6 +115,13 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
         for (k = 0; k < K_COUNT; k++)
             if (strcmp(tok[0], key_name[k]) == 0)
                 break;
+        int sk = k == K_COUNT ? gls_sensor_key(tok[0]) : -1;
+        if (sk >= 0) {
+            if (gls_sensor_key_parse(&sensor, sk, tok, nt, nt > MAX_TOKENS, buf, line, text, len, fname, err, errlen))
+                return -1;
+            last = line;
+            continue;
+        }
         if (k == K_COUNT) {
             const char *s = suggest(tok[0]);
             if (s)
@@ -118,7 +129,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
             else
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
                      "unknown key '%s' (keys: width height fx fy cx cy skew K R rvec T near far pose distortion "
-                     "fisheye)", tok[0]);
+                     "fisheye gain read_noise shot_noise noise_seed vignetting bayer)", tok[0]);
             return -1;
         }
         if (seen[k]) {
@@ -205,7 +216,10 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
             return -1;
         }
     }
-    return gls_camera_from_keys(&keys, key_name, text, len, fname, use, notes, cam, err, errlen);
+    if (gls_camera_from_keys(&keys, key_name, text, len, fname, use, notes, cam, err, errlen))
+        return -1;
+    cam->sensor = sensor.s;
+    return 0;
 }
 
 /* "fx" or, when K gave it, "fx (K[0][0])" */
@@ -360,6 +374,7 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     cam->pose = pose;
     if (lens_from_keys(keys, names, text, len, fname, cam, err, errlen))
         return -1;
+    cam->sensor = gls_sensor_none();
     /* notes only for a file that is accepted */
     if (rot > 0 && notes)
         fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);

@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include "sensor.h"
 
 #define GLS_CAMERA_MAX_DIM 16384u
 /* Camera files are a few hundred bytes; the cap keeps a wrong path (a
@@ -46,6 +47,7 @@ typedef struct {
     double near, far;      /* clipping distances along +Z, scene units    */
     gls_pose pose;         /* as the file declares it                     */
     gls_distortion dist;   /* lens distortion; model 0: none              */
+    gls_sensor sensor;     /* sensor effects (sensor.h); on 0: none       */
 } gls_camera;
 
 /* Parse a camera file's text.  fname is used only in messages.  use is

@@ -215,6 +215,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  writes: %s (8-bit PNG, 255 where the samples of a pixel differ)\n",
                     outputs & GLS_OUT_EDGES ? "edges" : "mask");
         gls_explain_depth_outputs(out, o, aa);
+        gls_sensor_explain(out, &c->sensor, (uint64_t)c->width * c->height, (outputs & GLS_OUT_IMAGE) != 0);
         if (outputs & GLS_OUT_LANDMARKS)
             fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
                     !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"

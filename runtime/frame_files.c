@@ -82,6 +82,10 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
     size_t bad;
     switch (bit) {
     case GLS_OUT_IMAGE:
+        if (f->image_mosaic) /* one sample a pixel, in the image's bit depth */
+            return f->image_format == GLS_IMG_PNG16 ? gls_encode_png16_gray(f->image, c->width, c->height, buf)
+                   : f->image_format == GLS_IMG_PFM ? encode_float(f, f->image, 1, buf)
+                                                    : gls_encode_png_gray(f->image, c->width, c->height, buf);
         return f->image_format == GLS_IMG_PNG16 ? gls_encode_png16(f->image, c->width, c->height, buf)
                : f->image_format == GLS_IMG_PFM ? encode_float(f, f->image, 3, buf)
                                                 : gls_encode_png(f->image ? f->image : f->rgba, c->width, c->height,

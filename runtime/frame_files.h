@@ -24,6 +24,7 @@ typedef struct {
     const char *name;  /* camera name, for messages (outlives the job) */
     uint32_t frame;    /* for messages and the JSON files */
     gls_image_format image_format;
+    int image_mosaic;  /* the image is one sample a pixel (a Bayer mosaic, sensor.h) */
     gls_float_format float_format; /* depth, disparity, a pfm image */
     double fxB;        /* disparity: fx B of the rectified pair (out_disparity.h) */
     double depth_scale; /* depth16: codes of Zc * depth_scale */

@@ -69,7 +69,17 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                      image ? fmt[o->image_format] : "-",
                      floats ? (o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm") : "-", scale, aa,
                      o->anisotropy > 1 ? o->anisotropy : 1, bg[0], bg[1], bg[2]);
-    return k < 0 || (size_t)k >= len ? -1 : 0;
+    if (k < 0 || (size_t)k >= len)
+        return -1;
+    /* the sensor effects that shape the image (sensor.h), only when the
+     * camera asks for one: other records stay as they were */
+    char sensor[512];
+    if (!image || !c->sensor.on)
+        return 0;
+    if (gls_sensor_describe(sensor, sizeof sensor, &c->sensor))
+        return -1;
+    int k2 = snprintf(buf + k, len - (size_t)k, "%s\n", sensor);
+    return k2 < 0 || (size_t)k2 >= len - (size_t)k ? -1 : 0;
 }
 
 int gls_frame_record_matches(const char *path, const char *text)

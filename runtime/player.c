@@ -42,6 +42,7 @@
 #include "suggest.h"
 #include "trajectory.h"
 #include "render.h"
+#include "sensor_image.h"
 #include "units.h"
 
 #define MAXPATH 4096
@@ -265,7 +266,7 @@ static void view_done(session *s)
 /* Roughly what play_camera allocates for an n-pixel image besides the
  * framebuffer: read-backs, the accumulator and mask, the converted image
  * and the largest encoded file.  For the message when it fails. */
-static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted, uint64_t n)
+static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted, int sensor, uint64_t n)
 {
     unsigned out = o->outputs;
     uint64_t b = 0, enc = 0;
@@ -300,6 +301,8 @@ static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted
         if (8 * n > enc)
             enc = 8 * n; /* the .flo */
     }
+    if (sensor && (out & GLS_OUT_IMAGE)) /* the linear intensities (sensor_image.h) */
+        b += 12 * n;
     return b + enc;
 }
 
@@ -510,7 +513,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             }
         }
     }
-    if (o->outputs & GLS_OUT_IMAGE) {
+    if ((o->outputs & GLS_OUT_IMAGE) && c->sensor.on) {
+        /* sensor effects, asked for by the camera file (sensor.h): on the
+         * linear intensities before quantisation; never on ground truth */
+        img = gls_sensor_image(c, name, frame, aa ? &acc : NULL, rgba, o->image_format);
+        if (!img)
+            goto oom;
+    } else if (o->outputs & GLS_OUT_IMAGE) {
         if (o->image_format == GLS_IMG_PNG16) {
             img = malloc(n * 3 * sizeof(uint16_t));
             if (!img)
@@ -559,10 +568,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     f->name = name;
     f->frame = frame;
     f->image_format = o->image_format;
+    f->image_mosaic = c->sensor.bayer[0] != 0;
     f->float_format = o->float_format;
     f->fxB = c->fx * s->baseline;
     f->depth_scale = o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI;
-    f->buffer_bytes = camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n);
+    f->buffer_bytes = camera_buffer_bytes(o, aa, gls_aa_weighted(plan), c->sensor.on != 0, n);
     f->json = s->json;
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame);
@@ -595,7 +605,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     goto out;
 oom:
     gls_frame_oom_message(msg, sizeof msg, name, c->width, c->height,
-                          camera_buffer_bytes(o, aa, gls_aa_weighted(plan), n));
+                          camera_buffer_bytes(o, aa, gls_aa_weighted(plan), c->sensor.on != 0, n));
 out:
     if (rc && msg[0])
         say_failure(s, msg);

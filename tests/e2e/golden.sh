@@ -70,6 +70,12 @@ render() {
 render demo demo --camera examples/demo/left.cam --camera examples/demo/right.cam
 # an example with textures and anti-aliasing, as examples/render.sh renders it
 render signs signs --camera examples/signs/left.cam --aa 4 --outputs image,depth --background 0.55,0.7,0.9
+# the other image formats, whose pixels come from the same render through
+# other conversions (issue 16: a camera without sensor effects must keep
+# every format's bytes): 16-bit PNG from the accumulator, float PFM from a
+# single pass
+render signs16 signs --camera examples/signs/left.cam --aa 4 --outputs image --image-format png16 --background 0.55,0.7,0.9
+render demopfm demo --camera examples/demo/left.cam --outputs image --image-format pfm
 
 # Bundles, dumps, PFM and PLY files: the SHA-256 of the file.  PNG images:
 # the SHA-256 of the pixels as cv2.imread decodes them (shape, dtype, then

@@ -95,7 +95,7 @@ fi
 # the demo's own camera: the demo render only
 touch "$repo/examples/demo/left.cam"
 (cd "$repo" && make -n demo) >"$t/n" 2>&1
-want="build/glsplay build/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
+want="build/glsplay build/demo.glsb --camera examples/demo/left.cam --camera examples/demo/right.cam --camera examples/demo/left_sensor.cam --aa 4 --background 0.55,0.7,0.9 -o out/demo
 build/depth2png out/demo/left/depth_000000.pfm out/demo/left/depth_000000_view.png"
 [ "$(grep -E "$RENDERS" "$t/n")" = "$want" ] && ok demo_camera_touch_plans_demo_render ||
     fail demo_camera_touch_plans_demo_render "make -n demo: $(grep -E "$RENDERS" "$t/n" | tr '\n' ' ')"

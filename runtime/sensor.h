@@ -1,0 +1,94 @@
+/* Sensor effects of a camera (spec/camera.md "Sensor effects"): what the
+ * camera file asks for (vignetting, exposure gain, shot and read noise,
+ * a Bayer mosaic) and the post-process that applies it to the image's
+ * linear intensities before they are quantised.  All off by default: a
+ * camera that asks for none has on == 0 and the player's image path is
+ * the one it had before (no call into sensor.c).
+ *
+ * The keys are read by camera.c through sensor_keys.c; the noise comes
+ * from a counter-based generator (sensor_rng.h) keyed by the seed, the
+ * camera's name, the frame and the pixel, so it depends on nothing else
+ * (not on the order pixels are done in, nor on threads). */
+#ifndef GLS_SENSOR_H
+#define GLS_SENSOR_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+/* One bit per effect asked for (gls_sensor.on). */
+enum {
+    GLS_SENSOR_VIGNETTING = 1,
+    GLS_SENSOR_GAIN = 2,
+    GLS_SENSOR_SHOT = 4,
+    GLS_SENSOR_READ = 8,
+    GLS_SENSOR_BAYER = 16
+};
+#define GLS_SENSOR_NOISE (GLS_SENSOR_SHOT | GLS_SENSOR_READ)
+
+typedef enum { GLS_VIGNETTING_NONE = 0, GLS_VIGNETTING_COS4 = 1, GLS_VIGNETTING_POLY = 2 } gls_vignetting;
+
+/* The most electrons per unit intensity shot_noise takes: counts stay
+ * far below 2^53, where doubles hold every whole number. */
+#define GLS_SENSOR_MAX_K 1e12
+
+typedef struct {
+    unsigned on;            /* GLS_SENSOR_* bits; 0: no sensor effect      */
+    gls_vignetting vignetting;
+    double poly[3];         /* vignetting poly: a1 a2 a3                    */
+    double gain;            /* exposure gain G (> 0; 1 when not given)      */
+    double shot_k;          /* shot_noise K: electrons at intensity 1      */
+    double read_sigma;      /* read_noise: standard deviation, units of
+                               full scale (white = 1)                       */
+    uint64_t seed;          /* noise_seed (0 when not given)                */
+    char bayer[5];          /* "RGGB", "BGGR", "GRBG", "GBRG" or ""         */
+} gls_sensor;
+
+/* The sensor a camera file without sensor keys has: nothing on, gain 1. */
+gls_sensor gls_sensor_none(void);
+
+/* Vignetting factor of pixel (u, v) of an image whose principal point is
+ * (cx, cy) and whose pixel (u, v) looks along the camera-frame ray
+ * (x, y, 1): cos4 gives cos^4 of the ray's angle to the optical axis,
+ * 1 / (1 + x^2 + y^2)^2; poly gives 1 + a1 r^2 + a2 r^4 + a3 r^6 with
+ * r = |(u - cx, v - cy)| / fx; never below 0. */
+double gls_sensor_vignetting(const gls_sensor *s, double u, double v, double cx, double cy, double fx, double x,
+                             double y);
+
+/* Apply vignetting, gain, shot noise and read noise in place to rgb
+ * (3 floats a pixel, linear intensities, top row first, w x h), then clip
+ * to [0, 1].  ray(ctx, u, v, &x, &y) gives the camera-frame ray of pixel
+ * (u, v) (only called for vignetting cos4).  The noise of pixel i,
+ * channel c is drawn from the streams of (seed, camera, frame, i, c):
+ * camera is a hash of the camera's name (gls_sensor_camera_key). */
+void gls_sensor_apply(const gls_sensor *s, float *rgb, uint32_t w, uint32_t h, double cx, double cy, double fx,
+                      void (*ray)(void *ctx, double u, double v, double *x, double *y), void *ctx,
+                      uint64_t camera, uint32_t frame);
+
+/* The camera's part of the noise key: FNV-1a of its name. */
+uint64_t gls_sensor_camera_key(const char *name);
+
+/* The channel (0 R, 1 G, 2 B) pixel (x, y) of the Bayer pattern keeps:
+ * the pattern names the 2x2 block at the top-left corner row by row. */
+int gls_sensor_bayer_channel(const char *pattern, uint32_t x, uint32_t y);
+
+/* Quantise clipped intensities (3 floats a pixel) into an image file's
+ * samples: bits 8 (round(255 x), as RGBA with alpha 255, the layout the
+ * 8-bit PNG encoder takes), 16 (round(65535 x), RGB) or 32 (the float
+ * itself, RGB).  Returns a malloc'd buffer or NULL when out of memory. */
+void *gls_sensor_quantise(const float *rgb, uint32_t w, uint32_t h, int bits);
+
+/* The Bayer mosaic of an image of per samples a pixel (R, G, B first),
+ * each size bytes: one sample a pixel, the channel
+ * gls_sensor_bayer_channel names.  A malloc'd buffer, or NULL. */
+void *gls_sensor_mosaic(const char *pattern, const void *px, size_t per, size_t size, uint32_t w, uint32_t h);
+
+/* Text for --explain and the frame record. */
+/* The effects, in the order they are applied, one line each under
+ * "  sensor:" with the key that asks for each and its cost over npixels. */
+void gls_sensor_explain(FILE *out, const gls_sensor *s, uint64_t npixels, int image);
+/* One line, "sensor vignetting cos4 gain 2 ..." (no newline), or "" when
+ * nothing is on; 0, or -1 if it does not fit. */
+int gls_sensor_describe(char *buf, size_t len, const gls_sensor *s);
+
+#endif
