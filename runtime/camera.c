@@ -18,8 +18,9 @@
 #include "vec.h"
 
 static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy", "skew",
-                                              "R", "T", "near", "far", "pose", "K", "rvec"};
-static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1, 9, 3}; /* pose: a word */
+                                              "R", "T", "near", "far", "pose", "K", "rvec",
+                                              "shutter", "line_delay", "aperture", "focus", "exposure_samples"};
+static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1, 9, 3, 1, 1, 1, 1, 1}; /* pose: a word */
 
 /* The key that gives the same thing as key k (K: fx fy cx cy skew; rvec:
  * R) and was seen already, or -1. */
@@ -110,7 +111,8 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]), "unknown key '%s' (did you mean '%s'?)", tok[0], s);
             else
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
-                     "unknown key '%s' (keys: width height fx fy cx cy skew K R rvec T near far pose)", tok[0]);
+                     "unknown key '%s' (keys: width height fx fy cx cy skew K R rvec T near far pose shutter "
+                     "line_delay aperture focus exposure_samples)", tok[0]);
             return -1;
         }
         if (seen[k]) {
@@ -179,7 +181,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     }
     for (int k = 0; k < K_COUNT; k++) {
         /* optional: skew, pose; K and rvec stand for what they give */
-        int optional = k == K_SKEW || k == K_POSE || k == K_K || k == K_RVEC ||
+        int optional = k == K_SKEW || k == K_POSE || k == K_K || k == K_RVEC || k >= K_SHUTTER ||
                        (k >= K_FX && k <= K_CY && seen[K_K]) || (k == K_R && seen[K_RVEC]);
         if (!seen[k] && !optional) {
             gls_text_error(err, errlen, text, len, fname, last ? last : 1, 1,
@@ -316,7 +318,7 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     cam->near = val[K_NEAR][0];
     cam->far = val[K_FAR][0];
     cam->pose = pose;
-    return 0;
+    return gls_camera_effect_keys(keys, names, text, len, fname, cam, err, errlen);
 }
 
 int gls_camera_load(const char *path, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen)

@@ -26,11 +26,14 @@
 #include "gt_pass.h"
 #include "gt_table.h"
 #include "mkdirs.h"
+#include "numfmt.h"
 #include "motion.h"
 #include "out_disparity.h"
 #include "outputs.h"
 #include "player.h"
 #include "progress.h"
+#include "exposure.h"
+#include "subframe.h"
 #include "suggest.h"
 #include "trajectory.h"
 #include "render.h"
@@ -104,7 +107,42 @@ typedef struct {
     size_t n;
     uint32_t *inst;
     gls_motion *m;
+    int moving;      /* a trajectory or a motion: shutter and line_delay act */
+    gls_motion rig;  /* the trajectory read whole for sub-frame poses (rig.n
+                        = 0: not needed, subframe.h) */
 } motion_set;
+
+/* Every camera whose exposure spans more than the frame time (shutter,
+ * line_delay) needs poses at each time of the span: within the rows of
+ * the trajectory and of every motion (interpolated, never extrapolated,
+ * subframe.h).  0, or -1 after a message. */
+static int exposure_check(const motion_set *ms, const gls_camera *cams, const char *const *names, size_t ncams,
+                          uint64_t frame, FILE *errs)
+{
+    for (size_t c = 0; c < ncams; c++) {
+        gls_exposure e = gls_exposure_of(&cams[c], ms->moving);
+        if (!e.blur && !e.rolling)
+            continue;
+        double s0, s1;
+        gls_exposure_span(&cams[c], &e, &s0, &s1);
+        double x0 = (double)frame + s0, x1 = (double)frame + s1;
+        for (size_t i = 0; i <= ms->n; i++) {
+            const gls_motion *m = i < ms->n ? &ms->m[i] : &ms->rig;
+            if (!m->n || (x0 >= (double)m->frame[0] && x1 <= (double)m->frame[m->n - 1]))
+                continue;
+            char a[40], b[40];
+            gls_fmt_double(a, sizeof a, x0);
+            gls_fmt_double(b, sizeof b, x1);
+            fprintf(errs, "glsplay: error: camera %s, frame %llu: its exposure spans frames %s to %s, beyond the rows "
+                          "of %s (frames %llu to %llu); sub-frame poses are interpolated between rows, never "
+                          "extrapolated: render fewer --frames or extend the file\n",
+                    names[c], (unsigned long long)frame, a, b, m->path, (unsigned long long)m->frame[0],
+                    (unsigned long long)m->frame[m->n - 1]);
+            return -1;
+        }
+    }
+    return 0;
+}
 
 /* Every frame to be rendered must have a row in every motion file. */
 static int motion_check(const motion_set *ms, uint64_t frame, FILE *errs)
@@ -179,6 +217,7 @@ static void motion_free(motion_set *ms)
 {
     for (size_t i = 0; ms->m && i < ms->n; i++)
         gls_motion_free(&ms->m[i]);
+    gls_motion_free(&ms->rig);
     free(ms->m);
     free(ms->inst);
 }
@@ -198,6 +237,13 @@ typedef struct {
     int estimated;              /* the estimate was made (printed or not) */
     double baseline;            /* disparity: B of the rectified pair   */
     const gls_gt_table *gt;     /* instance and class ids, when asked   */
+    /* sub-frame poses (exposure.h, subframe.h): the trajectory read whole
+     * (NULL: none, or no camera needs it), the frame being rendered, the
+     * camera's pose relative to the rig, whether anything moves */
+    uint64_t frame_now;
+    const gls_camera *rel_now;
+    int moving;
+    const char *name_now;       /* the camera being rendered            */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -285,6 +331,87 @@ static void say_failure(session *s, const char *msg)
     fprintf(s->errs, "%s\n", gls_writer_finish(s->w, earlier, sizeof earlier) ? earlier : msg);
 }
 
+/* The scene and the camera s frame intervals after the frame time
+ * (exposure.h): the moving instances and the rig interpolated between
+ * their rows (subframe.h); checked to exist before rendering. */
+static int pose_at(void *ud, double t, gls_camera *cam)
+{
+    session *s = ud;
+    const motion_set *ms = s->ms;
+    double x = (double)s->frame_now + t, R[9], T[3];
+    int rc = 0;
+    for (size_t i = 0; i < ms->n; i++) {
+        if (gls_motion_pose_at(&ms->m[i], x, 0, R, T) == 0)
+            gls_scene_move(ms->scene, ms->inst[i], R, T);
+        else
+            rc = -1;
+    }
+    if (ms->n)
+        gls_scene_update(ms->scene);
+    if (ms->rig.n && s->rel_now) {
+        if (gls_motion_pose_at(&ms->rig, x, 1, R, T) == 0)
+            gls_traj_compose(s->rel_now->R, s->rel_now->T, R, T, cam->R, cam->T);
+        else
+            rc = -1;
+    }
+    return rc;
+}
+
+/* The anti-aliasing plan drawn through camera c into acc (aa.h): one
+ * fine framebuffer for the lattice and grid, jittered passes for
+ * stratified, one plain pass without anti-aliasing.  0, or -1 with the
+ * message in msg.  Also the exposure's render of one sub-frame sample
+ * (exposure.h), whence the signature. */
+static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg, size_t msglen)
+{
+    static const char lower_size[] = "lower --size (or the camera's width and height)";
+    session *s = ud;
+    const gls_play_opts *o = s->o;
+    const gls_aa_plan *plan = s->plan;
+    gls_renderer *r = s->r;
+    const char *name = s->name_now;
+    char err[512];
+    if (plan->count == 1) {
+        uint8_t *rgba = malloc((size_t)c->width * c->height * 4);
+        if (!rgba) {
+            gls_frame_oom_message(msg, msglen, name, c->width, c->height, (uint64_t)c->width * c->height * 4);
+            return -1;
+        }
+        gls_render_pass(r, c, 0.0, 0.0);
+        gls_render_read_rgba(r, rgba);
+        gls_accum_add(acc, rgba, (size_t)c->width * 4, 1);
+        free(rgba);
+        return 0;
+    }
+    if (gls_aa_fine_ok(plan)) {
+        /* lattice and grid: the samples are the pixels of a fine
+         * framebuffer drawn in tiles (aa_onepass.h) */
+        gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress ? s->errs : NULL, name, estimate_from_tiles, s};
+        if (gls_aa_render_fine(r, c, plan, &fo, acc, NULL, err, sizeof err)) {
+            char mem[32];
+            gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
+            snprintf(msg, msglen, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)", name, err,
+                     mem);
+            return -1;
+        }
+    } else {
+        /* stratified, grid Gaussian: one jittered pass per sample,
+         * several per GL pass (aa_render.h) */
+        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? s->errs : NULL, name, estimate_from_passes, s};
+        if (gls_aa_render(r, c, plan, &ro, acc, NULL, err, sizeof err)) {
+            uint32_t kx, ky;
+            gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
+            if (kx * ky > 1)
+                snprintf(msg, msglen, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)",
+                         name, err, kx * ky);
+            else
+                snprintf(msg, msglen, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -302,10 +429,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     const gls_play_opts *o = s->o;
     const gls_aa_plan *plan = s->plan;
     gls_renderer *r = s->r;
-    FILE *errs = s->errs;
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
-    int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
+    gls_exposure ex = gls_exposure_of(c, s->moving);
+    int fx = gls_exposure_on(&ex) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
+    int aa = (plan->count > 1 || fx) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
     int centre = !aa || (o->outputs & GLS_OUT_FROM_Z);
     uint8_t *rgba = NULL, *mask = NULL;
     float *z = NULL, *normal = NULL;
@@ -348,31 +476,15 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
-        if (gls_aa_fine_ok(plan)) {
-            /* lattice and grid: the samples are the pixels of a fine
-             * framebuffer drawn in tiles (aa_onepass.h) */
-            gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress ? errs : NULL, name, estimate_from_tiles, s};
-            if (gls_aa_render_fine(r, c, plan, &fo, &acc, NULL, err, sizeof err)) {
-                char mem[32];
-                gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
-                snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)", name, err,
-                         mem);
+        s->name_now = name;
+        if (fx) {
+            /* motion blur, rolling shutter, depth of field: the plan at
+             * each sub-frame time and lens point (exposure.h) */
+            uint32_t bands;
+            if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, &bands, msg, sizeof msg))
                 goto out;
-            }
-        } else {
-            /* stratified, grid Gaussian: one jittered pass per sample,
-             * several per GL pass (aa_render.h) */
-            gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress ? errs : NULL, name, estimate_from_passes, s};
-            if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
-                uint32_t kx, ky;
-                gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
-                if (kx * ky > 1)
-                    snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)",
-                             name, err, kx * ky);
-                else
-                    snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
-                goto out;
-            }
+        } else if (render_plan(s, c, &acc, msg, sizeof msg)) {
+            goto out;
         }
     }
     if (o->outputs & GLS_OUT_IMAGE) {
@@ -522,7 +634,7 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
             rc = 1;
             break;
         }
-        if (motion_check(ms, p.frame, errs)) {
+        if (motion_check(ms, p.frame, errs) || exposure_check(ms, rel, names, o->ncameras, p.frame, errs)) {
             rc = 1;
             break;
         }
@@ -583,6 +695,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
         for (size_t i = 0; i < o->ncameras && rc == 0; i++) {
             gls_camera c = rel[i];
             gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
+            s->frame_now = p.frame, s->rel_now = &rel[i];
             if (play_camera(s, &c, names[i], (uint32_t)p.frame))
                 rc = 1;
         }
@@ -655,6 +768,38 @@ static int rectified_check(const gls_play_opts *o, const gls_camera *cams, const
     return 1;
 }
 
+/* The effects of every camera, before anything is drawn: a note for a
+ * shutter or line_delay with nothing moving (no effect), the
+ * accumulator's range, and the trajectory read whole when a camera needs
+ * sub-frame poses of the rig.  0, or 1 after a message. */
+static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_camera *cams, const char *const *names,
+                          const gls_aa_plan *plan, FILE *errs)
+{
+    int need_rig = 0;
+    ms->moving = o->trajectory || o->nmotions;
+    for (size_t i = 0; i < o->ncameras; i++) {
+        const gls_camera *c = &cams[i];
+        if (!ms->moving && (c->shutter > 0 || c->line_delay > 0))
+            fprintf(errs, "glsplay: note: camera %s: %s has no effect: nothing moves (no --trajectory, no "
+                          "--motion)\n", names[i], c->shutter > 0 && c->line_delay > 0 ? "shutter and line_delay"
+                                                    : c->shutter > 0 ? "shutter" : "line_delay");
+        gls_exposure e = gls_exposure_of(c, ms->moving);
+        char why[300];
+        if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
+            gls_exposure_fits(&e, plan, why, sizeof why)) {
+            fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);
+            return 1;
+        }
+        need_rig |= e.blur || e.rolling;
+    }
+    char err[1024];
+    if (need_rig && o->trajectory && gls_traj_read_all(o->trajectory, NULL, &ms->rig, err, sizeof err)) {
+        fprintf(errs, "%s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
@@ -662,7 +807,9 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     int rc = 1;
     gls_scene scene;
     memset(&scene, 0, sizeof scene);
-    motion_set ms = {&scene, 0, NULL, NULL};
+    motion_set ms;
+    memset(&ms, 0, sizeof ms);
+    ms.scene = &scene;
     gls_glctx *ctx = NULL;
     gls_renderer *r = NULL;
     gls_writer *wr = NULL;
@@ -728,6 +875,9 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if (motion_load(o, &ms, errs) || (!o->trajectory && motion_check(&ms, o->frame, errs)))
         goto out;
+    if (exposure_setup(o, &ms, cams, (const char *const *)names, &plan, errs) ||
+        (!o->trajectory && exposure_check(&ms, cams, (const char *const *)names, o->ncameras, o->frame, errs)))
+        goto out;
     if (o->outputs & GLS_OUT_IDS) {
         /* the ids of the whole run, from the bundle's object names */
         uint32_t count;
@@ -790,7 +940,8 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline, &gt};
+    session ses = {o, &ms, &scene, &plan, r, wr, errs, o->ncameras, 0, gls_now(), 0, baseline, &gt,
+                   o->frame, NULL, ms.moving, NULL};
     if (!o->trajectory) {
         int skip = o->resume && frame_done(o, cams, (const char *const *)names, o->frame);
         if (o->resume)
