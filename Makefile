@@ -129,6 +129,7 @@ SEES_test_outputs := runtime
 SEES_test_writer := runtime
 SEES_test_progress := runtime
 SEES_test_rotation := runtime
+SEES_test_subframe := runtime
 SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
 SEES_test_road_geo := roads

@@ -175,15 +175,15 @@ static void accum_clear(gls_accum *a)
 
 int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
                         gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
-                        uint32_t *bands, char *msg, size_t msglen)
+                        uint32_t band, char *msg, size_t msglen)
 {
     char why[300];
     if (gls_exposure_fits(e, p, why, sizeof why)) {
         snprintf(msg, msglen, "glsplay: error: camera: %s", why);
         return -1;
     }
-    uint32_t H = c->height, h = gls_exposure_band_rows(r, c, e, pose_at, ud);
-    *bands = (H + h - 1) / h;
+    (void)r;
+    uint32_t H = c->height, h = band ? band : H;
     gls_accum tmp;
     if (gls_accum_init(&tmp, c->width, H, acc->weighted, acc->mixed != NULL)) {
         snprintf(msg, msglen, "glsplay: error: out of memory for the exposure's accumulator");

@@ -69,12 +69,13 @@ int gls_exposure_fits(const gls_exposure *e, const gls_aa_plan *p, char *why, si
 uint32_t gls_exposure_band_rows(const gls_renderer *r, const gls_camera *c, const gls_exposure *e,
                                 gls_pose_at_fn pose_at, void *ud);
 
-/* The image: every sample j, every band, rendered by render_plan into a
+/* The image: every sample j, every band of `band` rows
+ * (gls_exposure_band_rows; the height without rolling shutter), rendered by render_plan into a
  * scratch accumulator whose band rows are added to acc.  Leaves the scene
  * at s = 0.  0, or -1 with msg. */
 int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
                         gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
-                        uint32_t *bands, char *msg, size_t msglen);
+                        uint32_t band, char *msg, size_t msglen);
 
 /* --explain: what the effects of camera c cost. */
 void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p);

@@ -412,6 +412,63 @@ static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg,
     return 0;
 }
 
+/* Rolling shutter: the centre pass (colour, depth) and the ground-truth
+ * pass (ids, normals) of each band of `band` rows drawn at its middle
+ * row's time, their rows copied out; the scene left at the frame time.
+ * The buffers not asked for are NULL.  0, or -1 with msg. */
+static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t *rgba, float *z, uint32_t *inst,
+                        float *normal, char *msg, size_t msglen)
+{
+    size_t n = (size_t)c->width * c->height, W = c->width;
+    uint8_t *rb = rgba ? malloc(n * 4) : NULL;
+    float *zb = z ? malloc(n * sizeof *zb) : NULL, *nb = normal ? malloc(n * 3 * sizeof *nb) : NULL;
+    uint32_t *ib = inst ? malloc(n * sizeof *ib) : NULL;
+    char err[512];
+    int rc = -1;
+    if ((rgba && !rb) || (z && !zb) || (normal && !nb) || (inst && !ib)) {
+        gls_frame_oom_message(msg, msglen, s->name_now, c->width, c->height, 28 * (uint64_t)n);
+        goto out;
+    }
+    for (uint32_t v0 = 0; v0 < c->height; v0 += band) {
+        uint32_t v1 = v0 + band < c->height ? v0 + band : c->height;
+        size_t a = W * v0, len = W * (v1 - v0);
+        gls_camera at = *c;
+        pose_at(s, c->line_delay * (v0 + v1 - 1) / 2.0, &at);
+        if (rgba || z) {
+            gls_render_pass(s->r, &at, 0.0, 0.0);
+            if (rgba) {
+                gls_render_read_rgba(s->r, rb);
+                memcpy(rgba + 4 * a, rb + 4 * a, 4 * len);
+            }
+            if (z) {
+                gls_render_read_z(s->r, zb);
+                memcpy(z + a, zb + a, len * sizeof *z);
+            }
+        }
+        if (inst || normal) {
+            if (gls_gt_render(s->r, &at, ib, nb, NULL, err, sizeof err)) {
+                snprintf(msg, msglen, "glsplay: error: camera %s: %s", s->name_now, err);
+                goto out;
+            }
+            if (inst)
+                memcpy(inst + a, ib + a, len * sizeof *inst);
+            if (normal)
+                memcpy(normal + 3 * a, nb + 3 * a, 3 * len * sizeof *normal);
+        }
+    }
+    rc = 0;
+out:
+    {
+        gls_camera at = *c;
+        pose_at(s, 0, &at);
+    }
+    free(rb);
+    free(zb);
+    free(nb);
+    free(ib);
+    return rc;
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -443,32 +500,34 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     memset(&acc, 0, sizeof acc);
     gls_frame_files *f = NULL;
     int rc = -1;
+    s->name_now = name;
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
-    if (centre) {
-        gls_render_pass(r, c, 0.0, 0.0);
-        if ((!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (o->outputs & GLS_OUT_POINTS)) {
-            rgba = malloc(n * 4);
-            if (!rgba)
-                goto oom;
-            gls_render_read_rgba(r, rgba);
+    /* rolling shutter: the ground truth of each band of rows at its
+     * time (exposure.h); one band, the whole image, otherwise */
+    uint32_t band = ex.rolling ? gls_exposure_band_rows(r, c, &ex, pose_at, s) : c->height;
+    int want_rgba = (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (o->outputs & GLS_OUT_POINTS);
+    if ((centre && want_rgba && !(rgba = malloc(n * 4))) ||
+        (centre && (o->outputs & GLS_OUT_FROM_Z) && !(z = malloc(n * sizeof *z))) ||
+        ((o->outputs & GLS_OUT_IDS) && !(gt_inst = malloc(n * sizeof *gt_inst))) ||
+        ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))))
+        goto oom;
+    if (band < c->height) {
+        if (centre_bands(s, c, band, rgba, z, gt_inst, normal, msg, sizeof msg))
+            goto out;
+    } else {
+        if (centre) {
+            gls_render_pass(r, c, 0.0, 0.0);
+            if (rgba)
+                gls_render_read_rgba(r, rgba);
+            if (z)
+                gls_render_read_z(r, z);
         }
-        if (o->outputs & GLS_OUT_FROM_Z) {
-            z = malloc(n * sizeof *z);
-            if (!z)
-                goto oom;
-            gls_render_read_z(r, z);
-        }
-    }
-    if (o->outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS)) {
         /* ground truth: the centre sample again, ids and normals
          * (gt_pass.h), never blended whatever --aa is */
-        if (((o->outputs & GLS_OUT_IDS) && !(gt_inst = malloc(n * sizeof *gt_inst))) ||
-            ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))))
-            goto oom;
-        if (gls_gt_render(r, c, gt_inst, normal, NULL, err, sizeof err)) {
+        if ((gt_inst || normal) && gls_gt_render(r, c, gt_inst, normal, NULL, err, sizeof err)) {
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
@@ -476,12 +535,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
-        s->name_now = name;
         if (fx) {
             /* motion blur, rolling shutter, depth of field: the plan at
              * each sub-frame time and lens point (exposure.h) */
-            uint32_t bands;
-            if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, &bands, msg, sizeof msg))
+            if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, band, msg, sizeof msg))
                 goto out;
         } else if (render_plan(s, c, &acc, msg, sizeof msg)) {
             goto out;
@@ -780,14 +837,24 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
     for (size_t i = 0; i < o->ncameras; i++) {
         const gls_camera *c = &cams[i];
         if (!ms->moving && (c->shutter > 0 || c->line_delay > 0))
-            fprintf(errs, "glsplay: note: camera %s: %s has no effect: nothing moves (no --trajectory, no "
-                          "--motion)\n", names[i], c->shutter > 0 && c->line_delay > 0 ? "shutter and line_delay"
-                                                    : c->shutter > 0 ? "shutter" : "line_delay");
+            fprintf(errs, "glsplay: note: camera %s: %s no effect: nothing moves (no --trajectory, no --motion)\n",
+                    names[i], c->shutter > 0 && c->line_delay > 0 ? "shutter and line_delay have"
+                              : c->shutter > 0                    ? "shutter has"
+                                                                  : "line_delay has");
         gls_exposure e = gls_exposure_of(c, ms->moving);
         char why[300];
         if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
             gls_exposure_fits(&e, plan, why, sizeof why)) {
             fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);
+            return 1;
+        }
+        /* each row's depth is at its own time, in that time's camera
+         * frame: points and landmarks would need a camera per row */
+        if (e.rolling && (o->outputs & (GLS_OUT_POINTS | GLS_OUT_LANDMARKS))) {
+            fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) is not supported: "
+                          "each row is exposed at its own time, %s needs one camera pose per frame\n",
+                    names[i], o->outputs & GLS_OUT_POINTS ? "points" : "landmarks",
+                    o->outputs & GLS_OUT_POINTS ? "the point cloud" : "a landmark's row");
             return 1;
         }
         need_rig |= e.blur || e.rolling;
