@@ -206,8 +206,9 @@ for Z, tag in ((Z0, 'defocus'), (F, 'in_focus')):
                % (c, err, np.round(row[50:70], 3), np.round(want[50:70], 3)))
         # the diameter the profile shows: its 0..1 width is c + 1 (the pixel)
         lit = np.nonzero((row > 0.002) & (row < 0.998))[0]
-        result('depth_of_field_coc_diameter', abs((lit[-1] - lit[0] + 1) - (c + 1)) <= 1.5,
-               'blurred over %d px, c + 1 = %.3f' % (lit[-1] - lit[0] + 1, c + 1))
+        width = lit[-1] - lit[0] + 1 if len(lit) else 0
+        result('depth_of_field_coc_diameter', abs(width - (c + 1)) <= 1.5,
+               'blurred over %d px, c + 1 = %.3f' % (width, c + 1))
     else:
         e_dof = (W - 0.5) - row.sum() - cx
         e_pin = (W - 0.5) - pin.sum() - cx
