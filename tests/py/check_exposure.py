@@ -240,4 +240,11 @@ want = ('glsplay: error: camera blur, frame 3: its exposure spans frames 2.75 to
         'or extend the file\n' % (D + '/mover.txt'))
 result('exposure_beyond_rows_refused', p.stderr == want and not os.path.exists(D + '/beyond/blur/image_000003.png'),
        repr(p.stderr))
+# more sub-frame renders than the exact accumulator holds: refused first
+p = run([BIN + '/glsplay', D + '/moving.glsb', '--camera', D + '/blur.cam', '--motion', 'mover=' + D + '/mover.txt',
+         '--frame', '1', '--aa', '4', '--filter', 'gauss', '-o', D + '/gauss'], want_rc=1)
+want = ('glsplay: error: camera blur: exposure_samples 64 times the anti-aliasing\'s 400 samples exceed what the '
+        'accumulator adds exactly (a Gaussian filter: at most 16 sub-frame renders); lower exposure_samples or --aa\n')
+result('exposure_accumulator_range_refused', p.stderr == want and not os.path.exists(D + '/gauss/blur'),
+       repr(p.stderr))
 sys.exit(0 if OK else 1)
