@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include "aa.h"
 #include "camera.h"
+#include "gt_landmarks.h"
 #include "render.h"
 
 /* Most pixels the image may move within one band of rows. */
@@ -76,6 +77,13 @@ uint32_t gls_exposure_band_rows(const gls_renderer *r, const gls_camera *c, cons
 int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
                         gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
                         uint32_t band, char *msg, size_t msglen);
+
+/* Rolling shutter: landmark k of l (taken at the frame time) replaced by
+ * where it is at the time of the band of `band` rows it projects into,
+ * with that time's camera pose (l->pose); the scene left at s = 0.  0,
+ * or -1 when out of memory. */
+int gls_exposure_landmarks(const gls_scene *s, const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud,
+                           gls_landmarks *l);
 
 /* --explain: what the effects of camera c cost. */
 void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p);

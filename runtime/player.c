@@ -604,6 +604,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     /* where the landmarks are in this frame: motion moves them */
     if ((o->outputs & GLS_OUT_LANDMARKS) && !(f->landmarks = gls_landmarks_take(s->scene)))
         goto oom;
+    /* rolling shutter: each landmark at its band's time, as its rows */
+    if (f->landmarks && band < c->height &&
+        gls_exposure_landmarks(s->scene, c, band, pose_at, s, f->landmarks))
+        goto oom;
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
     f->gt_inst = gt_inst, f->normal = normal, f->gt = s->gt;
     rgba = mask = NULL, z = NULL, img = NULL, gt_inst = NULL, normal = NULL;
@@ -849,12 +853,11 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
             return 1;
         }
         /* each row's depth is at its own time, in that time's camera
-         * frame: points and landmarks would need a camera per row */
-        if (e.rolling && (o->outputs & (GLS_OUT_POINTS | GLS_OUT_LANDMARKS))) {
-            fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) is not supported: "
-                          "each row is exposed at its own time, %s needs one camera pose per frame\n",
-                    names[i], o->outputs & GLS_OUT_POINTS ? "points" : "landmarks",
-                    o->outputs & GLS_OUT_POINTS ? "the point cloud" : "a landmark's row");
+         * frame: the points would need a camera per row */
+        if (e.rolling && (o->outputs & GLS_OUT_POINTS)) {
+            fprintf(errs, "glsplay: error: camera %s: --outputs points with line_delay (rolling shutter) is not "
+                          "supported: each row is exposed at its own time, the point cloud needs one camera pose per "
+                          "frame\n", names[i]);
             return 1;
         }
         need_rig |= e.blur || e.rolling;

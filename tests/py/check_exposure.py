@@ -9,6 +9,7 @@ ground truth at the frame time; off when nothing asks for it.  Prints
 
   check_exposure.py BIN DIR
 """
+import csv
 import os
 import subprocess
 import sys
@@ -111,6 +112,10 @@ for aa in ('1', '4'):
 with open(D + '/src/Half.scene', 'w') as f:
     f.write('color(1, 1, 1);\npoly { vert(0, -50, %r); vert(100, -50, %r); vert(100, 50, %r); vert(0, 50, %r); }\n'
             % ((Z0,) * 4))
+    # landmarks on the plane, 1 unit right of its edge, at rows 10.2 .. 70.2
+    MARK_Y = (-2.93, -0.93, 1.07, 3.07)
+    for i, y in enumerate(MARK_Y):
+        f.write('mark("m%d", 1, %r, %r);\n' % (i, y, Z0))
 run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/half.glsb', 'Half'])
 with open(D + '/traj.txt', 'w') as f:
     for k in range(4):
@@ -121,7 +126,7 @@ camera(D + '/rs.cam', W, H, 'line_delay %r\n' % DL, 'pose rig\n')
 camera(D + '/gs.cam', W, H, '', 'pose rig\n')
 out = D + '/rs'
 p = run([BIN + '/glsplay', D + '/half.glsb', '--camera', D + '/rs.cam', '--camera', D + '/gs.cam', '--trajectory',
-         D + '/traj.txt', '--frames', '1', '--aa', '8', '--outputs', 'image,depth,instance', '--image-format', 'png16',
+         D + '/traj.txt', '--frames', '1', '--aa', '8', '--outputs', 'image,depth,instance,landmarks', '--image-format', 'png16',
          '-o', out, '--explain'])
 result('rolling_shutter_explain', 'rolling shutter: on (key line_delay' in p.stdout, p.stdout[-600:])
 cx = (W - 1) / 2
@@ -158,7 +163,20 @@ result('rolling_shutter_depth_per_row', z is not None and np.abs(covered - want_
 ids = cv2.imread(out + '/rs/instance_000001.png', cv2.IMREAD_UNCHANGED)
 result('rolling_shutter_ids_per_row', ids is not None and np.array_equal(ids > 0, np.isfinite(z)) and
        np.abs((ids > 0).sum(axis=1) - want_cov).max() <= 1, 'the instance image and the depth disagree')
-# points and landmarks would need a camera per row: refused
+# landmarks at their band's time: u from the row's time within the band's
+# 1/16 px, v and depth exact (the camera moves along x), visible against
+# the depth of that row
+with open(out + '/rs/landmarks_000001.csv') as f:
+    rows = list(csv.DictReader(f))
+bad = []
+for r, y in zip(rows, MARK_Y):
+    vv = (H - 1) / 2 + FX * y / Z0
+    uu = cx + FX * 1 / Z0 - SPEED * (1 + np.floor(vv + 0.5) * DL)
+    if not (abs(float(r['u']) - uu) <= 1.0 / 16 + 1e-9 and abs(float(r['v']) - vv) < 1e-9 and
+            abs(float(r['depth']) - Z0) < 1e-9 and r['in_image'] == '1' and r['visible'] == '1'):
+        bad.append((r['name'], r['u'], uu, r['v'], vv, r['visible']))
+result('rolling_shutter_landmarks_per_row', len(rows) == len(MARK_Y) and not bad, 'rows %d; %s' % (len(rows), bad))
+# the points would need a camera per row: refused
 p = run([BIN + '/glsplay', D + '/half.glsb', '--camera', D + '/rs.cam', '--trajectory', D + '/traj.txt', '--frames',
          '1', '--outputs', 'image,points', '-o', D + '/rs_points'], want_rc=1)
 result('rolling_shutter_points_refused', p.stderr == 'glsplay: error: camera rs: --outputs points with line_delay '
