@@ -258,6 +258,22 @@ want = ('glsplay: error: camera blur, frame 3: its exposure spans frames 2.75 to
         'or extend the file\n' % (D + '/mover.txt'))
 result('exposure_beyond_rows_refused', p.stderr == want and not os.path.exists(D + '/beyond/blur/image_000003.png'),
        repr(p.stderr))
+# --resume: the frame record names the effects; a changed shutter is a
+# frame to render again, the same one is complete
+args = [BIN + '/glsplay', D + '/moving.glsb', '--camera', D + '/rec.cam', '--motion', 'mover=' + D + '/mover.txt',
+        '--frame', '1', '--outputs', 'image', '-o', D + '/rec', '--resume']
+camera(D + '/rec.cam', 32, 16, 'shutter 0.5\n')
+run(args)
+same = run(args).stderr
+camera(D + '/rec.cam', 32, 16, 'shutter 0.25\n')
+changed = run(args).stderr
+with open(D + '/rec/rec/.frame_000001.done') as f:
+    rec = f.read()
+result('exposure_resume_record', 'glsplay: note: --resume: 1 of 1 frame complete' in same and
+       'glsplay: note: --resume: 0 of 1 frame complete' in changed and
+       rec.endswith('effects shutter 0.25 line_delay 0 aperture 0 focus 0 samples 16\n'),
+       'resume notes %r, %r; record %r' % (same, changed, rec[-80:]))
+
 # more sub-frame renders than the exact accumulator holds: refused first
 p = run([BIN + '/glsplay', D + '/moving.glsb', '--camera', D + '/blur.cam', '--motion', 'mover=' + D + '/mover.txt',
          '--frame', '1', '--aa', '4', '--filter', 'gauss', '-o', D + '/gauss'], want_rc=1)
