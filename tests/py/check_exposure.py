@@ -75,9 +75,13 @@ camera(D + '/sharp.cam', W, H)
 cx = (W - 1) / 2
 for aa in ('1', '4'):
     out = D + '/blur' + aa
-    run([BIN + '/glsplay', D + '/moving.glsb', '--camera', D + '/blur.cam', '--camera', D + '/sharp.cam',
-         '--motion', 'mover=' + D + '/mover.txt', '--frame', '1', '--aa', aa, '--outputs', 'image,depth',
-         '--image-format', 'png16', '-o', out])
+    p = run([BIN + '/glsplay', D + '/moving.glsb', '--camera', D + '/blur.cam', '--camera', D + '/sharp.cam',
+             '--motion', 'mover=' + D + '/mover.txt', '--frame', '1', '--aa', aa, '--outputs', 'image,depth',
+             '--image-format', 'png16', '-o', out, '--explain'])
+    m = 1 if aa == '1' else 16
+    result('motion_blur_explain_aa' + aa, 'motion blur: on (key shutter 0.5): exposure [-0.25, 0.25]' in p.stdout and
+           'exposure cost: 64 sub-frame renders x %d anti-aliasing sample' % m in p.stdout and
+           p.stdout.count('motion blur: on') == 1, p.stdout[-800:])
     row = grey(out + '/blur/image_000001.png')[H // 2]
     sharp = grey(out + '/sharp/image_000001.png')[H // 2]
     # the square spans x in [-2, 2] + 1 + t at frame 1 + t: its edges in u
@@ -206,8 +210,10 @@ for Z, tag in ((Z0, 'defocus'), (F, 'in_focus')):
     camera(D + '/dof.cam', W, H, 'aperture %r\nfocus %r\nexposure_samples 256\n' % (A, F))
     camera(D + '/pin.cam', W, H)
     out = D + '/dof_' + tag
-    run([BIN + '/glsplay', D + '/edge.glsb', '--camera', D + '/dof.cam', '--camera', D + '/pin.cam', '--aa', '4',
-         '--outputs', 'image,depth', '--image-format', 'png16', '-o', out])
+    p = run([BIN + '/glsplay', D + '/edge.glsb', '--camera', D + '/dof.cam', '--camera', D + '/pin.cam', '--aa', '4',
+             '--outputs', 'image,depth', '--image-format', 'png16', '-o', out, '--explain'])
+    result('depth_of_field_explain_' + tag, 'depth of field: on (keys aperture 0.5, focus 5): 256 lens points' in
+           p.stdout and p.stdout.count('depth of field: on') == 1, p.stdout[-800:])
     row = grey(out + '/dof/image_000000.png')[H // 2]
     pin = grey(out + '/pin/image_000000.png')[H // 2]
     cx = (W - 1) / 2
