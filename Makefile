@@ -274,11 +274,12 @@ $(B)/pnghalf: $(B)/tools/pnghalf.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
 # Regenerate the README's gallery images from the demo (committed copies).
-gallery: demo
+gallery: demo $(B)/pnghalf
 	cp out/demo/left/image_000000.png docs/demo_left.png
 	cp out/demo/right/image_000000.png docs/demo_right.png
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
 	cp out/gallery/ex_*.png docs/
+	sh bench/effects_o9/gallery.sh $(B) docs
 
 bench-compile: $(B)/glsc
 	@sh bench/compile.sh $(B)
