@@ -156,6 +156,19 @@ result('rolling_shutter_slope', abs(np.polyfit(v, rs, 1)[0] + SPEED * DL) < 0.00
        'slope %.5f px/row, want %.5f' % (np.polyfit(v, rs, 1)[0], -SPEED * DL))
 result('global_shutter_edge_straight', np.abs(gs - (cx - SPEED)).max() <= 1.0 / 32,
        'the edge without line_delay moves: %s' % np.round(gs[:4], 4))
+# a slower readout, D = 1/800: bands of several rows (1/8 px of motion
+# each), each at its middle row's time; every row within 1/16 px of its
+# own time's edge (+ 1/32 px of filter and rounding)
+DL2 = 1.0 / 800
+camera(D + '/rs2.cam', W, H, 'line_delay %r\n' % DL2, 'pose rig\n')
+run([BIN + '/glsplay', D + '/half.glsb', '--camera', D + '/rs2.cam', '--trajectory', D + '/traj.txt', '--frames', '1',
+     '--aa', '8', '--outputs', 'image', '--image-format', 'png16', '-o', out])
+rs2 = edge_columns(grey(out + '/rs2/image_000001.png'))
+want2 = cx - SPEED * (1 + v * DL2)
+err2 = np.abs(rs2 - want2)
+levels = len(np.unique(np.round(rs2, 3)))
+result('rolling_shutter_bands_per_row', err2.max() <= 1.0 / 16 + 1.0 / 32 and 2 <= levels < H,
+       'largest error %.4f px at row %d; %d edge positions over %d rows' % (err2.max(), err2.argmax(), levels, H))
 # depth per row at its own time: the plane is at Z0 everywhere it covers;
 # the covered columns follow the slanted edge
 z = cv2.imread(out + '/rs/depth_000001.pfm', cv2.IMREAD_UNCHANGED)
