@@ -138,6 +138,7 @@ SEES_test_progress := runtime
 SEES_test_progress_json := runtime
 SEES_test_shard := runtime
 SEES_test_rotation := runtime
+SEES_test_subframe := runtime
 SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
 SEES_test_road_geo := roads
@@ -326,12 +327,13 @@ $(B)/pnghalf: $(B)/tools/pnghalf.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
 # Regenerate the README's gallery images from the demo (committed copies).
-gallery: demo
+gallery: demo $(B)/pnghalf
 	cp out/demo/left/image_000000.png docs/demo_left.png
 	cp out/demo/right/image_000000.png docs/demo_right.png
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
 	cp out/demo/left_sensor/image_000000.png docs/demo_left_sensor.png
 	cp out/gallery/ex_*.png docs/
+	sh bench/effects_o9/gallery.sh $(B) docs
 
 # make install PREFIX=/usr/local DESTDIR=: the tools into PREFIX/bin, the
 # standard library bundle (what `make` builds of scenelib/, textures

@@ -19,11 +19,12 @@
 #include "textfile.h"
 #include "vec.h"
 
-static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx",   "cy",         "skew",
-                                              "R",     "T",      "near", "far", "pose", "K", "rvec", "distortion",
-                                              "fisheye"};
+static const char *const key_name[K_COUNT] = {"width", "height", "fx", "fy", "cx", "cy", "skew",
+                                              "R", "T", "near", "far", "pose", "K", "rvec", "distortion",
+                                              "fisheye", "shutter", "line_delay", "aperture", "focus",
+                                              "exposure_samples"};
 /* pose: a word; distortion: 4, 5 or 8 (checked apart) */
-static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1, 9, 3, 8, 4};
+static const int key_arity[K_COUNT] = {1, 1, 1, 1, 1, 1, 1, 9, 3, 1, 1, 1, 9, 3, 8, 4, 1, 1, 1, 1, 1};
 
 /* The key that gives the same thing as key k (K: fx fy cx cy skew; rvec:
  * R) and was seen already, or -1. */
@@ -129,7 +130,8 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
             else
                 gls_text_error(err, errlen, text, len, fname, line, COL(tok[0]),
                      "unknown key '%s' (keys: width height fx fy cx cy skew K R rvec T near far pose distortion "
-                     "fisheye gain read_noise shot_noise noise_seed vignetting bayer)", tok[0]);
+                     "fisheye gain read_noise shot_noise noise_seed vignetting bayer shutter line_delay aperture "
+                     "focus exposure_samples)", tok[0]);
             return -1;
         }
         if (seen[k]) {
@@ -209,6 +211,7 @@ int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose u
     for (int k = 0; k < K_COUNT; k++) {
         /* optional: skew, pose; K and rvec stand for what they give */
         int optional = k == K_SKEW || k == K_POSE || k == K_K || k == K_RVEC || k == K_DIST || k == K_FISHEYE ||
+                       k >= K_SHUTTER ||
                        (k >= K_FX && k <= K_CY && seen[K_K]) || (k == K_R && seen[K_RVEC]);
         if (!seen[k] && !optional) {
             gls_text_error(err, errlen, text, len, fname, last ? last : 1, 1,
@@ -372,7 +375,8 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     cam->near = val[K_NEAR][0];
     cam->far = val[K_FAR][0];
     cam->pose = pose;
-    if (lens_from_keys(keys, names, text, len, fname, cam, err, errlen))
+    if (lens_from_keys(keys, names, text, len, fname, cam, err, errlen) ||
+        gls_camera_effect_keys(keys, names, text, len, fname, cam, err, errlen))
         return -1;
     cam->sensor = gls_sensor_none();
     /* notes only for a file that is accepted */

@@ -48,7 +48,19 @@ typedef struct {
     gls_pose pose;         /* as the file declares it                     */
     gls_distortion dist;   /* lens distortion; model 0: none              */
     gls_sensor sensor;     /* sensor effects (sensor.h); on 0: none       */
+    /* Effects (spec/camera.md "Motion blur, rolling shutter, depth of
+     * field"), 0 = off: the exposure as a fraction of the frame interval,
+     * centred on the frame time; the time between consecutive rows'
+     * exposures, in frame intervals; the lens diameter and the focus
+     * distance along the optical axis, scene units; the sub-frame renders
+     * (time and lens samples) of blur and depth of field. */
+    double shutter, line_delay, aperture, focus;
+    uint32_t exposure_samples;
 } gls_camera;
+
+/* exposure_samples when the file does not give it */
+#define GLS_EXPOSURE_SAMPLES_DEFAULT 16u
+#define GLS_EXPOSURE_SAMPLES_MAX 4096u
 
 /* Parse a camera file's text.  fname is used only in messages.  use is
  * how the caller applies R and T (GLS_POSE_WORLD for a single render,

@@ -14,6 +14,9 @@ enum {
     K_RVEC, /* a Rodrigues vector, instead of R                   */
     K_DIST, /* Brown-Conrady k1 k2 p1 p2 [k3 [k4 k5 k6]]          */
     K_FISHEYE, /* cv::fisheye k1 k2 k3 k4, instead of K_DIST      */
+    /* optional effects (spec/camera.md "Motion blur, rolling shutter,
+     * depth of field"); .cam files only */
+    K_SHUTTER, K_LINE_DELAY, K_APERTURE, K_FOCUS, K_EXPOSURE_SAMPLES,
     K_COUNT
 };
 
@@ -33,6 +36,11 @@ typedef struct {
  * notes as gls_camera_parse(). */
 int gls_camera_from_keys(gls_camera_keys *k, const char *const *names, const char *text, size_t len,
                          const char *fname, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen);
+
+/* The effect keys (camera_effects.c): checked, and set in cam (zeros:
+ * off).  0, or -1 with the located message in err. */
+int gls_camera_effect_keys(const gls_camera_keys *k, const char *const *names, const char *text, size_t len,
+                           const char *fname, gls_camera *cam, char *err, size_t errlen);
 
 /* A camera given as OpenCV FileStorage YAML (camera_opencv.c): the text
  * starts with "%YAML".  Parsed as gls_camera_parse() says. */

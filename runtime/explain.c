@@ -4,6 +4,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "distort_render.h"
+#include "exposure.h"
 #include "out_disparity.h"
 #include "units.h"
 #include "player.h"
@@ -173,6 +174,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  pose: world (%s): R and T map the world into the camera\n",
                     c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
         gls_distort_explain(out, c, &p);
+        gls_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
         gls_aa_fine_layout lay;
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
         if (aa && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {

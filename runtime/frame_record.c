@@ -73,13 +73,29 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
         return -1;
     /* the sensor effects that shape the image (sensor.h), only when the
      * camera asks for one: other records stay as they were */
-    char sensor[512];
-    if (!image || !c->sensor.on)
-        return 0;
-    if (gls_sensor_describe(sensor, sizeof sensor, &c->sensor))
-        return -1;
-    int k2 = snprintf(buf + k, len - (size_t)k, "%s\n", sensor);
-    return k2 < 0 || (size_t)k2 >= len - (size_t)k ? -1 : 0;
+    if (image && c->sensor.on) {
+        char sensor[512];
+        if (gls_sensor_describe(sensor, sizeof sensor, &c->sensor))
+            return -1;
+        int k2 = snprintf(buf + k, len - (size_t)k, "%s\n", sensor);
+        if (k2 < 0 || (size_t)k2 >= len - (size_t)k)
+            return -1;
+        k += k2;
+    }
+    /* the camera's effects (spec/camera.md "Motion blur, rolling shutter,
+     * depth of field"), only when it has one: the records of cameras
+     * without stay as they were */
+    if (c->shutter > 0 || c->line_delay > 0 || c->aperture > 0) {
+        char v[5][40];
+        const double x[5] = {c->shutter, c->line_delay, c->aperture, c->focus, (double)c->exposure_samples};
+        for (int i = 0; i < 5; i++)
+            gls_fmt_double(v[i], sizeof v[i], x[i]);
+        int e = snprintf(buf + k, len - (size_t)k, "effects shutter %s line_delay %s aperture %s focus %s samples %s\n",
+                         v[0], v[1], v[2], v[3], v[4]);
+        if (e < 0 || (size_t)e >= len - (size_t)k)
+            return -1;
+    }
+    return 0;
 }
 
 int gls_frame_record_matches(const char *path, const char *text)

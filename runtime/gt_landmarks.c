@@ -32,6 +32,7 @@ void gls_landmarks_free(gls_landmarks *l)
     free(l->name);
     free(l->path);
     free(l->X);
+    free(l->pose);
     free(l);
 }
 
@@ -98,10 +99,10 @@ int gls_encode_landmarks_csv(const gls_landmarks *l, const gls_camera *c, const 
     if (gls_buf_put(buf, header, sizeof header - 1))
         return -1;
     for (uint32_t k = 0; k < l->n; k++) {
-        const double *X = l->X + 3 * (size_t)k, *R = c->R;
+        const double *X = l->X + 3 * (size_t)k, *R = l->pose ? l->pose[k] : c->R, *T = l->pose ? l->pose[k] + 9 : c->T;
         double pc[3];
         for (int r = 0; r < 3; r++)
-            pc[r] = R[3 * r] * X[0] + R[3 * r + 1] * X[1] + R[3 * r + 2] * X[2] + c->T[r];
+            pc[r] = R[3 * r] * X[0] + R[3 * r + 1] * X[1] + R[3 * r + 2] * X[2] + T[r];
         /* spec/camera.md: u = (fx Xc + skew Yc) / Zc + cx, v = fy Yc / Zc + cy,
          * through the lens model in front of a distorted camera (the
          * model is not defined behind it: the pinhole formula there too,

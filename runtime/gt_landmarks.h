@@ -21,6 +21,11 @@ typedef struct {
     uint32_t n;
     const char **name, **path; /* n each */
     double *X;                 /* 3 n: world positions                    */
+    double (*pose)[12];        /* NULL: every landmark through the frame's
+                                  camera; else landmark k through the
+                                  camera R = pose[k][0..8], T = pose[k][9..11]
+                                  (rolling shutter: its band's time,
+                                  exposure_landmarks.c)                   */
 } gls_landmarks;
 
 /* The scene's landmarks where its instances are now; NULL when out of
@@ -34,8 +39,8 @@ void gls_landmarks_free(gls_landmarks *l);
  * the image (-0.5 <= u < width - 0.5, the same for v). */
 int gls_landmark_visible(const float *z, uint32_t width, uint32_t height, double u, double v, double zc);
 
-/* The CSV (header line, one row per landmark) for camera c and its
- * centre-sample depth z.  0, or -1 when out of memory. */
+/* The CSV (header line, one row per landmark) for camera c (or the
+ * landmarks' own poses) and its centre-sample depth z.  0, or -1 when out of memory. */
 int gls_encode_landmarks_csv(const gls_landmarks *l, const gls_camera *c, const float *z, gls_buf *buf);
 
 #endif

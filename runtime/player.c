@@ -31,6 +31,7 @@
 #include "gt_pass.h"
 #include "gt_table.h"
 #include "mkdirs.h"
+#include "numfmt.h"
 #include "motion.h"
 #include "out_disparity.h"
 #include "out_flow.h"
@@ -39,6 +40,8 @@
 #include "progress.h"
 #include "progress_json.h"
 #include "shard.h"
+#include "exposure.h"
+#include "subframe.h"
 #include "suggest.h"
 #include "trajectory.h"
 #include "render.h"
@@ -118,7 +121,42 @@ typedef struct {
     size_t n;
     uint32_t *inst;
     gls_motion *m;
+    int moving;      /* a trajectory or a motion: shutter and line_delay act */
+    gls_motion rig;  /* the trajectory read whole for sub-frame poses (rig.n
+                        = 0: not needed, subframe.h) */
 } motion_set;
+
+/* Every camera whose exposure spans more than the frame time (shutter,
+ * line_delay) needs poses at each time of the span: within the rows of
+ * the trajectory and of every motion (interpolated, never extrapolated,
+ * subframe.h).  0, or -1 after a message. */
+static int exposure_check(const motion_set *ms, const gls_camera *cams, const char *const *names, size_t ncams,
+                          uint64_t frame, FILE *errs)
+{
+    for (size_t c = 0; c < ncams; c++) {
+        gls_exposure e = gls_exposure_of(&cams[c], ms->moving);
+        if (!e.blur && !e.rolling)
+            continue;
+        double s0, s1;
+        gls_exposure_span(&cams[c], &e, &s0, &s1);
+        double x0 = (double)frame + s0, x1 = (double)frame + s1;
+        for (size_t i = 0; i <= ms->n; i++) {
+            const gls_motion *m = i < ms->n ? &ms->m[i] : &ms->rig;
+            if (!m->n || (x0 >= (double)m->frame[0] && x1 <= (double)m->frame[m->n - 1]))
+                continue;
+            char a[40], b[40];
+            gls_fmt_double(a, sizeof a, x0);
+            gls_fmt_double(b, sizeof b, x1);
+            fprintf(errs, "glsplay: error: camera %s, frame %llu: its exposure spans frames %s to %s, beyond the rows "
+                          "of %s (frames %llu to %llu); sub-frame poses are interpolated between rows, never "
+                          "extrapolated: render fewer --frames or extend the file\n",
+                    names[c], (unsigned long long)frame, a, b, m->path, (unsigned long long)m->frame[0],
+                    (unsigned long long)m->frame[m->n - 1]);
+            return -1;
+        }
+    }
+    return 0;
+}
 
 /* Every frame to be rendered must have a row in every motion file. */
 static int motion_check(const motion_set *ms, uint64_t frame, FILE *errs)
@@ -193,6 +231,7 @@ static void motion_free(motion_set *ms)
 {
     for (size_t i = 0; ms->m && i < ms->n; i++)
         gls_motion_free(&ms->m[i]);
+    gls_motion_free(&ms->rig);
     free(ms->m);
     free(ms->inst);
 }
@@ -220,6 +259,13 @@ typedef struct {
     const gls_camera *rel;
     gls_flow_moves *moves;
     const gls_box_names *box_names; /* boxes: the objects' names */
+    /* sub-frame poses (exposure.h, subframe.h): the trajectory read whole
+     * (NULL: none, or no camera needs it), the frame being rendered, the
+     * camera's pose relative to the rig, whether anything moves */
+    uint64_t frame_now;
+    const gls_camera *rel_now;
+    int moving;
+    const char *name_now;       /* the camera being rendered            */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -374,6 +420,144 @@ out:
     return rc;
 }
 
+/* The scene and the camera s frame intervals after the frame time
+ * (exposure.h): the moving instances and the rig interpolated between
+ * their rows (subframe.h); checked to exist before rendering. */
+static int pose_at(void *ud, double t, gls_camera *cam)
+{
+    session *s = ud;
+    const motion_set *ms = s->ms;
+    double x = (double)s->frame_now + t, R[9], T[3];
+    int rc = 0;
+    for (size_t i = 0; i < ms->n; i++) {
+        if (gls_motion_pose_at(&ms->m[i], x, 0, R, T) == 0)
+            gls_scene_move(ms->scene, ms->inst[i], R, T);
+        else
+            rc = -1;
+    }
+    if (ms->n)
+        gls_scene_update(ms->scene);
+    if (ms->rig.n && s->rel_now) {
+        if (gls_motion_pose_at(&ms->rig, x, 1, R, T) == 0)
+            gls_traj_compose(s->rel_now->R, s->rel_now->T, R, T, cam->R, cam->T);
+        else
+            rc = -1;
+    }
+    return rc;
+}
+
+/* The anti-aliasing plan drawn through camera c into acc (aa.h): one
+ * fine framebuffer for the lattice and grid, jittered passes for
+ * stratified, one plain pass without anti-aliasing.  0, or -1 with the
+ * message in msg.  Also the exposure's render of one sub-frame sample
+ * (exposure.h), whence the signature. */
+static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg, size_t msglen)
+{
+    static const char lower_size[] = "lower --size (or the camera's width and height)";
+    session *s = ud;
+    const gls_play_opts *o = s->o;
+    const gls_aa_plan *plan = s->plan;
+    gls_renderer *r = s->r;
+    const char *name = s->name_now;
+    char err[512];
+    if (plan->count == 1) {
+        uint8_t *rgba = malloc((size_t)c->width * c->height * 4);
+        if (!rgba) {
+            gls_frame_oom_message(msg, msglen, name, c->width, c->height, (uint64_t)c->width * c->height * 4);
+            return -1;
+        }
+        gls_render_pass(r, c, 0.0, 0.0);
+        gls_render_read_rgba(r, rgba);
+        gls_accum_add(acc, rgba, (size_t)c->width * 4, 1);
+        free(rgba);
+        return 0;
+    }
+    if (gls_aa_fine_ok(plan)) {
+        /* lattice and grid: the samples are the pixels of a fine
+         * framebuffer drawn in tiles (aa_onepass.h) */
+        gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name, estimate_from_tiles, s};
+        if (gls_aa_render_fine(r, c, plan, &fo, acc, NULL, err, sizeof err)) {
+            char mem[32];
+            gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
+            snprintf(msg, msglen, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)", name, err,
+                     mem);
+            return -1;
+        }
+    } else {
+        /* stratified, grid Gaussian: one jittered pass per sample,
+         * several per GL pass (aa_render.h) */
+        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name, estimate_from_passes, s};
+        if (gls_aa_render(r, c, plan, &ro, acc, NULL, err, sizeof err)) {
+            uint32_t kx, ky;
+            gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
+            if (kx * ky > 1)
+                snprintf(msg, msglen, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)",
+                         name, err, kx * ky);
+            else
+                snprintf(msg, msglen, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* Rolling shutter: the centre pass (colour, depth) and the ground-truth
+ * pass (ids, normals) of each band of `band` rows drawn at its middle
+ * row's time, their rows copied out; the scene left at the frame time.
+ * The buffers not asked for are NULL.  0, or -1 with msg. */
+static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t *rgba, float *z, uint32_t *inst,
+                        float *normal, char *msg, size_t msglen)
+{
+    size_t n = (size_t)c->width * c->height, W = c->width;
+    uint8_t *rb = rgba ? malloc(n * 4) : NULL;
+    float *zb = z ? malloc(n * sizeof *zb) : NULL, *nb = normal ? malloc(n * 3 * sizeof *nb) : NULL;
+    uint32_t *ib = inst ? malloc(n * sizeof *ib) : NULL;
+    char err[512];
+    int rc = -1;
+    if ((rgba && !rb) || (z && !zb) || (normal && !nb) || (inst && !ib)) {
+        gls_frame_oom_message(msg, msglen, s->name_now, c->width, c->height, 28 * (uint64_t)n);
+        goto out;
+    }
+    for (uint32_t v0 = 0; v0 < c->height; v0 += band) {
+        uint32_t v1 = v0 + band < c->height ? v0 + band : c->height;
+        size_t a = W * v0, len = W * (v1 - v0);
+        gls_camera at = *c;
+        pose_at(s, c->line_delay * (v0 + v1 - 1) / 2.0, &at);
+        if (rgba || z) {
+            gls_render_pass(s->r, &at, 0.0, 0.0);
+            if (rgba) {
+                gls_render_read_rgba(s->r, rb);
+                memcpy(rgba + 4 * a, rb + 4 * a, 4 * len);
+            }
+            if (z) {
+                gls_render_read_z(s->r, zb);
+                memcpy(z + a, zb + a, len * sizeof *z);
+            }
+        }
+        if (inst || normal) {
+            if (gls_gt_render(s->r, &at, ib, nb, NULL, err, sizeof err)) {
+                snprintf(msg, msglen, "glsplay: error: camera %s: %s", s->name_now, err);
+                goto out;
+            }
+            if (inst)
+                memcpy(inst + a, ib + a, len * sizeof *inst);
+            if (normal)
+                memcpy(normal + 3 * a, nb + 3 * a, 3 * len * sizeof *normal);
+        }
+    }
+    rc = 0;
+out:
+    {
+        gls_camera at = *c;
+        pose_at(s, 0, &at);
+    }
+    free(rb);
+    free(zb);
+    free(nb);
+    free(ib);
+    return rc;
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -391,11 +575,12 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     const gls_play_opts *o = s->o;
     const gls_aa_plan *plan = s->plan;
     gls_renderer *r = s->r;
-    FILE *errs = s->errs;
-    FILE *bar = o->progress == GLS_PROGRESS_BAR ? errs : NULL; /* the samples' progress line */
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
-    int aa = plan->count > 1 && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
+    /* motion blur, rolling shutter, depth of field (exposure.h) */
+    gls_exposure ex = gls_exposure_of(c, s->moving);
+    int fx = gls_exposure_on(&ex) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
+    int aa = (plan->count > 1 || fx) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
     int centre = !aa || (o->outputs & GLS_OUT_FROM_Z);
     uint8_t *rgba = NULL, *mask = NULL, *flowmask = NULL;
     float *z = NULL, *normal = NULL, *flow = NULL, *gt_z = NULL;
@@ -408,10 +593,12 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     gls_frame_files *f = NULL;
     int rc = -1;
     /* a lens: one undistorted fine image, read through the inverse model
-       (distort_render.h) */
+       (distort_render.h); never with the exposure's effects (refused by
+       exposure_setup) */
     int lens = gls_distort_on(c);
     gls_distort_frame df;
     memset(&df, 0, sizeof df);
+    s->name_now = name;
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
@@ -423,42 +610,29 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
-    if (centre) {
-        if (!lens)
-            gls_render_pass(r, c, 0.0, 0.0);
-        if ((!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (o->outputs & GLS_OUT_POINTS)) {
-            rgba = malloc(n * 4);
-            if (!rgba)
-                goto oom;
-            if (lens)
-                gls_distort_frame_centre(&df, c, rgba, NULL);
-            else
-                gls_render_read_rgba(r, rgba);
-        }
-        if (o->outputs & GLS_OUT_FROM_Z) {
-            z = malloc(n * sizeof *z);
-            if (!z)
-                goto oom;
-            if (lens)
-                gls_distort_frame_centre(&df, c, NULL, z);
-            else
-                gls_render_read_z(r, z);
-        }
-    }
+    /* rolling shutter: the ground truth of each band of rows at its
+     * time (exposure.h); one band, the whole image, otherwise */
+    uint32_t band = ex.rolling ? gls_exposure_band_rows(r, c, &ex, pose_at, s) : c->height;
+    int want_rgba = (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (o->outputs & GLS_OUT_POINTS);
     int want_flow = s->next && (o->outputs & GLS_OUT_FLOW_ALL), want_boxes = (o->outputs & GLS_OUT_BOXES_ALL) != 0;
     int want_ids = (o->outputs & GLS_OUT_IDS) || want_flow || want_boxes;
-    if (want_ids || (o->outputs & GLS_OUT_NORMALS)) {
-        /* ground truth: the centre sample again, one pass for ids, normals
-         * and the depth flow starts from (gt_pass.h), never blended
-         * whatever --aa is */
-        if ((want_ids && !(gt_ids = malloc(n * sizeof *gt_ids))) ||
-            ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))) ||
-            (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
-            goto oom;
-        if (lens) {
-            /* through the lens: the pass drawn by the plain fine camera,
-             * read at each pixel centre's ray (flow is refused with a
-             * lens before rendering, so gt_z is not wanted here) */
+    if ((centre && want_rgba && !(rgba = malloc(n * 4))) ||
+        (centre && (o->outputs & GLS_OUT_FROM_Z) && !(z = malloc(n * sizeof *z))) ||
+        (want_ids && !(gt_ids = malloc(n * sizeof *gt_ids))) ||
+        ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))) ||
+        (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
+        goto oom;
+    if (band < c->height) {
+        /* flow and boxes are refused with a rolling shutter (exposure_setup) */
+        if (centre_bands(s, c, band, rgba, z, gt_ids, normal, msg, sizeof msg))
+            goto out;
+    } else if (lens) {
+        if (rgba || z)
+            gls_distort_frame_centre(&df, c, rgba, z);
+        if (gt_ids || normal) {
+            /* through the lens: the ground-truth pass drawn by the plain
+             * fine camera, read at each pixel centre's ray (flow is
+             * refused with a lens, so gt_z is not wanted here) */
             const gls_camera *fc = &df.lay.fine;
             size_t fn = (size_t)fc->width * fc->height;
             uint32_t *fids = gt_ids ? malloc(fn * sizeof *fids) : NULL;
@@ -475,7 +649,19 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
                 snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
                 goto out;
             }
-        } else if (gls_gt_render(r, c, gt_ids, normal, gt_z, err, sizeof err)) {
+        }
+    } else {
+        if (centre) {
+            gls_render_pass(r, c, 0.0, 0.0);
+            if (rgba)
+                gls_render_read_rgba(r, rgba);
+            if (z)
+                gls_render_read_z(r, z);
+        }
+        /* ground truth: the centre sample again, one pass for ids, normals
+         * and the depth flow starts from (gt_pass.h), never blended
+         * whatever --aa is */
+        if ((gt_ids || normal) && gls_gt_render(r, c, gt_ids, normal, gt_z, err, sizeof err)) {
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
@@ -483,34 +669,16 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
-        if (lens) {
+        if (fx) {
+            /* motion blur, rolling shutter, depth of field: the plan at
+             * each sub-frame time and lens point (exposure.h) */
+            if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, band, msg, sizeof msg))
+                goto out;
+        } else if (lens) {
             if (gls_distort_frame_accum(&df, c, plan, &acc))
                 goto oom;
-        } else if (gls_aa_fine_ok(plan)) {
-            /* lattice and grid: the samples are the pixels of a fine
-             * framebuffer drawn in tiles (aa_onepass.h) */
-            gls_aa_fine_opts fo = {o->aa_memory, 0, 0, bar, name, estimate_from_tiles, s};
-            if (gls_aa_render_fine(r, c, plan, &fo, &acc, NULL, err, sizeof err)) {
-                char mem[32];
-                gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
-                snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)", name, err,
-                         mem);
-                goto out;
-            }
-        } else {
-            /* stratified, grid Gaussian: one jittered pass per sample,
-             * several per GL pass (aa_render.h) */
-            gls_aa_run_opts ro = {o->aa_tiles, 0, bar, name, estimate_from_passes, s};
-            if (gls_aa_render(r, c, plan, &ro, &acc, NULL, err, sizeof err)) {
-                uint32_t kx, ky;
-                gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
-                if (kx * ky > 1)
-                    snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; lower --aa-tiles (%u tiles a pass now)",
-                             name, err, kx * ky);
-                else
-                    snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
-                goto out;
-            }
+        } else if (render_plan(s, c, &acc, msg, sizeof msg)) {
+            goto out;
         }
     }
     if ((o->outputs & GLS_OUT_IMAGE) && c->sensor.on) {
@@ -587,6 +755,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     }
     /* where the landmarks are in this frame: motion moves them */
     if ((o->outputs & GLS_OUT_LANDMARKS) && !(f->landmarks = gls_landmarks_take(s->scene)))
+        goto oom;
+    /* rolling shutter: each landmark at its band's time, as its rows */
+    if (f->landmarks && band < c->height &&
+        gls_exposure_landmarks(s->scene, c, band, pose_at, s, f->landmarks))
         goto oom;
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
     /* the writer needs the ids only for the id images and tables */
@@ -710,7 +882,7 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
             rc = 1;
             break;
         }
-        if (motion_check(ms, p.frame, errs)) {
+        if (motion_check(ms, p.frame, errs) || exposure_check(ms, rel, names, o->ncameras, p.frame, errs)) {
             rc = 1;
             break;
         }
@@ -803,6 +975,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
             gls_camera c = rel[i];
             gls_traj_compose(rel[i].R, rel[i].T, p.R, p.T, c.R, c.T);
             s->rel = &rel[i];
+            s->frame_now = p.frame, s->rel_now = &rel[i];
             if (play_camera(s, &c, names[i], (uint32_t)p.frame))
                 rc = 1;
         }
@@ -932,6 +1105,62 @@ static int lens_check(const gls_camera *c, const char *path, const gls_aa_plan *
     return 0;
 }
 
+/* The effects of every camera, before anything is drawn: a note for a
+ * shutter or line_delay with nothing moving (no effect), the
+ * accumulator's range, and the trajectory read whole when a camera needs
+ * sub-frame poses of the rig.  0, or 1 after a message. */
+static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_camera *cams, const char *const *names,
+                          const gls_aa_plan *plan, FILE *errs)
+{
+    int need_rig = 0;
+    ms->moving = o->trajectory || o->nmotions;
+    for (size_t i = 0; i < o->ncameras; i++) {
+        const gls_camera *c = &cams[i];
+        if (!ms->moving && (c->shutter > 0 || c->line_delay > 0))
+            fprintf(errs, "glsplay: note: camera %s: %s no effect: nothing moves (no --trajectory, no --motion)\n",
+                    names[i], c->shutter > 0 && c->line_delay > 0 ? "shutter and line_delay have"
+                              : c->shutter > 0                    ? "shutter has"
+                                                                  : "line_delay has");
+        gls_exposure e = gls_exposure_of(c, ms->moving);
+        char why[300];
+        if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
+            gls_exposure_fits(&e, plan, why, sizeof why)) {
+            fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);
+            return 1;
+        }
+        /* a lens's image is read through the inverse model from one fine
+         * render: not yet at sub-frame times or lens points */
+        if (gls_exposure_on(&e) && gls_distort_on(c)) {
+            fprintf(errs, "glsplay: error: camera %s: shutter, line_delay or aperture with lens distortion is not "
+                          "supported yet: the distorted image is made from one undistorted render\n", names[i]);
+            return 1;
+        }
+        /* flow and boxes start from one ground-truth pass at the frame
+         * time; a rolling shutter's rows each have their own */
+        if (e.rolling && (o->outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))) {
+            fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) is not supported: "
+                          "each row is exposed at its own time\n", names[i],
+                    o->outputs & GLS_OUT_FLOW_ALL ? "flow" : "boxes");
+            return 1;
+        }
+        /* each row's depth is at its own time, in that time's camera
+         * frame: the points would need a camera per row */
+        if (e.rolling && (o->outputs & GLS_OUT_POINTS)) {
+            fprintf(errs, "glsplay: error: camera %s: --outputs points with line_delay (rolling shutter) is not "
+                          "supported: each row is exposed at its own time, the point cloud needs one camera pose per "
+                          "frame\n", names[i]);
+            return 1;
+        }
+        need_rig |= e.blur || e.rolling;
+    }
+    char err[1024];
+    if (need_rig && o->trajectory && gls_traj_read_all(o->trajectory, NULL, &ms->rig, err, sizeof err)) {
+        fprintf(errs, "%s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
@@ -939,7 +1168,9 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     int rc = 1;
     gls_scene scene;
     memset(&scene, 0, sizeof scene);
-    motion_set ms = {&scene, 0, NULL, NULL};
+    motion_set ms;
+    memset(&ms, 0, sizeof ms);
+    ms.scene = &scene;
     gls_flow_moves moves;
     memset(&moves, 0, sizeof moves);
     gls_box_names box_names;
@@ -1012,6 +1243,9 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     if (motion_load(o, &ms, errs) || (!o->trajectory && motion_check(&ms, o->frame, errs)))
+        goto out;
+    if (exposure_setup(o, &ms, cams, (const char *const *)names, &plan, errs) ||
+        (!o->trajectory && exposure_check(&ms, cams, (const char *const *)names, o->ncameras, o->frame, errs)))
         goto out;
     if (o->outputs & GLS_OUT_IDS) {
         /* the ids of the whole run, from the bundle's object names */
@@ -1089,7 +1323,9 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
     json.cameras = o->ncameras;
     json.t0 = gls_now();
-    session ses = {o, &ms, &scene, &plan, r, wr, &json, errs, o->ncameras, 0, json.t0, 0, baseline, &gt, NULL, NULL, &moves, &box_names};
+    session ses = {o,        &ms,      &scene,    &plan, r,          wr,   &json,  errs,   o->ncameras,
+                   0,        json.t0,  0,         baseline, &gt,     NULL, NULL,   &moves, &box_names,
+                   o->frame, NULL,     ms.moving, NULL};
     started = 1;
     if (!o->trajectory) {
         /* a single frame is shard 0's (shard.h) */

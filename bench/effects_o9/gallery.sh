@@ -1,0 +1,24 @@
+#!/bin/sh
+# The README's gallery row of camera effects (spec/camera.md "Motion blur,
+# rolling shutter, depth of field"): the demo's left camera on a rig,
+# frame 1, --aa 2, halved to 320x240 into DIR/effects_{blur,rolling,dof}.png.
+#   motion blur:     driving forward 0.5 m a frame (traj.txt), shutter 1
+#   rolling shutter: panning 4 degrees a frame (pan.txt), line_delay 1/480
+#                    (the readout takes 0.96 frame intervals)
+#   depth of field:  aperture 0.1 m, focus 6 m
+# Run by make gallery.  usage: gallery.sh BIN DIR
+set -e
+B=$1 DIR=$2 H=bench/effects_o9
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+"$B/glsc" -I examples/demo -I "$B/textures" examples/demo/Demo.scene -o "$t/demo.glsb" 2>/dev/null
+rig='width 640\nheight 480\nfx 600\nfy 600\ncx 319.5\ncy 239.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 500\npose rig\n'
+printf "${rig}shutter 1\nexposure_samples 32\n" >"$t/blur.cam"
+printf "${rig}line_delay 0.002\n" >"$t/rolling.cam"
+printf "${rig}aperture 0.1\nfocus 6\nexposure_samples 64\n" >"$t/dof.cam"
+for c in blur:traj rolling:pan dof:traj; do
+    cam=${c%%:*} traj=${c#*:}
+    "$B/glsplay" "$t/demo.glsb" --camera "$t/$cam.cam" --trajectory "$H/$traj.txt" --frames 1 --aa 2 \
+        --outputs image -o "$t/out"
+    "$B/pnghalf" "$t/out/$cam/image_000001.png" "$DIR/effects_$cam.png"
+done
