@@ -40,6 +40,17 @@
  *   PRIM       draw a primitive: kind (0 poly, 1 qstrip, 2 tstrip, 3 tfan),
  *              vertex count, first position, first colour (or NONE: use the
  *              current colour), first texcoord (or NONE: texcoord 0,0).
+ *   LIGHT      declare a light (kind 0 directional, 1 point, 2 ambient):
+ *              directional: towards-the-light direction M * (x, y, z, 0);
+ *              point: position M * (x, y, z, 1); ambient: x, y, z unused
+ *              (0); colour r, g, b (>= 0, linear) and attenuation k (>= 0,
+ *              point lights: 1 / (1 + k d^2); 0 otherwise).  Draws nothing;
+ *              a bundle with one is lit (feature lights, spec/bundle.md)
+ *   SPECULAR   set the specular colour (r, g, b in 0..1) and Phong
+ *              exponent (>= 0) of the following primitives (state, like
+ *              COLOR; initially 0 0 0 0: no highlight)
+ *   PRIMN      PRIM with per-vertex normals: first normal (NORMALS), the
+ *              other operands PRIM's, at the same positions
  */
 #ifndef GLS_OPCODES_H
 #define GLS_OPCODES_H
@@ -72,6 +83,10 @@
  *   INSTNAME   an instance name (INSTANCE_NAMES)
  *   MARKNAME   a landmark name (MARK_NAMES); one object places each name
  *              at most once
+ *   LIGHTKIND  a light kind (gls_lightkind)
+ *   INTENSITY  a light's colour component, attenuation or Phong exponent;
+ *              finite and >= 0
+ *   FIRST_NRM  the first of NVERT unit normals (NORMALS)
  */
 #define GLS_OPERAND_KINDS(K)                                      \
     K(NUM,       F64, 0,              NULL,             NULL)     \
@@ -87,7 +102,10 @@
     K(FIRST_COL, U32, 0,              NULL,             NULL)     \
     K(FIRST_TC,  U32, 0,              NULL,             NULL)     \
     K(INSTNAME,  U32, 0,              NULL,             NULL)     \
-    K(MARKNAME,  U32, 0,              NULL,             NULL)
+    K(MARKNAME,  U32, 0,              NULL,             NULL)     \
+    K(LIGHTKIND, U8,  GLS_LIGHT_COUNT, gls_light_name,  "light kind") \
+    K(INTENSITY, F64, 0,              NULL,             NULL)     \
+    K(FIRST_NRM, U32, 0,              NULL,             NULL)
 
 /* How an instruction moves the walk of an object's code (validator):
  *   NEXT  on to the next instruction
@@ -120,7 +138,16 @@ typedef enum { GLS_FLOW_NEXT, GLS_FLOW_PUSH, GLS_FLOW_POP, GLS_FLOW_END } gls_fl
                                     O(FIRST_TC, PRIM_TC))                              \
     X(CALLN,     "calln",     NEXT, O(OBJECT, CALLN_OBJECT) O(INSTNAME, CALLN_NAME))   \
     X(MARK,      "mark",      NEXT, O(MARKNAME, MARK_NAME)                              \
-                                    O(NUM, MARK_X) O(NUM, MARK_Y) O(NUM, MARK_Z))
+                                    O(NUM, MARK_X) O(NUM, MARK_Y) O(NUM, MARK_Z))      \
+    X(LIGHT,     "light",     NEXT, O(LIGHTKIND, LIGHT_KIND)                           \
+                                    O(NUM, LIGHT_X) O(NUM, LIGHT_Y) O(NUM, LIGHT_Z)    \
+                                    O(INTENSITY, LIGHT_R) O(INTENSITY, LIGHT_G)        \
+                                    O(INTENSITY, LIGHT_B) O(INTENSITY, LIGHT_ATTEN))   \
+    X(SPECULAR,  "specular",  NEXT, O(COMPONENT, SPECULAR_R) O(COMPONENT, SPECULAR_G)  \
+                                    O(COMPONENT, SPECULAR_B) O(INTENSITY, SPECULAR_EXP)) \
+    X(PRIMN,     "primn",     NEXT, O(PRIMKIND, PRIMN_KIND) O(NVERT, PRIMN_N)          \
+                                    O(FIRST_POS, PRIMN_POS) O(FIRST_COL, PRIMN_COL)    \
+                                    O(FIRST_TC, PRIMN_TC) O(FIRST_NRM, PRIMN_NRM))
 
 typedef enum {
 #define GLS_X_ENUM(e, name, flow, operands) GLS_OP_##e,
@@ -147,6 +174,13 @@ GLS_OPCODES(GLS_X_ARGS, GLS_X_ARG)
 #undef GLS_X_ARGS
 #undef GLS_X_ARG
 
+/* PRIMN is PRIM plus its normals: the player and the dump read both
+ * through PRIM's operand positions. */
+_Static_assert((int)GLS_ARG_PRIMN_KIND == (int)GLS_ARG_PRIM_KIND && (int)GLS_ARG_PRIMN_N == (int)GLS_ARG_PRIM_N &&
+                   (int)GLS_ARG_PRIMN_POS == (int)GLS_ARG_PRIM_POS && (int)GLS_ARG_PRIMN_COL == (int)GLS_ARG_PRIM_COL &&
+                   (int)GLS_ARG_PRIMN_TC == (int)GLS_ARG_PRIM_TC,
+               "primn's operands are prim's, then the first normal");
+
 /* Longest operand list of any opcode (TRANSFORM). */
 #define GLS_MAX_OPERANDS 16
 #define GLS_X_FITS(e, name, flow, operands) \
@@ -160,6 +194,7 @@ GLS_OPCODES(GLS_X_FITS, GLS_X_NONE)
 #define GLS_NONE 0xFFFFFFFFu
 
 typedef enum { GLS_MODE_COLOR = 0, GLS_MODE_REPLACE = 1, GLS_MODE_MODULATE = 2, GLS_MODE_COUNT } gls_texmode;
+typedef enum { GLS_LIGHT_DIRECTIONAL = 0, GLS_LIGHT_POINT = 1, GLS_LIGHT_AMBIENT = 2, GLS_LIGHT_COUNT } gls_lightkind;
 typedef enum { GLS_PRIM_POLY = 0, GLS_PRIM_QSTRIP = 1, GLS_PRIM_TSTRIP = 2, GLS_PRIM_TFAN = 3, GLS_PRIM_COUNT } gls_primkind;
 
 typedef enum { GLS_STORE_F64, GLS_STORE_U8, GLS_STORE_U32 } gls_storage;
@@ -187,6 +222,7 @@ extern const gls_kind_info gls_kind[GLS_KIND_COUNT];
 extern const gls_op_info gls_op[GLS_OP_COUNT];
 extern const char *const gls_texmode_name[GLS_MODE_COUNT];
 extern const char *const gls_prim_name[GLS_PRIM_COUNT];
+extern const char *const gls_light_name[GLS_LIGHT_COUNT];
 
 /* Position of opcode op's first operand of kind k, or -1 if it has none. */
 int gls_op_find(gls_opcode op, gls_operand_kind k);
