@@ -238,7 +238,7 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
                 case GLS_KIND_MARKNAME: *v = find_name(b->marknames, b->nmarknames, u->marknames[*v].name); break;
                 case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
                 case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
-                case GLS_KIND_LIGHTKIND: case GLS_KIND_INTENSITY:
+                case GLS_KIND_LIGHTKIND: case GLS_KIND_INTENSITY: case GLS_KIND_SHADOWRES:
                     break; /* not an index */
                 }
             }

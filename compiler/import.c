@@ -91,6 +91,7 @@ static int import_operand(gls_unit *u, const gls_bundle *b, gls_insn *in, uint32
         break;
     case GLS_KIND_LIGHTKIND:
     case GLS_KIND_INTENSITY:
+    case GLS_KIND_SHADOWRES:
     case GLS_KIND_NUM:
     case GLS_KIND_ANGLE:
     case GLS_KIND_COMPONENT:

@@ -192,6 +192,20 @@ static void h_specular(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned 
     emit_d(ctx, GLS_OP_SPECULAR, d, name.line);
 }
 
+/* shadows(res): directional lights cast shadows through res x res maps
+ * (spec/language.md 7). */
+static void h_shadows(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    double v = a[0].num;
+    if (!(v >= GLS_SHADOW_RES_MIN && v <= GLS_SHADOW_RES_MAX) || v != floor(v) || ((uint32_t)v & ((uint32_t)v - 1))) {
+        ERR(ctx, a[0].line, a[0].col, "shadow map side %g is not a power of two in %u..%u", v, GLS_SHADOW_RES_MIN,
+            GLS_SHADOW_RES_MAX);
+        return;
+    }
+    emit_u(ctx, GLS_OP_SHADOWS, GLS_ARG_SHADOWS_RES, (uint32_t)v, name.line);
+}
+
 static void h_color(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     if (check_unit_range(ctx, a, n, "colour"))
@@ -464,5 +478,6 @@ const sema_instr sema_instrs[] = {
     {"light", 7, 8, "wnnnnnnn", WHERE_OUTSIDE, h_light},
     {"ambient", 3, 3, "nnn", WHERE_OUTSIDE, h_ambient},
     {"specular", 4, 4, "nnnn", WHERE_OUTSIDE, h_specular},
+    {"shadows", 1, 1, "n", WHERE_OUTSIDE, h_shadows},
 };
 const size_t sema_ninstrs = sizeof sema_instrs / sizeof sema_instrs[0];

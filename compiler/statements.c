@@ -9,7 +9,7 @@
 
 const char *const sema_words[] = {"vert",  "col", "tex",   "color",     "texmode", "texture", "notexture",
                                   "trans", "rot", "scale", "transform", "push",    "pop",     "call",    "mark",
-                                  "normal", "light", "ambient", "specular",
+                                  "normal", "light", "ambient", "specular", "shadows",
                                   "poly",  "qstrip", "tstrip", "tfan",  "const",   "param",   "repeat"};
 const size_t sema_nwords = sizeof sema_words / sizeof sema_words[0];
 
@@ -31,6 +31,7 @@ const gls_alias sema_aliases[] = {
     {"multmatrix", "transform"}, {"matrix", "transform"},
     {"lamp", "light"},          {"sun", "light"},           {"lightsource", "light"},
     {"norm", "normal"},         {"glnormal", "normal"},     {"shininess", "specular"},
+    {"shadow", "shadows"},      {"shadowmap", "shadows"},
     {"landmark", "mark"},       {"marker", "mark"},         {"keypoint", "mark"},
     {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},
     {"define", "const"},        {"let", "const"},           {"var", "const"},

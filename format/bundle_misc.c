@@ -26,6 +26,8 @@ static uint32_t operand_features(const gls_bundle *b, const gls_insn *in, uint32
         return GLS_FEAT_MARKS;
     case GLS_KIND_LIGHTKIND:
         return GLS_FEAT_LIGHTS;
+    case GLS_KIND_SHADOWRES:
+        return GLS_FEAT_SHADOWS;
     case GLS_KIND_INTENSITY:
     case GLS_KIND_FIRST_NRM:
     case GLS_KIND_NUM:

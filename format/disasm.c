@@ -87,6 +87,7 @@ static void print_insn(const gls_bundle *b, const gls_insn *in, FILE *out)
             fprintf(out, " %s", gls_kind[op->kind[i]].value_names[v]);
             break;
         case GLS_KIND_NVERT:
+        case GLS_KIND_SHADOWRES:
             fprintf(out, " %u", v);
             break;
         case GLS_KIND_OBJECT:

@@ -51,6 +51,8 @@
  *              COLOR; initially 0 0 0 0: no highlight)
  *   PRIMN      PRIM with per-vertex normals: first normal (NORMALS), the
  *              other operands PRIM's, at the same positions
+ *   SHADOWS    directional lights cast shadows, through shadow maps of
+ *              res x res texels (feature shadows; the largest res wins)
  */
 #ifndef GLS_OPCODES_H
 #define GLS_OPCODES_H
@@ -87,6 +89,8 @@
  *   INTENSITY  a light's colour component, attenuation or Phong exponent;
  *              finite and >= 0
  *   FIRST_NRM  the first of NVERT unit normals (NORMALS)
+ *   SHADOWRES  a shadow map's side in texels: a power of two in
+ *              GLS_SHADOW_RES_MIN..GLS_SHADOW_RES_MAX
  */
 #define GLS_OPERAND_KINDS(K)                                      \
     K(NUM,       F64, 0,              NULL,             NULL)     \
@@ -105,7 +109,8 @@
     K(MARKNAME,  U32, 0,              NULL,             NULL)     \
     K(LIGHTKIND, U8,  GLS_LIGHT_COUNT, gls_light_name,  "light kind") \
     K(INTENSITY, F64, 0,              NULL,             NULL)     \
-    K(FIRST_NRM, U32, 0,              NULL,             NULL)
+    K(FIRST_NRM, U32, 0,              NULL,             NULL)     \
+    K(SHADOWRES, U32, 0,              NULL,             NULL)
 
 /* How an instruction moves the walk of an object's code (validator):
  *   NEXT  on to the next instruction
@@ -147,7 +152,8 @@ typedef enum { GLS_FLOW_NEXT, GLS_FLOW_PUSH, GLS_FLOW_POP, GLS_FLOW_END } gls_fl
                                     O(COMPONENT, SPECULAR_B) O(INTENSITY, SPECULAR_EXP)) \
     X(PRIMN,     "primn",     NEXT, O(PRIMKIND, PRIMN_KIND) O(NVERT, PRIMN_N)          \
                                     O(FIRST_POS, PRIMN_POS) O(FIRST_COL, PRIMN_COL)    \
-                                    O(FIRST_TC, PRIMN_TC) O(FIRST_NRM, PRIMN_NRM))
+                                    O(FIRST_TC, PRIMN_TC) O(FIRST_NRM, PRIMN_NRM))     \
+    X(SHADOWS,   "shadows",   NEXT, O(SHADOWRES, SHADOWS_RES))
 
 typedef enum {
 #define GLS_X_ENUM(e, name, flow, operands) GLS_OP_##e,
@@ -189,6 +195,10 @@ _Static_assert((int)GLS_ARG_PRIMN_KIND == (int)GLS_ARG_PRIM_KIND && (int)GLS_ARG
 GLS_OPCODES(GLS_X_FITS, GLS_X_NONE)
 #undef GLS_X_FITS
 #undef GLS_X_NONE
+
+/* Shadow map sides (SHADOWRES): powers of two in this range. */
+#define GLS_SHADOW_RES_MIN 256u
+#define GLS_SHADOW_RES_MAX 8192u
 
 /* Index value meaning "absent" for the FIRST_COL and FIRST_TC operands. */
 #define GLS_NONE 0xFFFFFFFFu

@@ -237,6 +237,11 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
         if (in->d[i] < 0 || in->d[i] > 1)
             FAIL("object %s, instruction %u (%s): component outside 0..1", o->name, k, nm);
         break;
+    case GLS_KIND_SHADOWRES:
+        if (v < GLS_SHADOW_RES_MIN || v > GLS_SHADOW_RES_MAX || (v & (v - 1)))
+            FAIL("object %s, instruction %u (%s): shadow map side %u is not a power of two in %u..%u", o->name, k, nm,
+                 v, GLS_SHADOW_RES_MIN, GLS_SHADOW_RES_MAX);
+        break;
     case GLS_KIND_INTENSITY:
         if (!(in->d[i] >= 0))
             FAIL("object %s, instruction %u (%s): operand %u is negative", o->name, k, nm, i + 1);

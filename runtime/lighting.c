@@ -20,6 +20,7 @@
 #include <string.h>
 #include "glcalls.h"
 #include "lighting.h"
+#include "shadows.h"
 
 #define LIGHT_GLFUNCS(X)                                            \
     X(PFNGLCREATESHADERPROC, glCreateShader)                        \
@@ -38,7 +39,10 @@
     X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)            \
     X(PFNGLUNIFORM1IPROC, glUniform1i)                              \
     X(PFNGLUNIFORM3FPROC, glUniform3f)                              \
-    X(PFNGLUNIFORM4FVPROC, glUniform4fv)
+    X(PFNGLUNIFORM4FVPROC, glUniform4fv)                            \
+    X(PFNGLUNIFORM1IVPROC, glUniform1iv)                            \
+    X(PFNGLUNIFORM1FVPROC, glUniform1fv)                            \
+    X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)
 
 struct gls_lighting {
 #define LIGHT_X_FN(type, name) type name;
@@ -46,13 +50,14 @@ struct gls_lighting {
 #undef LIGHT_X_FN
     GLuint prog;
     GLint u_n, u_pos, u_col, u_ambient, u_tex, u_sampler;
+    GLint u_shadows, u_smat, u_sbias, u_smap;
 };
 
 /* gl_Normal: unit for a given normal, length 2 for a flat one (scene.h),
  * which is turned towards the camera; gl_MultiTexCoord1: the specular
  * colour and exponent. */
 static const char vs_src[] =
-    "#version 330 compatibility\n"
+    "#version 400 compatibility\n"
     "out vec3 v_eye;\n"
     "out vec3 v_n;\n"
     "out vec4 v_col;\n"
@@ -71,9 +76,18 @@ static const char vs_src[] =
 
 /* u_tex as gt_pass.c: 0 untextured, 1 replace, 2 modulate.  A normal of
  * length 0 (a degenerate triangle) faces the camera.  The alpha goes out
- * as the texture environment forms it, for the alpha test. */
+ * as the texture environment forms it, for the alpha test.  Shadows
+ * (u_shadows != 0, every light directional with map i): the point's map
+ * coordinates by u_smat[i], its depth plus the slope-scaled bias
+ * (shadows.h) compared with the map, 2x2 bilinear (GLSL 4.00: sampler
+ * arrays indexed by the loop's uniform index). */
+#define STR_(x) #x
+#define STR(x) STR_(x)
+#define TAN_MAX STR(GLS_SHADOW_BIAS_TAN_MAX)
+#define BIAS_CONST STR(GLS_SHADOW_BIAS_CONST)
+#define BIAS_SLOPE STR(GLS_SHADOW_BIAS_SLOPE)
 static const char fs_src[] =
-    "#version 330 compatibility\n"
+    "#version 400 compatibility\n"
     "in vec3 v_eye;\n"
     "in vec3 v_n;\n"
     "in vec4 v_col;\n"
@@ -86,6 +100,10 @@ static const char fs_src[] =
     "uniform vec3 u_ambient;\n"
     "uniform int u_tex;\n"
     "uniform sampler2D u_sampler;\n"
+    "uniform int u_shadows;\n"
+    "uniform mat4 u_smat[8];\n"
+    "uniform float u_sbias[8];\n"
+    "uniform sampler2DShadow u_smap[8];\n"
     "void main() {\n"
     "    vec4 albedo = v_col;\n"
     "    if (u_tex == 1) albedo = texture(u_sampler, v_st);\n"
@@ -108,6 +126,12 @@ static const char fs_src[] =
     "        float nl = dot(n, L);\n"
     "        if (nl <= 0.0) continue;\n"
     "        vec3 e = u_col[i].rgb * att;\n"
+    "        if (u_shadows != 0) {\n"
+    "            vec4 sc = u_smat[i] * vec4(v_eye, 1.0);\n"
+    "            float tn = min(sqrt(max(1.0 - nl * nl, 0.0)) / nl, " TAN_MAX ");\n"
+    "            float ref = sc.z + u_sbias[i] * (" BIAS_CONST " + " BIAS_SLOPE " * tn);\n"
+    "            e *= texture(u_smap[i], vec3(sc.xy, ref));\n"
+    "        }\n"
     "        c += e * nl * albedo.rgb;\n"
     "        if (shiny) {\n"
     "            float rv = max(dot(reflect(-L, n), V), 0.0);\n"
@@ -117,6 +141,13 @@ static const char fs_src[] =
     "    gl_FragColor = vec4(c, albedo.a);\n"
     "}\n";
 _Static_assert(GLS_MAX_LIGHTS == 8, "the shader's arrays hold GLS_MAX_LIGHTS lights");
+
+void gls_light_world(const gls_scene *s, const gls_light *l, double X[3])
+{
+    const double *W = s->inst[l->inst].world;
+    for (int r = 0; r < 3; r++)
+        X[r] = W[4 * r] * l->p[0] + W[4 * r + 1] * l->p[1] + W[4 * r + 2] * l->p[2] + W[4 * r + 3] * l->p[3];
+}
 
 uint32_t gls_lights_count(const gls_scene *s)
 {
@@ -142,10 +173,8 @@ uint32_t gls_lights_eye(const gls_scene *s, const gls_camera *c, double pos[4 * 
             break;
         /* world: the instance's transform (motion included); camera:
          * R X + T for a point, R d for a direction; then GL's eye axes */
-        const double *W = s->inst[l->inst].world;
         double X[3], P[3];
-        for (int r = 0; r < 3; r++)
-            X[r] = W[4 * r] * l->p[0] + W[4 * r + 1] * l->p[1] + W[4 * r + 2] * l->p[2] + W[4 * r + 3] * l->p[3];
+        gls_light_world(s, l, X);
         for (int r = 0; r < 3; r++)
             P[r] = c->R[3 * r] * X[0] + c->R[3 * r + 1] * X[1] + c->R[3 * r + 2] * X[2] + (l->p[3] ? c->T[r] : 0);
         double len = l->p[3] ? 1.0 : sqrt(P[0] * P[0] + P[1] * P[1] + P[2] * P[2]);
@@ -167,10 +196,8 @@ void gls_lighting_explain(FILE *out, const gls_bundle *b, const gls_scene *s)
     uint32_t n = gls_lights_count(s);
     for (uint32_t i = 0; i < s->nlights; i++) {
         const gls_light *l = &s->lights[i];
-        const double *W = s->inst[l->inst].world;
         double X[3];
-        for (int r = 0; r < 3; r++)
-            X[r] = W[4 * r] * l->p[0] + W[4 * r + 1] * l->p[1] + W[4 * r + 2] * l->p[2] + W[4 * r + 3] * l->p[3];
+        gls_light_world(s, l, X);
         fprintf(out, "  %-14s     light %u: %s", "", i + 1, what[l->kind]);
         if (l->kind != GLS_LIGHT_AMBIENT)
             fprintf(out, " (%.6g, %.6g, %.6g) in the world", X[0], X[1], X[2]);
@@ -256,10 +283,19 @@ gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err,
     l->u_ambient = l->glGetUniformLocation(l->prog, "u_ambient");
     l->u_tex = l->glGetUniformLocation(l->prog, "u_tex");
     l->u_sampler = l->glGetUniformLocation(l->prog, "u_sampler");
+    l->u_shadows = l->glGetUniformLocation(l->prog, "u_shadows");
+    l->u_smat = l->glGetUniformLocation(l->prog, "u_smat");
+    l->u_sbias = l->glGetUniformLocation(l->prog, "u_sbias");
+    l->u_smap = l->glGetUniformLocation(l->prog, "u_smap");
+    /* the maps on texture units 1..8 (gls_shadows_bind), set once */
+    static const GLint units[GLS_MAX_LIGHTS] = {1, 2, 3, 4, 5, 6, 7, 8};
+    l->glUseProgram(l->prog);
+    l->glUniform1iv(l->u_smap, GLS_MAX_LIGHTS, units);
+    l->glUseProgram(0);
     return l;
 }
 
-void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c)
+void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c, const struct gls_shadows *sh)
 {
     double pos[4 * GLS_MAX_LIGHTS], col[4 * GLS_MAX_LIGHTS], amb[3];
     float fp[4 * GLS_MAX_LIGHTS], fc[4 * GLS_MAX_LIGHTS];
@@ -275,6 +311,16 @@ void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c
     l->glUniform3f(l->u_ambient, (float)amb[0], (float)amb[1], (float)amb[2]);
     l->glUniform1i(l->u_sampler, 0);
     l->glUniform1i(l->u_tex, 0);
+    l->glUniform1i(l->u_shadows, sh != NULL);
+    if (sh) {
+        float S[16 * GLS_MAX_LIGHTS], bias[GLS_MAX_LIGHTS];
+        uint32_t m = gls_shadows_uniforms(sh, S, bias);
+        if (m) {
+            l->glUniformMatrix4fv(l->u_smat, (GLsizei)m, GL_FALSE, S);
+            l->glUniform1fv(l->u_sbias, (GLsizei)m, bias);
+        }
+        gls_shadows_bind(sh);
+    }
 }
 
 void gls_lighting_key(gls_lighting *l, const gls_drawkey *k)

@@ -29,6 +29,11 @@
 uint32_t gls_lights_eye(const gls_scene *s, const gls_camera *c, double pos[4 * GLS_MAX_LIGHTS],
                         double col[4 * GLS_MAX_LIGHTS], double ambient[3]);
 
+/* Light l's world position (point) or direction towards it (directional,
+ * not normalised), through its instance's world transform (motion
+ * included), in double. */
+void gls_light_world(const gls_scene *s, const gls_light *l, double X[3]);
+
 /* Directional and point lights of s (ambient ones not counted). */
 uint32_t gls_lights_count(const gls_scene *s);
 
@@ -37,13 +42,15 @@ uint32_t gls_lights_count(const gls_scene *s);
 void gls_lighting_explain(FILE *out, const gls_bundle *b, const gls_scene *s);
 
 typedef struct gls_lighting gls_lighting;
+struct gls_shadows;
 
 /* The program, compiled in the context current now; NULL with a message
  * in err when GL lacks something or the scene has more than
  * GLS_MAX_LIGHTS directional and point lights. */
 gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen);
-/* Before a colour pass's draws: the program on, the lights of camera c. */
-void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c);
+/* Before a colour pass's draws: the program on, the lights of camera c,
+ * and the shadow maps sh drew for it (NULL: no shadows). */
+void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c, const struct gls_shadows *sh);
 /* When the draw key changes: how the surface colour comes from the
  * texture (none, replace, modulate), as the fixed-function path does. */
 void gls_lighting_key(gls_lighting *l, const gls_drawkey *k);

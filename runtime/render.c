@@ -23,6 +23,7 @@
 #include "glcalls.h"
 #include "lighting.h"
 #include "render.h"
+#include "shadows.h"
 #include "scene_cull.h"
 #include "units.h"
 
@@ -77,6 +78,10 @@ struct gls_renderer {
     gls_render_item_hook hook; /* called before each item's draw: the  */
     void *hook_ud;             /* ground-truth pass (gls_render_hooked) */
     gls_lighting *light;       /* lit scenes only: the shading program  */
+    gls_shadows *shadows;      /* scenes with shadows: the maps         */
+    int depth_only;            /* drawing a shadow map (no program)     */
+    double pass_C[3];          /* the colour pass's camera centre and   */
+    uint32_t pass_nnear;       /* near items, for the shadow maps' draw */
     void *ext;                 /* gls_renderer_set_ext: freed with r    */
     void (*ext_free)(void *);
 };
@@ -135,6 +140,8 @@ static int setup_lighting(gls_renderer *r, const gls_scene *scene, char *err, si
         return 0;
     }
     glEnableClientState(GL_NORMAL_ARRAY);
+    if (scene->shadow_res && !(r->shadows = gls_shadows_create(r->ctx, scene, err, errlen)))
+        return -1;
     r->light = gls_lighting_create(r->ctx, scene, err, errlen);
     return r->light ? 0 : -1;
 }
@@ -386,7 +393,7 @@ static void apply_key(gls_renderer *r, const gls_drawkey *k)
     }
     if (!r->scene->has_color)
         glColor4ub(k->rgba[0], k->rgba[1], k->rgba[2], k->rgba[3]);
-    if (r->light && !r->hook)
+    if (r->light && !r->hook && !r->depth_only)
         gls_lighting_key(r->light, k);
 }
 
@@ -516,9 +523,10 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
     const gls_scene *s = r->scene;
     const gls_drawkey *prev = NULL;
     uint32_t k = 0;
-    int lit = r->light && !r->hook; /* a colour pass (the hooked one has its own program) */
+    /* a colour pass (the hooked one has its own program, a shadow map none) */
+    int lit = r->light && !r->hook && !r->depth_only;
     if (lit)
-        gls_lighting_begin(r->light, s, c);
+        gls_lighting_begin(r->light, s, c, r->shadows);
     r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
     set_pointers(r, s);
     for (uint32_t i = 0; i < s->nitems; i++) {
@@ -556,6 +564,30 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
     gls_render_tiles(r, c, 1, &du, &dv);
 }
 
+/* The shadow maps for camera c (centre C, nnear near items prepared),
+ * before a colour pass that draws the items vis marks. */
+static void draw_shadow_maps(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear,
+                             const uint8_t *vis)
+{
+    if (!r->shadows)
+        return;
+    memcpy(r->pass_C, C, sizeof r->pass_C);
+    r->pass_nnear = nnear;
+    gls_shadows_render(r->shadows, r, r->scene, c, vis);
+}
+
+void gls_render_depth_only(gls_renderer *r, const gls_camera *view, const double P[16])
+{
+    float f[16];
+    gls_mat_to_gl(P, f);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(f);
+    glMatrixMode(GL_MODELVIEW);
+    r->depth_only = 1;
+    draw_all(r, view, r->pass_C, r->pass_nnear, NULL);
+    r->depth_only = 0;
+}
+
 void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv)
 {
     double C[3];
@@ -568,6 +600,7 @@ void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const do
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     uint32_t nnear = prepare_near(r, c, C);
     gls_scene_cull(r->scene, c, r->ivis, r->vis, &r->cull);
+    draw_shadow_maps(r, c, C, nnear, r->vis);
     for (uint32_t t = 0; t < n && t < r->kx * r->ky; t++) {
         if (r->kx * r->ky > 1) {
             GLint x = (GLint)(r->width * (t % r->kx)), y = (GLint)(r->height * (t / r->kx));
@@ -632,6 +665,7 @@ void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], 
     double C[3], P[16];
     float f[16];
     gls_camera_centre(c, C);
+    draw_shadow_maps(r, c, C, r->nnear, vis);
     glViewport(0, 0, (GLsizei)vw, (GLsizei)vh);
     glEnable(GL_SCISSOR_TEST);
     glScissor((GLint)sc[0], (GLint)sc[1], (GLsizei)sc[2], (GLsizei)sc[3]);
@@ -734,6 +768,7 @@ void gls_renderer_destroy(gls_renderer *r)
         return;
     gls_renderer_set_ext(r, NULL, NULL); /* its GL objects, while the context is there */
     gls_lighting_destroy(r->light);
+    gls_shadows_destroy(r->shadows);
     if (r->tex) {
         for (uint32_t i = 0; i < r->ntex; i++)
             if (r->tex[i])

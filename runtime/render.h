@@ -70,6 +70,10 @@ typedef void (*gls_render_item_hook)(void *ud, const gls_scene *s, const gls_ite
 void gls_render_hooked(gls_renderer *r, const gls_camera *c, gls_render_item_hook hook, void *ud);
 /* The scene r draws. */
 const gls_scene *gls_renderer_scene(const gls_renderer *r);
+/* Shadow maps (shadows.c): every item, depth only (no program, no colour),
+ * seen by view through P, into whatever framebuffer is bound; the near
+ * items as the colour pass being prepared placed them. */
+void gls_render_depth_only(gls_renderer *r, const gls_camera *view, const double P[16]);
 /* The context r was created in (for GL entry points a pass loads itself). */
 gls_glctx *gls_renderer_glctx(const gls_renderer *r);
 /* One extension's state hangs off the renderer (the ground-truth pass's

@@ -140,6 +140,9 @@ typedef struct {
     size_t normal_offset, specular_offset;
     gls_light *lights;     /* every light on every call path, walk order  */
     uint32_t nlights;
+    uint32_t shadow_res;   /* shadow map side (the largest shadows(...)
+                              the walk met), 0: no shadows; used only when
+                              lit                                         */
     uint8_t *verts;        /* nverts * stride bytes, GL_TRIANGLES order   */
     double *exact;         /* nverts * 3: exact positions in the proto's
                               frame, for re-anchoring near the camera     */

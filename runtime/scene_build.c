@@ -50,6 +50,7 @@ typedef struct {
     int lit;               /* the bundle has lights (GLS_FEAT_LIGHTS)    */
     gls_light *lights;
     size_t nlights, lcap;
+    uint32_t shadow_res;   /* the largest SHADOWS met                    */
     size_t ntri, tcap;
     uint64_t dropped;
     int oom;
@@ -531,6 +532,10 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
             if (proto != GLS_NONE)
                 prim(w, proto, &st, &in);
             break;
+        case GLS_OP_SHADOWS:
+            if (in.u[GLS_ARG_SHADOWS_RES] > w->shadow_res)
+                w->shadow_res = in.u[GLS_ARG_SHADOWS_RES];
+            break;
         case GLS_OP_SPECULAR:
             memcpy(st.spec, in.d + GLS_ARG_SPECULAR_R, sizeof st.spec);
             break;
@@ -736,6 +741,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         s->specular_offset = s->stride, s->stride += 16;
     }
     s->lights = w.lights, s->nlights = (uint32_t)w.nlights;
+    s->shadow_res = w.shadow_res; /* drawn only when lit (render.c) */
     w.lights = NULL;
     s->nverts = (uint32_t)(w.ntri * 3);
     s->dropped = w.dropped;

@@ -438,7 +438,7 @@ static void test_opcode_table(void)
         [GLS_OP_NOTEXTURE] = 1, [GLS_OP_TRANS] = 25, [GLS_OP_ROT] = 33,   [GLS_OP_SCALE] = 25,
         [GLS_OP_TRANSFORM] = 129, [GLS_OP_PUSH] = 1, [GLS_OP_POP] = 1,    [GLS_OP_CALL] = 5,
         [GLS_OP_PRIM] = 18, [GLS_OP_CALLN] = 9, [GLS_OP_MARK] = 29, [GLS_OP_LIGHT] = 58,
-        [GLS_OP_SPECULAR] = 33, [GLS_OP_PRIMN] = 22};
+        [GLS_OP_SPECULAR] = 33, [GLS_OP_PRIMN] = 22, [GLS_OP_SHADOWS] = 5};
     for (int op = 0; op < GLS_OP_COUNT; op++) {
         gls_buf code = {0};
         gls_insn in = {.op = (gls_opcode)op};
@@ -744,6 +744,14 @@ static void test_lights_and_normals(void)
                         "object a.Tri, instruction 0 (light): ambient light with a position");
     expect_code_message(&(gls_insn){.op = GLS_OP_LIGHT, .u = {GLS_LIGHT_DIRECTIONAL}, .d = {0, 0, 1, 0, 1, 1, 1, 2}},
                         1, "object a.Tri, instruction 0 (light): attenuation on a light that is not a point light");
+    expect_code_message(&(gls_insn){.op = GLS_OP_SHADOWS, .u = {1536}}, 1,
+                        "object a.Tri, instruction 0 (shadows): shadow map side 1536 is not a power of two in 256..8192");
+    expect_code_message(&(gls_insn){.op = GLS_OP_SHADOWS, .u = {16384}}, 1,
+                        "object a.Tri, instruction 0 (shadows): shadow map side 16384 is not a power of two in 256..8192");
+    gls_bundle *sb = make_bundle();
+    set_code(sb, 1, &(gls_insn){.op = GLS_OP_SHADOWS, .u = {2048}}, 1);
+    CHECK(gls_bundle_features(sb) == GLS_FEAT_SHADOWS && gls_bundle_validate(sb, &err) == 0);
+    gls_bundle_free(sb);
 }
 
 int main(void)
