@@ -260,7 +260,7 @@ out/demo/.stamp: $(B)/demo.glsb $(B)/glsplay $(B)/depth2png examples/demo/left.c
 # stereo, grouping, lane, signs, rendered into out/<example>/, and their
 # 320x240 gallery images into out/gallery/, one example per rule (its
 # scene, its cameras, the scene library and the tools).
-EXAMPLES := calibration stereo dense_stereo grouping lane signs
+EXAMPLES := calibration stereo dense_stereo grouping lane signs lighting
 define example_rule
 out/$(1)/.stamp: $(wildcard examples/$(1)/*.scene examples/$(1)/*.cam) examples/render.sh $(B)/glsc $(B)/glsplay $(B)/depth2png $(B)/pnghalf $(B)/scenelib.glsb
 	@mkdir -p out/gallery
