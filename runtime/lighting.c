@@ -19,21 +19,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glcalls.h"
+#include "glprog.h"
 #include "lighting.h"
 #include "shadows.h"
 
 #define LIGHT_GLFUNCS(X)                                            \
-    X(PFNGLCREATESHADERPROC, glCreateShader)                        \
-    X(PFNGLSHADERSOURCEPROC, glShaderSource)                        \
-    X(PFNGLCOMPILESHADERPROC, glCompileShader)                      \
-    X(PFNGLGETSHADERIVPROC, glGetShaderiv)                          \
-    X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                \
-    X(PFNGLDELETESHADERPROC, glDeleteShader)                        \
-    X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                      \
-    X(PFNGLATTACHSHADERPROC, glAttachShader)                        \
-    X(PFNGLLINKPROGRAMPROC, glLinkProgram)                          \
-    X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                        \
-    X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)              \
     X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                      \
     X(PFNGLUSEPROGRAMPROC, glUseProgram)                            \
     X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)            \
@@ -211,23 +201,6 @@ void gls_lighting_explain(FILE *out, const gls_bundle *b, const gls_scene *s)
             "", n, n == 1 ? "" : "s", GLS_MAX_LIGHTS);
 }
 
-static GLuint compile(gls_lighting *l, GLenum type, const char *src, const char *what, char *err, size_t errlen)
-{
-    GLuint sh = l->glCreateShader(type);
-    l->glShaderSource(sh, 1, &src, NULL);
-    l->glCompileShader(sh);
-    GLint ok = 0;
-    l->glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[512] = "";
-        l->glGetShaderInfoLog(sh, sizeof log, NULL, log);
-        snprintf(err, errlen, "lighting: the %s shader does not compile: %s", what, log);
-        l->glDeleteShader(sh);
-        return 0;
-    }
-    return sh;
-}
-
 gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen)
 {
     uint32_t n = gls_lights_count(s);
@@ -252,27 +225,7 @@ gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err,
     }
     LIGHT_GLFUNCS(LIGHT_X_LOAD)
 #undef LIGHT_X_LOAD
-    GLuint vs = compile(l, GL_VERTEX_SHADER, vs_src, "vertex", err, errlen);
-    GLuint fs = vs ? compile(l, GL_FRAGMENT_SHADER, fs_src, "fragment", err, errlen) : 0;
-    if (fs) {
-        l->prog = l->glCreateProgram();
-        l->glAttachShader(l->prog, vs);
-        l->glAttachShader(l->prog, fs);
-        l->glLinkProgram(l->prog);
-        GLint ok = 0;
-        l->glGetProgramiv(l->prog, GL_LINK_STATUS, &ok);
-        if (!ok) {
-            char log[512] = "";
-            l->glGetProgramInfoLog(l->prog, sizeof log, NULL, log);
-            snprintf(err, errlen, "lighting: the shaders do not link: %s", log);
-            l->glDeleteProgram(l->prog);
-            l->prog = 0;
-        }
-    }
-    if (vs)
-        l->glDeleteShader(vs);
-    if (fs)
-        l->glDeleteShader(fs);
+    l->prog = gls_glprog_build(ctx, vs_src, fs_src, "lighting", err, errlen);
     if (!l->prog) {
         free(l);
         return NULL;

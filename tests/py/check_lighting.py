@@ -18,34 +18,14 @@ the player printed:
 Usage: check_lighting.py BIN TMPDIR.  Prints "ok NAME" / "FAIL NAME: why".
 """
 import os
-import subprocess
 import sys
 
 import cv2
 import numpy as np
 
+from glstest import fail, ok, run, write
+
 BIN, TMP = sys.argv[1], sys.argv[2]
-
-
-def ok(name):
-    print("ok " + name)
-
-
-def fail(name, why):
-    print("FAIL %s: %s" % (name, why))
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
-
-
-def run(*args):
-    r = subprocess.run([str(a) for a in args], capture_output=True, text=True)
-    if r.returncode != 0:
-        raise RuntimeError("%s: exit %d: %s" % (args[0], r.returncode, r.stderr.strip()))
-    return r.stdout
 
 
 def camera(name, w, h, f, R, T):

@@ -20,37 +20,18 @@ glsplay and checked against the geometry computed here in numpy:
 Usage: check_shadows.py BIN TMPDIR.  Prints "ok NAME" / "FAIL NAME: why"."""
 import math
 import os
-import subprocess
 import sys
 
 import cv2
 import numpy as np
+
+from glstest import fail, ok, run, write
 
 BIN, TMP = sys.argv[1], sys.argv[2]
 BOUNDARY_PX = 1.5
 W, H, F = 640, 480, 500.0
 AMB = 0.2
 ALBEDO = 230 / 255.0  # color(0.9, 0.9, 0.9) as RGBA8
-
-
-def ok(name):
-    print("ok " + name)
-
-
-def fail(name, why):
-    print("FAIL %s: %s" % (name, why))
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
-
-
-def run(*args):
-    r = subprocess.run([str(a) for a in args], capture_output=True, text=True)
-    if r.returncode != 0:
-        raise RuntimeError("%s: exit %d: %s" % (args[0], r.returncode, r.stderr.strip()))
 
 
 def look_at(C, target):
