@@ -13,7 +13,9 @@ the player printed:
   255 * s * max(0, r.v)^e, and the highlight's centroid against the
   projection of the mirror point the reflection law gives;
 - ground truth untouched: depth and instance ids of the lit sphere equal
-  those of the same scene without its lights, byte for byte.
+  those of the same scene without its lights, byte for byte;
+- far from the origin: the point-lit plane moved 1e6 units with its
+  camera gives the same image, byte for byte.
 
 Usage: check_lighting.py BIN TMPDIR.  Prints "ok NAME" / "FAIL NAME: why".
 """
@@ -143,6 +145,21 @@ if on.sum() > 50000 and err.max() <= 1.0:
 else:
     fail("lighting_plane_point_light", "max error %.3f levels over %d pixels (<= 1)" % (err.max(), on.sum()))
 print("# plane: %d pixels, max error %.3f levels, mean %.3f" % (on.sum(), err.max(), err.mean()))
+
+# the same scene and camera 1e6 units from the origin (a multiple of the
+# chunk cell, 64): the lights are composed in double and handed to GL
+# relative to the camera, so the image is the same, byte for byte
+D = np.array([64.0 * 2 ** 14, 0.0, -64.0 * 2 ** 13])
+write(os.path.join(TMP, "far", "t", "Lamp.scene"), "light(point, 0, 2, 0, 1, 1, 1, %r);\n" % K)
+write(os.path.join(TMP, "far", "Top.scene"), "trans(%r, %r, %r);\n" % tuple(D) + plane +
+      "push; trans(0.5, 0, -0.3); call(\"t.Lamp\"); pop;\n")
+cam_far = camera("downfar", W2, H2, F2, R_P, np.asarray(T_P) - R_P @ D)
+far = image(render(os.path.join(TMP, "far"), "Top.scene", cam_far))
+if np.array_equal(far, img):
+    ok("lighting_far_from_origin")
+else:
+    fail("lighting_far_from_origin", "1e6 units away the image differs: max %g levels at %d pixels" %
+         (np.abs(far - img).max(), int((far != img).any(axis=-1).sum())))
 
 # ---- the Phong highlight -----------------------------------------------------
 L_SPEC, SPEC, EXP = np.array([0.3, 1.0, 0.2]), 0.9, 200.0

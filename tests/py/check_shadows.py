@@ -15,7 +15,9 @@ glsplay and checked against the geometry computed here in numpy:
 - grazing (light at 80 degrees incidence): every plane pixel farther than
   BOUNDARY_PX from the true boundary equals the closed form (lit or
   shadowed) within 1 level: no acne on the lit plane, no light leaking
-  into the shadow.
+  into the shadow;
+- far from the origin: the contact case moved 1e6 units with its camera
+  gives the same image, byte for byte.
 
 Usage: check_shadows.py BIN TMPDIR.  Prints "ok NAME" / "FAIL NAME: why"."""
 import math
@@ -66,14 +68,21 @@ def box_hit(o, d, hx):
     return np.where(hit, np.maximum(tmin, 0), np.inf)
 
 
-def case(name, incidence, azimuth_deg, C, target, hx):
+def light_dir(incidence, azimuth_deg):
     a, b = math.radians(incidence), math.radians(azimuth_deg)
-    L = np.array([math.sin(a) * math.cos(b), math.cos(a), math.sin(a) * math.sin(b)])
+    return np.array([math.sin(a) * math.cos(b), math.cos(a), math.sin(a) * math.sin(b)])
+
+
+def render_case(name, incidence, azimuth_deg, C, target, hx, shift=(0.0, 0.0, 0.0)):
+    """The scene and camera, both moved by shift; the image's green channel."""
+    L = light_dir(incidence, azimuth_deg)
     d = os.path.join(TMP, name)
     write(os.path.join(d, "Top.scene"),
+          "trans(%r, %r, %r);\n" % tuple(shift) +
           "shadows(2048);\nambient(%r, %r, %r);\nlight(directional, %r, %r, %r, 1, 1, 1);\n" % ((AMB,) * 3 + tuple(L)) +
           "color(0.9, 0.9, 0.9);\npoly { vert(-6, 0, -6); vert(6, 0, -6); vert(6, 0, 6); vert(-6, 0, 6); }\n" + box_scene(hx))
     R, T = look_at(np.asarray(C, float), target)
+    T = T - R @ np.asarray(shift, float)
     cam = os.path.join(d, "cam.cam")
     write(cam, "width %d\nheight %d\nfx %r\nfy %r\ncx %r\ncy %r\nR %s\nT %s\nnear 0.1\nfar 100\n" %
           (W, H, F, F, (W - 1) / 2, (H - 1) / 2, " ".join(repr(float(x)) for x in R.ravel()),
@@ -81,7 +90,13 @@ def case(name, incidence, azimuth_deg, C, target, hx):
     run(os.path.join(BIN, "glsc"), "-o", os.path.join(d, "s.glsb"), os.path.join(d, "Top.scene"))
     run(os.path.join(BIN, "glsplay"), os.path.join(d, "s.glsb"), "--camera", cam, "--outputs", "image", "-o",
         os.path.join(d, "out"))
-    img = cv2.imread(os.path.join(d, "out", "cam", "image_000000.png"), cv2.IMREAD_COLOR)[:, :, 1].astype(float)
+    return cv2.imread(os.path.join(d, "out", "cam", "image_000000.png"), cv2.IMREAD_COLOR)[:, :, 1].astype(float)
+
+
+def case(name, incidence, azimuth_deg, C, target, hx):
+    L = light_dir(incidence, azimuth_deg)
+    R, T = look_at(np.asarray(C, float), target)
+    img = render_case(name, incidence, azimuth_deg, C, target, hx)
 
     u, v = np.meshgrid(np.arange(W, dtype=float), np.arange(H, dtype=float))
     dirs = np.stack([(u - (W - 1) / 2) / F, (v - (H - 1) / 2) / F, np.ones_like(u)], axis=-1) @ R
@@ -111,14 +126,14 @@ def case(name, incidence, azimuth_deg, C, target, hx):
     # plane pixels away from the boundary equal the closed form within 1 level
     interior = plane & (dist > BOUNDARY_PX)
     dev = np.abs(img - np.where(shadow, shd_v, lit_v))[interior]
-    return shadow, wrong, far_wrong, dev, box, plane, seen_shadow
+    return shadow, wrong, far_wrong, dev, box, plane, seen_shadow, img
 
 
 # contact: 45 degrees, the shadow towards -x, seen from -x, cast by a box
 # 5 cm thick: the map holds its lit face, 5 cm from the shadowed one, so
 # that a depth bias beyond about 7 cm would show as a lit gap between the
 # box and its shadow (a solid 2 m box would hide up to 2.8 m)
-shadow, wrong, far_wrong, dev, box, plane, seen = case("contact", 45, 0, [-9.0, 6.0, 5.0], [-1.5, 0.5, 0.0], 0.025)
+shadow, wrong, far_wrong, dev, box, plane, seen, contact_img = case("contact", 45, 0, [-9.0, 6.0, 5.0], [-1.5, 0.5, 0.0], 0.025)
 k = cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (7, 7))
 near_box = cv2.dilate(box.astype(np.uint8), k).astype(bool) & shadow  # true shadow within 3 px of the box
 gap = near_box & ~seen
@@ -133,7 +148,7 @@ else:
          (shadow.sum(), near_box.sum(), far_wrong.sum(), BOUNDARY_PX, gap.sum(), dev.max()))
 
 # grazing: 80 degrees incidence, from the side; the lit plane free of acne
-shadow, wrong, far_wrong, dev, box, plane, seen = case("grazing", 80, 30, [0.0, 7.0, 10.0], [0.0, 0.0, 0.0], 1.0)
+shadow, wrong, far_wrong, dev, box, plane, seen, _ = case("grazing", 80, 30, [0.0, 7.0, 10.0], [0.0, 0.0, 0.0], 1.0)
 print("# grazing: %d plane pixels (%d in shadow); %d differ from the geometry, %d farther than %.1f px from the "
       "boundary; interior error max %.1f levels" %
       (plane.sum(), shadow.sum(), wrong.sum(), far_wrong.sum(), BOUNDARY_PX, dev.max()))
@@ -142,3 +157,12 @@ if plane.sum() > 50000 and shadow.sum() > 2000 and not far_wrong.any() and dev.m
 else:
     fail("shadows_grazing_no_acne", "%d pixels wrong farther than %.1f px from the boundary; interior error max "
          "%.1f levels (<= 1)" % (far_wrong.sum(), BOUNDARY_PX, dev.max()))
+
+# far from the origin (1e6 units, a multiple of the chunk cell): the maps
+# and their matrices are composed in double, relative to the light's box
+# and the camera, so the image is the same, byte for byte
+far = render_case("contact_far", 45, 0, [-9.0, 6.0, 5.0], [-1.5, 0.5, 0.0], 0.025, (64.0 * 2 ** 14, 0.0, -64.0 * 2 ** 13))
+if np.array_equal(far, contact_img):
+    ok("shadows_far_from_origin")
+else:
+    fail("shadows_far_from_origin", "1e6 units away the image differs at %d pixels" % int((far != contact_img).sum()))
