@@ -657,6 +657,11 @@ void gls_render_prepare(gls_renderer *r, const gls_camera *c)
     double C[3];
     gls_camera_centre(c, C);
     r->nnear = prepare_near(r, c, C);
+    if (r->shadows) { /* once for all the mapped tiles: fitted to what the whole camera sees */
+        gls_cull_stats st;
+        gls_scene_cull(r->scene, c, r->ivis, r->vis, &st);
+        draw_shadow_maps(r, c, C, r->nnear, r->vis);
+    }
 }
 
 void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], uint32_t vw, uint32_t vh,
@@ -665,7 +670,6 @@ void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], 
     double C[3], P[16];
     float f[16];
     gls_camera_centre(c, C);
-    draw_shadow_maps(r, c, C, r->nnear, vis);
     glViewport(0, 0, (GLsizei)vw, (GLsizei)vh);
     glEnable(GL_SCISSOR_TEST);
     glScissor((GLint)sc[0], (GLint)sc[1], (GLsizei)sc[2], (GLsizei)sc[3]);

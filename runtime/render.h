@@ -95,7 +95,8 @@ uint32_t gls_render_chunk_bounds(gls_renderer *r, const gls_camera *c, double (*
 gls_cull_stats gls_render_cull_stats(const gls_renderer *r);
 uint32_t gls_renderer_nchunks(const gls_renderer *r);
 /* Upload what camera c needs before gls_render_mapped (the re-anchored
- * near chunks). */
+ * near chunks), and draw its shadow maps (a scene with shadows: fitted to
+ * what the whole camera sees, the same for every mapped tile). */
 void gls_render_prepare(gls_renderer *r, const gls_camera *c);
 /* Clear and draw the chunks with vis[i] != 0 (NULL: all) through camera
  * c with the image -> window map m (gls_camera_projection_map) in the
