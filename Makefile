@@ -131,6 +131,7 @@ SEES_test_progress := runtime
 SEES_test_rotation := runtime
 SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
+SEES_test_lighting := runtime
 SEES_test_road_geo := roads
 SEES_test_road_nurbs := roads
 SEES_test_road_motion := roads runtime
