@@ -7,7 +7,9 @@
  * and there is no shader source to embed, compile and diagnose.  Matrices
  * go in with glLoadMatrixf after being formed in double on the CPU.  (The
  * ground-truth pass, gt_pass.c, draws the same items through
- * gls_render_hooked with a small GLSL program of its own.)
+ * gls_render_hooked with a small GLSL program of its own, and a lit
+ * scene's colour passes use lighting.c's, with shadows.c's maps drawn
+ * through gls_render_depth_only; an unlit scene never meets either.)
  *
  * Over 500 lines because it is the one file that speaks GL (the context
  * aside, glctx_*.c): textures, framebuffers, state per draw key, the
