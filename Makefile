@@ -141,6 +141,7 @@ SEES_test_rotation := runtime
 SEES_test_subframe := runtime
 SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
+SEES_test_lighting := runtime
 SEES_test_road_geo := roads
 SEES_test_road_nurbs := roads
 SEES_test_road_motion := roads runtime
@@ -314,7 +315,7 @@ out/demo/.stamp: $(B)/demo.glsb $(B)/glsplay $(B)/depth2png examples/demo/left.c
 # stereo, grouping, lane, signs, rendered into out/<example>/, and their
 # 320x240 gallery images into out/gallery/, one example per rule (its
 # scene, its cameras, the scene library and the tools).
-EXAMPLES := calibration stereo dense_stereo grouping lane signs
+EXAMPLES := calibration stereo dense_stereo grouping lane signs lighting
 define example_rule
 out/$(1)/.stamp: $(wildcard examples/$(1)/*.scene examples/$(1)/*.cam) examples/render.sh $(B)/glsc $(B)/glsplay $(B)/depth2png $(B)/pnghalf $(B)/scenelib.glsb
 	@mkdir -p out/gallery

@@ -96,6 +96,24 @@ static inline void m4_mul(const double A[16], const double B[16], double C[16])
     for (int i = 0; i < 16; i++)
         C[i] = t[i];
 }
+/* N: the direction of M^-T for the upper 3x3 of the 4x4 row-major A,
+ * which carries normals: the cofactor matrix times the sign of the
+ * determinant (no division, so a tiny scale loses nothing; the caller
+ * normalises). */
+static inline void m4_normal_matrix(const double A[16], double N[9])
+{
+    double d = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            N[3 * i + j] = A[4 * i1 + j1] * A[4 * i2 + j2] - A[4 * i1 + j2] * A[4 * i2 + j1];
+        }
+    for (int j = 0; j < 3; j++)
+        d += A[j] * N[j];
+    if (d < 0)
+        for (int i = 0; i < 9; i++)
+            N[i] = -N[i];
+}
 /* r = A v for a homogeneous 4-vector (x, y, z, w). */
 static inline void m4_apply(const double A[16], double x, double y, double z, double w, double r[4])
 {

@@ -170,7 +170,7 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
     if (!b->objects || !b->textures)
         goto oom;
     b->top = GLS_NONE;
-    uint64_t npos = 0, ncol = 0, ntc = 0;
+    uint64_t npos = 0, ncol = 0, ntc = 0, nnrm = 0;
     for (uint32_t i = 0; i < nu; i++) {
         units[i]->final_index = i;
         if (units[i] == top)
@@ -178,8 +178,9 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
         npos += units[i]->npos;
         ncol += units[i]->ncol;
         ntc += units[i]->ntc;
+        nnrm += units[i]->nnrm;
     }
-    if (npos > GLS_MAX_VERTICES || ncol > GLS_MAX_VERTICES || ntc > GLS_MAX_VERTICES) {
+    if (npos > GLS_MAX_VERTICES || ncol > GLS_MAX_VERTICES || ntc > GLS_MAX_VERTICES || nnrm > GLS_MAX_VERTICES) {
         gls_error_at(&c->diag, GLS_NOLOC, "the scene has more than %u vertices", GLS_MAX_VERTICES);
         goto fail;
     }
@@ -198,12 +199,13 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
     b->pos = malloc(npos * sizeof *b->pos + 1);
     b->col = malloc(ncol * sizeof *b->col + 1);
     b->tc = malloc(ntc * sizeof *b->tc + 1);
-    if (!b->pos || !b->col || !b->tc)
+    b->nrm = nnrm ? malloc(nnrm * sizeof *b->nrm) : NULL;
+    if (!b->pos || !b->col || !b->tc || (nnrm && !b->nrm))
         goto oom;
     for (uint32_t i = 0; i < nu; i++) {
         gls_unit *u = units[i];
         gls_object *o = &b->objects[i];
-        uint32_t p0 = b->npos, c0 = b->ncol, t0 = b->ntex;
+        uint32_t p0 = b->npos, c0 = b->ncol, t0 = b->ntex, n0 = b->nnrm;
         /* a unit without colours has u->col == NULL: memcpy(NULL, 0) is undefined */
         if (u->npos)
             memcpy(b->pos + p0, u->pos, u->npos * sizeof *u->pos);
@@ -214,6 +216,9 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
         b->npos += u->npos;
         b->ncol += u->ncol;
         b->ntex += u->ntc;
+        if (u->nnrm)
+            memcpy(b->nrm + n0, u->nrm, u->nnrm * sizeof *u->nrm);
+        b->nnrm += u->nnrm;
         gls_buf code = {0};
         size_t pos = 0;
         int has_src = u->ninsn && u->lines[0].file != GLS_NONE;
@@ -232,11 +237,13 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
                 case GLS_KIND_FIRST_POS: *v += p0; break;
                 case GLS_KIND_FIRST_COL: if (*v != GLS_NONE) *v += c0; break;
                 case GLS_KIND_FIRST_TC: if (*v != GLS_NONE) *v += t0; break;
+                case GLS_KIND_FIRST_NRM: *v += n0; break;
                 case GLS_KIND_INSTNAME: *v = find_name(b->instnames, b->ninstnames, u->instnames[*v].name); break;
                 case GLS_KIND_MARKNAME: *v = find_name(b->marknames, b->nmarknames, u->marknames[*v].name); break;
                 case GLS_KIND_CLASSNAME: *v = find_name(b->marknames, b->nmarknames, u->classnames[*v].name); break;
                 case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
                 case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
+                case GLS_KIND_LIGHTKIND: case GLS_KIND_INTENSITY: case GLS_KIND_SHADOWRES:
                     break; /* not an index */
                 }
             }

@@ -30,8 +30,9 @@ void sema_block_open(gls_parse *ctx, gls_tok name)
     ctx->prim_pos0 = ctx->u->npos;
     ctx->prim_col0 = ctx->u->ncol;
     ctx->prim_tc0 = ctx->u->ntc;
+    ctx->prim_nrm0 = ctx->u->nnrm;
     ctx->prim_nvert = 0;
-    ctx->prim_has_col = ctx->prim_has_tc = 0;
+    ctx->prim_has_col = ctx->prim_has_tc = ctx->prim_has_nrm = 0;
     ctx->errors_at_block = ctx->d->errors;
 }
 
@@ -57,7 +58,9 @@ void sema_block_close(gls_parse *ctx)
             ERR(ctx, t.line, t.col, "'%s' needs at least %u vertices; it has %u", gls_prim_name[k], min, nv);
         return;
     }
-    gls_insn in = {.op = GLS_OP_PRIM};
+    /* with normals a PRIMN: PRIM's operands, then the first normal */
+    gls_insn in = {.op = ctx->prim_has_nrm ? GLS_OP_PRIMN : GLS_OP_PRIM};
+    in.u[GLS_ARG_PRIMN_NRM] = ctx->prim_nrm0;
     in.u[GLS_ARG_PRIM_KIND] = (uint32_t)k;
     in.u[GLS_ARG_PRIM_N] = nv;
     in.u[GLS_ARG_PRIM_POS] = ctx->prim_pos0;

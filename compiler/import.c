@@ -90,6 +90,12 @@ static int import_operand(gls_unit *u, const gls_bundle *b, gls_insn *in, uint32
             return 0;
         *v = append(&u->tc, &u->ntc, &u->tc_cap, b->tc + *v, s.n, sizeof *u->tc);
         break;
+    case GLS_KIND_FIRST_NRM:
+        *v = append(&u->nrm, &u->nnrm, &u->nrm_cap, b->nrm + *v, s.n, sizeof *u->nrm);
+        break;
+    case GLS_KIND_LIGHTKIND:
+    case GLS_KIND_INTENSITY:
+    case GLS_KIND_SHADOWRES:
     case GLS_KIND_NUM:
     case GLS_KIND_ANGLE:
     case GLS_KIND_COMPONENT:

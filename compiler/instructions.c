@@ -58,7 +58,8 @@ static void h_vert(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     }
     if (gls_grow(&u->pos, &u->pos_cap, (size_t)u->npos + 1, sizeof *u->pos) ||
         (ctx->prim_has_col && gls_grow(&u->col, &u->col_cap, (size_t)u->ncol + 1, sizeof *u->col)) ||
-        (ctx->prim_has_tc && gls_grow(&u->tc, &u->tc_cap, (size_t)u->ntc + 1, sizeof *u->tc))) {
+        (ctx->prim_has_tc && gls_grow(&u->tc, &u->tc_cap, (size_t)u->ntc + 1, sizeof *u->tc)) ||
+        (ctx->prim_has_nrm && gls_grow(&u->nrm, &u->nrm_cap, (size_t)u->nnrm + 1, sizeof *u->nrm))) {
         ERR(ctx, name.line, name.col, "out of memory");
         ctx->stop = 1;
         return;
@@ -68,6 +69,8 @@ static void h_vert(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
         u->col[u->ncol++] = ctx->cur_col;
     if (ctx->prim_has_tc)
         u->tc[u->ntc++] = ctx->cur_tc;
+    if (ctx->prim_has_nrm)
+        u->nrm[u->nnrm++] = ctx->cur_nrm;
     ctx->prim_nvert++;
 }
 
@@ -99,6 +102,108 @@ static void h_tex(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     }
     ctx->prim_has_tc = 1;
     ctx->cur_tc = (gls_st){(float)a[0].num, (float)a[1].num};
+}
+
+/* normal(nx, ny, nz): the normal of the following vertices of this
+ * primitive, stored unit length (spec/language.md 7). */
+static void h_normal(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    double l = sqrt(a[0].num * a[0].num + a[1].num * a[1].num + a[2].num * a[2].num);
+    if (!(l > 0) || !isfinite(l)) {
+        ERR(ctx, a[0].line, a[0].col, "normal (%g, %g, %g) has no direction", a[0].num, a[1].num, a[2].num);
+        return;
+    }
+    if (!ctx->prim_has_nrm && ctx->prim_nvert > 0) {
+        ERR(ctx, name.line, name.col,
+            "'normal' after the first 'vert' of this primitive: put a 'normal' before the first vertex so every vertex has one");
+        return;
+    }
+    ctx->prim_has_nrm = 1;
+    ctx->cur_nrm = (gls_nrm){(float)(a[0].num / l), (float)(a[1].num / l), (float)(a[2].num / l)};
+}
+
+/* A light's colour (and attenuation): each >= 0, linear. */
+static int check_nonnegative(gls_parse *ctx, const gls_val *a, unsigned n, const char *what)
+{
+    for (unsigned i = 0; i < n; i++)
+        if (!(a[i].num >= 0)) {
+            ERR(ctx, a[i].line, a[i].col, "%s %g is negative", what, a[i].num);
+            return -1;
+        }
+    return 0;
+}
+
+/* light(directional, dx, dy, dz, r, g, b) or light(point, x, y, z, r, g,
+ * b[, attenuation]): placed under the current transform like a vertex
+ * (spec/language.md 7). */
+static void h_light(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    static const char *const kinds[] = {"directional", "point"};
+    int kind = -1;
+    for (int k = 0; k < 2; k++)
+        if (a[0].len == strlen(kinds[k]) && memcmp(a[0].s, kinds[k], a[0].len) == 0)
+            kind = k;
+    if (kind < 0) {
+        const char *s = gls_suggest(a[0].s, a[0].len, kinds, 2);
+        ERR(ctx, a[0].line, a[0].col, "unknown light kind '%.*s'%s%s%s (the kinds are directional, point; ambient light is 'ambient(r, g, b)')",
+            (int)a[0].len, a[0].s, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
+        return;
+    }
+    if (check_nonnegative(ctx, a + 4, 3, "light colour component"))
+        return;
+    if (kind == GLS_LIGHT_DIRECTIONAL && n > 7) {
+        ERR(ctx, a[7].line, a[7].col, "a directional light has no attenuation (only point lights fade with distance)");
+        return;
+    }
+    if (n > 7 && check_nonnegative(ctx, a + 7, 1, "attenuation"))
+        return;
+    if (kind == GLS_LIGHT_DIRECTIONAL && a[1].num == 0 && a[2].num == 0 && a[3].num == 0) {
+        ERR(ctx, a[1].line, a[1].col, "directional light with a zero direction");
+        return;
+    }
+    double d[GLS_NARGS_LIGHT] = {0, a[1].num, a[2].num, a[3].num, a[4].num, a[5].num, a[6].num, n > 7 ? a[7].num : 0};
+    gls_insn in = {.op = GLS_OP_LIGHT};
+    memcpy(in.d, d, sizeof d);
+    in.u[GLS_ARG_LIGHT_KIND] = (uint32_t)kind;
+    sema_emit(ctx, &in, name.line);
+}
+
+/* ambient(r, g, b): light reaching every surface from every side. */
+static void h_ambient(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    if (check_nonnegative(ctx, a, 3, "light colour component"))
+        return;
+    gls_insn in = {.op = GLS_OP_LIGHT};
+    in.u[GLS_ARG_LIGHT_KIND] = GLS_LIGHT_AMBIENT;
+    in.d[GLS_ARG_LIGHT_R] = a[0].num, in.d[GLS_ARG_LIGHT_G] = a[1].num, in.d[GLS_ARG_LIGHT_B] = a[2].num;
+    sema_emit(ctx, &in, name.line);
+}
+
+/* specular(r, g, b, exponent): Phong highlight of the following
+ * primitives (state, like color). */
+static void h_specular(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    if (check_unit_range(ctx, a, 3, "specular") || check_nonnegative(ctx, a + 3, 1, "Phong exponent"))
+        return;
+    double d[GLS_NARGS_SPECULAR] = {a[0].num, a[1].num, a[2].num, a[3].num};
+    emit_d(ctx, GLS_OP_SPECULAR, d, name.line);
+}
+
+/* shadows(res): directional lights cast shadows through res x res maps
+ * (spec/language.md 7). */
+static void h_shadows(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
+{
+    (void)n;
+    double v = a[0].num;
+    if (!(v >= GLS_SHADOW_RES_MIN && v <= GLS_SHADOW_RES_MAX) || v != floor(v) || ((uint32_t)v & ((uint32_t)v - 1))) {
+        ERR(ctx, a[0].line, a[0].col, "shadow map side %g is not a power of two in %u..%u", v, GLS_SHADOW_RES_MIN,
+            GLS_SHADOW_RES_MAX);
+        return;
+    }
+    emit_u(ctx, GLS_OP_SHADOWS, GLS_ARG_SHADOWS_RES, (uint32_t)v, name.line);
 }
 
 static void h_color(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
@@ -409,5 +514,10 @@ const sema_instr sema_instrs[] = {
     {"call", 1, 2, "ss", WHERE_OUTSIDE, h_call},
     {"mark", 4, 4, "snnn", WHERE_OUTSIDE, h_mark},
     {"class", 1, 1, "s", WHERE_OUTSIDE, h_class},
+    {"normal", 3, 3, "nnn", WHERE_PRIM, h_normal},
+    {"light", 7, 8, "wnnnnnnn", WHERE_OUTSIDE, h_light},
+    {"ambient", 3, 3, "nnn", WHERE_OUTSIDE, h_ambient},
+    {"specular", 4, 4, "nnnn", WHERE_OUTSIDE, h_specular},
+    {"shadows", 1, 1, "n", WHERE_OUTSIDE, h_shadows},
 };
 const size_t sema_ninstrs = sizeof sema_instrs / sizeof sema_instrs[0];

@@ -97,10 +97,11 @@ typedef struct {
     int in_prim;
     int prim_kind;          /* gls_primkind, or -1 for an unknown block name */
     gls_tok prim_tok;
-    uint32_t prim_pos0, prim_col0, prim_tc0, prim_nvert;
-    int prim_has_col, prim_has_tc;
+    uint32_t prim_pos0, prim_col0, prim_tc0, prim_nrm0, prim_nvert;
+    int prim_has_col, prim_has_tc, prim_has_nrm;
     gls_rgba cur_col;
     gls_st cur_tc;
+    gls_nrm cur_nrm;
     /* push nesting, to point at an unbalanced push */
     gls_tok push_tok[GLS_MAX_PUSH_DEPTH + 1];
     unsigned depth;

@@ -9,6 +9,7 @@
 
 const char *const sema_words[] = {"vert",  "col", "tex",   "color",     "texmode", "texture", "notexture",
                                   "trans", "rot", "scale", "transform", "push",    "pop",     "call",    "mark",
+                                  "normal", "light", "ambient", "specular", "shadows",
                                   "poly",  "qstrip", "tstrip", "tfan",  "const",   "param",   "repeat",
                                   "class"};
 const size_t sema_nwords = sizeof sema_words / sizeof sema_words[0];
@@ -29,6 +30,9 @@ const gls_alias sema_aliases[] = {
     {"notex", "notexture"},     {"untexture", "notexture"}, {"disabletexture", "notexture"},
     {"pushmatrix", "push"},     {"save", "push"},           {"popmatrix", "pop"},          {"restore", "pop"},
     {"multmatrix", "transform"}, {"matrix", "transform"},
+    {"lamp", "light"},          {"sun", "light"},           {"lightsource", "light"},
+    {"norm", "normal"},         {"glnormal", "normal"},     {"shininess", "specular"},
+    {"shadow", "shadows"},      {"shadowmap", "shadows"},
     {"landmark", "mark"},       {"marker", "mark"},         {"keypoint", "mark"},
     {"category", "class"},      {"classname", "class"},
     {"include", "call"},        {"import", "call"},         {"use", "call"},               {"instance", "call"},

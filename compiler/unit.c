@@ -38,6 +38,7 @@ void gls_unit_free(gls_unit *u)
     free(u->pos);
     free(u->col);
     free(u->tc);
+    free(u->nrm);
     free(u);
 }
 

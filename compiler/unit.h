@@ -69,6 +69,7 @@ typedef struct gls_unit {
     gls_vec4 *pos; uint32_t npos; size_t pos_cap;
     gls_rgba *col; uint32_t ncol; size_t col_cap;
     gls_st *tc;    uint32_t ntc;  size_t tc_cap;
+    gls_nrm *nrm;  uint32_t nnrm; size_t nrm_cap;
     int is_top;              /* compiled as the top object: its initial
                                 texture mode is known to be color          */
     /* linker state */

@@ -64,3 +64,4 @@ example dense_stereo DenseStereo left --aa 4 --outputs "$OUTPUTS"
 example grouping Grouping left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY
 example lane Lane left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY
 example signs Signs left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY
+example lighting Lighting left --aa "$LOOK_AA" --outputs "$OUTPUTS" --background $SKY

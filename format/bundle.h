@@ -28,7 +28,9 @@
     X(MODULATE,     5, "modulate",      "texture mode modulate is used")          \
     X(REPLACE,      6, "replace",       "texture mode replace is used")           \
     X(TRANSLUCENT,  7, "translucent",   "some colour has alpha < 1 (recorded; drawn opaque)") \
-    X(MARKS,        8, "marks",         "some object places a landmark (mark; draws nothing)")
+    X(MARKS,        8, "marks",         "some object places a landmark (mark; draws nothing)") \
+    X(LIGHTS,       9, "lights",        "some object declares a light (light, ambient): shaded per pixel") \
+    X(SHADOWS,     10, "shadows",       "some object asks for shadows (shadows): directional lights cast them")
 
 enum {
 #define GLS_X_FEAT(e, bit, name, why) GLS_FEAT_##e = 1u << (bit),
@@ -72,6 +74,11 @@ typedef struct {
 typedef struct {
     float s, t;
 } gls_st;
+
+/* A unit normal (primn, section NORMALS). */
+typedef struct {
+    float x, y, z;
+} gls_nrm;
 
 /* Where an instruction came from: file is an index into sources[]. */
 typedef struct {
@@ -132,6 +139,8 @@ typedef struct {
     gls_vec4 *pos;         /* vertex positions                             */
     gls_rgba *col;         /* per-vertex colours                          */
     gls_st *tc;            /* per-vertex texture coordinates              */
+    uint32_t nnrm;
+    gls_nrm *nrm;          /* per-vertex unit normals (primn); NULL if none */
 } gls_bundle;
 
 /* One decoded instruction.  Operand k (of gls_op[op].noperands) is d[k] if
@@ -147,7 +156,7 @@ typedef struct {
  * n vertices from pos[first_pos], col[first_col] (or GLS_NONE: the current
  * colour), tc[first_tc] (or GLS_NONE: texture coordinates 0, 0). */
 typedef struct {
-    uint32_t n, first_pos, first_col, first_tc;
+    uint32_t n, first_pos, first_col, first_tc, first_nrm; /* first_nrm: GLS_NONE without normals */
 } gls_vertex_span;
 /* Fills *v and returns 1 if in draws vertices; 0 otherwise. */
 int gls_insn_vertices(const gls_insn *in, gls_vertex_span *v);

@@ -24,6 +24,12 @@ static uint32_t operand_features(const gls_bundle *b, const gls_insn *in, uint32
         return v != GLS_NONE ? GLS_FEAT_TEXCOORDS : 0;
     case GLS_KIND_MARKNAME:
         return GLS_FEAT_MARKS;
+    case GLS_KIND_LIGHTKIND:
+        return GLS_FEAT_LIGHTS;
+    case GLS_KIND_SHADOWRES:
+        return GLS_FEAT_SHADOWS;
+    case GLS_KIND_INTENSITY:
+    case GLS_KIND_FIRST_NRM:
     case GLS_KIND_NUM:
     case GLS_KIND_ANGLE:
     case GLS_KIND_COMPONENT:
@@ -121,5 +127,6 @@ void gls_bundle_free(gls_bundle *b)
     free(b->pos);
     free(b->col);
     free(b->tc);
+    free(b->nrm);
     free(b);
 }

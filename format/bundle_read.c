@@ -360,6 +360,19 @@ static int read_texcoords(gls_bundle *b, cursor *c, gls_error *err)
     return read_floats(c, &b->ntex, (void **)&b->tc, 2, "texcoord", err);
 }
 
+/* NORMALS: present only when some primn has normals (an empty stream is
+ * not written: one encoding per content). */
+static int read_normals(gls_bundle *b, cursor *c, gls_error *err)
+{
+    if (read_floats(c, &b->nnrm, (void **)&b->nrm, 3, "normal", err))
+        return -1;
+    if (b->nnrm == 0) {
+        gls_fail(err, __LINE__, "normal stream: empty (an empty stream is not written)");
+        return -1;
+    }
+    return 0;
+}
+
 gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
 {
     uint8_t *raw[GLS_SEC_COUNT] = {0};

@@ -156,10 +156,18 @@ static int sec_mark_names(const gls_bundle *bd, uint32_t feat, gls_buf *b)
     return put_names(b, bd->marknames, bd->nmarknames);
 }
 
+static int sec_normals(const gls_bundle *bd, uint32_t feat, gls_buf *b)
+{
+    (void)feat;
+    return put_u32(b, bd->nnrm) || put_planes(b, bd->nrm, bd->nnrm, sizeof *bd->nrm, 3, 4);
+}
+
 /* Is section id (GLS_SEC_*) written: every required one, an optional one
- * only when it holds a name. */
+ * only when it holds an entry. */
 static int section_present(const gls_bundle *bd, unsigned id)
 {
+    if (id == GLS_SEC_NORMALS)
+        return bd->nnrm > 0;
     if (id == GLS_SEC_INSTANCE_NAMES)
         return bd->ninstnames > 0;
     if (id == GLS_SEC_MARK_NAMES)

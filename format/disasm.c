@@ -52,6 +52,13 @@ static void print_vertices(const gls_bundle *b, const gls_vertex_span *s, FILE *
             print_f(out, b->tc[s->first_tc + i].s);
             print_f(out, b->tc[s->first_tc + i].t);
         }
+        if (s->first_nrm != GLS_NONE) {
+            const gls_nrm *q = &b->nrm[s->first_nrm + i];
+            fputs("  normal", out);
+            print_f(out, q->x);
+            print_f(out, q->y);
+            print_f(out, q->z);
+        }
         fputc('\n', out);
     }
 }
@@ -73,12 +80,15 @@ static void print_insn(const gls_bundle *b, const gls_insn *in, FILE *out)
         case GLS_KIND_ANGLE:
         case GLS_KIND_COMPONENT:
         case GLS_KIND_ALPHA:
+        case GLS_KIND_INTENSITY:
             print_d(out, in->d[i]);
             break;
         case GLS_KIND_TEXMODE:
+        case GLS_KIND_LIGHTKIND:
             fprintf(out, " %s", gls_kind[op->kind[i]].value_names[v]);
             break;
         case GLS_KIND_NVERT:
+        case GLS_KIND_SHADOWRES:
             fprintf(out, " %u", v);
             break;
         case GLS_KIND_OBJECT:
@@ -98,6 +108,7 @@ static void print_insn(const gls_bundle *b, const gls_insn *in, FILE *out)
         case GLS_KIND_FIRST_POS: /* shown by the vertex lines */
         case GLS_KIND_FIRST_COL:
         case GLS_KIND_FIRST_TC:
+        case GLS_KIND_FIRST_NRM:
         case GLS_KIND_COUNT:
             break;
         }

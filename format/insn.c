@@ -48,11 +48,13 @@ int gls_insn_vertices(const gls_insn *in, gls_vertex_span *v)
 {
     int n = gls_op_find(in->op, GLS_KIND_NVERT), p = gls_op_find(in->op, GLS_KIND_FIRST_POS);
     int c = gls_op_find(in->op, GLS_KIND_FIRST_COL), x = gls_op_find(in->op, GLS_KIND_FIRST_TC);
+    int m = gls_op_find(in->op, GLS_KIND_FIRST_NRM);
     if (n < 0 || p < 0)
         return 0;
     v->n = in->u[n];
     v->first_pos = in->u[p];
     v->first_col = c < 0 ? GLS_NONE : in->u[c];
     v->first_tc = x < 0 ? GLS_NONE : in->u[x];
+    v->first_nrm = m < 0 ? GLS_NONE : in->u[m];
     return 1;
 }

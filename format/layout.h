@@ -41,11 +41,12 @@
  * sec_<name>() and bundle_read.c reads it with read_<name>(), in this
  * order (SOURCES needs the objects read before it).  TEMPLATES came with
  * format version 2, INSTANCE_NAMES later in version 2 (before its
- * release), MARK_NAMES after it (landmarks, issue 15).  The last two are
- * optional: each is present exactly when it has a name, so a bundle
- * without instance names and landmarks has GLS_SEC_REQUIRED sections and
- * the bytes it had before either existed; the directory lists the present
- * ones in id order (bundle_read.c). */
+ * release), MARK_NAMES after it (landmarks, issue 15), NORMALS after that
+ * (lighting, issue 16).  The last three are optional: each is present
+ * exactly when it has an entry, so a bundle without instance names,
+ * landmarks and normals has GLS_SEC_REQUIRED sections and the bytes it had
+ * before any existed; the directory lists the present ones in id order
+ * (bundle_read.c). */
 #define GLS_SECTIONS(X)                                                              \
     X(OBJECTS,   objects,   "names, instruction counts, bytecode")                 \
     X(SOURCES,   sources,   "source file names and per-instruction lines")         \
@@ -55,7 +56,8 @@
     X(TEXCOORDS, texcoords, "texture coordinates, float32, delta+byte planes")     \
     X(TEMPLATES, templates, "parameterised objects: names, parameters, source text")   \
     X(INSTANCE_NAMES, instance_names, "names of named instances (calln), sorted") \
-    X(MARK_NAMES, mark_names, "names of landmarks (mark), sorted")
+    X(MARK_NAMES, mark_names, "names of landmarks (mark), sorted")                 \
+    X(NORMALS,   normals,   "unit normals of primn vertices, float32, byte planes")
 
 enum {
     GLS_SEC_BEFORE_FIRST_ = 0,
@@ -65,8 +67,8 @@ enum {
     GLS_SEC_AFTER_LAST_
 };
 #define GLS_SEC_COUNT ((unsigned)GLS_SEC_AFTER_LAST_ - 1u)
-/* Sections every bundle has: all but INSTANCE_NAMES and MARK_NAMES, each
- * written only when the bundle has at least one name of its kind. */
+/* Sections every bundle has: all but INSTANCE_NAMES, MARK_NAMES and
+ * NORMALS, each written only when the bundle has an entry for it. */
 #define GLS_SEC_REQUIRED ((unsigned)GLS_SEC_INSTANCE_NAMES - 1u)
 
 enum { GLS_CODEC_RAW = 0, GLS_CODEC_ZSTD = 1 };

@@ -5,6 +5,7 @@
 
 const char *const gls_texmode_name[GLS_MODE_COUNT] = {"color", "replace", "modulate"};
 const char *const gls_prim_name[GLS_PRIM_COUNT] = {"poly", "qstrip", "tstrip", "tfan"};
+const char *const gls_light_name[GLS_LIGHT_COUNT] = {"directional", "point", "ambient"};
 
 #define BYTES_F64 8
 #define BYTES_U8 1

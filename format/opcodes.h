@@ -43,6 +43,19 @@
  *   PRIM       draw a primitive: kind (0 poly, 1 qstrip, 2 tstrip, 3 tfan),
  *              vertex count, first position, first colour (or NONE: use the
  *              current colour), first texcoord (or NONE: texcoord 0,0).
+ *   LIGHT      declare a light (kind 0 directional, 1 point, 2 ambient):
+ *              directional: towards-the-light direction M * (x, y, z, 0);
+ *              point: position M * (x, y, z, 1); ambient: x, y, z unused
+ *              (0); colour r, g, b (>= 0, linear) and attenuation k (>= 0,
+ *              point lights: 1 / (1 + k d^2); 0 otherwise).  Draws nothing;
+ *              a bundle with one is lit (feature lights, spec/bundle.md)
+ *   SPECULAR   set the specular colour (r, g, b in 0..1) and Phong
+ *              exponent (>= 0) of the following primitives (state, like
+ *              COLOR; initially 0 0 0 0: no highlight)
+ *   PRIMN      PRIM with per-vertex normals: first normal (NORMALS), the
+ *              other operands PRIM's, at the same positions
+ *   SHADOWS    directional lights cast shadows, through shadow maps of
+ *              res x res texels (feature shadows; the largest res wins)
  */
 #ifndef GLS_OPCODES_H
 #define GLS_OPCODES_H
@@ -76,6 +89,12 @@
  *   MARKNAME   a landmark name (MARK_NAMES); one object places each name
  *              at most once
  *   CLASSNAME  a class name, kept in the same table (MARK_NAMES)
+ *   LIGHTKIND  a light kind (gls_lightkind)
+ *   INTENSITY  a light's colour component, attenuation or Phong exponent;
+ *              finite and >= 0
+ *   FIRST_NRM  the first of NVERT unit normals (NORMALS)
+ *   SHADOWRES  a shadow map's side in texels: a power of two in
+ *              GLS_SHADOW_RES_MIN..GLS_SHADOW_RES_MAX
  */
 #define GLS_OPERAND_KINDS(K)                                      \
     K(NUM,       F64, 0,              NULL,             NULL)     \
@@ -92,7 +111,11 @@
     K(FIRST_TC,  U32, 0,              NULL,             NULL)     \
     K(INSTNAME,  U32, 0,              NULL,             NULL)     \
     K(MARKNAME,  U32, 0,              NULL,             NULL)     \
-    K(CLASSNAME, U32, 0,              NULL,             NULL)
+    K(CLASSNAME, U32, 0,              NULL,             NULL)     \
+    K(LIGHTKIND, U8,  GLS_LIGHT_COUNT, gls_light_name,  "light kind") \
+    K(INTENSITY, F64, 0,              NULL,             NULL)     \
+    K(FIRST_NRM, U32, 0,              NULL,             NULL)     \
+    K(SHADOWRES, U32, 0,              NULL,             NULL)
 
 /* How an instruction moves the walk of an object's code (validator):
  *   NEXT  on to the next instruction
@@ -126,7 +149,17 @@ typedef enum { GLS_FLOW_NEXT, GLS_FLOW_PUSH, GLS_FLOW_POP, GLS_FLOW_END } gls_fl
     X(CALLN,     "calln",     NEXT, O(OBJECT, CALLN_OBJECT) O(INSTNAME, CALLN_NAME))   \
     X(MARK,      "mark",      NEXT, O(MARKNAME, MARK_NAME)                              \
                                     O(NUM, MARK_X) O(NUM, MARK_Y) O(NUM, MARK_Z))      \
-    X(CLASS,     "class",     NEXT, O(CLASSNAME, CLASS_NAME))
+    X(CLASS,     "class",     NEXT, O(CLASSNAME, CLASS_NAME)) \
+    X(LIGHT,     "light",     NEXT, O(LIGHTKIND, LIGHT_KIND)                           \
+                                    O(NUM, LIGHT_X) O(NUM, LIGHT_Y) O(NUM, LIGHT_Z)    \
+                                    O(INTENSITY, LIGHT_R) O(INTENSITY, LIGHT_G)        \
+                                    O(INTENSITY, LIGHT_B) O(INTENSITY, LIGHT_ATTEN))   \
+    X(SPECULAR,  "specular",  NEXT, O(COMPONENT, SPECULAR_R) O(COMPONENT, SPECULAR_G)  \
+                                    O(COMPONENT, SPECULAR_B) O(INTENSITY, SPECULAR_EXP)) \
+    X(PRIMN,     "primn",     NEXT, O(PRIMKIND, PRIMN_KIND) O(NVERT, PRIMN_N)          \
+                                    O(FIRST_POS, PRIMN_POS) O(FIRST_COL, PRIMN_COL)    \
+                                    O(FIRST_TC, PRIMN_TC) O(FIRST_NRM, PRIMN_NRM))     \
+    X(SHADOWS,   "shadows",   NEXT, O(SHADOWRES, SHADOWS_RES))
 
 typedef enum {
 #define GLS_X_ENUM(e, name, flow, operands) GLS_OP_##e,
@@ -153,6 +186,13 @@ GLS_OPCODES(GLS_X_ARGS, GLS_X_ARG)
 #undef GLS_X_ARGS
 #undef GLS_X_ARG
 
+/* PRIMN is PRIM plus its normals: the player and the dump read both
+ * through PRIM's operand positions. */
+_Static_assert((int)GLS_ARG_PRIMN_KIND == (int)GLS_ARG_PRIM_KIND && (int)GLS_ARG_PRIMN_N == (int)GLS_ARG_PRIM_N &&
+                   (int)GLS_ARG_PRIMN_POS == (int)GLS_ARG_PRIM_POS && (int)GLS_ARG_PRIMN_COL == (int)GLS_ARG_PRIM_COL &&
+                   (int)GLS_ARG_PRIMN_TC == (int)GLS_ARG_PRIM_TC,
+               "primn's operands are prim's, then the first normal");
+
 /* Longest operand list of any opcode (TRANSFORM). */
 #define GLS_MAX_OPERANDS 16
 #define GLS_X_FITS(e, name, flow, operands) \
@@ -162,10 +202,15 @@ GLS_OPCODES(GLS_X_FITS, GLS_X_NONE)
 #undef GLS_X_FITS
 #undef GLS_X_NONE
 
+/* Shadow map sides (SHADOWRES): powers of two in this range. */
+#define GLS_SHADOW_RES_MIN 256u
+#define GLS_SHADOW_RES_MAX 8192u
+
 /* Index value meaning "absent" for the FIRST_COL and FIRST_TC operands. */
 #define GLS_NONE 0xFFFFFFFFu
 
 typedef enum { GLS_MODE_COLOR = 0, GLS_MODE_REPLACE = 1, GLS_MODE_MODULATE = 2, GLS_MODE_COUNT } gls_texmode;
+typedef enum { GLS_LIGHT_DIRECTIONAL = 0, GLS_LIGHT_POINT = 1, GLS_LIGHT_AMBIENT = 2, GLS_LIGHT_COUNT } gls_lightkind;
 typedef enum { GLS_PRIM_POLY = 0, GLS_PRIM_QSTRIP = 1, GLS_PRIM_TSTRIP = 2, GLS_PRIM_TFAN = 3, GLS_PRIM_COUNT } gls_primkind;
 
 typedef enum { GLS_STORE_F64, GLS_STORE_U8, GLS_STORE_U32 } gls_storage;
@@ -193,6 +238,7 @@ extern const gls_kind_info gls_kind[GLS_KIND_COUNT];
 extern const gls_op_info gls_op[GLS_OP_COUNT];
 extern const char *const gls_texmode_name[GLS_MODE_COUNT];
 extern const char *const gls_prim_name[GLS_PRIM_COUNT];
+extern const char *const gls_light_name[GLS_LIGHT_COUNT];
 
 /* Position of opcode op's first operand of kind k, or -1 if it has none. */
 int gls_op_find(gls_opcode op, gls_operand_kind k);

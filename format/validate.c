@@ -199,6 +199,15 @@ static int check_vertices(const gls_bundle *b, gls_error *err)
     for (uint32_t i = 0; i < b->ntex; i++)
         if (!isfinite(b->tc[i].s) || !isfinite(b->tc[i].t))
             FAIL("texture coordinate %u is not finite", i);
+    if (b->nnrm > GLS_MAX_VERTICES)
+        FAIL("more than %u normals", GLS_MAX_VERTICES);
+    for (uint32_t i = 0; i < b->nnrm; i++) {
+        /* unit length as the compiler wrote it, in float: within 1e-5 */
+        const gls_nrm *q = &b->nrm[i];
+        double l = (double)q->x * q->x + (double)q->y * q->y + (double)q->z * q->z;
+        if (!(fabs(l - 1.0) <= 1e-5))
+            FAIL("normal %u is not a finite unit vector", i);
+    }
     return 0;
 fail:
     return -1;
@@ -207,7 +216,7 @@ fail:
 static int is_vertex_kind(uint8_t kind)
 {
     return kind == GLS_KIND_NVERT || kind == GLS_KIND_FIRST_POS || kind == GLS_KIND_FIRST_COL ||
-           kind == GLS_KIND_FIRST_TC;
+           kind == GLS_KIND_FIRST_TC || kind == GLS_KIND_FIRST_NRM;
 }
 
 /* Operand i of in, by its kind: in range, or a message in err.  The
@@ -228,8 +237,18 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
         if (in->d[i] < 0 || in->d[i] > 1)
             FAIL("object %s, instruction %u (%s): component outside 0..1", o->name, k, nm);
         break;
+    case GLS_KIND_SHADOWRES:
+        if (v < GLS_SHADOW_RES_MIN || v > GLS_SHADOW_RES_MAX || (v & (v - 1)))
+            FAIL("object %s, instruction %u (%s): shadow map side %u is not a power of two in %u..%u", o->name, k, nm,
+                 v, GLS_SHADOW_RES_MIN, GLS_SHADOW_RES_MAX);
+        break;
+    case GLS_KIND_INTENSITY:
+        if (!(in->d[i] >= 0))
+            FAIL("object %s, instruction %u (%s): operand %u is negative", o->name, k, nm, i + 1);
+        break;
     case GLS_KIND_TEXMODE:
     case GLS_KIND_PRIMKIND:
+    case GLS_KIND_LIGHTKIND:
         if (v >= ki->values)
             FAIL("object %s, instruction %u (%s): %s %u unknown", o->name, k, nm, ki->noun, v);
         break;
@@ -273,11 +292,32 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
         if (v != GLS_NONE && (v > b->ntex || s.n > b->ntex - v))
             FAIL("object %s, instruction %u (%s): texcoords %u+%u beyond %u", o->name, k, nm, v, s.n, b->ntex);
         break;
+    case GLS_KIND_FIRST_NRM:
+        if (v > b->nnrm || s.n > b->nnrm - v)
+            FAIL("object %s, instruction %u (%s): normals %u+%u beyond %u", o->name, k, nm, v, s.n, b->nnrm);
+        break;
     case GLS_KIND_NUM:
     case GLS_KIND_ANGLE:
     case GLS_KIND_COUNT:
         break; /* finite: checked first, for every F64 operand */
     }
+    return 0;
+fail:
+    return -1;
+}
+
+/* A light's operands together (spec/bundle.md 9.2): one encoding per
+ * light, so what a kind does not use is zero, and a direction is not. */
+static int check_light(const gls_object *o, uint32_t k, const gls_insn *in, gls_error *err)
+{
+    uint32_t kind = in->u[GLS_ARG_LIGHT_KIND];
+    int zero_xyz = in->d[GLS_ARG_LIGHT_X] == 0 && in->d[GLS_ARG_LIGHT_Y] == 0 && in->d[GLS_ARG_LIGHT_Z] == 0;
+    if (kind == GLS_LIGHT_DIRECTIONAL && zero_xyz)
+        FAIL("object %s, instruction %u (light): directional light with a zero direction", o->name, k);
+    if (kind == GLS_LIGHT_AMBIENT && !zero_xyz)
+        FAIL("object %s, instruction %u (light): ambient light with a position", o->name, k);
+    if (kind != GLS_LIGHT_POINT && in->d[GLS_ARG_LIGHT_ATTEN] != 0)
+        FAIL("object %s, instruction %u (light): attenuation on a light that is not a point light", o->name, k);
     return 0;
 fail:
     return -1;
@@ -297,6 +337,8 @@ static int check_operands(const gls_bundle *b, const gls_object *o, uint32_t k, 
         for (uint32_t i = 0; i < op->noperands; i++)
             if (is_vertex_kind(op->kind[i]) == vertex_kinds && check_operand(b, o, k, in, i, err))
                 return -1;
+    if (in->op == GLS_OP_LIGHT && check_light(o, k, in, err))
+        return -1;
     return 0;
 fail:
     return -1;

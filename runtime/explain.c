@@ -5,6 +5,8 @@
 #include "aa_render.h"
 #include "distort_render.h"
 #include "exposure.h"
+#include "lighting.h"
+#include "shadows.h"
 #include "out_disparity.h"
 #include "units.h"
 #include "player.h"
@@ -16,7 +18,7 @@ _Static_assert(GLS_FEAT_TEXTURES == 1u << 0 && GLS_FEAT_ALPHA_TEST == 1u << 1 &&
                    GLS_FEAT_VERTEX_COLOR == 1u << 2 && GLS_FEAT_TEXCOORDS == 1u << 3 &&
                    GLS_FEAT_HOMOGENEOUS == 1u << 4 && GLS_FEAT_MODULATE == 1u << 5 &&
                    GLS_FEAT_REPLACE == 1u << 6 && GLS_FEAT_TRANSLUCENT == 1u << 7 &&
-                   GLS_FEAT_MARKS == 1u << 8,
+                   GLS_FEAT_MARKS == 1u << 8 && GLS_FEAT_LIGHTS == 1u << 9 && GLS_FEAT_SHADOWS == 1u << 10,
                "feature bits moved: update effect[]");
 static const char *const effect[32] = {
     [0] = "GL_TEXTURE_2D, RGBA8 textures with mipmaps (GL_LINEAR_MIPMAP_LINEAR)",
@@ -28,6 +30,8 @@ static const char *const effect[32] = {
     [6] = "glTexEnv GL_REPLACE (texture colour only)",
     [7] = "none: alpha is not blended, surfaces are drawn opaque (outputs are RGB)",
     [8] = "none: landmarks draw nothing (--outputs landmarks lists them)",
+    [9] = "a GLSL program (Lambert + Phong per pixel) in every colour pass; normals and specular state per vertex",
+    [10] = "a depth texture and framebuffer per directional light, drawn before each colour pass",
 };
 
 /* The backend asked for and what it gave (spec/backends.md). */
@@ -106,6 +110,10 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                 on ? gls_feature_why[bit] : "not used by this bundle");
         if (on && effect[bit])
             fprintf(out, "  %-14s     GL: %s\n", "", effect[bit]);
+        if (on && bit == 9)
+            gls_lighting_explain(out, b, s);
+        if (on && bit == 10)
+            gls_shadows_explain(out, s);
         if (on && bit == 0) {
             if (o->anisotropy > 1)
                 fprintf(out, "  %-14s     GL: anisotropic filtering up to %ux (--anisotropic %u)\n", "",

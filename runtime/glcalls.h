@@ -26,7 +26,7 @@
     X(glAlphaFunc) X(glBindTexture) X(glClear) X(glClearColor) X(glClearDepth) X(glColor4ub)            \
     X(glColorPointer) X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDisableClientState) X(glDrawArrays) X(glDrawBuffer)   \
     X(glEnable) X(glEnableClientState) X(glFinish) X(glFlush) X(glGenTextures) X(glGetError)            \
-    X(glGetFloatv) X(glGetIntegerv) X(glGetString) X(glLoadMatrixf) X(glMatrixMode) X(glPixelStorei)    \
+    X(glGetFloatv) X(glGetIntegerv) X(glGetString) X(glLoadMatrixf) X(glMatrixMode) X(glNormalPointer) X(glPixelStorei)    \
     X(glReadBuffer) X(glReadPixels) X(glScissor) X(glTexCoord2f) X(glTexCoordPointer) X(glTexEnvi)      \
     X(glTexImage2D) X(glTexParameterf) X(glTexParameteri) X(glVertexPointer) X(glViewport)
 
@@ -66,6 +66,7 @@ extern _Thread_local const gls_glcalls *gls_glcalls_current;
 #define glGetString (gls_glcalls_current->p_glGetString)
 #define glLoadMatrixf (gls_glcalls_current->p_glLoadMatrixf)
 #define glMatrixMode (gls_glcalls_current->p_glMatrixMode)
+#define glNormalPointer (gls_glcalls_current->p_glNormalPointer)
 #define glPixelStorei (gls_glcalls_current->p_glPixelStorei)
 #define glReadBuffer (gls_glcalls_current->p_glReadBuffer)
 #define glReadPixels (gls_glcalls_current->p_glReadPixels)

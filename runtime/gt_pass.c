@@ -28,22 +28,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glcalls.h"
+#include "glprog.h"
 #include "gt_pass.h"
 
 /* GL 2.0-3.3 entry points of this pass, loaded from the renderer's
  * context on first use (render.c loads its own the same way). */
 #define GT_GLFUNCS(X)                                               \
-    X(PFNGLCREATESHADERPROC, glCreateShader)                        \
-    X(PFNGLSHADERSOURCEPROC, glShaderSource)                        \
-    X(PFNGLCOMPILESHADERPROC, glCompileShader)                      \
-    X(PFNGLGETSHADERIVPROC, glGetShaderiv)                          \
-    X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                \
-    X(PFNGLDELETESHADERPROC, glDeleteShader)                        \
-    X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                      \
-    X(PFNGLATTACHSHADERPROC, glAttachShader)                        \
-    X(PFNGLLINKPROGRAMPROC, glLinkProgram)                          \
-    X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                        \
-    X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)              \
     X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                      \
     X(PFNGLUSEPROGRAMPROC, glUseProgram)                            \
     X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)            \
@@ -137,23 +127,6 @@ static const char fs_src[] =
     "    o_normal = vec4(n, 0.0);\n"
     "}\n";
 
-static GLuint compile(gt_state *g, GLenum type, const char *src, const char *what, char *err, size_t errlen)
-{
-    GLuint sh = g->glCreateShader(type);
-    g->glShaderSource(sh, 1, &src, NULL);
-    g->glCompileShader(sh);
-    GLint ok = 0;
-    g->glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[512] = "";
-        g->glGetShaderInfoLog(sh, sizeof log, NULL, log);
-        snprintf(err, errlen, "ground truth: the %s shader does not compile: %s", what, log);
-        g->glDeleteShader(sh);
-        return 0;
-    }
-    return sh;
-}
-
 static void gt_free(void *p)
 {
     gt_state *g = p;
@@ -189,30 +162,7 @@ static gt_state *gt_create(gls_renderer *r, const gls_scene *s, char *err, size_
     }
     GT_GLFUNCS(GT_X_LOAD)
 #undef GT_X_LOAD
-    GLuint vs = compile(g, GL_VERTEX_SHADER, vs_src, "vertex", err, errlen);
-    GLuint fs = vs ? compile(g, GL_FRAGMENT_SHADER, fs_src, "fragment", err, errlen) : 0;
-    if (fs) {
-        g->prog = g->glCreateProgram();
-        g->glAttachShader(g->prog, vs);
-        g->glAttachShader(g->prog, fs);
-        g->glLinkProgram(g->prog);
-        GLint ok = 0;
-        g->glGetProgramiv(g->prog, GL_LINK_STATUS, &ok);
-        if (!ok) {
-            char log[512] = "";
-            g->glGetProgramInfoLog(g->prog, sizeof log, NULL, log);
-            snprintf(err, errlen, "ground truth: the shaders do not link: %s", log);
-        }
-        if (!ok) {
-            g->glDeleteProgram(g->prog);
-            g->prog = 0;
-        }
-    }
-    /* the program keeps them; deleting now frees them with it */
-    GLuint sh[2] = {vs, fs};
-    for (int i = 0; i < 2; i++)
-        if (sh[i])
-            g->glDeleteShader(sh[i]);
+    g->prog = gls_glprog_build(ctx, vs_src, fs_src, "ground truth", err, errlen);
     if (!g->prog) {
         gt_free(g);
         return NULL;

@@ -7,7 +7,9 @@
  * and there is no shader source to embed, compile and diagnose.  Matrices
  * go in with glLoadMatrixf after being formed in double on the CPU.  (The
  * ground-truth pass, gt_pass.c, draws the same items through
- * gls_render_hooked with a small GLSL program of its own.)
+ * gls_render_hooked with a small GLSL program of its own, and a lit
+ * scene's colour passes use lighting.c's, with shadows.c's maps drawn
+ * through gls_render_depth_only; an unlit scene never meets either.)
  *
  * Over 500 lines because it is the one file that speaks GL (the context
  * aside, glctx_*.c): textures, framebuffers, state per draw key, the
@@ -21,7 +23,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glcalls.h"
+#include "lighting.h"
 #include "render.h"
+#include "shadows.h"
 #include "scene_cull.h"
 #include "units.h"
 
@@ -48,7 +52,8 @@
     X(PFNGLBINDBUFFERPROC, glBindBuffer)                                  \
     X(PFNGLBUFFERDATAPROC, glBufferData)                                  \
     X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                          \
-    X(PFNGLGETSTRINGIPROC, glGetStringi)
+    X(PFNGLGETSTRINGIPROC, glGetStringi)                                  \
+    X(PFNGLCLIENTACTIVETEXTUREARBPROC, glClientActiveTexture) /* GL 1.3; same type */
 
 struct gls_renderer {
 #define GLS_X_FN(type, name) type name;
@@ -74,6 +79,11 @@ struct gls_renderer {
     char gl_name[128], gl_version[128];
     gls_render_item_hook hook; /* called before each item's draw: the  */
     void *hook_ud;             /* ground-truth pass (gls_render_hooked) */
+    gls_lighting *light;       /* lit scenes only: the shading program  */
+    gls_shadows *shadows;      /* scenes with shadows: the maps         */
+    int depth_only;            /* drawing a shadow map (no program)     */
+    double pass_C[3];          /* the colour pass's camera centre and   */
+    uint32_t pass_nnear;       /* near items, for the shadow maps' draw */
     void *ext;                 /* gls_renderer_set_ext: freed with r    */
     void (*ext_free)(void *);
 };
@@ -97,8 +107,10 @@ static int has_extension(gls_renderer *r, const char *name)
     return 0;
 }
 
-/* Attribute pointers into the currently bound GL_ARRAY_BUFFER. */
-static void set_pointers(const gls_scene *s)
+/* Attribute pointers into the currently bound GL_ARRAY_BUFFER; a lit
+ * scene's normal and specular state (texture unit 1's coordinates, read
+ * only by the lighting program). */
+static void set_pointers(gls_renderer *r, const gls_scene *s)
 {
     GLsizei stride = (GLsizei)s->stride;
     glVertexPointer(3, GL_FLOAT, stride, (const void *)0);
@@ -106,6 +118,34 @@ static void set_pointers(const gls_scene *s)
         glColorPointer(4, GL_UNSIGNED_BYTE, stride, (const void *)(uintptr_t)s->color_offset);
     if (s->has_texcoord)
         glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(uintptr_t)s->texcoord_offset);
+    if (s->lit) {
+        glNormalPointer(GL_FLOAT, stride, (const void *)(uintptr_t)s->normal_offset);
+        r->glClientActiveTexture(GL_TEXTURE1);
+        glTexCoordPointer(4, GL_FLOAT, stride, (const void *)(uintptr_t)s->specular_offset);
+        r->glClientActiveTexture(GL_TEXTURE0);
+    }
+}
+
+/* The lit scene's arrays on (or, unlit, off: a context may outlive an
+ * earlier lit renderer, and fixed function must not fetch through its
+ * stale pointers), and its program.  0, or -1 with a message. */
+static int setup_lighting(gls_renderer *r, const gls_scene *scene, char *err, size_t errlen)
+{
+    r->glClientActiveTexture(GL_TEXTURE1);
+    if (scene->lit)
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    else
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    r->glClientActiveTexture(GL_TEXTURE0);
+    if (!scene->lit) {
+        glDisableClientState(GL_NORMAL_ARRAY);
+        return 0;
+    }
+    glEnableClientState(GL_NORMAL_ARRAY);
+    if (scene->shadow_res && !(r->shadows = gls_shadows_create(r->ctx, scene, err, errlen)))
+        return -1;
+    r->light = gls_lighting_create(r->ctx, scene, err, errlen);
+    return r->light ? 0 : -1;
 }
 
 static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size_t errlen)
@@ -218,7 +258,11 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glTexCoord2f(0, 0); /* texcoords absent: (0, 0) */
     }
-    set_pointers(scene);
+    if (setup_lighting(r, scene, err, errlen)) {
+        gls_renderer_destroy(r);
+        return NULL;
+    }
+    set_pointers(r, scene);
     r->glGenBuffers(1, &r->near_vbo);
     r->near_list = malloc((scene->nitems ? scene->nitems : 1) * sizeof *r->near_list);
     r->ivis = malloc(scene->ninst ? scene->ninst : 1);
@@ -351,6 +395,8 @@ static void apply_key(gls_renderer *r, const gls_drawkey *k)
     }
     if (!r->scene->has_color)
         glColor4ub(k->rgba[0], k->rgba[1], k->rgba[2], k->rgba[3]);
+    if (r->light && !r->hook && !r->depth_only)
+        gls_lighting_key(r->light, k);
 }
 
 /* Does item it need re-anchoring at the camera centre C?  Its float
@@ -479,8 +525,12 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
     const gls_scene *s = r->scene;
     const gls_drawkey *prev = NULL;
     uint32_t k = 0;
+    /* a colour pass (the hooked one has its own program, a shadow map none) */
+    int lit = r->light && !r->hook && !r->depth_only;
+    if (lit)
+        gls_lighting_begin(r->light, s, c, r->shadows);
     r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
-    set_pointers(s);
+    set_pointers(r, s);
     for (uint32_t i = 0; i < s->nitems; i++) {
         const gls_item *it = &s->items[i];
         if (k < nnear && r->near_list[k] == i) {
@@ -490,17 +540,19 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
         if (!vis || vis[i])
             draw_item(r, c, it, 0, C, s->chunks[it->chunk].first, &prev);
     }
-    if (!nnear)
-        return;
-    r->glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
-    set_pointers(s);
-    size_t at = 0;
-    for (k = 0; k < nnear; k++) {
-        const gls_item *it = &s->items[r->near_list[k]];
-        if (!vis || vis[r->near_list[k]])
-            draw_item(r, c, it, 1, C, (uint32_t)at, &prev);
-        at += s->chunks[it->chunk].count;
+    if (nnear) {
+        r->glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
+        set_pointers(r, s);
+        size_t at = 0;
+        for (k = 0; k < nnear; k++) {
+            const gls_item *it = &s->items[r->near_list[k]];
+            if (!vis || vis[r->near_list[k]])
+                draw_item(r, c, it, 1, C, (uint32_t)at, &prev);
+            at += s->chunks[it->chunk].count;
+        }
     }
+    if (lit)
+        gls_lighting_end(r->light);
 }
 
 void gls_renderer_set_background(gls_renderer *r, const float rgb[3])
@@ -512,6 +564,30 @@ void gls_renderer_set_background(gls_renderer *r, const float rgb[3])
 void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
 {
     gls_render_tiles(r, c, 1, &du, &dv);
+}
+
+/* The shadow maps for camera c (centre C, nnear near items prepared),
+ * before a colour pass that draws the items vis marks. */
+static void draw_shadow_maps(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear,
+                             const uint8_t *vis)
+{
+    if (!r->shadows)
+        return;
+    memcpy(r->pass_C, C, sizeof r->pass_C);
+    r->pass_nnear = nnear;
+    gls_shadows_render(r->shadows, r, r->scene, c, vis);
+}
+
+void gls_render_depth_only(gls_renderer *r, const gls_camera *view, const double P[16])
+{
+    float f[16];
+    gls_mat_to_gl(P, f);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(f);
+    glMatrixMode(GL_MODELVIEW);
+    r->depth_only = 1;
+    draw_all(r, view, r->pass_C, r->pass_nnear, NULL);
+    r->depth_only = 0;
 }
 
 void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv)
@@ -526,6 +602,7 @@ void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const do
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     uint32_t nnear = prepare_near(r, c, C);
     gls_scene_cull(r->scene, c, r->ivis, r->vis, &r->cull);
+    draw_shadow_maps(r, c, C, nnear, r->vis);
     for (uint32_t t = 0; t < n && t < r->kx * r->ky; t++) {
         if (r->kx * r->ky > 1) {
             GLint x = (GLint)(r->width * (t % r->kx)), y = (GLint)(r->height * (t / r->kx));
@@ -582,6 +659,11 @@ void gls_render_prepare(gls_renderer *r, const gls_camera *c)
     double C[3];
     gls_camera_centre(c, C);
     r->nnear = prepare_near(r, c, C);
+    if (r->shadows) { /* once for all the mapped tiles: fitted to what the whole camera sees */
+        gls_cull_stats st;
+        gls_scene_cull(r->scene, c, r->ivis, r->vis, &st);
+        draw_shadow_maps(r, c, C, r->nnear, r->vis);
+    }
 }
 
 void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], uint32_t vw, uint32_t vh,
@@ -691,6 +773,8 @@ void gls_renderer_destroy(gls_renderer *r)
     if (!r)
         return;
     gls_renderer_set_ext(r, NULL, NULL); /* its GL objects, while the context is there */
+    gls_lighting_destroy(r->light);
+    gls_shadows_destroy(r->shadows);
     if (r->tex) {
         for (uint32_t i = 0; i < r->ntex; i++)
             if (r->tex[i])

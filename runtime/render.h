@@ -70,6 +70,10 @@ typedef void (*gls_render_item_hook)(void *ud, const gls_scene *s, const gls_ite
 void gls_render_hooked(gls_renderer *r, const gls_camera *c, gls_render_item_hook hook, void *ud);
 /* The scene r draws. */
 const gls_scene *gls_renderer_scene(const gls_renderer *r);
+/* Shadow maps (shadows.c): every item, depth only (no program, no colour),
+ * seen by view through P, into whatever framebuffer is bound; the near
+ * items as the colour pass being prepared placed them. */
+void gls_render_depth_only(gls_renderer *r, const gls_camera *view, const double P[16]);
 /* The context r was created in (for GL entry points a pass loads itself). */
 gls_glctx *gls_renderer_glctx(const gls_renderer *r);
 /* One extension's state hangs off the renderer (the ground-truth pass's
@@ -91,7 +95,8 @@ uint32_t gls_render_chunk_bounds(gls_renderer *r, const gls_camera *c, double (*
 gls_cull_stats gls_render_cull_stats(const gls_renderer *r);
 uint32_t gls_renderer_nchunks(const gls_renderer *r);
 /* Upload what camera c needs before gls_render_mapped (the re-anchored
- * near chunks). */
+ * near chunks), and draw its shadow maps (a scene with shadows: fitted to
+ * what the whole camera sees, the same for every mapped tile). */
 void gls_render_prepare(gls_renderer *r, const gls_camera *c);
 /* Clear and draw the chunks with vis[i] != 0 (NULL: all) through camera
  * c with the image -> window map m (gls_camera_projection_map) in the

@@ -66,6 +66,7 @@ typedef struct {
     /* build only: the drawing state it was entered with, next proto of
      * the same object */
     uint8_t rgba[4];
+    double spec[4];        /* the specular state (lit scenes)             */
     uint32_t texture, mode, next;
 } gls_proto;
 
@@ -99,6 +100,20 @@ typedef struct {
     char *path;
 } gls_mark;
 
+/* A light (a bundle's light instruction, spec/bundle.md 9.2) as placed
+ * by one call path: its kind, the instance whose frame it is in, and
+ * M (x, y, z, w) in that frame, w = 0 for a direction (towards the
+ * light), 1 for a point light's position; unused for ambient. */
+typedef struct {
+    uint32_t kind, inst;   /* gls_lightkind; instance index               */
+    double p[4];
+    double rgb[3], atten;  /* linear colour; point lights: 1/(1 + k d^2)  */
+} gls_light;
+
+/* Lights shaded at once (GLSL uniform arrays); ambient lights are summed
+ * and do not count.  A scene with more is refused at load. */
+#define GLS_MAX_LIGHTS 8
+
 /* What the renderer draws: a chunk of an instance's proto. */
 typedef struct {
     uint32_t inst, chunk;
@@ -114,8 +129,20 @@ typedef struct {
     uint32_t features;     /* the bundle's GLS_FEAT_* bits                */
     int has_color;         /* vertices carry RGBA8 colours                */
     int has_texcoord;      /* vertices carry float s, t                   */
-    size_t stride;         /* bytes per vertex: 12 [+4 colour] [+8 st]    */
+    size_t stride;         /* bytes per vertex: 12 [+4 colour] [+8 st]
+                              [+12 normal +16 specular, lit scenes]       */
     size_t color_offset, texcoord_offset;
+    int lit;               /* the bundle has GLS_FEAT_LIGHTS: vertices carry
+                              a normal (float x 3: unit for a given one,
+                              length 2 for a flat one, which the shader
+                              turns to face the camera) and the specular
+                              colour and exponent (float x 4)             */
+    size_t normal_offset, specular_offset;
+    gls_light *lights;     /* every light on every call path, walk order  */
+    uint32_t nlights;
+    uint32_t shadow_res;   /* shadow map side (the largest shadows(...)
+                              the walk met), 0: no shadows; used only when
+                              lit                                         */
     uint8_t *verts;        /* nverts * stride bytes, GL_TRIANGLES order   */
     double *exact;         /* nverts * 3: exact positions in the proto's
                               frame, for re-anchoring near the camera     */

@@ -23,6 +23,7 @@
 typedef struct {
     double M[16];
     double rgba[4];
+    double spec[4];        /* specular r, g, b and Phong exponent (lit)  */
     uint32_t mode, texture;
 } state;
 
@@ -44,6 +45,12 @@ typedef struct {
     double *wpos;          /* 9 per triangle */
     uint8_t *wcol;         /* 12 per triangle */
     float *wtc;            /* 6 per triangle */
+    float *wnrm;           /* lit only: 9 per triangle (3 normals)       */
+    float *wspec;          /* lit only: 4 per triangle (specular state)  */
+    int lit;               /* the bundle has lights (GLS_FEAT_LIGHTS)    */
+    gls_light *lights;
+    size_t nlights, lcap;
+    uint32_t shadow_res;   /* the largest SHADOWS met                    */
     size_t ntri, tcap;
     uint64_t dropped;
     int oom;
@@ -131,6 +138,16 @@ static int grow_tris(walker *w, size_t need)
         w->wtc = x;
     if (!t || !p || !c || !x)
         return -1;
+    if (w->lit) { /* normals and specular state only where they are used */
+        float *n = gls_resize(w->wnrm, cap, 9 * sizeof *n);
+        if (n)
+            w->wnrm = n;
+        float *e = gls_resize(w->wspec, cap, 4 * sizeof *e);
+        if (e)
+            w->wspec = e;
+        if (!n || !e)
+            return -1;
+    }
     w->tcap = cap;
     return 0;
 }
@@ -140,6 +157,7 @@ typedef struct {
     double p[3];
     uint8_t c[4];
     float st[2];
+    float n[3];            /* lit primn: its unit normal in the proto's frame */
     int ok;
 } vtx;
 
@@ -178,9 +196,36 @@ static void fetch(const walker *w, const state *st, const gls_insn *in, uint32_t
     } else {
         v->st[0] = v->st[1] = 0;
     }
+    if (w->lit && in->op == GLS_OP_PRIMN) { /* by M^-T, in double */
+        const gls_nrm *q2 = &b->nrm[in->u[GLS_ARG_PRIMN_NRM] + k];
+        double N[9];
+        m4_normal_matrix(M, N);
+        rv3 n = rv_unit(rm_apply(N, rv(q2->x, q2->y, q2->z)));
+        v->n[0] = (float)n.x, v->n[1] = (float)n.y, v->n[2] = (float)n.z;
+    }
 }
 
-static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const vtx *a, const vtx *b2, const vtx *c)
+/* A lit triangle's normals: the vertices' own (primn), or else its flat
+ * normal from the exact positions in double, stored with length 2 to tell
+ * the shader to turn it towards the camera (scene.h); a degenerate
+ * triangle's is 0 (the shader then faces it to the camera). */
+static void tri_normals(const gls_insn *in, const vtx *const v[3], float *out)
+{
+    if (in->op == GLS_OP_PRIMN) {
+        for (int k = 0; k < 3; k++)
+            memcpy(out + 3 * k, v[k]->n, 3 * sizeof *out);
+        return;
+    }
+    rv3 a = rv(v[0]->p[0], v[0]->p[1], v[0]->p[2]);
+    rv3 n = rv_cross(rv_sub(rv(v[1]->p[0], v[1]->p[1], v[1]->p[2]), a), rv_sub(rv(v[2]->p[0], v[2]->p[1], v[2]->p[2]), a));
+    double l = rv_len(n);
+    n = l > 0 ? rv_mul(n, 2.0 / l) : rv(0, 0, 0);
+    for (int k = 0; k < 3; k++)
+        out[3 * k] = (float)n.x, out[3 * k + 1] = (float)n.y, out[3 * k + 2] = (float)n.z;
+}
+
+static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const state *st, const gls_insn *in,
+                 const vtx *a, const vtx *b2, const vtx *c)
 {
     if (!a->ok || !b2->ok || !c->ok) {
         w->dropped++;
@@ -209,6 +254,11 @@ static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const vtx *a
         memcpy(w->wpos + 9 * i + 3 * k, v[k]->p, 3 * sizeof(double));
         memcpy(w->wcol + 12 * i + 4 * k, v[k]->c, 4);
         memcpy(w->wtc + 6 * i + 2 * k, v[k]->st, 2 * sizeof(float));
+    }
+    if (w->lit) {
+        tri_normals(in, v, w->wnrm + 9 * i);
+        for (int k = 0; k < 4; k++)
+            w->wspec[4 * i + k] = (float)st->spec[k];
     }
 }
 
@@ -243,7 +293,7 @@ static void prim(walker *w, uint32_t proto, const state *st, const gls_insn *in)
         fetch(w, st, in, 1, &v1);
         for (uint32_t k = 2; k < n; k++) {
             fetch(w, st, in, k, &v2);
-            emit(w, proto, &key, &v0, &v1, &v2);
+            emit(w, proto, &key, st, in, &v0, &v1, &v2);
             v1 = v2;
         }
         break;
@@ -253,9 +303,9 @@ static void prim(walker *w, uint32_t proto, const state *st, const gls_insn *in)
         for (uint32_t k = 2; k < n; k++) {
             fetch(w, st, in, k, &v2);
             if (k % 2) /* keep GL's consistent winding: (k-1, k-2, k) */
-                emit(w, proto, &key, &v1, &v0, &v2);
+                emit(w, proto, &key, st, in, &v1, &v0, &v2);
             else
-                emit(w, proto, &key, &v0, &v1, &v2);
+                emit(w, proto, &key, st, in, &v0, &v1, &v2);
             v0 = v1, v1 = v2;
         }
         break;
@@ -265,8 +315,8 @@ static void prim(walker *w, uint32_t proto, const state *st, const gls_insn *in)
         for (uint32_t k = 2; k + 1 < n; k += 2) {
             fetch(w, st, in, k, &v2);
             fetch(w, st, in, k + 1, &v3);
-            emit(w, proto, &key, &v0, &v1, &v3);
-            emit(w, proto, &key, &v0, &v3, &v2);
+            emit(w, proto, &key, st, in, &v0, &v1, &v3);
+            emit(w, proto, &key, st, in, &v0, &v3, &v2);
             v0 = v2, v1 = v3;
         }
         break;
@@ -277,8 +327,8 @@ static void prim(walker *w, uint32_t proto, const state *st, const gls_insn *in)
 
 static int is_affine(const double M[16]) { return M[12] == 0 && M[13] == 0 && M[14] == 0 && M[15] == 1; }
 
-/* Does object oi's code contain a CALL, CALLN or MARK?  (A proto already
- * built for an object without calls or marks needs no further walk.) */
+/* Does object oi's code contain a CALL, CALLN, MARK or LIGHT?  (A proto
+ * already built for an object without them needs no further walk.) */
 static int object_calls(walker *w, uint32_t oi)
 {
     if (w->has_call[oi] == 0) {
@@ -287,7 +337,7 @@ static int object_calls(walker *w, uint32_t oi)
         gls_insn in;
         w->has_call[oi] = 1;
         while (gls_insn_decode(o->code, o->code_len, &pos, &in) == 0 && in.op != GLS_OP_END)
-            if (in.op == GLS_OP_CALL || in.op == GLS_OP_CALLN || in.op == GLS_OP_MARK) {
+            if (in.op == GLS_OP_CALL || in.op == GLS_OP_CALLN || in.op == GLS_OP_MARK || in.op == GLS_OP_LIGHT) {
                 w->has_call[oi] = 2;
                 break;
             }
@@ -305,7 +355,8 @@ static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
     uint8_t rgba[4] = {unorm8(st->rgba[0]), unorm8(st->rgba[1]), unorm8(st->rgba[2]), 255};
     for (uint32_t p = w->proto_head[oi]; p != GLS_NONE; p = w->protos[p].next) {
         const gls_proto *q = &w->protos[p];
-        if (q->texture == key.texture && q->mode == key.mode && memcmp(q->rgba, rgba, 4) == 0) {
+        if (q->texture == key.texture && q->mode == key.mode && memcmp(q->rgba, rgba, 4) == 0 &&
+            memcmp(q->spec, st->spec, sizeof q->spec) == 0) {
             *fresh = 0;
             return p;
         }
@@ -320,6 +371,7 @@ static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
     q->texture = key.texture;
     q->mode = key.mode;
     memcpy(q->rgba, rgba, 4);
+    memcpy(q->spec, st->spec, sizeof q->spec);
     q->next = w->proto_head[oi];
     w->proto_head[oi] = (uint32_t)w->nprotos;
     *fresh = 1;
@@ -327,6 +379,28 @@ static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
 }
 
 static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto);
+
+/* A light met on the walk, kept with its instance (like a landmark): a
+ * direction by M (w = 0), a position by M divided by its w. */
+static int add_light(walker *w, const state *st, const gls_insn *in, uint32_t inst)
+{
+    if (gls_grow(&w->lights, &w->lcap, w->nlights + 1, sizeof *w->lights))
+        return -1;
+    gls_light *l = &w->lights[w->nlights++];
+    memset(l, 0, sizeof *l);
+    l->kind = in->u[GLS_ARG_LIGHT_KIND];
+    l->inst = inst;
+    double hw = l->kind == GLS_LIGHT_POINT ? 1.0 : 0.0;
+    if (l->kind != GLS_LIGHT_AMBIENT)
+        m4_apply(st->M, in->d[GLS_ARG_LIGHT_X], in->d[GLS_ARG_LIGHT_Y], in->d[GLS_ARG_LIGHT_Z], hw, l->p);
+    if (l->kind == GLS_LIGHT_POINT && l->p[3] != 1.0 && l->p[3] != 0.0)
+        for (int i = 0; i < 4; i++)
+            l->p[i] /= l->p[3];
+    for (int i = 0; i < 3; i++)
+        l->rgb[i] = in->d[GLS_ARG_LIGHT_R + i];
+    l->atten = in->d[GLS_ARG_LIGHT_ATTEN];
+    return 0;
+}
 
 /* A new instance of object oi, called from instance parent with st (its
  * M the call-site transform in the parent's frame), named name (NULL:
@@ -454,8 +528,20 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
             }
             break;
         case GLS_OP_PRIM:
+        case GLS_OP_PRIMN: /* normals: fetch(); unlit, exactly a PRIM */
             if (proto != GLS_NONE)
                 prim(w, proto, &st, &in);
+            break;
+        case GLS_OP_SHADOWS:
+            if (in.u[GLS_ARG_SHADOWS_RES] > w->shadow_res)
+                w->shadow_res = in.u[GLS_ARG_SHADOWS_RES];
+            break;
+        case GLS_OP_SPECULAR:
+            memcpy(st.spec, in.d + GLS_ARG_SPECULAR_R, sizeof st.spec);
+            break;
+        case GLS_OP_LIGHT: /* in the instance's frame, like a mark */
+            if (add_light(w, &st, &in, inst))
+                w->oom = 1;
             break;
         default:
             break;
@@ -551,6 +637,10 @@ static int make_chunks(walker *w, gls_scene *s)
                 memcpy(v + s->color_offset, w->wcol + 12 * (size_t)t->idx + 4 * k, 4);
             if (s->has_texcoord)
                 memcpy(v + s->texcoord_offset, w->wtc + 6 * (size_t)t->idx + 2 * k, 8);
+            if (s->lit) {
+                memcpy(v + s->normal_offset, w->wnrm + 9 * (size_t)t->idx + 3 * k, 12);
+                memcpy(v + s->specular_offset, w->wspec + 4 * (size_t)t->idx, 16);
+            }
         }
         ch->count += 3;
     }
@@ -605,6 +695,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
      * mode only and a colour change does not split a draw */
     w.has_color = instanced || (b->features & GLS_FEAT_VERTEX_COLOR) != 0;
     w.has_texcoord = (b->features & GLS_FEAT_TEXCOORDS) && (b->features & GLS_FEAT_TEXTURES);
+    w.lit = (b->features & GLS_FEAT_LIGHTS) != 0;
     w.proto_head = malloc((b->nobjects ? b->nobjects : 1) * sizeof *w.proto_head);
     w.has_call = calloc(b->nobjects ? b->nobjects : 1, 1);
     int rc = -1;
@@ -621,6 +712,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     state st;
     identity(st.M);
     st.rgba[0] = st.rgba[1] = st.rgba[2] = st.rgba[3] = 1.0; /* opaque white */
+    st.spec[0] = st.spec[1] = st.spec[2] = st.spec[3] = 0.0;  /* no highlight */
     st.mode = GLS_MODE_COLOR;
     st.texture = GLS_NONE;
     enter(&w, b->top, st, GLS_NONE, NULL);
@@ -643,6 +735,14 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         s->color_offset = s->stride, s->stride += 4;
     if (s->has_texcoord)
         s->texcoord_offset = s->stride, s->stride += 8;
+    s->lit = w.lit;
+    if (s->lit) {
+        s->normal_offset = s->stride, s->stride += 12;
+        s->specular_offset = s->stride, s->stride += 16;
+    }
+    s->lights = w.lights, s->nlights = (uint32_t)w.nlights;
+    s->shadow_res = w.shadow_res; /* drawn only when lit (render.c) */
+    w.lights = NULL;
     s->nverts = (uint32_t)(w.ntri * 3);
     s->dropped = w.dropped;
     if (make_chunks(&w, s) || make_items(s) || gls_markwalk_finish(&w.marks, s)) {
@@ -657,6 +757,9 @@ out:
     free(w.wpos);
     free(w.wcol);
     free(w.wtc);
+    free(w.wnrm);
+    free(w.wspec);
+    free(w.lights);
     free(w.protos);
     for (size_t i = 0; w.inst && i < w.ninst; i++)
         free(w.inst[i].name);
@@ -689,6 +792,7 @@ void gls_scene_free(gls_scene *s)
         free(s->marknames[i]);
     free(s->marks);
     free(s->marknames);
+    free(s->lights);
     free(s->verts);
     free(s->exact);
     free(s->chunks);

@@ -165,6 +165,14 @@ def grouping(root):
             for name, x in (("left", 0.15), ("right", -0.15))]
 
 
+def lighting(root):
+    d = os.path.join(root, "lighting")
+    R = level(0, 14)
+    return [write_cam(os.path.join(d, "left.cam"),
+                      "lighting: the grouping rig's left camera, 2.5 m high, pitched down 14 deg",
+                      STEREO_K, R, [0.15, 2.5, 0.0], 0.1, 200.0)]
+
+
 def lane(root):
     d = os.path.join(root, "lane")
     R = level(0, 4)
@@ -187,7 +195,7 @@ def signs(root):
 
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else "examples"
-    for f in (calibration, stereo, dense_stereo, grouping, lane, signs):
+    for f in (calibration, stereo, dense_stereo, grouping, lane, signs, lighting):
         os.makedirs(os.path.join(root, f.__name__), exist_ok=True)
         for p in f(root):
             print(p)

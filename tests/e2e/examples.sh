@@ -31,7 +31,7 @@ fi
 for f in glsc glsplay scenelib.glsb; do
     [ -e "$B/$f" ] || { fail examples_build_products "no $B/$f (run make)"; exit 0; }
 done
-EXAMPLES="calibration stereo dense_stereo grouping lane signs"
+EXAMPLES="calibration stereo dense_stereo grouping lane signs lighting"
 
 # ---- camera files are generated and up to date --------------------------------
 if $PY tools/excams.py "$t/cams" >"$t/cams.list" 2>"$t/err"; then

@@ -6,39 +6,19 @@ known occluders.  Usage: check_landmarks.py BIN TMPDIR.  Prints
 import csv
 import math
 import os
-import subprocess
 import sys
 
 import cv2
 import numpy as np
 
+from glstest import fail, ok, run, write
+
 BIN, TMP = sys.argv[1], sys.argv[2]
 HEADER = ["name", "path", "X", "Y", "Z", "u", "v", "depth", "in_image", "visible"]
 
 
-def ok(name):
-    print("ok " + name)
-
-
-def fail(name, why):
-    print("FAIL %s: %s" % (name, why))
-
-
 def check(name, cond, why):
     ok(name) if cond else fail(name, why)
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
-
-
-def run(*args):
-    r = subprocess.run([str(a) for a in args], capture_output=True, text=True)
-    if r.returncode != 0:
-        raise RuntimeError("%s: exit %d: %s" % (args[0], r.returncode, r.stderr.strip()))
-    return r.stdout
 
 
 def read_csv(path):

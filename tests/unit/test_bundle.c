@@ -438,7 +438,7 @@ static void test_opcode_table(void)
         [GLS_OP_NOTEXTURE] = 1, [GLS_OP_TRANS] = 25, [GLS_OP_ROT] = 33,   [GLS_OP_SCALE] = 25,
         [GLS_OP_TRANSFORM] = 129, [GLS_OP_PUSH] = 1, [GLS_OP_POP] = 1,    [GLS_OP_CALL] = 5,
         [GLS_OP_PRIM] = 18, [GLS_OP_CALLN] = 9, [GLS_OP_MARK] = 29,
-        [GLS_OP_CLASS] = 5};
+        [GLS_OP_CLASS] = 5, [GLS_OP_LIGHT] = 58, [GLS_OP_SPECULAR] = 33, [GLS_OP_PRIMN] = 22, [GLS_OP_SHADOWS] = 5};
     for (int op = 0; op < GLS_OP_COUNT; op++) {
         gls_buf code = {0};
         gls_insn in = {.op = (gls_opcode)op};
@@ -458,7 +458,9 @@ static void test_opcode_table(void)
         CHECK(count[GLS_KIND_OBJECT] <= 1 && count[GLS_KIND_NVERT] <= 1 && count[GLS_KIND_FIRST_POS] <= 1 &&
               count[GLS_KIND_FIRST_COL] <= 1 && count[GLS_KIND_FIRST_TC] <= 1 && count[GLS_KIND_PRIMKIND] <= 1);
         CHECK(count[GLS_KIND_NVERT] == count[GLS_KIND_FIRST_POS] && count[GLS_KIND_NVERT] == count[GLS_KIND_PRIMKIND]);
-        CHECK(count[GLS_KIND_NVERT] || (!count[GLS_KIND_FIRST_COL] && !count[GLS_KIND_FIRST_TC]));
+        CHECK(count[GLS_KIND_NVERT] ||
+              (!count[GLS_KIND_FIRST_COL] && !count[GLS_KIND_FIRST_TC] && !count[GLS_KIND_FIRST_NRM]));
+        CHECK(count[GLS_KIND_FIRST_NRM] <= 1);
     }
     CHECK(strcmp(gls_op[GLS_OP_TRANSFORM].name, "transform") == 0 && GLS_NARGS_TRANSFORM == 16);
     CHECK(GLS_ARG_PRIM_N == 1 && GLS_ARG_ROT_Z == 3 && GLS_ARG_TRANSFORM_A33 == 15);
@@ -559,12 +561,12 @@ static void test_instance_names(void)
     b = make_bundle();
     data = write_it(b, &len);
     CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_REQUIRED && GLS_SEC_REQUIRED == 7);
-    if (data) { /* a section count outside 7..9 is refused */
-        gls_le_put_u32(data + GLS_HDR_NSECT, 10);
+    if (data) { /* a section count outside 7..10 is refused */
+        gls_le_put_u32(data + GLS_HDR_NSECT, 11);
         fix_crc(data, len);
         r = gls_bundle_read(data, len, &err);
         CHECK(r == NULL);
-        CHECK_MSG(strcmp(err.msg, "bundle has 10 sections, expected 7 to 9") == 0, "%s", err.msg);
+        CHECK_MSG(strcmp(err.msg, "bundle has 11 sections, expected 7 to 10") == 0, "%s", err.msg);
     }
     gls_bundle_free(b);
     free(data);
@@ -656,23 +658,23 @@ static void test_mark_names(void)
     }
     gls_bundle_free(r);
     if (data) { /* an optional section's id must follow the one before it */
-        gls_le_put_u32(data + GLS_HEADER_SIZE + GLS_SEC_REQUIRED * GLS_DIRENT_SIZE, 10);
+        gls_le_put_u32(data + GLS_HEADER_SIZE + GLS_SEC_REQUIRED * GLS_DIRENT_SIZE, 11);
         fix_crc(data, len);
         r = gls_bundle_read(data, len, &err);
         CHECK(r == NULL);
-        CHECK_MSG(strcmp(err.msg, "section directory entry 7 has id 10, expected an optional section after 7 (up to 9)") ==
+        CHECK_MSG(strcmp(err.msg, "section directory entry 7 has id 11, expected an optional section after 7 (up to 10)") ==
                       0, "%s", err.msg);
     }
     free(data);
 
-    /* with instance names too: all 9 sections, in id order */
+    /* with instance names too: all sections but NORMALS (9 of 10), in id order */
     static const char *const car[] = {"car1"};
     b->ninstnames = 1;
     b->instnames = calloc(1, sizeof *b->instnames);
     b->instnames[0] = strdup(car[0]);
     set_code(b, 0, (gls_insn[]){{.op = GLS_OP_CALLN, .u = {1, 0}}}, 1);
     data = write_it(b, &len);
-    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_COUNT && GLS_SEC_COUNT == 9);
+    CHECK(data && gls_le_get_u32(data + GLS_HDR_NSECT) == GLS_SEC_COUNT - 1 && GLS_SEC_COUNT == 10);
     r = data ? gls_bundle_read(data, len, &err) : NULL;
     CHECK_MSG(r && r->ninstnames == 1 && r->nmarknames == 2, "%s", err.msg);
     gls_bundle_free(r);
@@ -742,6 +744,58 @@ static void test_class_names(void)
                         "object a.Tri, instruction 0 (class): class name 0 >= 0 names");
 }
 
+/* Lights and normals (issue 16): a PRIMN's normals round-trip through
+ * the optional NORMALS section, a LIGHT sets the lights feature, and the
+ * validator's messages for each of their operand rules. */
+static void test_lights_and_normals(void)
+{
+    gls_bundle *b = make_bundle();
+    gls_error err = {{0}, 0};
+    b->nnrm = 3;
+    b->nrm = malloc(3 * sizeof *b->nrm);
+    b->nrm[0] = (gls_nrm){0, 1, 0}, b->nrm[1] = (gls_nrm){0.6f, 0.8f, 0}, b->nrm[2] = (gls_nrm){0, 0, -1};
+    gls_insn lit[] = {{.op = GLS_OP_LIGHT, .u = {GLS_LIGHT_POINT}, .d = {0, 1, 2, 3, 1, 0.5, 0.25, 0.1}},
+                      {.op = GLS_OP_SPECULAR, .d = {1, 1, 1, 30}},
+                      {.op = GLS_OP_PRIMN, .u = {GLS_PRIM_TFAN, 3, 0, GLS_NONE, GLS_NONE, 0}}};
+    set_code(b, 1, lit, 3);
+    b->features = gls_bundle_features(b);
+    CHECK(b->features == GLS_FEAT_LIGHTS);
+    CHECK_MSG(gls_bundle_validate(b, &err) == 0, "%s", err.msg);
+    size_t len;
+    uint8_t *data = write_it(b, &len);
+    gls_bundle *r = data ? gls_bundle_read(data, len, &err) : NULL;
+    CHECK_MSG(r != NULL, "%s", err.msg);
+    if (r)
+        CHECK(r->nnrm == 3 && memcmp(r->nrm, b->nrm, 3 * sizeof *b->nrm) == 0 && r->features == GLS_FEAT_LIGHTS);
+    gls_bundle_free(r);
+    free(data);
+    b->nrm[1] = (gls_nrm){0.6f, 0.6f, 0};
+    CHECK(gls_bundle_validate(b, &err) != 0 && strcmp(err.msg, "normal 1 is not a finite unit vector") == 0);
+    gls_bundle_free(b);
+    expect_code_message(&(gls_insn){.op = GLS_OP_PRIMN, .u = {GLS_PRIM_POLY, 3, 0, GLS_NONE, GLS_NONE, 0}}, 1,
+                        "object a.Tri, instruction 0 (primn): normals 0+3 beyond 0");
+    expect_code_message(&(gls_insn){.op = GLS_OP_LIGHT, .u = {3}}, 1,
+                        "object a.Tri, instruction 0 (light): light kind 3 unknown");
+    expect_code_message(&(gls_insn){.op = GLS_OP_LIGHT, .u = {GLS_LIGHT_POINT}, .d = {0, 0, 0, 0, 1, -1, 1, 0}}, 1,
+                        "object a.Tri, instruction 0 (light): operand 6 is negative");
+    expect_code_message(&(gls_insn){.op = GLS_OP_SPECULAR, .d = {1, 1, 1, -3}}, 1,
+                        "object a.Tri, instruction 0 (specular): operand 4 is negative");
+    expect_code_message(&(gls_insn){.op = GLS_OP_LIGHT, .u = {GLS_LIGHT_DIRECTIONAL}, .d = {0, 0, 0, 0, 1, 1, 1, 0}},
+                        1, "object a.Tri, instruction 0 (light): directional light with a zero direction");
+    expect_code_message(&(gls_insn){.op = GLS_OP_LIGHT, .u = {GLS_LIGHT_AMBIENT}, .d = {0, 0, 1, 0, 1, 1, 1, 0}}, 1,
+                        "object a.Tri, instruction 0 (light): ambient light with a position");
+    expect_code_message(&(gls_insn){.op = GLS_OP_LIGHT, .u = {GLS_LIGHT_DIRECTIONAL}, .d = {0, 0, 1, 0, 1, 1, 1, 2}},
+                        1, "object a.Tri, instruction 0 (light): attenuation on a light that is not a point light");
+    expect_code_message(&(gls_insn){.op = GLS_OP_SHADOWS, .u = {1536}}, 1,
+                        "object a.Tri, instruction 0 (shadows): shadow map side 1536 is not a power of two in 256..8192");
+    expect_code_message(&(gls_insn){.op = GLS_OP_SHADOWS, .u = {16384}}, 1,
+                        "object a.Tri, instruction 0 (shadows): shadow map side 16384 is not a power of two in 256..8192");
+    gls_bundle *sb = make_bundle();
+    set_code(sb, 1, &(gls_insn){.op = GLS_OP_SHADOWS, .u = {2048}}, 1);
+    CHECK(gls_bundle_features(sb) == GLS_FEAT_SHADOWS && gls_bundle_validate(sb, &err) == 0);
+    gls_bundle_free(sb);
+}
+
 int main(void)
 {
     RUN(test_round_trip_is_lossless);
@@ -758,5 +812,6 @@ int main(void)
     RUN(test_instance_names);
     RUN(test_mark_names);
     RUN(test_class_names);
+    RUN(test_lights_and_normals);
     CHECK_EXIT();
 }
