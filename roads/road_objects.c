@@ -34,6 +34,9 @@ static void tree_object(FILE *f)
           f);
     /* landmarks (spec/road.md "Landmarks"): where it stands and its apex */
     fputs("mark(\"foot\", 0, 0, 0);\nmark(\"top\", 0, 7, 0);\n", f);
+    /* its class for the ground truth (spec/outputs.md "Classes"), as
+       scenelib's trees give theirs */
+    fputs("class(\"Tree\");\n", f);
     box(f, -0.15, 0.15, 0, 2.2, -0.15, 0.15, bark);
     static const double cone[2][3] = {{1.5, 2.2, 5.5}, {1.1, 4.2, 7.0}}; /* radius, base, apex */
     for (int k = 0; k < 2; k++) {
@@ -64,6 +67,8 @@ static void car_object(FILE *f)
           "mark(\"rear.left\", 0.9, 0, -2.2);\nmark(\"rear.right\", -0.9, 0, -2.2);\n"
           "mark(\"roof\", 0, 1.5, -0.3);\n",
           f);
+    /* its class, KITTI's type name as scenelib's cars give it */
+    fputs("class(\"Car\");\n", f);
     box(f, -0.9, 0.9, 0.3, 1.0, -2.2, 2.2, body);
     box(f, -0.8, 0.8, 1.0, 1.5, -1.3, 0.7, glass);
     for (int i = 0; i < 4; i++)

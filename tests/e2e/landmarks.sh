@@ -114,6 +114,21 @@ PY
     else
         fail landmarks_road_example "see above"
     fi
+    # glsroad's own objects give their class: the road clip's instances of
+    # roadobj.Tree are of class Tree (not their package, roadobj)
+    if grep -qx 'class("Tree");' "$t/road/road/roadobj/Tree.scene" &&
+        grep -qx 'class("Car");' "$t/road/road/roadobj/Car.scene" &&
+        $PY - "$t/road/clip/left/instances_000200.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+trees = [i for i in d["instances"] if i["object"].startswith("roadobj.Tree")]
+sys.exit(0 if trees and all(i["class"] == "Tree" for i in trees) else 1)
+PY
+    then
+        ok road_objects_classes
+    else
+        fail road_objects_classes "roadobj scenes without class lines, or a tree of another class in instances_000200.json"
+    fi
 else
     fail landmarks_road_example "render.sh failed: $(tail -3 "$t/road.log")"
 fi
