@@ -166,6 +166,10 @@ typedef struct {
     uint32_t nmarknames;
     int moving;            /* some instance has a motion (gls_scene_move)  */
     uint64_t dropped;      /* triangles with a vertex at infinity (w = 0) */
+    int no_cull;           /* 1: gls_scene_cull marks everything visible:
+                              only for measuring what culling saves
+                              (bench/instances_bench --no-cull); 0 after
+                              load */
     double lo[3], hi[3];   /* bounding box of the unique vertices        */
 } gls_scene;
 
