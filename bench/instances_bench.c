@@ -12,7 +12,9 @@
  *          FOREST_N x FOREST_N instances of a TREE_TRIS-triangle tree,
  *          seen from the forest's edge looking along it (edge: most of it
  *          outside the view) or from above (all: all of it in view);
- *          --one: a single tree (the memory baseline).  One untimed frame
+ *          --one: a single tree (the memory baseline); --no-cull:
+ *          every item drawn (gls_scene.no_cull), to measure what culling
+ *          saves.  One untimed frame
  *          (warm-up), then FRAMES timed; prints "forest FPS drawn D culled C
  *          items I of N rss KIB loaded KIB geometry B table B setup S": rss
  *          is the peak resident set (KiB), loaded the peak before the
@@ -166,13 +168,15 @@ static long peak_rss_kib(void)
 int main(int argc, char **argv)
 {
     char err[256];
-    int flatten = 0, one = 0, forest = argc > 1 && strcmp(argv[1], "forest") == 0, edge = 0, frames = PS_FRAMES;
+    int flatten = 0, no_cull = 0, one = 0, forest = argc > 1 && strcmp(argv[1], "forest") == 0, edge = 0, frames = PS_FRAMES;
     int a = 2;
     if (forest && argc > 2 && (strcmp(argv[2], "edge") == 0 || strcmp(argv[2], "all") == 0))
         edge = strcmp(argv[2], "edge") == 0, a = 3;
     for (; a < argc && argv[a][0] == '-'; a++) {
         if (strcmp(argv[a], "--flatten") == 0)
             flatten = 1;
+        else if (strcmp(argv[a], "--no-cull") == 0)
+            no_cull = 1;
         else if (forest && strcmp(argv[a], "--one") == 0)
             one = 1;
         else
@@ -182,7 +186,7 @@ int main(int argc, char **argv)
         frames = atoi(argv[a++]);
     if (argc < 2 || (!forest && strcmp(argv[1], "random") != 0) || (forest && a == 2) || a != argc || frames < 1) {
         fprintf(stderr, "usage: instances_bench random [--flatten]\n"
-                        "       instances_bench forest edge|all [--flatten] [--one] FRAMES\n");
+                        "       instances_bench forest edge|all [--flatten] [--no-cull] [--one] FRAMES\n");
         return 2;
     }
     gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
@@ -197,6 +201,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "instances_bench: %s\n", err);
         return 1;
     }
+    sc.no_cull = no_cull;
     gls_renderer *r = gls_renderer_create(ctx, b, &sc, err, sizeof err);
     if (!r || gls_renderer_set_size(r, 640, 480, err, sizeof err)) {
         fprintf(stderr, "instances_bench: %s\n", err);

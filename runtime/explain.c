@@ -11,6 +11,8 @@
 #include "units.h"
 #include "player.h"
 #include "scene_cull.h"
+#include "frame_writer.h"
+#include "outputs.h"
 
 /* The GL effect each feature switches on, by feature bit; the asserts keep
  * the indices in step with bundle.h. */
@@ -99,6 +101,13 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     fprintf(out, "\n");
     explain_instances(out, s, cams, names, n, o);
     explain_backend(out, o, ctx);
+    if (o->writer_threads)
+        fprintf(out, "files: PNG by %s; each frame's files encoded and written on a thread of their own while the "
+                     "next frame renders (--writer-threads 1), at most %d frames pending\n",
+                gls_png_encoding(), GLS_WRITER_DEPTH);
+    else
+        fprintf(out, "files: PNG by %s; each frame's files encoded and written before the next frame renders "
+                     "(--writer-threads 0)\n", gls_png_encoding());
     fprintf(out, "always on: reversed-Z depth test (GL_DEPTH_COMPONENT32F, cleared to 0, GL_GREATER, "
                  "glClipControl GL_ZERO_TO_ONE); FBO with RGBA8 colour; clear colour black\n");
     fprintf(out, "features (bundle bits %#x):\n", b->features);

@@ -76,6 +76,11 @@ out:
     return rc;
 }
 
+const char *gls_png_encoding(void)
+{
+    return "libspng, zlib level 1, the \"sub\" filter on every row";
+}
+
 int gls_encode_png_with(const void *px, uint32_t w, uint32_t h, int channels, int depth, int rgba, int level,
                         int filters, gls_buf *out)
 {

@@ -27,6 +27,9 @@ int gls_encode_png_gray(const uint8_t *g, uint32_t w, uint32_t h, gls_buf *out);
 /* 16-bit greyscale PNG, one host-order sample per pixel, top row first. */
 int gls_encode_png16_gray(const uint16_t *g, uint32_t w, uint32_t h, gls_buf *out);
 
+/* How PNGs are encoded, in words, for --explain. */
+const char *gls_png_encoding(void);
+
 /* Any of the above with other settings, for the bench: channels 1 or 3,
  * depth 8 or 16 (host-order samples), rgba: 8-bit pixels given as RGBA
  * (alpha dropped), level 0..9, filters SPNG_FILTER_CHOICE_* bits. */

@@ -36,6 +36,9 @@
 /* Edge of a chunk cell in scene units: a power of two, so anchors and
  * cell indices are exact in binary floating point. */
 #define GLS_SCENE_CELL 64.0
+/* Sub-cells per axis of a cell, for the drawing order within it
+ * (scene_build.c cell_zorder): 10 bits per axis, a 30-bit Morton code. */
+#define GLS_SCENE_SUBCELLS 1024.0
 
 /* Farthest a vertex may be from the world origin, after its transforms
  * (2^50, about 1e15 units; the double spacing there is 1/8 unit).
@@ -163,6 +166,10 @@ typedef struct {
     uint32_t nmarknames;
     int moving;            /* some instance has a motion (gls_scene_move)  */
     uint64_t dropped;      /* triangles with a vertex at infinity (w = 0) */
+    int no_cull;           /* 1: gls_scene_cull marks everything visible:
+                              only for measuring what culling saves
+                              (bench/instances_bench --no-cull); 0 after
+                              load */
     double lo[3], hi[3];   /* bounding box of the unique vertices        */
 } gls_scene;
 

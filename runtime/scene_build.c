@@ -32,6 +32,7 @@ typedef struct {
     uint32_t proto;
     gls_drawkey key;
     int64_t cell[3];
+    uint32_t zorder; /* the first vertex's place in its cell, Morton order */
     uint32_t idx; /* emission order: the final tie-break, for determinism */
 } tri;
 
@@ -224,6 +225,26 @@ static void tri_normals(const gls_insn *in, const vtx *const v[3], float *out)
         out[3 * k] = (float)n.x, out[3 * k + 1] = (float)n.y, out[3 * k + 2] = (float)n.z;
 }
 
+/* Triangles are drawn in the Morton order of their first vertex's
+ * sub-cell (GLS_SCENE_SUBCELLS per axis) within their cell, then in
+ * emission order: llvmpipe bins and shades triangles that are near each
+ * other on the screen faster than the same triangles in an arbitrary
+ * order (make bench-instances, its random-order scene).  The sub-cell,
+ * like the cell, is exact under translations by multiples of the cell
+ * size (p - cell * size is exact there). */
+static uint32_t cell_zorder(const double p[3], const int64_t cell[3])
+{
+    uint32_t q[3], z = 0;
+    for (int j = 0; j < 3; j++) {
+        double f = (p[j] - (double)cell[j] * GLS_SCENE_CELL) * (GLS_SCENE_SUBCELLS / GLS_SCENE_CELL);
+        q[j] = f <= 0 ? 0 : f >= GLS_SCENE_SUBCELLS - 1 ? GLS_SCENE_SUBCELLS - 1 : (uint32_t)f;
+    }
+    for (int b = 9; b >= 0; b--)
+        for (int j = 0; j < 3; j++)
+            z = z << 1 | ((q[j] >> b) & 1u);
+    return z;
+}
+
 static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const state *st, const gls_insn *in,
                  const vtx *a, const vtx *b2, const vtx *c)
 {
@@ -250,6 +271,7 @@ static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const state 
      * of the cell size (a centroid would round differently far away) */
     for (int j = 0; j < 3; j++)
         t->cell[j] = (int64_t)floor(a->p[j] / GLS_SCENE_CELL);
+    t->zorder = cell_zorder(a->p, t->cell);
     for (int k = 0; k < 3; k++) {
         memcpy(w->wpos + 9 * i + 3 * k, v[k]->p, 3 * sizeof(double));
         memcpy(w->wcol + 12 * i + 4 * k, v[k]->c, 4);
@@ -570,6 +592,8 @@ static int tri_cmp(const void *pa, const void *pb)
     for (int j = 0; j < 3; j++)
         if (a->cell[j] != b->cell[j])
             return a->cell[j] < b->cell[j] ? -1 : 1;
+    if (a->zorder != b->zorder)
+        return a->zorder < b->zorder ? -1 : 1;
     return a->idx < b->idx ? -1 : a->idx > b->idx;
 }
 

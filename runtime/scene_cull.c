@@ -50,7 +50,7 @@ void gls_scene_cull(const gls_scene *s, const gls_camera *c, uint8_t *ivis, uint
             continue;
         double b[4];
         gls_box_image_bounds(c, in->lo, in->hi, b);
-        ivis[i] = (uint8_t)in_image(c, b);
+        ivis[i] = (uint8_t)(s->no_cull || in_image(c, b));
         if (ivis[i])
             st->drawn++;
         else
@@ -59,7 +59,7 @@ void gls_scene_cull(const gls_scene *s, const gls_camera *c, uint8_t *ivis, uint
     for (uint32_t k = 0; k < s->nitems; k++) {
         const gls_item *it = &s->items[k];
         vis[k] = ivis[it->inst];
-        if (vis[k] && s->inst[it->inst].nitems > 1) {
+        if (vis[k] && s->inst[it->inst].nitems > 1 && !s->no_cull) {
             double b[4];
             gls_box_image_bounds(c, it->lo, it->hi, b);
             vis[k] = (uint8_t)in_image(c, b);

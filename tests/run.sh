@@ -10,7 +10,8 @@
 #   - the same suite against a clang ASan+UBSan build (build-asan), lines
 #     prefixed "asan:";
 #   - every fuzz target replays its corpus and regressions, then fuzzes for
-#     GLS_FUZZ_SECONDS (default 60) under ASan+UBSan (tests/fuzz/run.sh);
+#     GLS_FUZZ_SECONDS (default 60) under ASan+UBSan (tests/fuzz/run.sh),
+#     GLS_FUZZ_JOBS (default 2) targets at a time;
 #   - glsplay renders the demo once under valgrind: no errors, no leaks
 #     outside Mesa (tests/valgrind.supp).
 cd "$(dirname "$0")/.." || exit 2
@@ -59,6 +60,7 @@ if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
 
     echo "== fuzzing (libFuzzer, ASan + UBSan)" | tee -a "$log"
     if make --no-print-directory -s -j2 fuzz-build >build-fuzz.log 2>&1; then
+        export GLS_FUZZ_JOBS=${GLS_FUZZ_JOBS:-2} # two targets at a time: the CI machine has 2 cores
         sh tests/fuzz/run.sh 0 2>&1 | sed 's/^ok fuzz_/ok fuzz_replay_/; s/^FAIL fuzz_/FAIL fuzz_replay_/' | tee -a "$log"
         sh tests/fuzz/run.sh "${GLS_FUZZ_SECONDS:-60}" 2>&1 | tee -a "$log"
     else

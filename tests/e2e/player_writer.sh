@@ -154,3 +154,12 @@ fi
 rc=$?
 [ $rc = 2 ] && [ "$(cat "$tmp/uerr")" = "glsplay: error: --writer-threads needs 0 or 1, got '2' (try glsplay --help)" ] &&
     ok writer_threads_usage || fail writer_threads_usage "rc=$rc $(cat "$tmp/uerr")"
+
+# --explain says how the files are encoded and whether the writer thread runs
+for n in 1 0; do
+    play --writer-threads $n --explain >"$tmp/expl$n" 2>&1
+done
+w1="files: PNG by libspng, zlib level 1, the \"sub\" filter on every row; each frame's files encoded and written on a thread of their own while the next frame renders (--writer-threads 1), at most 2 frames pending"
+w0="files: PNG by libspng, zlib level 1, the \"sub\" filter on every row; each frame's files encoded and written before the next frame renders (--writer-threads 0)"
+grep -qxF "$w1" "$tmp/expl1" && grep -qxF "$w0" "$tmp/expl0" && ok writer_explained ||
+    fail writer_explained "$(grep '^files:' "$tmp/expl1" "$tmp/expl0")"

@@ -7,17 +7,24 @@
 # into the corpus unless CI=true; a crash is copied to regressions/T and
 # fails the run.  SECONDS=0 only replays.  Prints "ok fuzz_T" / "FAIL
 # fuzz_T" and one statistics line per target.
+#
+# GLS_FUZZ_JOBS=N (default 1) fuzzes N targets at a time, one process
+# each (the CI uses 2, its core count); each target's lines are printed
+# together, in the order of the targets, whatever the order they finish.
 secs=${1:-60}
 shift
 targets=${*:-"compile bundle texture camera road writers"}
 F=build-fuzz/fuzz
-status=0
-for t in $targets; do
+jobs=${GLS_FUZZ_JOBS:-1}
+
+# fuzz_one T: replay and fuzz one target; prints its lines, returns 1 on failure
+fuzz_one() {
+    t=$1
+    status=0
     bin=$F/fuzz_$t
     if [ ! -x "$bin" ]; then
         echo "FAIL fuzz_$t: $bin not built (make fuzz-build)"
-        status=1
-        continue
+        return 1
     fi
     corpus=tests/fuzz/corpus/$t
     regr=tests/fuzz/regressions/$t
@@ -48,5 +55,26 @@ for t in $targets; do
         fi
     fi
     rm -rf "$work"
+    return $status
+}
+
+out=$(mktemp -d)
+status=0
+set -- $targets
+while [ $# -gt 0 ]; do
+    batch=
+    n=0
+    while [ $# -gt 0 ] && [ $n -lt "$jobs" ]; do
+        (fuzz_one "$1" >"$out/$1.log" 2>&1; echo $? >"$out/$1.rc") &
+        batch="$batch $1"
+        n=$((n + 1))
+        shift
+    done
+    wait
+    for t in $batch; do
+        cat "$out/$t.log"
+        [ "$(cat "$out/$t.rc")" = 0 ] || status=1
+    done
 done
+rm -rf "$out"
 exit $status

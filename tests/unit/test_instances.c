@@ -310,6 +310,62 @@ static void test_beyond_flattened_limit(void)
     gls_bundle_free(b);
 }
 
+/* Chris Ericson's/Timothy Chan's comparison of Morton order without
+ * interleaving: the axis whose coordinates differ in the highest bit
+ * decides; at the same bit, x before y before z (scene_build.c puts x
+ * highest within each bit). */
+static int msb_less(uint32_t a, uint32_t b) { return a < b && a < (a ^ b); }
+static int zorder_before(const uint32_t p[3], const uint32_t q[3])
+{
+    int axis = 0;
+    uint32_t best = 0;
+    for (int j = 0; j < 3; j++) {
+        uint32_t x = p[j] ^ q[j];
+        if (msb_less(best, x))
+            axis = j, best = x;
+    }
+    return p[axis] < q[axis];
+}
+
+/* Within a chunk, triangles are drawn in the Morton order of their first
+ * vertex on a 1/16-unit grid, whatever order the object emits them in
+ * (spec/bundle.md 9.3). */
+static void test_draw_order_within_cell(void)
+{
+    enum { N = 12 };
+    tb t;
+    tb_init(&t);
+    tb_object(&t, "grid", 1);
+    tb_color(&t, 0, 1, 0, 1);
+    /* N x N small triangles in one cell, emitted in a scrambled order
+     * (k * 37 mod N^2 visits every k once: 37 is prime to 144) */
+    for (int k = 0; k < N * N; k++) {
+        int m = (k * 37) % (N * N), i = m % N, j = m / N;
+        double x = 1 + 3.3 * i, y = 2 + 2.7 * j;
+        double tri[3][3] = {{x, y, 20}, {x + 1, y, 20}, {x, y + 1, 20}};
+        tb_poly(&t, 3, tri);
+    }
+    gls_bundle *b = tb_finish(&t);
+    gls_scene s;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    CHECK(s.nverts == 3 * N * N && s.nchunks == 1);
+    int inorder = 1;
+    uint32_t prev[3] = {0, 0, 0};
+    for (uint32_t k = 0; k < s.nverts / 3; k++) {
+        const double *v = s.exact + 9 * (size_t)k; /* first vertex, world, double */
+        uint32_t q[3];
+        for (int j = 0; j < 3; j++)
+            q[j] = (uint32_t)floor(v[j] * 16);
+        if (k && zorder_before(q, prev))
+            inorder = 0;
+        memcpy(prev, q, sizeof q);
+    }
+    CHECK(inorder);
+    gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
 int main(void)
 {
     char err[256];
@@ -323,6 +379,7 @@ int main(void)
     RUN(test_motion_files);
     RUN(test_motion_unknown_name);
     RUN(test_beyond_flattened_limit);
+    RUN(test_draw_order_within_cell);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
 }
