@@ -178,7 +178,8 @@ good, why, edges_img, edges_g = edges_case("edges", *EDGES)
 
 # seam: the light at (0, 2, 0), the square over x = 1 at height 1 and its
 # shadow over x = 2: both cross the plane |x| = |y| between faces -Y and +X
-SEAM = ((0.0, 2.0, 0.0), (0.6, 1.4, 1.0, -0.4, 0.4), (2.0, 4.5, 4.0), (2.0, 0.0, 0.0))
+# (off centre in z, so that a face mirrored in z would show)
+SEAM = ((0.0, 2.0, 0.0), (0.6, 1.4, 1.0, -0.2, 0.6), (2.0, 4.5, 4.0), (2.0, 0.0, 0.0))
 good, why, seam_img, _ = edges_case("seam", *SEAM)
 (ok if good else lambda n: fail(n, why))("point_shadow_seam")
 
@@ -235,7 +236,8 @@ else:
     fail("point_shadow_off", "plane error max %.1f levels (<= 1); %d pixels outside the shadow differ" % (dev, same))
 
 # far from the origin (1e6 units, a multiple of the chunk cell)
-far = render("seam_far", *SEAM[:2][:1], 6.0, ((0.6, 1.0, -0.4), (1.4, 1.0, 0.4)), SEAM[2], SEAM[3],
+x0, x1, h, z0, z1 = SEAM[1]
+far = render("seam_far", SEAM[0], 6.0, ((x0, h, z0), (x1, h, z1)), SEAM[2], SEAM[3],
              shift=(64.0 * 2 ** 14, 0.0, -64.0 * 2 ** 13))
 if np.array_equal(far, seam_img):
     ok("point_shadow_far_from_origin")
