@@ -76,6 +76,17 @@ if [ $rc -eq 1 ] && [ "$(cat "$t/err")" = "$want" ] && ! ls "$t/many_out/c/image
 else
     fail lighting_too_many_lights "exit $rc, stderr: $(cat "$t/err")"
 fi
+# the same with shadows: their maps are made for the 8 shaded lights only
+# (9 would overrun the maps' arrays), then the lights are refused alike
+printf 'shadows(256);\n' >>"$t/many/Top.scene"
+"$BIN/glsc" -I "$t/many" -o "$t/many_sh.glsb" "$t/many/Top.scene" 2>"$t/err"
+"$BIN/glsplay" "$t/many_sh.glsb" --camera "$t/c.cam" -o "$t/many_sh_out" >"$t/out" 2>"$t/err"
+rc=$?
+if [ $rc -eq 1 ] && [ "$(cat "$t/err")" = "$want" ] && ! ls "$t/many_sh_out/c/image_000000.png" >/dev/null 2>&1; then
+    ok shadows_too_many_lights
+else
+    fail shadows_too_many_lights "exit $rc, stderr: $(cat "$t/err")"
+fi
 
 # shadows: explained
 mkdir -p "$t/sh"
