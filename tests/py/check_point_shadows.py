@@ -22,6 +22,9 @@ of its outline from the light:
 - contact: a box 5 cm thick standing on the plane, seen from its shadow's
   side: the same checks, and no lit pixel of the true shadow within 3 px
   of the box (no peter-panning gap);
+- with a sun: the edges scene lit by the point light and a directional
+  light, each casting its own shadow: within 1 level of the closed form
+  away from both boundaries (the maps of mixed kinds each at its light);
 - off: the edges scene without shadows(...) equals the closed form with no
   shadow at all, and outside the true shadow (and its boundary) the image
   with shadows equals it byte for byte;
@@ -69,13 +72,14 @@ def box_hit(o, d, lo, hi):
     return np.where(hit, np.maximum(tmin, 0), np.inf)
 
 
-def render(name, L, half, box, C, target, shadows=True, shift=(0.0, 0.0, 0.0)):
-    """Plane y = 0, |x|, |z| < half, a point light at L, the box (lo, hi);
-    scene and camera moved by shift.  The image's green channel."""
+def render(name, L, half, box, C, target, shadows=True, shift=(0.0, 0.0, 0.0), lights=None):
+    """Plane y = 0, |x|, |z| < half, a point light at L (or the lights
+    given), the box (lo, hi); scene and camera moved by shift.  The image's
+    green channel."""
     d = os.path.join(TMP, name)
     write(os.path.join(d, "Top.scene"),
           "trans(%r, %r, %r);\n" % tuple(shift) + ("shadows(2048);\n" if shadows else "") +
-          "ambient(%r, %r, %r);\nlight(point, %r, %r, %r, 1, 1, 1);\n" % ((AMB,) * 3 + tuple(L)) +
+          "ambient(%r, %r, %r);\n" % ((AMB,) * 3) + (lights or "light(point, %r, %r, %r, 1, 1, 1);\n" % tuple(L)) +
           "color(0.9, 0.9, 0.9);\npoly { vert(-%r, 0, -%r); vert(%r, 0, -%r); vert(%r, 0, %r); vert(-%r, 0, %r); }\n"
           % ((half,) * 8) + "color(0.8, 0.3, 0.2);\n" + box_text(*box))
     R, T = look_at(np.asarray(C, float), target)
@@ -109,7 +113,8 @@ def geometry(L, half, box, C, target):
     # business, not the shadow's: pixels within BOUNDARY_PX of them are left out
     off_box = cv2.distanceTransform((1 - box_px).astype(np.uint8), cv2.DIST_L2, 5) > BOUNDARY_PX
     inside = cv2.distanceTransform(on_plane.astype(np.uint8), cv2.DIST_L2, 5) > BOUNDARY_PX
-    return dict(R=R, lit=lit_v, shd=shd_v, shadow=shadow, box=box_px, plane=plane & off_box & inside, dist=dist)
+    return dict(R=R, lit=lit_v, shd=shd_v, shadow=shadow, box=box_px, plane=plane & off_box & inside, dist=dist,
+                p=p, nl=nl)
 
 
 def pixel_checks(g, img):
@@ -218,6 +223,32 @@ if g["shadow"].sum() > 2000 and near_box.sum() > 100 and not gap.any() and far_w
 else:
     fail("point_shadow_contact", "%d gap pixels at the box; %d pixels wrong farther than %.1f px; interior max %.1f "
          "levels" % (gap.sum(), far_wrong, BOUNDARY_PX, dev))
+
+# with a sun: the point light first (slot 0, a cube map on unit 9) and a
+# directional light second (slot 1, a 2D map on unit 2), half as bright
+# each: every plane pixel more than BOUNDARY_PX from both shadows'
+# boundaries within 1 level of 255 a (ambient + sum of the unshadowed
+# lights' 0.5 max(0, n . l))
+LD = np.array([0.5, 1.0, -0.3]) / np.linalg.norm([0.5, 1.0, -0.3])
+x0, x1, h, z0, z1 = EDGES[1]
+box = ((x0, h, z0), (x1, h, z1))
+sun = render("sun", EDGES[0], 6.0, box, EDGES[2], EDGES[3],
+             lights="light(point, %r, %r, %r, 0.5, 0.5, 0.5);\nlight(directional, %r, %r, %r, 0.5, 0.5, 0.5);\n" %
+             (tuple(EDGES[0]) + tuple(LD)))
+g = geometry(EDGES[0], 6.0, box, EDGES[2], EDGES[3])
+shadow_d = np.isfinite(box_hit(g["p"] + 1e-9 * LD, np.broadcast_to(LD, g["p"].shape), *box)) & g["plane"]
+want = np.minimum(np.floor(255 * ALBEDO * (AMB + 0.5 * g["nl"] * ~g["shadow"] + 0.5 * LD[1] * ~shadow_d) + 0.5), 255)
+region_d = (shadow_d | g["box"]).astype(np.uint8)
+dist_d = np.where(region_d > 0, cv2.distanceTransform(region_d, cv2.DIST_L2, 5),
+                  cv2.distanceTransform(1 - region_d, cv2.DIST_L2, 5))
+interior = g["plane"] & (g["dist"] > BOUNDARY_PX) & (dist_d > BOUNDARY_PX)
+dev = float(np.abs(sun - want)[interior].max())
+print("# sun: %d pixels in the point light's shadow, %d in the sun's; interior error max %.1f levels" %
+      ((g["shadow"] & interior).sum(), (shadow_d & interior).sum(), dev))
+if (g["shadow"] & interior).sum() > 2000 and (shadow_d & interior).sum() > 1000 and dev <= 1:
+    ok("point_shadow_with_sun")
+else:
+    fail("point_shadow_with_sun", "interior error max %.1f levels (<= 1)" % dev)
 
 # off: no shadows(...): no shadow at all, and the shadowed image equals it
 # outside the true shadow
