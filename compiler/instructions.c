@@ -192,7 +192,7 @@ static void h_specular(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned 
     emit_d(ctx, GLS_OP_SPECULAR, d, name.line);
 }
 
-/* shadows(res): directional lights cast shadows through res x res maps
+/* shadows(res): directional and point lights cast shadows through res x res maps
  * (spec/language.md 7). */
 static void h_shadows(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {

@@ -30,7 +30,7 @@
     X(TRANSLUCENT,  7, "translucent",   "some colour has alpha < 1 (recorded; drawn opaque)") \
     X(MARKS,        8, "marks",         "some object places a landmark (mark; draws nothing)") \
     X(LIGHTS,       9, "lights",        "some object declares a light (light, ambient): shaded per pixel") \
-    X(SHADOWS,     10, "shadows",       "some object asks for shadows (shadows): directional lights cast them")
+    X(SHADOWS,     10, "shadows",       "some object asks for shadows (shadows): directional and point lights cast them")
 
 enum {
 #define GLS_X_FEAT(e, bit, name, why) GLS_FEAT_##e = 1u << (bit),

@@ -54,7 +54,7 @@
  *              COLOR; initially 0 0 0 0: no highlight)
  *   PRIMN      PRIM with per-vertex normals: first normal (NORMALS), the
  *              other operands PRIM's, at the same positions
- *   SHADOWS    directional lights cast shadows, through shadow maps of
+ *   SHADOWS    directional and point lights cast shadows, through maps of
  *              res x res texels (feature shadows; the largest res wins)
  */
 #ifndef GLS_OPCODES_H

@@ -33,7 +33,7 @@ static const char *const effect[32] = {
     [7] = "none: alpha is not blended, surfaces are drawn opaque (outputs are RGB)",
     [8] = "none: landmarks draw nothing (--outputs landmarks lists them)",
     [9] = "a GLSL program (Lambert + Phong per pixel) in every colour pass; normals and specular state per vertex",
-    [10] = "a depth texture and framebuffer per directional light, drawn before each colour pass",
+    [10] = "a depth texture per directional light, a depth cube map per point light, drawn before each colour pass",
 };
 
 /* The backend asked for and what it gave (spec/backends.md). */

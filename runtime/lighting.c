@@ -32,7 +32,9 @@
     X(PFNGLUNIFORM4FVPROC, glUniform4fv)                            \
     X(PFNGLUNIFORM1IVPROC, glUniform1iv)                            \
     X(PFNGLUNIFORM1FVPROC, glUniform1fv)                            \
-    X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)
+    X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                \
+    X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                \
+    X(PFNGLUNIFORM1FPROC, glUniform1f)
 
 struct gls_lighting {
 #define LIGHT_X_FN(type, name) type name;
@@ -41,6 +43,8 @@ struct gls_lighting {
     GLuint prog;
     GLint u_n, u_pos, u_col, u_ambient, u_tex, u_sampler;
     GLint u_shadows, u_smat, u_sbias, u_smap;
+    int cubes;                  /* built with GLS_POINT_SHADOWS */
+    GLint u_cube, u_cnear, u_ctexel, u_e2w, u_cmap;
 };
 
 /* gl_Normal: unit for a given normal, length 2 for a flat one (scene.h),
@@ -76,8 +80,8 @@ static const char vs_src[] =
 #define TAN_MAX STR(GLS_SHADOW_BIAS_TAN_MAX)
 #define BIAS_CONST STR(GLS_SHADOW_BIAS_CONST)
 #define BIAS_SLOPE STR(GLS_SHADOW_BIAS_SLOPE)
+static const char fs_version[] = "#version 400 compatibility\n";
 static const char fs_src[] =
-    "#version 400 compatibility\n"
     "in vec3 v_eye;\n"
     "in vec3 v_n;\n"
     "in vec4 v_col;\n"
@@ -94,6 +98,13 @@ static const char fs_src[] =
     "uniform mat4 u_smat[8];\n"
     "uniform float u_sbias[8];\n"
     "uniform sampler2DShadow u_smap[8];\n"
+    "#ifdef GLS_POINT_SHADOWS\n"
+    "uniform int u_cube[8];\n"
+    "uniform float u_cnear[8];\n"
+    "uniform float u_ctexel;\n"
+    "uniform mat3 u_e2w;\n"
+    "uniform samplerCubeShadow u_cmap[8];\n"
+    "#endif\n"
     "void main() {\n"
     "    vec4 albedo = v_col;\n"
     "    if (u_tex == 1) albedo = texture(u_sampler, v_st);\n"
@@ -117,10 +128,23 @@ static const char fs_src[] =
     "        if (nl <= 0.0) continue;\n"
     "        vec3 e = u_col[i].rgb * att;\n"
     "        if (u_shadows != 0) {\n"
+    "#ifdef GLS_POINT_SHADOWS\n"
+    "          if (u_cube[i] != 0) {\n"
+    "            vec3 d = u_e2w * (v_eye - u_pos[i].xyz);\n"
+    "            vec3 a = abs(d);\n"
+    "            float z = max(a.x, max(a.y, a.z));\n"
+    "            float tn = min(sqrt(max(1.0 - nl * nl, 0.0)) / nl, " TAN_MAX ");\n"
+    "            float zb = z * (1.0 - u_ctexel * (" BIAS_CONST " + " BIAS_SLOPE " * tn));\n"
+    "            float ref = zb > u_cnear[i] ? u_cnear[i] / zb : 1.0;\n"
+    "            e *= texture(u_cmap[i], vec4(d, ref));\n"
+    "          } else\n"
+    "#endif\n"
+    "          {\n"
     "            vec4 sc = u_smat[i] * vec4(v_eye, 1.0);\n"
     "            float tn = min(sqrt(max(1.0 - nl * nl, 0.0)) / nl, " TAN_MAX ");\n"
     "            float ref = sc.z + u_sbias[i] * (" BIAS_CONST " + " BIAS_SLOPE " * tn);\n"
     "            e *= texture(u_smap[i], vec3(sc.xy, ref));\n"
+    "          }\n"
     "        }\n"
     "        c += e * nl * albedo.rgb;\n"
     "        if (shiny) {\n"
@@ -225,7 +249,14 @@ gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err,
     }
     LIGHT_GLFUNCS(LIGHT_X_LOAD)
 #undef LIGHT_X_LOAD
-    l->prog = gls_glprog_build(ctx, vs_src, fs_src, "lighting", err, errlen);
+    /* the point lights' cube-map lookups are compiled in only when a
+     * point light casts shadows: every other scene's program is the
+     * source it was before they existed, token for token */
+    static const char cube_define[] = "#define GLS_POINT_SHADOWS\n";
+    l->cubes = s->shadow_res && gls_shadows_points(s);
+    char fs[sizeof fs_version + sizeof cube_define + sizeof fs_src];
+    snprintf(fs, sizeof fs, "%s%s%s", fs_version, l->cubes ? cube_define : "", fs_src);
+    l->prog = gls_glprog_build(ctx, vs_src, fs, "lighting", err, errlen);
     if (!l->prog) {
         free(l);
         return NULL;
@@ -244,8 +275,37 @@ gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err,
     static const GLint units[GLS_MAX_LIGHTS] = {1, 2, 3, 4, 5, 6, 7, 8};
     l->glUseProgram(l->prog);
     l->glUniform1iv(l->u_smap, GLS_MAX_LIGHTS, units);
+    if (l->cubes) { /* the cube maps on units 9..16 */
+        static const GLint cunits[GLS_MAX_LIGHTS] = {9, 10, 11, 12, 13, 14, 15, 16};
+        l->u_cube = l->glGetUniformLocation(l->prog, "u_cube");
+        l->u_cnear = l->glGetUniformLocation(l->prog, "u_cnear");
+        l->u_ctexel = l->glGetUniformLocation(l->prog, "u_ctexel");
+        l->u_e2w = l->glGetUniformLocation(l->prog, "u_e2w");
+        l->u_cmap = l->glGetUniformLocation(l->prog, "u_cmap");
+        l->glUniform1iv(l->u_cmap, GLS_MAX_LIGHTS, cunits);
+    }
     l->glUseProgram(0);
     return l;
+}
+
+/* The cube maps' uniforms: which lights have one, their near distances,
+ * the texel at depth 1, and the rotation from camera c's GL eye frame to
+ * the world axes the faces are aligned with (R^T F, F = diag(1, -1, -1)):
+ * the lookup direction is formed from eye-frame offsets, small numbers. */
+static void cube_uniforms(gls_lighting *l, const gls_camera *c, const struct gls_shadows *sh)
+{
+    int cube[GLS_MAX_LIGHTS];
+    float near[GLS_MAX_LIGHTS], texel, M[9];
+    uint32_t m = gls_shadows_cube_uniforms(sh, cube, near, &texel);
+    for (int i = 0; i < 3; i++)     /* world row i */
+        for (int j = 0; j < 3; j++) /* eye column j, column-major */
+            M[3 * j + i] = (float)(c->R[3 * j + i] * (j == 0 ? 1.0 : -1.0));
+    if (m) {
+        l->glUniform1iv(l->u_cube, (GLsizei)m, cube);
+        l->glUniform1fv(l->u_cnear, (GLsizei)m, near);
+    }
+    l->glUniform1f(l->u_ctexel, texel);
+    l->glUniformMatrix3fv(l->u_e2w, 1, GL_FALSE, M);
 }
 
 void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c, const struct gls_shadows *sh)
@@ -272,6 +332,8 @@ void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c
             l->glUniformMatrix4fv(l->u_smat, (GLsizei)m, GL_FALSE, S);
             l->glUniform1fv(l->u_sbias, (GLsizei)m, bias);
         }
+        if (l->cubes)
+            cube_uniforms(l, c, sh);
         gls_shadows_bind(sh);
     }
 }

@@ -13,6 +13,7 @@
 #include "lighting.h"
 #include "render.h"
 #include "shadows.h"
+#include "shadows_cube.h"
 #include "vec.h"
 
 #define SHADOW_GLFUNCS(X)                                           \
@@ -30,7 +31,28 @@ struct gls_shadows {
     uint32_t n, res;
     GLuint fbo[GLS_MAX_LIGHTS], tex[GLS_MAX_LIGHTS];
     float S[16 * GLS_MAX_LIGHTS], bias[GLS_MAX_LIGHTS];
+    uint8_t cube[GLS_MAX_LIGHTS]; /* slot i is a point light's cube map */
+    float cnear[GLS_MAX_LIGHTS];  /* its near distance (shadows_cube.h)  */
+    uint32_t ncube;
 };
+
+/* The directional or point light of slot i (gls_lights_eye's order). */
+static const gls_light *slot_light(const gls_scene *s, uint32_t slot)
+{
+    for (uint32_t i = 0, n = 0; i < s->nlights; i++)
+        if (s->lights[i].kind != GLS_LIGHT_AMBIENT && n++ == slot)
+            return &s->lights[i];
+    return NULL;
+}
+
+uint32_t gls_shadows_points(const gls_scene *s)
+{
+    uint32_t n = 0, slots = 0;
+    for (uint32_t i = 0; i < s->nlights && slots < GLS_MAX_LIGHTS; i++)
+        if (s->lights[i].kind != GLS_LIGHT_AMBIENT)
+            slots++, n += s->lights[i].kind == GLS_LIGHT_POINT;
+    return n;
+}
 
 int gls_shadow_fit(const gls_scene *s, const double L[3], const uint8_t *vis, uint32_t res, gls_shadow_view *v)
 {
@@ -124,7 +146,8 @@ void gls_shadow_matrix(const gls_shadow_view *v, const gls_camera *c, double S[1
 
 uint64_t gls_shadows_bytes(const gls_scene *s)
 {
-    return (uint64_t)gls_lights_count(s) * s->shadow_res * s->shadow_res * 4;
+    uint64_t points = gls_shadows_points(s);
+    return ((uint64_t)gls_lights_count(s) + 5 * points) * s->shadow_res * s->shadow_res * 4;
 }
 
 void gls_shadows_explain(FILE *out, const gls_scene *s)
@@ -136,28 +159,97 @@ void gls_shadows_explain(FILE *out, const gls_scene *s)
     }
     for (uint32_t i = 0; i < s->nlights; i++)
         n += s->lights[i].kind == GLS_LIGHT_DIRECTIONAL, points += s->lights[i].kind == GLS_LIGHT_POINT;
-    fprintf(out, "  %-14s     maps: %u of %ux%u (GL_DEPTH_COMPONENT32F, %.1f MiB), one per directional light, fitted "
-                 "to the items the camera sees\n",
-            "", n, s->shadow_res, s->shadow_res, (double)n * s->shadow_res * s->shadow_res * 4 / 1048576.0);
-    fprintf(out, "  %-14s     cost: %u extra depth pass%s of every item per colour pass; bias t * (%g + %g tan(theta), "
-                 "tan at most %g), t a map texel; 2x2 bilinear PCF\n",
-            "", n, n == 1 ? "" : "es", GLS_SHADOW_BIAS_CONST, GLS_SHADOW_BIAS_SLOPE, GLS_SHADOW_BIAS_TAN_MAX);
-    if (points)
-        fprintf(out, "  %-14s     refused: %u point light%s (cube maps are not drawn)\n", "", points,
-                points == 1 ? "" : "s");
+    double face = (double)s->shadow_res * s->shadow_res * 4 / 1048576.0;
+    if (n || !points) {
+        fprintf(out, "  %-14s     maps: %u of %ux%u (GL_DEPTH_COMPONENT32F, %.1f MiB), one per directional light, "
+                     "fitted to the items the camera sees\n",
+                "", n, s->shadow_res, s->shadow_res, n * face);
+        fprintf(out, "  %-14s     cost: %u extra depth pass%s of every item per colour pass; bias t * (%g + %g "
+                     "tan(theta), tan at most %g), t a map texel; 2x2 bilinear PCF\n",
+                "", n, n == 1 ? "" : "es", GLS_SHADOW_BIAS_CONST, GLS_SHADOW_BIAS_SLOPE, GLS_SHADOW_BIAS_TAN_MAX);
+    }
+    if (!points)
+        return;
+    /* point lights: one cube map each (the lights past the 8 shaded are refused by lighting.c) */
+    points = gls_shadows_points(s);
+    for (uint32_t i = 0, k = 0; i < s->nlights && k < GLS_MAX_LIGHTS; i++) {
+        const gls_light *l = &s->lights[i];
+        if (l->kind == GLS_LIGHT_AMBIENT)
+            continue;
+        k++;
+        if (l->kind != GLS_LIGHT_POINT)
+            continue;
+        double X[3];
+        gls_light_world(s, l, X);
+        fprintf(out, "  %-14s     light %u: cube map of 6 x %ux%u (%.1f MiB) at (%.6g, %.6g, %.6g), near %.3g: 6 "
+                     "depth passes of every item at %ux%u\n",
+                "", i + 1, s->shadow_res, s->shadow_res, 6 * face, X[0], X[1], X[2], gls_cube_near(s, X),
+                s->shadow_res, s->shadow_res);
+    }
+    fprintf(out, "  %-14s     cost: %u extra depth passes (6 per point light) of every item per colour pass; bias "
+                 "t * (%g + %g tan(theta), tan at most %g) along the face's axis, t = 2 z / %u the texel at the "
+                 "point's depth z; 2x2 bilinear PCF across the faces (seamless)\n",
+            "", 6 * points, GLS_SHADOW_BIAS_CONST, GLS_SHADOW_BIAS_SLOPE, GLS_SHADOW_BIAS_TAN_MAX, s->shadow_res);
+}
+
+/* The bound depth texture of slot i (target: 2D or cube map): bilinear,
+ * wrap as given, compared (a reference at least the map's depth is lit),
+ * and attached (image attach: the 2D map or the cube's face +X) to the
+ * slot's framebuffer, which is left bound.  0, or 1 when the framebuffer
+ * is incomplete. */
+static int depth_target(gls_shadows *sh, uint32_t i, GLenum target, GLint wrap, GLenum attach)
+{
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+    glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
+    sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[i]);
+    sh->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, attach, sh->tex[i], 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    return sh->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE;
+}
+
+/* Slot i's cube map: six res x res float depth faces, compared like the
+ * directional maps; its framebuffer checked with face +X attached (the
+ * draw attaches each face in turn).  0, or 1 when incomplete. */
+static int cube_create(gls_shadows *sh, uint32_t i)
+{
+    glBindTexture(GL_TEXTURE_CUBE_MAP, sh->tex[i]);
+    for (int f = 0; f < 6; f++)
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_DEPTH_COMPONENT32F, (GLsizei)sh->res,
+                     (GLsizei)sh->res, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    int bad = depth_target(sh, i, GL_TEXTURE_CUBE_MAP, GL_CLAMP_TO_EDGE, GL_TEXTURE_CUBE_MAP_POSITIVE_X);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    return bad;
+}
+
+/* Slot n's cube map: the six faces from the light at X (world). */
+static void cube_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene *s, uint32_t n, const double X[3])
+{
+    double P[16];
+    double near = gls_cube_near(s, X);
+    gls_cube_projection(near, P);
+    sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[n]);
+    glViewport(0, 0, (GLsizei)sh->res, (GLsizei)sh->res);
+    for (int f = 0; f < 6; f++) {
+        gls_camera fc;
+        sh->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f,
+                                   sh->tex[n], 0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        gls_cube_face_camera(X, f, near, &fc);
+        gls_render_depth_only(r, &fc, P);
+    }
+    memset(sh->S + 16 * n, 0, 16 * sizeof *sh->S);
+    sh->bias[n] = 0;
+    sh->cnear[n] = (float)near;
 }
 
 gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen)
 {
-    for (uint32_t i = 0; i < s->nlights; i++)
-        if (s->lights[i].kind == GLS_LIGHT_POINT) {
-            snprintf(err, errlen,
-                     "shadows: light %u is a point light, whose shadows would need a cube map, which this player "
-                     "does not draw; shadows are cast by directional lights only (remove the point light or "
-                     "shadows(...))",
-                     i + 1);
-            return NULL;
-        }
     gls_shadows *sh = calloc(1, sizeof *sh);
     if (!sh) {
         snprintf(err, errlen, "out of memory");
@@ -173,36 +265,49 @@ gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, s
     SHADOW_GLFUNCS(SHADOW_X_LOAD)
 #undef SHADOW_X_LOAD
     sh->n = gls_lights_count(s);
+    if (sh->n > GLS_MAX_LIGHTS)
+        sh->n = GLS_MAX_LIGHTS; /* refused by gls_lighting_create */
     sh->res = s->shadow_res;
+    for (uint32_t i = 0; i < sh->n; i++) {
+        sh->cube[i] = slot_light(s, i)->kind == GLS_LIGHT_POINT;
+        sh->ncube += sh->cube[i];
+    }
+    if (sh->ncube) {
+        /* the cube maps go on units 9..16 (a sampler type per unit) */
+        GLint units = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+        if (units < 1 + 2 * GLS_MAX_LIGHTS) {
+            snprintf(err, errlen, "shadows: %s: point lights' cube maps need %d texture units, GL has %d",
+                     gls_glctx_backend(ctx), 1 + 2 * GLS_MAX_LIGHTS, units);
+            free(sh);
+            return NULL;
+        }
+        glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS); /* PCF across the faces' edges */
+    }
     glGenTextures((GLsizei)sh->n, sh->tex);
     sh->glGenFramebuffers((GLsizei)sh->n, sh->fbo);
     GLint prev = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev);
     int bad = 0;
     for (uint32_t i = 0; i < sh->n && !bad; i++) {
+        if (sh->cube[i]) {
+            bad = cube_create(sh, i);
+            continue;
+        }
         glBindTexture(GL_TEXTURE_2D, sh->tex[i]);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, (GLsizei)sh->res, (GLsizei)sh->res, 0,
                      GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
         /* bilinear PCF; outside the map (border depth 0, the far end): lit */
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
-        sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[i]);
-        sh->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, sh->tex[i], 0);
-        glDrawBuffer(GL_NONE);
-        glReadBuffer(GL_NONE);
-        bad = sh->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE;
+        bad = depth_target(sh, i, GL_TEXTURE_2D, GL_CLAMP_TO_BORDER, GL_TEXTURE_2D);
     }
     glBindTexture(GL_TEXTURE_2D, 0);
     sh->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
     if (bad || glGetError() != GL_NO_ERROR) {
         while (glGetError() != GL_NO_ERROR)
             ;
-        snprintf(err, errlen, "shadows: cannot allocate %u shadow maps of %ux%u (%.1f MiB)", sh->n, sh->res, sh->res,
-                 (double)gls_shadows_bytes(s) / 1048576.0);
+        snprintf(err, errlen, "shadows: cannot allocate %u shadow maps of %ux%u (%.1f MiB)",
+                 sh->n + 5 * sh->ncube, sh->res, sh->res, (double)gls_shadows_bytes(s) / 1048576.0);
         gls_shadows_destroy(sh);
         return NULL;
     }
@@ -220,8 +325,14 @@ void gls_shadows_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene
     uint32_t n = 0;
     for (uint32_t i = 0; i < s->nlights && n < sh->n; i++) {
         const gls_light *l = &s->lights[i];
-        if (l->kind != GLS_LIGHT_DIRECTIONAL)
+        if (l->kind == GLS_LIGHT_AMBIENT)
             continue;
+        if (l->kind == GLS_LIGHT_POINT) {
+            double X[3];
+            gls_light_world(s, l, X);
+            cube_render(sh, r, s, n++, X);
+            continue;
+        }
         double L[3], P[16], S[16];
         gls_light_world(s, l, L);
         double len = sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
@@ -258,9 +369,22 @@ uint32_t gls_shadows_uniforms(const gls_shadows *sh, float *S, float *bias)
     return sh->n;
 }
 
+uint32_t gls_shadows_cube_uniforms(const gls_shadows *sh, int *cube, float *near, float *texel)
+{
+    *texel = 2.0f / (float)sh->res; /* a face texel's size at z = 1 */
+    for (uint32_t i = 0; i < sh->n; i++)
+        cube[i] = sh->cube[i], near[i] = sh->cnear[i];
+    return sh->n;
+}
+
 void gls_shadows_bind(const gls_shadows *sh)
 {
     for (uint32_t i = 0; i < sh->n; i++) {
+        if (sh->cube[i]) {
+            sh->glActiveTexture(GL_TEXTURE1 + GLS_MAX_LIGHTS + i);
+            glBindTexture(GL_TEXTURE_CUBE_MAP, sh->tex[i]);
+            continue;
+        }
         sh->glActiveTexture(GL_TEXTURE1 + i);
         glBindTexture(GL_TEXTURE_2D, sh->tex[i]);
     }

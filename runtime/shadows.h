@@ -7,9 +7,10 @@
  * shadow), its depth range to every item (so that a caster outside the
  * view still casts into it).  The lighting program (lighting.c) looks each
  * lit fragment up in the maps with a slope-scaled depth bias and 2x2
- * bilinear percentage-closer filtering.  Point lights would need cube maps,
- * which this player does not draw: a scene with shadows and a point light
- * is refused with a message. */
+ * bilinear percentage-closer filtering.  Each point light gets a cube map
+ * (shadows_cube.h: six 90-degree depth passes from the light), looked up
+ * by the direction from the light with the same bias, scaled by the
+ * texel's size at the point's depth. */
 #ifndef GLS_SHADOWS_H
 #define GLS_SHADOWS_H
 
@@ -53,8 +54,8 @@ void gls_shadow_matrix(const gls_shadow_view *v, const gls_camera *c, double S[1
 typedef struct gls_shadows gls_shadows;
 struct gls_renderer;
 
-/* The maps of s's directional lights, res = s->shadow_res; NULL with a
- * message when s has a point light, too little memory or GL lacks
+/* The maps of s's directional and point lights, res = s->shadow_res;
+ * NULL with a message when there is too little memory or GL lacks
  * something. */
 gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen);
 /* Draw every map for camera c, whose draw items vis marks (NULL: all);
@@ -62,10 +63,16 @@ gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, s
 void gls_shadows_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene *s, const gls_camera *c,
                         const uint8_t *vis);
 /* For the lighting program, after gls_shadows_render: the number of maps
- * (one per directional light, in gls_lights_eye's order), each's S
- * (column-major floats, 16 each) and bias per texel in depth units; the
- * maps bound to texture units 1..n (unit 0 active again after). */
+ * (one per directional or point light, in gls_lights_eye's order), each's
+ * S (column-major floats, 16 each) and bias per texel in depth units (0
+ * for a cube map); whether each is a cube map, its near distance, and a
+ * face texel's size at depth 1 (2 / res); the
+ * directional maps bound to texture units 1..n, the cube maps to units
+ * 9..8+n (unit 0 active again after). */
 uint32_t gls_shadows_uniforms(const gls_shadows *sh, float *S, float *bias);
+uint32_t gls_shadows_cube_uniforms(const gls_shadows *sh, int *cube, float *near, float *texel);
+/* The point lights among the (at most 8) shaded lights: their cube maps. */
+uint32_t gls_shadows_points(const gls_scene *s);
 void gls_shadows_bind(const gls_shadows *sh);
 uint64_t gls_shadows_bytes(const gls_scene *s);
 /* --explain: the maps, their memory and cost, the bias. */

@@ -1,8 +1,9 @@
 #!/bin/sh
 # Lighting and shadows (issue 16): light/ambient/normal/specular/shadows
 # compiled, dumped, linked through a library bundle, explained, refused
-# beyond 8 lights and for shadows of point lights; the images against
-# closed forms by tests/py/check_lighting.py and check_shadows.py
+# beyond 8 lights; point lights' shadows explained and drawn; the images
+# against closed forms by tests/py/check_lighting.py, check_shadows.py and
+# check_point_shadows.py
 # (spec/camera.md "Lighting", "Shadows").  Compile errors: tests/errors/light_*, normal_*, specular_*;
 # the validator's: test_bundle's test_lights_and_normals.  Prints
 # "ok NAME" / "FAIL NAME: why".
@@ -75,28 +76,43 @@ if [ $rc -eq 1 ] && [ "$(cat "$t/err")" = "$want" ] && ! ls "$t/many_out/c/image
 else
     fail lighting_too_many_lights "exit $rc, stderr: $(cat "$t/err")"
 fi
+# the same with shadows: their maps are made for the 8 shaded lights only
+# (9 would overrun the maps' arrays), then the lights are refused alike
+printf 'shadows(256);\n' >>"$t/many/Top.scene"
+"$BIN/glsc" -I "$t/many" -o "$t/many_sh.glsb" "$t/many/Top.scene" 2>"$t/err"
+"$BIN/glsplay" "$t/many_sh.glsb" --camera "$t/c.cam" -o "$t/many_sh_out" >"$t/out" 2>"$t/err"
+rc=$?
+if [ $rc -eq 1 ] && [ "$(cat "$t/err")" = "$want" ] && ! ls "$t/many_sh_out/c/image_000000.png" >/dev/null 2>&1; then
+    ok shadows_too_many_lights
+else
+    fail shadows_too_many_lights "exit $rc, stderr: $(cat "$t/err")"
+fi
 
-# shadows: explained; a point light refused (no cube maps)
+# shadows: explained
 mkdir -p "$t/sh"
 printf 'shadows(1024);\nlight(directional, 1, 2, 0.5, 1, 1, 1);\npoly { vert(-2, 0, -2); vert(2, 0, -2); vert(2, 0, 2); vert(-2, 0, 2); }\n' >"$t/sh/Top.scene"
 "$BIN/glsc" -o "$t/sh.glsb" "$t/sh/Top.scene" 2>"$t/err"
 "$BIN/glsplay" "$t/sh.glsb" --camera "$t/c.cam" --explain >"$t/explain3" 2>&1
-if grep -qx '  shadows        on  some object asks for shadows (shadows): directional lights cast them' "$t/explain3" &&
+if grep -qx '  shadows        on  some object asks for shadows (shadows): directional and point lights cast them' "$t/explain3" &&
     grep -qxF "${pad} maps: 1 of 1024x1024 (GL_DEPTH_COMPONENT32F, 4.0 MiB), one per directional light, fitted to the items the camera sees" "$t/explain3" &&
     grep -qxF "${pad} cost: 1 extra depth pass of every item per colour pass; bias t * (1 + 2 tan(theta), tan at most 10), t a map texel; 2x2 bilinear PCF" "$t/explain3"; then
     ok shadows_explain
 else
     fail shadows_explain "$(cat "$t/explain3")"
 fi
+# a point light casts shadows through a cube map: explained, drawn
 printf 'light(point, 0, 3, 0, 1, 1, 1);\n' >>"$t/sh/Top.scene"
 "$BIN/glsc" -o "$t/shp.glsb" "$t/sh/Top.scene" 2>"$t/err"
+"$BIN/glsplay" "$t/shp.glsb" --camera "$t/c.cam" --explain >"$t/explain4" 2>&1
 "$BIN/glsplay" "$t/shp.glsb" --camera "$t/c.cam" -o "$t/shp_out" >"$t/out" 2>"$t/err"
 rc=$?
-want="glsplay: error: shadows: light 2 is a point light, whose shadows would need a cube map, which this player does not draw; shadows are cast by directional lights only (remove the point light or shadows(...))"
-if [ $rc -eq 1 ] && [ "$(cat "$t/err")" = "$want" ]; then
-    ok shadows_point_light_refused
+if [ $rc -eq 0 ] && [ ! -s "$t/err" ] && [ -s "$t/shp_out/c/image_000000.png" ] &&
+    grep -qxF "${pad} light 2: cube map of 6 x 1024x1024 (24.0 MiB) at (0, 3, 0), near 0.000412: 6 depth passes of every item at 1024x1024" "$t/explain4" &&
+    grep -qxF "${pad} cost: 6 extra depth passes (6 per point light) of every item per colour pass; bias t * (1 + 2 tan(theta), tan at most 10) along the face's axis, t = 2 z / 1024 the texel at the point's depth z; 2x2 bilinear PCF across the faces (seamless)" "$t/explain4" &&
+    ! grep -q 'refused' "$t/explain4"; then
+    ok shadows_point_light
 else
-    fail shadows_point_light_refused "exit $rc, stderr: $(cat "$t/err")"
+    fail shadows_point_light "exit $rc, stderr: $(cat "$t/err"), explain: $(cat "$t/explain4")"
 fi
 
 # the images against closed forms
@@ -106,4 +122,7 @@ mkdir -p "$t/py"
 mkdir -p "$t/pysh"
 "$PY" tests/py/check_shadows.py "$BIN" "$t/pysh" 2>"$t/pyerr"
 [ -s "$t/pyerr" ] && fail shadows_images "$(tail -5 "$t/pyerr")"
+mkdir -p "$t/pypt"
+"$PY" tests/py/check_point_shadows.py "$BIN" "$t/pypt" 2>"$t/pyerr"
+[ -s "$t/pyerr" ] && fail point_shadows_images "$(tail -5 "$t/pyerr")"
 exit 0

@@ -27,23 +27,13 @@ import sys
 import cv2
 import numpy as np
 
-from glstest import fail, ok, run, write
+from glstest import fail, look_at, ok, render_green, write
 
 BIN, TMP = sys.argv[1], sys.argv[2]
 BOUNDARY_PX = 1.5
 W, H, F = 640, 480, 500.0
 AMB = 0.2
 ALBEDO = 230 / 255.0  # color(0.9, 0.9, 0.9) as RGBA8
-
-
-def look_at(C, target):
-    z = np.asarray(target, float) - C
-    z /= np.linalg.norm(z)
-    x = np.cross([0.0, -1.0, 0.0], z)  # image right = down x forward; image down is world -y-ish
-    x /= np.linalg.norm(x)
-    y = np.cross(z, x)
-    R = np.array([x, y, z])
-    return R, -R @ C
 
 
 def box_scene(hx):
@@ -83,14 +73,7 @@ def render_case(name, incidence, azimuth_deg, C, target, hx, shift=(0.0, 0.0, 0.
           "color(0.9, 0.9, 0.9);\npoly { vert(-6, 0, -6); vert(6, 0, -6); vert(6, 0, 6); vert(-6, 0, 6); }\n" + box_scene(hx))
     R, T = look_at(np.asarray(C, float), target)
     T = T - R @ np.asarray(shift, float)
-    cam = os.path.join(d, "cam.cam")
-    write(cam, "width %d\nheight %d\nfx %r\nfy %r\ncx %r\ncy %r\nR %s\nT %s\nnear 0.1\nfar 100\n" %
-          (W, H, F, F, (W - 1) / 2, (H - 1) / 2, " ".join(repr(float(x)) for x in R.ravel()),
-           " ".join(repr(float(x)) for x in T)))
-    run(os.path.join(BIN, "glsc"), "-o", os.path.join(d, "s.glsb"), os.path.join(d, "Top.scene"))
-    run(os.path.join(BIN, "glsplay"), os.path.join(d, "s.glsb"), "--camera", cam, "--outputs", "image", "-o",
-        os.path.join(d, "out"))
-    return cv2.imread(os.path.join(d, "out", "cam", "image_000000.png"), cv2.IMREAD_COLOR)[:, :, 1].astype(float)
+    return render_green(BIN, d, R, T, (W, H, F), 100)
 
 
 def case(name, incidence, azimuth_deg, C, target, hx):

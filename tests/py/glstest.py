@@ -24,3 +24,33 @@ def run(*args):
     if r.returncode != 0:
         raise RuntimeError("%s: exit %d: %s" % (args[0], r.returncode, r.stderr.strip()))
     return r.stdout
+
+
+def look_at(C, target):
+    """R, T of a camera at C looking at target, image x along
+    world -y x forward (the shadow checks' views)."""
+    import numpy as np
+    C = np.asarray(C, float)
+    z = np.asarray(target, float) - C
+    z /= np.linalg.norm(z)
+    x = np.cross([0.0, -1.0, 0.0], z)
+    x /= np.linalg.norm(x)
+    y = np.cross(z, x)
+    R = np.array([x, y, z])
+    return R, -R @ C
+
+
+def render_green(BIN, d, R, T, size, far):
+    """Compile d/Top.scene, render it through a pinhole camera (W, H, F =
+    size, principal point at the centre) with R, T: the image's green
+    channel as floats."""
+    import cv2
+    W, H, F = size
+    cam = os.path.join(d, "cam.cam")
+    write(cam, "width %d\nheight %d\nfx %r\nfy %r\ncx %r\ncy %r\nR %s\nT %s\nnear 0.1\nfar %r\n" %
+          (W, H, F, F, (W - 1) / 2, (H - 1) / 2, " ".join(repr(float(x)) for x in R.ravel()),
+           " ".join(repr(float(x)) for x in T), far))
+    run(os.path.join(BIN, "glsc"), "-o", os.path.join(d, "s.glsb"), os.path.join(d, "Top.scene"))
+    run(os.path.join(BIN, "glsplay"), os.path.join(d, "s.glsb"), "--camera", cam, "--outputs", "image", "-o",
+        os.path.join(d, "out"))
+    return cv2.imread(os.path.join(d, "out", "cam", "image_000000.png"), cv2.IMREAD_COLOR)[:, :, 1].astype(float)

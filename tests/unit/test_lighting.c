@@ -1,11 +1,13 @@
 /* The CPU side of lighting and shadows (lighting.h, shadows.h), against
  * numbers formed here: lights in GL's eye frame through their instance's
  * world transform and the camera; the shadow map's fit and the matrix
- * from the camera's eye frame to the map, composed in double. */
+ * from the camera's eye frame to the map, composed in double; a point
+ * light's cube faces against GL's cube-map sampling rule. */
 #include <stdlib.h>
 #include "check.h"
 #include "lighting.h"
 #include "shadows.h"
+#include "shadows_cube.h"
 
 /* A scene of one instance (world = translate(10, 0, 0)) with a point
  * light, a directional one and two ambient ones, and one item (a box). */
@@ -101,9 +103,85 @@ static void test_shadow_matrix(void)
     }
 }
 
+/* A point light's cube faces against the GL specification's table 8.19:
+ * for a direction d from the light, the face of its major axis draws the
+ * point at d where a lookup with d samples it (NDC x = s_c / |m_a|, y =
+ * t_c / |m_a|), with depth near / |m_a|; every face's R is a rotation; a
+ * light 1e6 units away composes the same. */
+static void test_cube_faces(void)
+{
+    /* (axis, sign) of each face and its s_c, t_c as +-(x, y, z) indices */
+    static const int axis[6] = {0, 0, 1, 1, 2, 2}, sc_i[6] = {2, 2, 0, 0, 0, 0}, tc_i[6] = {1, 1, 2, 2, 1, 1};
+    static const double sign[6] = {1, -1, 1, -1, 1, -1}, sc_s[6] = {-1, 1, 1, 1, 1, -1},
+                        tc_s[6] = {-1, -1, 1, -1, -1, -1};
+    double P[16], worst = 0;
+    const double near = 0.001;
+    gls_cube_projection(near, P);
+    srand(7);
+    for (int shift = 0; shift < 2; shift++) {
+        double X[3] = {shift ? 1048576.0 : 0.5, -2, shift ? -524288.0 : 3};
+        for (int k = 0; k < 2000; k++) {
+            double d[3];
+            for (int j = 0; j < 3; j++)
+                d[j] = 4.0 * rand() / RAND_MAX - 2.0;
+            int a = fabs(d[0]) >= fabs(d[1]) && fabs(d[0]) >= fabs(d[2]) ? 0 : fabs(d[1]) >= fabs(d[2]) ? 1 : 2;
+            int f = 2 * a + (d[a] < 0);
+            CHECK(axis[f] == a && sign[f] * d[a] > 0);
+            double ma = fabs(d[a]), want[3] = {sc_s[f] * d[sc_i[f]] / ma, tc_s[f] * d[tc_i[f]] / ma, near / ma};
+            gls_camera c;
+            gls_cube_face_camera(X, f, near, &c);
+            double pc[3], e[4], clip[4];
+            for (int i = 0; i < 3; i++) /* R (X + d) + T, then GL's eye */
+                pc[i] = c.R[3 * i] * (X[0] + d[0]) + c.R[3 * i + 1] * (X[1] + d[1]) + c.R[3 * i + 2] * (X[2] + d[2]) +
+                        c.T[i];
+            e[0] = pc[0], e[1] = -pc[1], e[2] = -pc[2], e[3] = 1;
+            for (int i = 0; i < 4; i++)
+                clip[i] = P[4 * i] * e[0] + P[4 * i + 1] * e[1] + P[4 * i + 2] * e[2] + P[4 * i + 3] * e[3];
+            for (int i = 0; i < 3; i++)
+                worst = fmax(worst, fabs(clip[i] / clip[3] - want[i]));
+        }
+    }
+    CHECK_MSG(worst < 1e-9, "a cube face draws %g away from where GL samples it", worst);
+    for (int f = 0; f < 6; f++) { /* rotations: R R^T = I, det 1 */
+        gls_camera c;
+        double X[3] = {0, 0, 0}, det;
+        gls_cube_face_camera(X, f, near, &c);
+        const double *R = c.R;
+        det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) + R[2] * (R[3] * R[7] - R[4] * R[6]);
+        CHECK_NEAR(det, 1.0, 1e-15);
+    }
+}
+
+/* The near distance: 1e-4 of the farthest corner of the items' boxes;
+ * the maps' memory. */
+static void test_cube_near(void)
+{
+    gls_scene s;
+    gls_instance inst;
+    gls_light l[4];
+    gls_item it;
+    make_scene(&s, &inst, l, &it);
+    double X[3] = {0, 0, 0}, far2 = 0;
+    for (int k = 0; k < 8; k++) {
+        double d2 = 0;
+        for (int j = 0; j < 3; j++) {
+            double v = (k >> j) & 1 ? it.hi[j] : it.lo[j];
+            d2 += v * v;
+        }
+        far2 = fmax(far2, d2);
+    }
+    CHECK_NEAR(gls_cube_near(&s, X), 1e-4 * sqrt(far2), 1e-18);
+    /* one point light (a cube map of six faces), one directional (a map) */
+    s.shadow_res = 1024;
+    CHECK(gls_shadows_points(&s) == 1);
+    CHECK(gls_shadows_bytes(&s) == 7ull * 1024 * 1024 * 4);
+}
+
 int main(void)
 {
     RUN(test_lights_eye);
     RUN(test_shadow_matrix);
+    RUN(test_cube_faces);
+    RUN(test_cube_near);
     CHECK_EXIT();
 }
