@@ -1,9 +1,12 @@
 /* Completion records of the player's outputs (frame_record.h). */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include "aa_onepass.h"
+#include "digest.h"
+#include "distort.h"
 #include "frame_record.h"
 #include "numfmt.h"
 #include "readfile.h"
@@ -13,8 +16,44 @@ int gls_frame_record_path(char *buf, size_t len, const char *outdir, const char 
     return gls_output_path(buf, len, outdir, name, ".frame", frame, "done");
 }
 
+/* buf + *k gets the printf; -1 when it does not fit */
+static int append(char *buf, size_t len, int *k, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(buf + *k, len - (size_t)*k, fmt, ap);
+    va_end(ap);
+    if (n < 0 || (size_t)n >= len - (size_t)*k)
+        return -1;
+    *k += n;
+    return 0;
+}
+
+/* The camera's intrinsics and depth range, and its lens when it has one:
+ * what the file says, in the shortest exact form. */
+static int append_intrinsics(char *buf, size_t len, int *k, const gls_camera *c)
+{
+    char v[7][40];
+    const double x[7] = {c->fx, c->fy, c->cx, c->cy, c->skew, c->near, c->far};
+    for (int i = 0; i < 7; i++)
+        gls_fmt_double(v[i], sizeof v[i], x[i]);
+    if (append(buf, len, k, "intrinsics fx %s fy %s cx %s cy %s skew %s near %s far %s\n", v[0], v[1], v[2], v[3],
+               v[4], v[5], v[6]))
+        return -1;
+    if (!gls_distort_on(c))
+        return 0;
+    if (append(buf, len, k, "lens %s", gls_distort_model_name(&c->dist)))
+        return -1;
+    for (unsigned i = 0; i < c->dist.n && i < 8; i++) {
+        gls_fmt_double(v[0], sizeof v[0], c->dist.k[i]);
+        if (append(buf, len, k, " %s", v[0]))
+            return -1;
+    }
+    return append(buf, len, k, "\n");
+}
+
 int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_camera *c, const char *name,
-                          uint32_t frame)
+                          uint32_t frame, const char *inputs)
 {
     static const char *const fmt[] = {"png8", "png16", "pfm"};
     char sigma[32], bg[3][32];
@@ -48,7 +87,7 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
     if (out & GLS_OUT_DEPTH16)
         gls_fmt_double(scale, sizeof scale, o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI);
     int k = snprintf(buf, len,
-                     "glsplay frame record 1\n"
+                     "glsplay frame record 2\n"
                      "frame %u\n"
                      "camera %s %ux%u\n"
                      "outputs%s%s%s%s%s%s%s%s%s%s%s%s%s%s%s\n"
@@ -69,7 +108,7 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                      image ? fmt[o->image_format] : "-",
                      floats ? (o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm") : "-", scale, aa,
                      o->anisotropy > 1 ? o->anisotropy : 1, bg[0], bg[1], bg[2]);
-    if (k < 0 || (size_t)k >= len)
+    if (k < 0 || (size_t)k >= len || append_intrinsics(buf, len, &k, c))
         return -1;
     /* the sensor effects that shape the image (sensor.h), only when the
      * camera asks for one: other records stay as they were */
@@ -94,8 +133,12 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
                          v[0], v[1], v[2], v[3], v[4]);
         if (e < 0 || (size_t)e >= len - (size_t)k)
             return -1;
+        k += e;
     }
-    return 0;
+    /* the digest of the input files (bundle, camera files, trajectory,
+     * motions), so that --resume does not take a frame of another scene
+     * or pose; "-" when one of them could not be read a second time */
+    return append(buf, len, &k, "inputs %s\n", inputs);
 }
 
 int gls_frame_record_matches(const char *path, const char *text)
@@ -106,4 +149,26 @@ int gls_frame_record_matches(const char *path, const char *text)
     int same = got && len == n && memcmp(got, text, n) == 0;
     free(got);
     return same;
+}
+
+void gls_frame_inputs(const gls_play_opts *o, char out[17])
+{
+    uint64_t h = GLS_DIGEST_INIT;
+    int ok = gls_digest_file(&h, o->bundle) == 0;
+    for (size_t i = 0; ok && i < o->ncameras; i++)
+        ok = gls_digest_file(&h, o->cameras[i]) == 0;
+    if (ok && o->trajectory)
+        ok = gls_digest_file(&h, o->trajectory) == 0;
+    for (size_t i = 0; ok && i < o->nmotions; i++) {
+        const char *eq = strchr(o->motions[i], '=');
+        size_t n = eq ? (size_t)(eq - o->motions[i]) : strlen(o->motions[i]);
+        h = gls_digest_bytes(h, o->motions[i], n + 1); /* the name and its '=' */
+        ok = eq && gls_digest_file(&h, eq + 1) == 0;
+    }
+    if (o->flatten) /* the flattened path rounds edges its own way */
+        h = gls_digest_bytes(h, "flatten", 7);
+    if (ok)
+        snprintf(out, 17, "%016llx", (unsigned long long)h);
+    else
+        snprintf(out, 17, "-");
 }

@@ -20,12 +20,20 @@
  * 0, or -1 if it does not fit. */
 int gls_frame_record_path(char *buf, size_t len, const char *outdir, const char *name, uint32_t frame);
 
-/* The record's text for camera c (its name, size) and frame under o
- * (outputs, image format, float format, depth16's scale, anti-aliasing,
- * anisotropy, background).  0, or
- * -1 if it does not fit in len. */
+/* The record's text for camera c (its name, size, intrinsics and lens)
+ * and frame under o (outputs, image format, float format, depth16's
+ * scale, anti-aliasing, anisotropy, background, the camera's effects),
+ * ending with the inputs' digest (gls_frame_inputs).  0, or -1 if it does
+ * not fit in len. */
 int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_camera *c, const char *name,
-                          uint32_t frame);
+                          uint32_t frame, const char *inputs);
+
+/* The digest of what the frames are made from, as the record's "inputs"
+ * line shows it (16 hex digits): the bundle file, every camera file, the
+ * trajectory and the motion files (name and file), and --flatten; "-"
+ * when one of them is not a regular file (a pipe cannot be read again,
+ * so a record made from one is never taken by --resume). */
+void gls_frame_inputs(const gls_play_opts *o, char out[17]);
 
 /* 1 if the file at path holds exactly text (and is a regular file). */
 int gls_frame_record_matches(const char *path, const char *text);

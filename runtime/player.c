@@ -266,6 +266,7 @@ typedef struct {
     const gls_camera *rel_now;
     int moving;
     const char *name_now;       /* the camera being rendered            */
+    const char *inputs;         /* the frame records' inputs digest     */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -743,7 +744,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     f->buffer_bytes = camera_buffer_bytes(o, aa, gls_aa_weighted(plan), c->sensor.on != 0, n);
     f->json = s->json;
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
-                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame);
+                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
     for (size_t k = 0; k < NOUTS && !too_long; k++)
         if (output_on(s, k)) {
             f->files[f->nfiles].bit = outs[k].bit;
@@ -802,12 +803,14 @@ out:
  * asks for (written after the camera's last file, frame_record.h), and
  * every requested output file still there? */
 static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char *const *names, uint32_t frame,
-                      int has_next)
+                      int has_next, const char *inputs)
 {
+    if (strcmp(inputs, "-") == 0) /* an input that cannot be read again: never taken */
+        return 0;
     char path[MAXPATH], text[1024];
     for (size_t i = 0; i < o->ncameras; i++) {
         if (gls_frame_record_path(path, sizeof path, o->outdir, names[i], frame) ||
-            gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame) ||
+            gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame, inputs) ||
             !gls_frame_record_matches(path, text))
             return 0;
         for (size_t k = 0; k < NOUTS; k++) {
@@ -858,8 +861,8 @@ static uint64_t trajectory_last_frame(const char *path)
  * and its motions checked: the last frame's flow goes to it.  0, or 1
  * after a message. */
 static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const gls_camera *rel,
-                           const char *const *names, uint64_t last, FILE *errs, uint64_t *inrange, uint64_t *mine,
-                           uint64_t *complete)
+                           const char *const *names, const char *inputs, uint64_t last, FILE *errs,
+                           uint64_t *inrange, uint64_t *mine, uint64_t *complete)
 {
     char err[1024];
     gls_traj *t = open_trajectory(o->trajectory, errs, errs);
@@ -890,7 +893,7 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
         if (!gls_shard_has(&o->shard, o->frame_first, p.frame))
             continue;
         (*mine)++;
-        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last))
+        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last, inputs))
             (*complete)++;
     }
     if (got < 0) {
@@ -923,7 +926,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     uint64_t inrange, mine, complete;
     int flow = (o->outputs & GLS_OUT_FLOW_ALL) != 0;
     uint64_t last = flow ? trajectory_last_frame(o->trajectory) : UINT64_MAX;
-    if (scan_trajectory(o, s->ms, rel, names, last, errs, &inrange, &mine, &complete))
+    if (scan_trajectory(o, s->ms, rel, names, s->inputs, last, errs, &inrange, &mine, &complete))
         return 1;
     /* more shards than frames: this one has none, which is no error */
     if (mine == 0) {
@@ -958,7 +961,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
         if (p.frame >= o->frame_end || p.frame > UINT32_MAX) /* checked by the scan */
             break;
         if (!gls_shard_has(&o->shard, o->frame_first, p.frame) ||
-            (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last)))
+            (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last, s->inputs)))
             continue;
         while (have == 1 && pn.frame <= p.frame)
             have = gls_traj_next(ahead, &pn, err, sizeof err);
@@ -1320,12 +1323,14 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
+    char inputs[17];
+    gls_frame_inputs(o, inputs);
     json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
     json.cameras = o->ncameras;
     json.t0 = gls_now();
     session ses = {o,        &ms,      &scene,    &plan, r,          wr,   &json,  errs,   o->ncameras,
                    0,        json.t0,  0,         baseline, &gt,     NULL, NULL,   &moves, &box_names,
-                   o->frame, NULL,     ms.moving, NULL};
+                   o->frame, NULL,     ms.moving, NULL, inputs};
     started = 1;
     if (!o->trajectory) {
         /* a single frame is shard 0's (shard.h) */
@@ -1334,7 +1339,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
             fprintf(errs, "glsplay: note: --shard %llu/%llu: a single render (no --trajectory) is shard 0's; "
                           "nothing to render\n", (unsigned long long)o->shard.index,
                     (unsigned long long)o->shard.count);
-        int skip = !mine || (o->resume && frame_done(o, cams, (const char *const *)names, o->frame, 0));
+        int skip = !mine || (o->resume && frame_done(o, cams, (const char *const *)names, o->frame, 0, ses.inputs));
         if (o->resume && mine)
             resume_note(errs, skip, 1);
         json.total = skip ? 0 : o->ncameras;

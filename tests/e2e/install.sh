@@ -81,7 +81,14 @@ rc=$?
     "$BIN/glsplay" "$tmp/road_b.glsb" --camera examples/road/rig/left.cam --camera examples/road/rig/right.cam \
         --trajectory "$tmp/road_b/trajectory.txt" --frames 0:2 --motion lead="$tmp/road_b/motion/lead.txt" \
         -o "$tmp/ref" 2>>"$tmp/log"
-if [ $rc -eq 0 ] && [ -f "$tmp/inst/left/image_000001.png" ] && diff -r "$tmp/ref" "$tmp/inst" >>"$tmp/log" 2>&1; then
+# every output file the same; the frame records differ in their inputs
+# digest only: the bundles name their sources by other paths
+# (spec/road.md "Resuming a sequence")
+if [ $rc -eq 0 ] && [ -f "$tmp/inst/left/image_000001.png" ] && diff -r -x '.frame_*' "$tmp/ref" "$tmp/inst" >>"$tmp/log" 2>&1 &&
+    (for r in "$tmp"/ref/*/.frame_*.done; do
+        i=$tmp/inst/${r#"$tmp/ref/"}
+        [ "$(grep -v '^inputs ' "$r")" = "$(grep -v '^inputs ' "$i")" ] || { echo "records differ: $r" >>"$tmp/log"; exit 1; }
+    done); then
     ok installed_tools_render_demo
 else
     fail installed_tools_render_demo "exit $rc: $(tail -5 "$tmp/log")"

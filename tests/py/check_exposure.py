@@ -290,7 +290,7 @@ with open(D + '/rec/rec/.frame_000001.done') as f:
     rec = f.read()
 result('exposure_resume_record', 'glsplay: note: --resume: 1 of 1 frame complete' in same and
        'glsplay: note: --resume: 0 of 1 frame complete' in changed and
-       rec.endswith('effects shutter 0.25 line_delay 0 aperture 0 focus 0 samples 16\n'),
+       '\neffects shutter 0.25 line_delay 0 aperture 0 focus 0 samples 16\n' in rec,
        'resume notes %r, %r; record %r' % (same, changed, rec[-80:]))
 
 # more sub-frame renders than the exact accumulator holds: refused first

@@ -326,7 +326,15 @@ result('sensor_image_changed', raw(p + '/image_000000.png') != raw(q + '/image_0
 # ---- neutral values switch nothing on -----------------------------------
 n = render(D + '/demo.glsb', demo_cam(D + '/gt/neutral/left.cam', 'gain 1\nread_noise 0\nvignetting poly 0 0 0\n'
                                        'noise_seed 4\n'), D + '/gt_neutral', '--outputs', 'image,' + GT, '--aa', '2')
-why = [nm for nm in sorted(os.listdir(p)) if raw(p + '/' + nm) != raw(n + '/' + nm)]
+# every file the same; the frame records too, but for their last line, the
+# digest of the inputs (the camera files differ: spec/road.md)
+
+
+def sans_inputs(b):
+    return b.rsplit(b'\ninputs ', 1)[0] if b.startswith(b'glsplay frame record') else b
+
+
+why = [nm for nm in sorted(os.listdir(p)) if sans_inputs(raw(p + '/' + nm)) != sans_inputs(raw(n + '/' + nm))]
 result('sensor_neutral_keys_change_nothing', not why, 'differ: %s' % why)
 
 sys.exit(0 if OK else 1)
