@@ -15,18 +15,8 @@
 #include "shadows.h"
 #include "vec.h"
 
-#define SHADOW_GLFUNCS(X)                                           \
-    X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                  \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)            \
-    X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                  \
-    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)        \
-    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)    \
-    X(PFNGLACTIVETEXTUREPROC, glActiveTexture)
-
 struct gls_shadows {
-#define SHADOW_X_FN(type, name) type name;
-    SHADOW_GLFUNCS(SHADOW_X_FN)
-#undef SHADOW_X_FN
+    const gls_glext *gl; /* the renderer's GL beyond 1.1 (glcalls.h) */
     uint32_t n, res;
     GLuint fbo[GLS_MAX_LIGHTS], tex[GLS_MAX_LIGHTS];
     float S[16 * GLS_MAX_LIGHTS], bias[GLS_MAX_LIGHTS];
@@ -147,7 +137,7 @@ void gls_shadows_explain(FILE *out, const gls_scene *s)
                 points == 1 ? "" : "s");
 }
 
-gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen)
+gls_shadows *gls_shadows_create(const gls_glext *gl, const gls_scene *s, char *err, size_t errlen)
 {
     for (uint32_t i = 0; i < s->nlights; i++)
         if (s->lights[i].kind == GLS_LIGHT_POINT) {
@@ -163,19 +153,11 @@ gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, s
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
-#define SHADOW_X_LOAD(type, name)                                                                \
-    sh->name = (type)(uintptr_t)gls_glctx_proc(ctx, #name);                                      \
-    if (!sh->name) {                                                                             \
-        snprintf(err, errlen, "shadows: %s: GL function %s is missing", gls_glctx_backend(ctx), #name); \
-        free(sh);                                                                                \
-        return NULL;                                                                             \
-    }
-    SHADOW_GLFUNCS(SHADOW_X_LOAD)
-#undef SHADOW_X_LOAD
+    sh->gl = gl;
     sh->n = gls_lights_count(s);
     sh->res = s->shadow_res;
     glGenTextures((GLsizei)sh->n, sh->tex);
-    sh->glGenFramebuffers((GLsizei)sh->n, sh->fbo);
+    sh->gl->glGenFramebuffers((GLsizei)sh->n, sh->fbo);
     GLint prev = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev);
     int bad = 0;
@@ -190,14 +172,14 @@ gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, s
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
-        sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[i]);
-        sh->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, sh->tex[i], 0);
+        sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[i]);
+        sh->gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, sh->tex[i], 0);
         glDrawBuffer(GL_NONE);
         glReadBuffer(GL_NONE);
-        bad = sh->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE;
+        bad = sh->gl->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE;
     }
     glBindTexture(GL_TEXTURE_2D, 0);
-    sh->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
+    sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
     if (bad || glGetError() != GL_NO_ERROR) {
         while (glGetError() != GL_NO_ERROR)
             ;
@@ -226,7 +208,7 @@ void gls_shadows_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene
         gls_light_world(s, l, L);
         double len = sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
         gls_shadow_view v;
-        sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[n]);
+        sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[n]);
         glViewport(0, 0, (GLsizei)sh->res, (GLsizei)sh->res);
         glClear(GL_DEPTH_BUFFER_BIT);
         if (len > 0 && (L[0] /= len, L[1] /= len, L[2] /= len, gls_shadow_fit(s, L, vis, sh->res, &v) == 0)) {
@@ -245,7 +227,7 @@ void gls_shadows_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene
         }
         n++;
     }
-    sh->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
+    sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
     glViewport(vp[0], vp[1], vp[2], vp[3]);
     if (scissor)
         glEnable(GL_SCISSOR_TEST);
@@ -261,10 +243,10 @@ uint32_t gls_shadows_uniforms(const gls_shadows *sh, float *S, float *bias)
 void gls_shadows_bind(const gls_shadows *sh)
 {
     for (uint32_t i = 0; i < sh->n; i++) {
-        sh->glActiveTexture(GL_TEXTURE1 + i);
+        sh->gl->glActiveTexture(GL_TEXTURE1 + i);
         glBindTexture(GL_TEXTURE_2D, sh->tex[i]);
     }
-    sh->glActiveTexture(GL_TEXTURE0);
+    sh->gl->glActiveTexture(GL_TEXTURE0);
 }
 
 void gls_shadows_destroy(gls_shadows *sh)
@@ -272,7 +254,7 @@ void gls_shadows_destroy(gls_shadows *sh)
     if (!sh)
         return;
     if (sh->n) {
-        sh->glDeleteFramebuffers((GLsizei)sh->n, sh->fbo);
+        sh->gl->glDeleteFramebuffers((GLsizei)sh->n, sh->fbo);
         glDeleteTextures((GLsizei)sh->n, sh->tex);
     }
     free(sh);
