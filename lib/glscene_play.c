@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "buf.h"
-#include "glscene.h"
+#include "glscene_internal.h"
 #include "player.h"
 #include "trajectory.h"
 
@@ -217,6 +217,10 @@ static int parse_filter(const char *s, gls_aa_opts *o)
 
 int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_error *e)
 {
+    if (!r || !a) {
+        gls_api_fail(e, "glscene_play_arg: a NULL run or argument");
+        return -2;
+    }
     gls_play_opts *o = &r->o;
     int has_val = next != NULL;
     const char *val = has_val ? next : "";
@@ -415,6 +419,8 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
 
 int glscene_play_check(glscene_play *r, glscene_error *e)
 {
+    if (!r)
+        return gls_api_fail(e, "glscene_play_check: a NULL run");
     gls_play_opts *o = &r->o;
     if (r->have_aa + r->have_samples + (r->subpixel > 0) > 1) {
         return play_fail(r, e, -1, "--aa, --samples and --subpixel all choose the samples; give one");
@@ -463,6 +469,8 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
 
 int glscene_play_run(glscene_play *r, FILE *out, FILE *errs)
 {
+    if (!r || !out || !errs)
+        return 2; /* nowhere to say why */
     if (!r->checked && glscene_play_check(r, NULL)) {
         fprintf(errs, "glsplay: error: %s\n", glscene_play_message(r));
         return 2;
