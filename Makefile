@@ -48,6 +48,9 @@ INC_glsroad  := $(INC_roads) $(INC_runtime)
 # An object sees the layer of its top directory (base/x.c: base).
 LAYER_INC = $(INC_$(firstword $(subst /, ,$*)))
 $(B)/roads/glsroad_main.o: LAYER_INC = $(INC_glsroad)
+# glsplay's main sees the public header and the tools' helpers only: it
+# goes through the library's API (docs/api.md "How glsplay uses it")
+$(B)/runtime/glsplay_main.o: LAYER_INC = -Iinclude $(INC_base)
 
 # The GL backends (runtime/glctx_*.c, spec/backends.md): each is built when
 # pkg-config finds its library, and left out otherwise or when GLS_NO_EGL=1
@@ -200,9 +203,9 @@ $(B)/glsc: $(B)/compiler/glsc_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 $(B)/glsdis: $(B)/compiler/glsdis_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
-# glsplay links the runtime through libglscene.a (its main calls the
-# runtime's gls_play, not the public API); base for the tools' usage and
-# standard output helpers, which the library leaves out.
+# glsplay is its main over libglscene.a's public API (glscene_play_*,
+# lib/glscene_play.c; tests/e2e/glsplay_public_api.sh); base for the
+# tools' usage and standard output helpers, which the library leaves out.
 $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglscene.a $(LIB_base)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
 

@@ -415,6 +415,46 @@ static void h_call(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
     }
 }
 
+/* What mark and class share: a quoted name with the landmark name rules
+ * (class names share the bundle's MARK_NAMES), placed once per object.
+ * place_name_check reports an invalid name (what: "landmark", "class";
+ * example: a valid one) and finds an earlier placement in names (any of
+ * them when any is set: an object has one class; else one of the same
+ * name).  PLACE_NEW: none; PLACE_LOOP: it is this very statement, met
+ * again by a loop; PLACE_TWICE: another statement (*first says which).
+ * The caller words the repeat, which differs between the two. */
+typedef enum { PLACE_BAD, PLACE_NEW, PLACE_LOOP, PLACE_TWICE } place_status;
+
+static place_status place_name_check(gls_parse *ctx, const gls_val *a, const char *what, const char *example,
+                                     const gls_ref *names, uint32_t nnames, int any, const gls_ref **first)
+{
+    const char *s = a->s + 1;
+    size_t len = a->len - 2;
+    if (!gls_valid_mark_name(s, len)) {
+        ERR(ctx, a->line, a->col, "%.*s is not a valid %s name (1 to %u letters, digits, '_', '.' or '-', like \"%s\")",
+            (int)a->len, a->s, what, GLS_MAX_MARK_NAME_BYTES, example);
+        return PLACE_BAD;
+    }
+    for (uint32_t i = 0; i < nnames; i++)
+        if (any || (strlen(names[i].name) == len && memcmp(names[i].name, s, len) == 0)) {
+            *first = &names[i];
+            return names[i].loc.line == a->line && names[i].loc.col == a->col ? PLACE_LOOP : PLACE_TWICE;
+        }
+    return PLACE_NEW;
+}
+
+/* Add a's name to names and emit in with its index as argument arg. */
+static void place_name_emit(gls_parse *ctx, gls_tok name, const gls_val *a, gls_ref **names, uint32_t *nnames,
+                            size_t *cap, gls_insn *in, unsigned arg)
+{
+    in->u[arg] = gls_unit_add_ref(names, nnames, cap, a->s + 1, a->len - 2, gls_tok_loc(ctx, a->line, a->col));
+    if (in->u[arg] == GLS_NONE) {
+        ERR(ctx, name.line, name.col, "out of memory");
+        return;
+    }
+    sema_emit(ctx, in, name.line);
+}
+
 /* mark("name", x, y, z): a landmark at (x, y, z) under the current
  * transform, drawing nothing (spec/language.md 7).  Its name identifies
  * it within the object, so an object places each name once: the second
@@ -424,37 +464,26 @@ static void h_mark(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     (void)n;
     gls_unit *u = ctx->u;
-    const char *s = a[0].s + 1;
-    size_t len = a[0].len - 2;
-    if (!gls_valid_mark_name(s, len)) {
-        ERR(ctx, a[0].line, a[0].col,
-            "%.*s is not a valid landmark name (1 to %u letters, digits, '_', '.' or '-', like \"post.top\")",
-            (int)a[0].len, a[0].s, GLS_MAX_MARK_NAME_BYTES);
+    const gls_ref *first = NULL;
+    switch (place_name_check(ctx, &a[0], "landmark", "post.top", u->marknames, u->nmarknames, 0, &first)) {
+    case PLACE_BAD:
         return;
+    case PLACE_LOOP:
+        ERR(ctx, a[0].line, a[0].col,
+            "landmark %.*s is placed on every iteration of this loop, but an object places a name once "
+            "(call an object that places it: its rows differ by path)",
+            (int)a[0].len, a[0].s);
+        return;
+    case PLACE_TWICE:
+        ERR(ctx, a[0].line, a[0].col, "landmark %.*s is placed twice in this object", (int)a[0].len, a[0].s);
+        gls_note_at(ctx->d, first->loc, "%.*s is first placed here", (int)a[0].len, a[0].s);
+        return;
+    case PLACE_NEW:
+        break;
     }
-    for (uint32_t i = 0; i < u->nmarknames; i++)
-        if (strlen(u->marknames[i].name) == len && memcmp(u->marknames[i].name, s, len) == 0) {
-            gls_loc was = u->marknames[i].loc;
-            if (was.line == a[0].line && was.col == a[0].col) /* the same mark, run again by a loop */
-                ERR(ctx, a[0].line, a[0].col,
-                    "landmark %.*s is placed on every iteration of this loop, but an object places a name once "
-                    "(call an object that places it: its rows differ by path)",
-                    (int)a[0].len, a[0].s);
-            else {
-                ERR(ctx, a[0].line, a[0].col, "landmark %.*s is placed twice in this object", (int)a[0].len, a[0].s);
-                gls_note_at(ctx->d, was, "%.*s is first placed here", (int)a[0].len, a[0].s);
-            }
-            return;
-        }
     gls_insn in = {.op = GLS_OP_MARK};
     in.d[GLS_ARG_MARK_X] = a[1].num, in.d[GLS_ARG_MARK_Y] = a[2].num, in.d[GLS_ARG_MARK_Z] = a[3].num;
-    in.u[GLS_ARG_MARK_NAME] = gls_unit_add_ref(&u->marknames, &u->nmarknames, &u->marknames_cap, s, len,
-                                               gls_tok_loc(ctx, a[0].line, a[0].col));
-    if (in.u[GLS_ARG_MARK_NAME] == GLS_NONE) {
-        ERR(ctx, name.line, name.col, "out of memory");
-        return;
-    }
-    sema_emit(ctx, &in, name.line);
+    place_name_emit(ctx, name, &a[0], &u->marknames, &u->nmarknames, &u->marknames_cap, &in, GLS_ARG_MARK_NAME);
 }
 
 /* class("name"): the object's class, which ground truth gives its
@@ -466,34 +495,24 @@ static void h_class(gls_parse *ctx, gls_tok name, const gls_val *a, unsigned n)
 {
     (void)n;
     gls_unit *u = ctx->u;
-    const char *s = a[0].s + 1;
-    size_t len = a[0].len - 2;
-    if (!gls_valid_mark_name(s, len)) {
+    const gls_ref *first = NULL;
+    switch (place_name_check(ctx, &a[0], "class", "Car", u->classnames, u->nclassnames, 1, &first)) {
+    case PLACE_BAD:
+        return;
+    case PLACE_LOOP:
         ERR(ctx, a[0].line, a[0].col,
-            "%.*s is not a valid class name (1 to %u letters, digits, '_', '.' or '-', like \"Car\")",
-            (int)a[0].len, a[0].s, GLS_MAX_MARK_NAME_BYTES);
+            "class is given on every iteration of this loop, but an object has one class (give it before "
+            "the loop)");
         return;
-    }
-    if (u->nclassnames) {
-        gls_loc was = u->classnames[0].loc;
-        if (was.line == a[0].line && was.col == a[0].col) /* the same class, run again by a loop */
-            ERR(ctx, a[0].line, a[0].col,
-                "class is given on every iteration of this loop, but an object has one class (give it before "
-                "the loop)");
-        else {
-            ERR(ctx, a[0].line, a[0].col, "this object's class is given twice (an object has one class)");
-            gls_note_at(ctx->d, was, "its class is first given here, as \"%s\"", u->classnames[0].name);
-        }
+    case PLACE_TWICE:
+        ERR(ctx, a[0].line, a[0].col, "this object's class is given twice (an object has one class)");
+        gls_note_at(ctx->d, first->loc, "its class is first given here, as \"%s\"", first->name);
         return;
+    case PLACE_NEW:
+        break;
     }
     gls_insn in = {.op = GLS_OP_CLASS};
-    in.u[GLS_ARG_CLASS_NAME] = gls_unit_add_ref(&u->classnames, &u->nclassnames, &u->classnames_cap, s, len,
-                                                gls_tok_loc(ctx, a[0].line, a[0].col));
-    if (in.u[GLS_ARG_CLASS_NAME] == GLS_NONE) {
-        ERR(ctx, name.line, name.col, "out of memory");
-        return;
-    }
-    sema_emit(ctx, &in, name.line);
+    place_name_emit(ctx, name, &a[0], &u->classnames, &u->nclassnames, &u->classnames_cap, &in, GLS_ARG_CLASS_NAME);
 }
 
 /* The instructions (sema.h says what each field means). */

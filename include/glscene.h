@@ -22,6 +22,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -137,6 +138,42 @@ uint32_t glscene_instance_count(glscene_player *p);
  * messages, the first of them whole when they do not all fit). */
 int glscene_compile(const char *scene_path, const char *const *roots, size_t nroots, const char *out_bundle,
                     glscene_error *e);
+
+/* The player's full options: what glsplay does, as library calls (a run
+ * renders and writes files, sequences, effects, progress: everything
+ * glsplay's options ask for; docs/api.md "The player's full options").
+ * glsplay itself is these calls.  A run is built from glsplay's
+ * command-line arguments (glsplay --help, spec/outputs.md), then run. */
+typedef struct glscene_play glscene_play;
+
+/* A run with glsplay's defaults (progress off); NULL: out of memory. */
+glscene_play *glscene_play_new(void);
+/* Free it; NULL: nothing. */
+void glscene_play_free(glscene_play *r);
+
+/* Take glsplay's argument arg, with next the one after it (NULL: none);
+ * the bundle is the argument that is not an option.  Strings are copied.
+ * Returns how many arguments it took (1 or 2), or -1 when they are a
+ * usage mistake (glsplay prints the message with "(try glsplay --help)"
+ * and exits 2), or -2 when this build cannot do what they ask (a GL
+ * backend it was built without) or memory ran out; the message is in e
+ * (at most 1023 bytes) and whole in glscene_play_message.  --help is
+ * glsplay's, not the library's. */
+int glscene_play_arg(glscene_play *r, const char *arg, const char *next, glscene_error *e);
+
+/* The checks between arguments, once they are all given (a bundle, a
+ * camera, an output directory or --explain, ...).  0, or -1 with e. */
+int glscene_play_check(glscene_play *r, glscene_error *e);
+
+/* Render and write what the arguments ask for.  Messages go to errs as
+ * glsplay prints them ("glsplay: error: ...", notes, progress), --explain's
+ * plan to out; the library writes to no other stream.  Returns glsplay's
+ * exit status: 0 done, 1 an input error, 2 when glscene_play_check fails
+ * (it is run first if it was not). */
+int glscene_play_run(glscene_play *r, FILE *out, FILE *errs);
+
+/* The whole message of r's last failing call ("" if none). */
+const char *glscene_play_message(const glscene_play *r);
 
 #ifdef __cplusplus
 }

@@ -15,12 +15,14 @@
  *
  * A function missing here links against libOSMesa in a build that has
  * it and fails to link in one that has EGL alone: add it to both lists
- * below.  Functions beyond GL 1.1 the renderer loads itself (render.c). */
+ * below.  Functions beyond GL 1.1 are in GLS_GLEXT, further down. */
 #ifndef GLS_GLCALLS_H
 #define GLS_GLCALLS_H
 
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <stddef.h>
+#include "glctx.h"
 
 #define GLS_GLCALLS(X)                                                                                  \
     X(glAlphaFunc) X(glBindTexture) X(glClear) X(glClearColor) X(glClearDepth) X(glColor4ub)            \
@@ -79,5 +81,70 @@ extern _Thread_local const gls_glcalls *gls_glcalls_current;
 #define glTexParameteri (gls_glcalls_current->p_glTexParameteri)
 #define glVertexPointer (gls_glcalls_current->p_glVertexPointer)
 #define glViewport (gls_glcalls_current->p_glViewport)
+
+/* GL entry points beyond GL 1.1, by their glext.h PFN types: the renderer
+ * loads them once from its context (gls_glext_load, when it is created)
+ * and everything that draws with it calls them through that table:
+ * render.c, the ground-truth pass (gt_pass.c, through gls_renderer_gl),
+ * the lighting and the shadow maps (lighting.c, shadows.c) and the shader
+ * programs they build (glprog.c).  One list, so that a function is named
+ * and loaded in one place. */
+#define GLS_GLEXT(X)                                                      \
+    X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                        \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                  \
+    X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                        \
+    X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                      \
+    X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)                \
+    X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                      \
+    X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                \
+    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)        \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)          \
+    X(PFNGLCLIPCONTROLPROC, glClipControl)                                \
+    X(PFNGLGENBUFFERSPROC, glGenBuffers)                                  \
+    X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                            \
+    X(PFNGLBINDBUFFERPROC, glBindBuffer)                                  \
+    X(PFNGLBUFFERDATAPROC, glBufferData)                                  \
+    X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                          \
+    X(PFNGLGETSTRINGIPROC, glGetStringi)                                  \
+    X(PFNGLCLIENTACTIVETEXTUREARBPROC, glClientActiveTexture) /* GL 1.3 */ \
+    X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                            \
+    X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                            \
+    X(PFNGLUSEPROGRAMPROC, glUseProgram)                                  \
+    X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                  \
+    X(PFNGLUNIFORM1IPROC, glUniform1i)                                    \
+    X(PFNGLUNIFORM1UIPROC, glUniform1ui)                                  \
+    X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                      \
+    X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                                \
+    X(PFNGLCLEARBUFFERUIVPROC, glClearBufferuiv)                          \
+    X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                            \
+    X(PFNGLTEXBUFFERPROC, glTexBuffer)                                    \
+    X(PFNGLUNIFORM3FPROC, glUniform3f)                                    \
+    X(PFNGLUNIFORM4FVPROC, glUniform4fv)                                  \
+    X(PFNGLUNIFORM1IVPROC, glUniform1iv)                                  \
+    X(PFNGLUNIFORM1FVPROC, glUniform1fv)                                  \
+    X(PFNGLUNIFORM1FPROC, glUniform1f)                                    \
+    X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                      \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)              \
+    X(PFNGLCREATESHADERPROC, glCreateShader)                              \
+    X(PFNGLSHADERSOURCEPROC, glShaderSource)                              \
+    X(PFNGLCOMPILESHADERPROC, glCompileShader)                            \
+    X(PFNGLGETSHADERIVPROC, glGetShaderiv)                                \
+    X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                      \
+    X(PFNGLDELETESHADERPROC, glDeleteShader)                              \
+    X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                            \
+    X(PFNGLATTACHSHADERPROC, glAttachShader)                              \
+    X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                \
+    X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                              \
+    X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)
+
+typedef struct gls_glext {
+#define GLS_GLEXT_MEMBER(type, name) type name;
+    GLS_GLEXT(GLS_GLEXT_MEMBER)
+#undef GLS_GLEXT_MEMBER
+} gls_glext;
+
+/* Fill t from ctx's backend (glcalls.c).  0, or -1 with "BACKEND: GL
+ * function NAME is missing" in err. */
+int gls_glext_load(gls_glctx *ctx, gls_glext *t, char *err, size_t errlen);
 
 #endif

@@ -6,12 +6,13 @@
 
 #include <GL/gl.h>
 #include <stddef.h>
-#include "glctx.h"
 
-/* The program, or 0 with "WHO: the vertex shader does not compile: LOG"
- * (or fragment, or "WHO: the shaders do not link: LOG", or a missing GL
- * function) in err.  The shaders are deleted (the program keeps them). */
-GLuint gls_glprog_build(gls_glctx *ctx, const char *vs_src, const char *fs_src, const char *who, char *err,
+/* The program, built with gl's entry points (glcalls.h), or 0 with "WHO:
+ * the vertex shader does not compile: LOG" (or fragment, or "WHO: the
+ * shaders do not link: LOG") in err.  The shaders are deleted (the
+ * program keeps them). */
+typedef struct gls_glext gls_glext;
+GLuint gls_glprog_build(const gls_glext *gl, const char *vs_src, const char *fs_src, const char *who, char *err,
                         size_t errlen);
 
 #endif

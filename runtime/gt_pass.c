@@ -31,38 +31,8 @@
 #include "glprog.h"
 #include "gt_pass.h"
 
-/* GL 2.0-3.3 entry points of this pass, loaded from the renderer's
- * context on first use (render.c loads its own the same way). */
-#define GT_GLFUNCS(X)                                               \
-    X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                      \
-    X(PFNGLUSEPROGRAMPROC, glUseProgram)                            \
-    X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)            \
-    X(PFNGLUNIFORM1IPROC, glUniform1i)                              \
-    X(PFNGLUNIFORM1UIPROC, glUniform1ui)                            \
-    X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                  \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)            \
-    X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                  \
-    X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                \
-    X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)          \
-    X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                \
-    X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)          \
-    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)  \
-    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)    \
-    X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                          \
-    X(PFNGLCLEARBUFFERUIVPROC, glClearBufferuiv)                    \
-    X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                      \
-    X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                \
-    X(PFNGLGENBUFFERSPROC, glGenBuffers)                            \
-    X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                      \
-    X(PFNGLBINDBUFFERPROC, glBindBuffer)                            \
-    X(PFNGLBUFFERDATAPROC, glBufferData)                            \
-    X(PFNGLTEXBUFFERPROC, glTexBuffer)                              \
-    X(PFNGLACTIVETEXTUREPROC, glActiveTexture)
-
 typedef struct {
-#define GT_X_FN(type, name) type name;
-    GT_GLFUNCS(GT_X_FN)
-#undef GT_X_FN
+    const gls_glext *gl;     /* the renderer's GL beyond 1.1 (glcalls.h) */
     GLuint prog, fbo, rb[3]; /* ids, normals, depth */
     GLuint nbuf, ntex;       /* per triangle unit normal (proto frame), 0 before any */
     GLint u_id, u_tex, u_alpha_test, u_sampler, u_normals, u_tri0, u_nmat, u_want_normal;
@@ -133,48 +103,39 @@ static void gt_free(void *p)
     if (!g)
         return;
     if (g->prog)
-        g->glDeleteProgram(g->prog);
+        g->gl->glDeleteProgram(g->prog);
     if (g->ntex)
         glDeleteTextures(1, &g->ntex);
     if (g->nbuf)
-        g->glDeleteBuffers(1, &g->nbuf);
+        g->gl->glDeleteBuffers(1, &g->nbuf);
     if (g->fbo) {
-        g->glDeleteFramebuffers(1, &g->fbo);
-        g->glDeleteRenderbuffers(3, g->rb);
+        g->gl->glDeleteFramebuffers(1, &g->fbo);
+        g->gl->glDeleteRenderbuffers(3, g->rb);
     }
     free(g);
 }
 
 static gt_state *gt_create(gls_renderer *r, const gls_scene *s, char *err, size_t errlen)
 {
-    gls_glctx *ctx = gls_renderer_glctx(r);
     gt_state *g = calloc(1, sizeof *g);
     if (!g) {
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
-#define GT_X_LOAD(type, name)                                                                    \
-    g->name = (type)(uintptr_t)gls_glctx_proc(ctx, #name);                                       \
-    if (!g->name) {                                                                              \
-        snprintf(err, errlen, "ground truth: %s: GL function %s is missing", gls_glctx_backend(ctx), #name); \
-        free(g);                                                                                 \
-        return NULL;                                                                             \
-    }
-    GT_GLFUNCS(GT_X_LOAD)
-#undef GT_X_LOAD
-    g->prog = gls_glprog_build(ctx, vs_src, fs_src, "ground truth", err, errlen);
+    g->gl = gls_renderer_gl(r);
+    g->prog = gls_glprog_build(g->gl, vs_src, fs_src, "ground truth", err, errlen);
     if (!g->prog) {
         gt_free(g);
         return NULL;
     }
-    g->u_id = g->glGetUniformLocation(g->prog, "u_id");
-    g->u_tex = g->glGetUniformLocation(g->prog, "u_tex");
-    g->u_alpha_test = g->glGetUniformLocation(g->prog, "u_alpha_test");
-    g->u_sampler = g->glGetUniformLocation(g->prog, "u_sampler");
-    g->u_normals = g->glGetUniformLocation(g->prog, "u_normals");
-    g->u_tri0 = g->glGetUniformLocation(g->prog, "u_tri0");
-    g->u_nmat = g->glGetUniformLocation(g->prog, "u_nmat");
-    g->u_want_normal = g->glGetUniformLocation(g->prog, "u_want_normal");
+    g->u_id = g->gl->glGetUniformLocation(g->prog, "u_id");
+    g->u_tex = g->gl->glGetUniformLocation(g->prog, "u_tex");
+    g->u_alpha_test = g->gl->glGetUniformLocation(g->prog, "u_alpha_test");
+    g->u_sampler = g->gl->glGetUniformLocation(g->prog, "u_sampler");
+    g->u_normals = g->gl->glGetUniformLocation(g->prog, "u_normals");
+    g->u_tri0 = g->gl->glGetUniformLocation(g->prog, "u_tri0");
+    g->u_nmat = g->gl->glGetUniformLocation(g->prog, "u_nmat");
+    g->u_want_normal = g->gl->glGetUniformLocation(g->prog, "u_want_normal");
     g->alpha_test = (s->features & GLS_FEAT_ALPHA_TEST) != 0;
     return g;
 }
@@ -185,20 +146,20 @@ static int gt_size(gt_state *g, uint32_t w, uint32_t h, char *err, size_t errlen
     if (g->fbo && g->width == w && g->height == h)
         return 0;
     if (!g->fbo) {
-        g->glGenFramebuffers(1, &g->fbo);
-        g->glGenRenderbuffers(3, g->rb);
+        g->gl->glGenFramebuffers(1, &g->fbo);
+        g->gl->glGenRenderbuffers(3, g->rb);
     }
     static const GLenum fmt[3] = {GL_R32UI, GL_RGBA32F, GL_DEPTH_COMPONENT32F};
     static const GLenum at[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_DEPTH_ATTACHMENT};
-    g->glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
+    g->gl->glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
     for (int i = 0; i < 3; i++) {
-        g->glBindRenderbuffer(GL_RENDERBUFFER, g->rb[i]);
-        g->glRenderbufferStorage(GL_RENDERBUFFER, fmt[i], (GLsizei)w, (GLsizei)h);
-        g->glFramebufferRenderbuffer(GL_FRAMEBUFFER, at[i], GL_RENDERBUFFER, g->rb[i]);
+        g->gl->glBindRenderbuffer(GL_RENDERBUFFER, g->rb[i]);
+        g->gl->glRenderbufferStorage(GL_RENDERBUFFER, fmt[i], (GLsizei)w, (GLsizei)h);
+        g->gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, at[i], GL_RENDERBUFFER, g->rb[i]);
     }
     static const GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    g->glDrawBuffers(2, bufs);
-    if (g->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    g->gl->glDrawBuffers(2, bufs);
+    if (g->gl->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
         while (glGetError() != GL_NO_ERROR)
             ;
         g->width = g->height = 0;
@@ -216,13 +177,13 @@ static void gt_item(void *ud, const gls_scene *s, const gls_item *it)
 {
     gt_state *g = ud;
     const gls_drawkey *k = &s->chunks[it->chunk].key;
-    g->glUniform1ui(g->u_id, it->inst + 1);
-    g->glUniform1i(g->u_tex, k->texture == GLS_NONE ? 0 : k->mode == GLS_MODE_REPLACE ? 1 : 2);
+    g->gl->glUniform1ui(g->u_id, it->inst + 1);
+    g->gl->glUniform1i(g->u_tex, k->texture == GLS_NONE ? 0 : k->mode == GLS_MODE_REPLACE ? 1 : 2);
     if (!g->want_normal)
         return;
     /* near (re-anchored) items draw copies of the chunk's vertices in
      * the same order, so the chunk's triangles are theirs too */
-    g->glUniform1i(g->u_tri0, (GLint)(s->chunks[it->chunk].first / 3));
+    g->gl->glUniform1i(g->u_tri0, (GLint)(s->chunks[it->chunk].first / 3));
     const double *W = s->inst[it->inst].world, *R = g->cam->R;
     double cof[9], M[9];
     for (int i = 0; i < 3; i++)
@@ -236,7 +197,7 @@ static void gt_item(void *ud, const gls_scene *s, const gls_item *it)
     float f[9];
     for (int i = 0; i < 9; i++)
         f[i] = (float)M[i];
-    g->glUniformMatrix3fv(g->u_nmat, 1, GL_TRUE, f); /* row-major */
+    g->gl->glUniformMatrix3fv(g->u_nmat, 1, GL_TRUE, f); /* row-major */
 }
 
 /* The table of unit normals, one per triangle of the scene, in its
@@ -270,16 +231,16 @@ static int gt_normals(gt_state *g, const gls_scene *s, char *err, size_t errlen)
         for (int i = 0; i < 3; i++)
             nf[3 * t + i] = l > 0 ? (float)(n[i] / l) : 0.0f;
     }
-    g->glGenBuffers(1, &g->nbuf);
-    g->glBindBuffer(GL_TEXTURE_BUFFER, g->nbuf);
-    g->glBufferData(GL_TEXTURE_BUFFER, (GLsizeiptr)((ntri ? ntri : 1) * 3 * sizeof *nf), nf, GL_STATIC_DRAW);
-    g->glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    g->gl->glGenBuffers(1, &g->nbuf);
+    g->gl->glBindBuffer(GL_TEXTURE_BUFFER, g->nbuf);
+    g->gl->glBufferData(GL_TEXTURE_BUFFER, (GLsizeiptr)((ntri ? ntri : 1) * 3 * sizeof *nf), nf, GL_STATIC_DRAW);
+    g->gl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
     free(nf);
     glGenTextures(1, &g->ntex);
-    g->glActiveTexture(GL_TEXTURE1);
+    g->gl->glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_BUFFER, g->ntex);
-    g->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, g->nbuf);
-    g->glActiveTexture(GL_TEXTURE0);
+    g->gl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, g->nbuf);
+    g->gl->glActiveTexture(GL_TEXTURE0);
     GLenum e = glGetError();
     if (e != GL_NO_ERROR) {
         snprintf(err, errlen, "ground truth: GL error %#x while uploading %zu triangle normals", e, ntri);
@@ -310,28 +271,28 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
         rc = gt_normals(g, gls_renderer_scene(r), err, errlen);
     if (rc == 0) {
         static const GLuint id0[4] = {0, 0, 0, 0};
-        g->glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
+        g->gl->glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
         static const GLfloat n0[4] = {0, 0, 0, 0}, d0 = 0; /* reversed Z: far is 0 */
         glDisable(GL_SCISSOR_TEST);
         glDisable(GL_ALPHA_TEST); /* the shader discards instead */
         glViewport(0, 0, (GLsizei)w, (GLsizei)h);
-        g->glClearBufferuiv(GL_COLOR, 0, id0);
-        g->glClearBufferfv(GL_COLOR, 1, n0);
-        g->glClearBufferfv(GL_DEPTH, 0, &d0);
-        g->glUseProgram(g->prog);
-        g->glUniform1i(g->u_sampler, 0);
-        g->glUniform1i(g->u_alpha_test, g->alpha_test);
-        g->glUniform1i(g->u_normals, 1);
-        g->glUniform1i(g->u_want_normal, normal != NULL);
+        g->gl->glClearBufferuiv(GL_COLOR, 0, id0);
+        g->gl->glClearBufferfv(GL_COLOR, 1, n0);
+        g->gl->glClearBufferfv(GL_DEPTH, 0, &d0);
+        g->gl->glUseProgram(g->prog);
+        g->gl->glUniform1i(g->u_sampler, 0);
+        g->gl->glUniform1i(g->u_alpha_test, g->alpha_test);
+        g->gl->glUniform1i(g->u_normals, 1);
+        g->gl->glUniform1i(g->u_want_normal, normal != NULL);
         g->want_normal = normal != NULL;
         g->cam = c;
         if (normal) { /* texture unit 1; the draw keys bind theirs on unit 0 */
-            g->glActiveTexture(GL_TEXTURE1);
+            g->gl->glActiveTexture(GL_TEXTURE1);
             glBindTexture(GL_TEXTURE_BUFFER, g->ntex);
-            g->glActiveTexture(GL_TEXTURE0);
+            g->gl->glActiveTexture(GL_TEXTURE0);
         }
         gls_render_hooked(r, c, gt_item, g);
-        g->glUseProgram(0);
+        g->gl->glUseProgram(0);
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         if (inst) {
             glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -350,7 +311,7 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
             rc = -1;
         }
     }
-    g->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fbo);
+    g->gl->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fbo);
     glViewport(vp[0], vp[1], vp[2], vp[3]);
     if (scissor)
         glEnable(GL_SCISSOR_TEST);

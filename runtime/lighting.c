@@ -23,23 +23,8 @@
 #include "lighting.h"
 #include "shadows.h"
 
-#define LIGHT_GLFUNCS(X)                                            \
-    X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                      \
-    X(PFNGLUSEPROGRAMPROC, glUseProgram)                            \
-    X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)            \
-    X(PFNGLUNIFORM1IPROC, glUniform1i)                              \
-    X(PFNGLUNIFORM3FPROC, glUniform3f)                              \
-    X(PFNGLUNIFORM4FVPROC, glUniform4fv)                            \
-    X(PFNGLUNIFORM1IVPROC, glUniform1iv)                            \
-    X(PFNGLUNIFORM1FVPROC, glUniform1fv)                            \
-    X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                \
-    X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                \
-    X(PFNGLUNIFORM1FPROC, glUniform1f)
-
 struct gls_lighting {
-#define LIGHT_X_FN(type, name) type name;
-    LIGHT_GLFUNCS(LIGHT_X_FN)
-#undef LIGHT_X_FN
+    const gls_glext *gl; /* the renderer's GL beyond 1.1 (glcalls.h) */
     GLuint prog;
     GLint u_n, u_pos, u_col, u_ambient, u_tex, u_sampler;
     GLint u_shadows, u_smat, u_sbias, u_smap;
@@ -225,7 +210,7 @@ void gls_lighting_explain(FILE *out, const gls_bundle *b, const gls_scene *s)
             "", n, n == 1 ? "" : "s", GLS_MAX_LIGHTS);
 }
 
-gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen)
+gls_lighting *gls_lighting_create(const gls_glext *gl, const gls_scene *s, char *err, size_t errlen)
 {
     uint32_t n = gls_lights_count(s);
     if (n > GLS_MAX_LIGHTS) {
@@ -240,15 +225,7 @@ gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err,
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
-#define LIGHT_X_LOAD(type, name)                                                                 \
-    l->name = (type)(uintptr_t)gls_glctx_proc(ctx, #name);                                       \
-    if (!l->name) {                                                                              \
-        snprintf(err, errlen, "lighting: %s: GL function %s is missing", gls_glctx_backend(ctx), #name); \
-        free(l);                                                                                 \
-        return NULL;                                                                             \
-    }
-    LIGHT_GLFUNCS(LIGHT_X_LOAD)
-#undef LIGHT_X_LOAD
+    l->gl = gl;
     /* the point lights' cube-map lookups are compiled in only when a
      * point light casts shadows: every other scene's program is the
      * source it was before they existed, token for token */
@@ -256,35 +233,35 @@ gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err,
     l->cubes = s->shadow_res && gls_shadows_points(s);
     char fs[sizeof fs_version + sizeof cube_define + sizeof fs_src];
     snprintf(fs, sizeof fs, "%s%s%s", fs_version, l->cubes ? cube_define : "", fs_src);
-    l->prog = gls_glprog_build(ctx, vs_src, fs, "lighting", err, errlen);
+    l->prog = gls_glprog_build(gl, vs_src, fs, "lighting", err, errlen);
     if (!l->prog) {
         free(l);
         return NULL;
     }
-    l->u_n = l->glGetUniformLocation(l->prog, "u_n");
-    l->u_pos = l->glGetUniformLocation(l->prog, "u_pos");
-    l->u_col = l->glGetUniformLocation(l->prog, "u_col");
-    l->u_ambient = l->glGetUniformLocation(l->prog, "u_ambient");
-    l->u_tex = l->glGetUniformLocation(l->prog, "u_tex");
-    l->u_sampler = l->glGetUniformLocation(l->prog, "u_sampler");
-    l->u_shadows = l->glGetUniformLocation(l->prog, "u_shadows");
-    l->u_smat = l->glGetUniformLocation(l->prog, "u_smat");
-    l->u_sbias = l->glGetUniformLocation(l->prog, "u_sbias");
-    l->u_smap = l->glGetUniformLocation(l->prog, "u_smap");
+    l->u_n = l->gl->glGetUniformLocation(l->prog, "u_n");
+    l->u_pos = l->gl->glGetUniformLocation(l->prog, "u_pos");
+    l->u_col = l->gl->glGetUniformLocation(l->prog, "u_col");
+    l->u_ambient = l->gl->glGetUniformLocation(l->prog, "u_ambient");
+    l->u_tex = l->gl->glGetUniformLocation(l->prog, "u_tex");
+    l->u_sampler = l->gl->glGetUniformLocation(l->prog, "u_sampler");
+    l->u_shadows = l->gl->glGetUniformLocation(l->prog, "u_shadows");
+    l->u_smat = l->gl->glGetUniformLocation(l->prog, "u_smat");
+    l->u_sbias = l->gl->glGetUniformLocation(l->prog, "u_sbias");
+    l->u_smap = l->gl->glGetUniformLocation(l->prog, "u_smap");
     /* the maps on texture units 1..8 (gls_shadows_bind), set once */
     static const GLint units[GLS_MAX_LIGHTS] = {1, 2, 3, 4, 5, 6, 7, 8};
-    l->glUseProgram(l->prog);
-    l->glUniform1iv(l->u_smap, GLS_MAX_LIGHTS, units);
+    l->gl->glUseProgram(l->prog);
+    l->gl->glUniform1iv(l->u_smap, GLS_MAX_LIGHTS, units);
     if (l->cubes) { /* the cube maps on units 9..16 */
         static const GLint cunits[GLS_MAX_LIGHTS] = {9, 10, 11, 12, 13, 14, 15, 16};
-        l->u_cube = l->glGetUniformLocation(l->prog, "u_cube");
-        l->u_cnear = l->glGetUniformLocation(l->prog, "u_cnear");
-        l->u_ctexel = l->glGetUniformLocation(l->prog, "u_ctexel");
-        l->u_e2w = l->glGetUniformLocation(l->prog, "u_e2w");
-        l->u_cmap = l->glGetUniformLocation(l->prog, "u_cmap");
-        l->glUniform1iv(l->u_cmap, GLS_MAX_LIGHTS, cunits);
+        l->u_cube = l->gl->glGetUniformLocation(l->prog, "u_cube");
+        l->u_cnear = l->gl->glGetUniformLocation(l->prog, "u_cnear");
+        l->u_ctexel = l->gl->glGetUniformLocation(l->prog, "u_ctexel");
+        l->u_e2w = l->gl->glGetUniformLocation(l->prog, "u_e2w");
+        l->u_cmap = l->gl->glGetUniformLocation(l->prog, "u_cmap");
+        l->gl->glUniform1iv(l->u_cmap, GLS_MAX_LIGHTS, cunits);
     }
-    l->glUseProgram(0);
+    l->gl->glUseProgram(0);
     return l;
 }
 
@@ -301,11 +278,11 @@ static void cube_uniforms(gls_lighting *l, const gls_camera *c, const struct gls
         for (int j = 0; j < 3; j++) /* eye column j, column-major */
             M[3 * j + i] = (float)(c->R[3 * j + i] * (j == 0 ? 1.0 : -1.0));
     if (m) {
-        l->glUniform1iv(l->u_cube, (GLsizei)m, cube);
-        l->glUniform1fv(l->u_cnear, (GLsizei)m, near);
+        l->gl->glUniform1iv(l->u_cube, (GLsizei)m, cube);
+        l->gl->glUniform1fv(l->u_cnear, (GLsizei)m, near);
     }
-    l->glUniform1f(l->u_ctexel, texel);
-    l->glUniformMatrix3fv(l->u_e2w, 1, GL_FALSE, M);
+    l->gl->glUniform1f(l->u_ctexel, texel);
+    l->gl->glUniformMatrix3fv(l->u_e2w, 1, GL_FALSE, M);
 }
 
 void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c, const struct gls_shadows *sh)
@@ -315,22 +292,22 @@ void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c
     uint32_t n = gls_lights_eye(s, c, pos, col, amb);
     for (uint32_t i = 0; i < 4 * n; i++)
         fp[i] = (float)pos[i], fc[i] = (float)col[i];
-    l->glUseProgram(l->prog);
-    l->glUniform1i(l->u_n, (GLint)n);
+    l->gl->glUseProgram(l->prog);
+    l->gl->glUniform1i(l->u_n, (GLint)n);
     if (n) {
-        l->glUniform4fv(l->u_pos, (GLsizei)n, fp);
-        l->glUniform4fv(l->u_col, (GLsizei)n, fc);
+        l->gl->glUniform4fv(l->u_pos, (GLsizei)n, fp);
+        l->gl->glUniform4fv(l->u_col, (GLsizei)n, fc);
     }
-    l->glUniform3f(l->u_ambient, (float)amb[0], (float)amb[1], (float)amb[2]);
-    l->glUniform1i(l->u_sampler, 0);
-    l->glUniform1i(l->u_tex, 0);
-    l->glUniform1i(l->u_shadows, sh != NULL);
+    l->gl->glUniform3f(l->u_ambient, (float)amb[0], (float)amb[1], (float)amb[2]);
+    l->gl->glUniform1i(l->u_sampler, 0);
+    l->gl->glUniform1i(l->u_tex, 0);
+    l->gl->glUniform1i(l->u_shadows, sh != NULL);
     if (sh) {
         float S[16 * GLS_MAX_LIGHTS], bias[GLS_MAX_LIGHTS];
         uint32_t m = gls_shadows_uniforms(sh, S, bias);
         if (m) {
-            l->glUniformMatrix4fv(l->u_smat, (GLsizei)m, GL_FALSE, S);
-            l->glUniform1fv(l->u_sbias, (GLsizei)m, bias);
+            l->gl->glUniformMatrix4fv(l->u_smat, (GLsizei)m, GL_FALSE, S);
+            l->gl->glUniform1fv(l->u_sbias, (GLsizei)m, bias);
         }
         if (l->cubes)
             cube_uniforms(l, c, sh);
@@ -340,16 +317,16 @@ void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c
 
 void gls_lighting_key(gls_lighting *l, const gls_drawkey *k)
 {
-    l->glUniform1i(l->u_tex, k->texture == GLS_NONE ? 0 : k->mode == GLS_MODE_REPLACE ? 1 : 2);
+    l->gl->glUniform1i(l->u_tex, k->texture == GLS_NONE ? 0 : k->mode == GLS_MODE_REPLACE ? 1 : 2);
 }
 
-void gls_lighting_end(gls_lighting *l) { l->glUseProgram(0); }
+void gls_lighting_end(gls_lighting *l) { l->gl->glUseProgram(0); }
 
 void gls_lighting_destroy(gls_lighting *l)
 {
     if (!l)
         return;
     if (l->prog)
-        l->glDeleteProgram(l->prog);
+        l->gl->glDeleteProgram(l->prog);
     free(l);
 }

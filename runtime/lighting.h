@@ -18,7 +18,6 @@
 
 #include <stdio.h>
 #include "camera.h"
-#include "glctx.h"
 #include "scene.h"
 
 /* The lights of s for camera c, in GL's eye frame: n (at most
@@ -44,10 +43,12 @@ void gls_lighting_explain(FILE *out, const gls_bundle *b, const gls_scene *s);
 typedef struct gls_lighting gls_lighting;
 struct gls_shadows;
 
-/* The program, compiled in the context current now; NULL with a message
- * in err when GL lacks something or the scene has more than
+/* The program, compiled in the context current now with the renderer's
+ * GL entry points gl (glcalls.h; they must outlive it); NULL with a
+ * message in err when GL lacks something or the scene has more than
  * GLS_MAX_LIGHTS directional and point lights. */
-gls_lighting *gls_lighting_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen);
+typedef struct gls_glext gls_glext;
+gls_lighting *gls_lighting_create(const gls_glext *gl, const gls_scene *s, char *err, size_t errlen);
 /* Before a colour pass's draws: the program on, the lights of camera c,
  * and the shadow maps sh drew for it (NULL: no shadows). */
 void gls_lighting_begin(gls_lighting *l, const gls_scene *s, const gls_camera *c, const struct gls_shadows *sh);

@@ -34,31 +34,8 @@
 #define GL_MAX_TEXTURE_MAX_ANISOTROPY 0x84FF
 #endif
 
-/* GL entry points beyond GL 1.1 come through the backend's proc lookup,
- * so the renderer does not depend on what a library happens to export. */
-#define GLS_GLFUNCS(X)                                                    \
-    X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                        \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                  \
-    X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                        \
-    X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                      \
-    X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)                \
-    X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                      \
-    X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                \
-    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)        \
-    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)          \
-    X(PFNGLCLIPCONTROLPROC, glClipControl)                                \
-    X(PFNGLGENBUFFERSPROC, glGenBuffers)                                  \
-    X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                            \
-    X(PFNGLBINDBUFFERPROC, glBindBuffer)                                  \
-    X(PFNGLBUFFERDATAPROC, glBufferData)                                  \
-    X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                          \
-    X(PFNGLGETSTRINGIPROC, glGetStringi)                                  \
-    X(PFNGLCLIENTACTIVETEXTUREARBPROC, glClientActiveTexture) /* GL 1.3; same type */
-
 struct gls_renderer {
-#define GLS_X_FN(type, name) type name;
-    GLS_GLFUNCS(GLS_X_FN)
-#undef GLS_X_FN
+    gls_glext gl;          /* GL beyond 1.1, shared with its passes (glcalls.h) */
     const gls_scene *scene;
     gls_glctx *ctx;
     GLuint vbo, fbo, rb_color, rb_depth;
@@ -100,7 +77,7 @@ static int has_extension(gls_renderer *r, const char *name)
     GLint n = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &n);
     for (GLint i = 0; i < n; i++) {
-        const char *e = (const char *)r->glGetStringi(GL_EXTENSIONS, (GLuint)i);
+        const char *e = (const char *)r->gl.glGetStringi(GL_EXTENSIONS, (GLuint)i);
         if (e && strcmp(e, name) == 0)
             return 1;
     }
@@ -120,9 +97,9 @@ static void set_pointers(gls_renderer *r, const gls_scene *s)
         glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(uintptr_t)s->texcoord_offset);
     if (s->lit) {
         glNormalPointer(GL_FLOAT, stride, (const void *)(uintptr_t)s->normal_offset);
-        r->glClientActiveTexture(GL_TEXTURE1);
+        r->gl.glClientActiveTexture(GL_TEXTURE1);
         glTexCoordPointer(4, GL_FLOAT, stride, (const void *)(uintptr_t)s->specular_offset);
-        r->glClientActiveTexture(GL_TEXTURE0);
+        r->gl.glClientActiveTexture(GL_TEXTURE0);
     }
 }
 
@@ -131,20 +108,20 @@ static void set_pointers(gls_renderer *r, const gls_scene *s)
  * stale pointers), and its program.  0, or -1 with a message. */
 static int setup_lighting(gls_renderer *r, const gls_scene *scene, char *err, size_t errlen)
 {
-    r->glClientActiveTexture(GL_TEXTURE1);
+    r->gl.glClientActiveTexture(GL_TEXTURE1);
     if (scene->lit)
         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
     else
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
-    r->glClientActiveTexture(GL_TEXTURE0);
+    r->gl.glClientActiveTexture(GL_TEXTURE0);
     if (!scene->lit) {
         glDisableClientState(GL_NORMAL_ARRAY);
         return 0;
     }
     glEnableClientState(GL_NORMAL_ARRAY);
-    if (scene->shadow_res && !(r->shadows = gls_shadows_create(r->ctx, scene, err, errlen)))
+    if (scene->shadow_res && !(r->shadows = gls_shadows_create(&r->gl, scene, err, errlen)))
         return -1;
-    r->light = gls_lighting_create(r->ctx, scene, err, errlen);
+    r->light = gls_lighting_create(&r->gl, scene, err, errlen);
     return r->light ? 0 : -1;
 }
 
@@ -182,7 +159,7 @@ static int upload_textures(gls_renderer *r, const gls_bundle *b, char *err, size
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, (GLsizei)tx->width, (GLsizei)tx->height, 0, GL_RGBA,
                      GL_UNSIGNED_BYTE, flipped);
         free(flipped);
-        r->glGenerateMipmap(GL_TEXTURE_2D);
+        r->gl.glGenerateMipmap(GL_TEXTURE_2D);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -209,22 +186,17 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
     }
     r->scene = scene;
     r->ctx = ctx;
-#define GLS_X_LOAD(type, name)                                                    \
-    r->name = (type)(uintptr_t)gls_glctx_proc(ctx, #name);                        \
-    if (!r->name) {                                                               \
-        snprintf(err, errlen, "%s: GL function %s is missing", gls_glctx_backend(ctx), #name); \
-        free(r);                                                                  \
-        return NULL;                                                              \
+    if (gls_glext_load(ctx, &r->gl, err, errlen)) {
+        free(r);
+        return NULL;
     }
-    GLS_GLFUNCS(GLS_X_LOAD)
-#undef GLS_X_LOAD
     snprintf(r->gl_name, sizeof r->gl_name, "%s", (const char *)glGetString(GL_RENDERER));
     snprintf(r->gl_version, sizeof r->gl_version, "%s", (const char *)glGetString(GL_VERSION));
     r->aniso = has_extension(r, "GL_EXT_texture_filter_anisotropic") ||
                has_extension(r, "GL_ARB_texture_filter_anisotropic");
 
     /* reversed Z: z_ndc in [0, 1], 1 at near; see spec/camera.md */
-    r->glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    r->gl.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glClearDepth(0.0);
     glDepthFunc(GL_GREATER);
     glEnable(GL_DEPTH_TEST);
@@ -239,9 +211,9 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
         glDisable(GL_ALPHA_TEST); /* a context may outlive an earlier renderer */
     }
 
-    r->glGenBuffers(1, &r->vbo);
-    r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
-    r->glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)scene->nverts * scene->stride), scene->verts,
+    r->gl.glGenBuffers(1, &r->vbo);
+    r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    r->gl.glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)scene->nverts * scene->stride), scene->verts,
                     GL_STATIC_DRAW);
     /* arrays the scene lacks are disabled, not just left alone: an
      * earlier renderer of the same context may have enabled them, and a
@@ -263,7 +235,7 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
         return NULL;
     }
     set_pointers(r, scene);
-    r->glGenBuffers(1, &r->near_vbo);
+    r->gl.glGenBuffers(1, &r->near_vbo);
     r->near_list = malloc((scene->nitems ? scene->nitems : 1) * sizeof *r->near_list);
     r->ivis = malloc(scene->ninst ? scene->ninst : 1);
     r->vis = malloc(scene->nitems ? scene->nitems : 1);
@@ -342,19 +314,19 @@ int gls_renderer_set_mosaic(gls_renderer *r, uint32_t w, uint32_t h, uint32_t kx
         return alloc_failed(r, w, h, kx, ky, err, errlen);
     r->dbuf = d;
     if (!r->fbo) {
-        r->glGenFramebuffers(1, &r->fbo);
-        r->glGenRenderbuffers(1, &r->rb_color);
-        r->glGenRenderbuffers(1, &r->rb_depth);
+        r->gl.glGenFramebuffers(1, &r->fbo);
+        r->gl.glGenRenderbuffers(1, &r->rb_color);
+        r->gl.glGenRenderbuffers(1, &r->rb_depth);
     }
     GLsizei fw = (GLsizei)(w * kx), fh = (GLsizei)(h * ky);
-    r->glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
-    r->glBindRenderbuffer(GL_RENDERBUFFER, r->rb_color);
-    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, fw, fh);
-    r->glBindRenderbuffer(GL_RENDERBUFFER, r->rb_depth);
-    r->glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, fw, fh);
-    r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->rb_color);
-    r->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->rb_depth);
-    GLenum st = r->glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    r->gl.glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
+    r->gl.glBindRenderbuffer(GL_RENDERBUFFER, r->rb_color);
+    r->gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, fw, fh);
+    r->gl.glBindRenderbuffer(GL_RENDERBUFFER, r->rb_depth);
+    r->gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, fw, fh);
+    r->gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->rb_color);
+    r->gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->rb_depth);
+    GLenum st = r->gl.glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (st != GL_FRAMEBUFFER_COMPLETE) {
         /* llvmpipe's renderbuffers are plain memory: incomplete means
          * GL could not allocate them (GL_OUT_OF_MEMORY) */
@@ -513,8 +485,8 @@ static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double 
         }
         at += ch->count;
     }
-    r->glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
-    r->glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(nv * s->stride), r->near_buf, GL_STREAM_DRAW);
+    r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
+    r->gl.glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(nv * s->stride), r->near_buf, GL_STREAM_DRAW);
     return nnear;
 }
 
@@ -529,7 +501,7 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
     int lit = r->light && !r->hook && !r->depth_only;
     if (lit)
         gls_lighting_begin(r->light, s, c, r->shadows);
-    r->glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
     set_pointers(r, s);
     for (uint32_t i = 0; i < s->nitems; i++) {
         const gls_item *it = &s->items[i];
@@ -541,7 +513,7 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
             draw_item(r, c, it, 0, C, s->chunks[it->chunk].first, &prev);
     }
     if (nnear) {
-        r->glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
+        r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);
         set_pointers(r, s);
         size_t at = 0;
         for (k = 0; k < nnear; k++) {
@@ -626,7 +598,7 @@ void gls_render_hooked(gls_renderer *r, const gls_camera *c, gls_render_item_hoo
     r->hook = NULL, r->hook_ud = NULL;
 }
 
-gls_glctx *gls_renderer_glctx(const gls_renderer *r) { return r->ctx; }
+const gls_glext *gls_renderer_gl(const gls_renderer *r) { return &r->gl; }
 const gls_scene *gls_renderer_scene(const gls_renderer *r) { return r->scene; }
 void *gls_renderer_ext(const gls_renderer *r) { return r->ext; }
 
@@ -782,18 +754,18 @@ void gls_renderer_destroy(gls_renderer *r)
         free(r->tex);
     }
     if (r->vbo)
-        r->glDeleteBuffers(1, &r->vbo);
+        r->gl.glDeleteBuffers(1, &r->vbo);
     if (r->near_vbo)
-        r->glDeleteBuffers(1, &r->near_vbo);
+        r->gl.glDeleteBuffers(1, &r->near_vbo);
     free(r->near_buf);
     free(r->near_list);
     free(r->ivis);
     free(r->vis);
     if (r->fbo) {
-        r->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        r->glDeleteFramebuffers(1, &r->fbo);
-        r->glDeleteRenderbuffers(1, &r->rb_color);
-        r->glDeleteRenderbuffers(1, &r->rb_depth);
+        r->gl.glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        r->gl.glDeleteFramebuffers(1, &r->fbo);
+        r->gl.glDeleteRenderbuffers(1, &r->rb_color);
+        r->gl.glDeleteRenderbuffers(1, &r->rb_depth);
     }
     free(r->dbuf);
     free(r);

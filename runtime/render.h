@@ -74,8 +74,10 @@ const gls_scene *gls_renderer_scene(const gls_renderer *r);
  * seen by view through P, into whatever framebuffer is bound; the near
  * items as the colour pass being prepared placed them. */
 void gls_render_depth_only(gls_renderer *r, const gls_camera *view, const double P[16]);
-/* The context r was created in (for GL entry points a pass loads itself). */
-gls_glctx *gls_renderer_glctx(const gls_renderer *r);
+/* r's table of GL entry points beyond GL 1.1 (glcalls.h), for the passes
+ * that draw with it (gt_pass.c). */
+typedef struct gls_glext gls_glext;
+const gls_glext *gls_renderer_gl(const gls_renderer *r);
 /* One extension's state hangs off the renderer (the ground-truth pass's
  * program and framebuffer): set replaces (and frees) the previous one;
  * ext_free(ext) runs at gls_renderer_destroy, while the context lives. */

@@ -16,18 +16,8 @@
 #include "shadows_cube.h"
 #include "vec.h"
 
-#define SHADOW_GLFUNCS(X)                                           \
-    X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                  \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)            \
-    X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                  \
-    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)        \
-    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)    \
-    X(PFNGLACTIVETEXTUREPROC, glActiveTexture)
-
 struct gls_shadows {
-#define SHADOW_X_FN(type, name) type name;
-    SHADOW_GLFUNCS(SHADOW_X_FN)
-#undef SHADOW_X_FN
+    const gls_glext *gl; /* the renderer's GL beyond 1.1 (glcalls.h) */
     uint32_t n, res;
     GLuint fbo[GLS_MAX_LIGHTS], tex[GLS_MAX_LIGHTS];
     float S[16 * GLS_MAX_LIGHTS], bias[GLS_MAX_LIGHTS];
@@ -204,11 +194,11 @@ static int depth_target(gls_shadows *sh, uint32_t i, GLenum target, GLint wrap, 
     glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
     glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
-    sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[i]);
-    sh->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, attach, sh->tex[i], 0);
+    sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[i]);
+    sh->gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, attach, sh->tex[i], 0);
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
-    return sh->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE;
+    return sh->gl->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE;
 }
 
 /* Slot i's cube map: six res x res float depth faces, compared like the
@@ -233,11 +223,11 @@ static void cube_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene
     double P[16];
     double near = gls_cube_near(s, X);
     gls_cube_projection(near, P);
-    sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[n]);
+    sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[n]);
     glViewport(0, 0, (GLsizei)sh->res, (GLsizei)sh->res);
     for (int f = 0; f < 6; f++) {
         gls_camera fc;
-        sh->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f,
+        sh->gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f,
                                    sh->tex[n], 0);
         glClear(GL_DEPTH_BUFFER_BIT);
         gls_cube_face_camera(X, f, near, &fc);
@@ -248,22 +238,14 @@ static void cube_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene
     sh->cnear[n] = (float)near;
 }
 
-gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen)
+gls_shadows *gls_shadows_create(const gls_glext *gl, const gls_scene *s, char *err, size_t errlen)
 {
     gls_shadows *sh = calloc(1, sizeof *sh);
     if (!sh) {
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
-#define SHADOW_X_LOAD(type, name)                                                                \
-    sh->name = (type)(uintptr_t)gls_glctx_proc(ctx, #name);                                      \
-    if (!sh->name) {                                                                             \
-        snprintf(err, errlen, "shadows: %s: GL function %s is missing", gls_glctx_backend(ctx), #name); \
-        free(sh);                                                                                \
-        return NULL;                                                                             \
-    }
-    SHADOW_GLFUNCS(SHADOW_X_LOAD)
-#undef SHADOW_X_LOAD
+    sh->gl = gl;
     sh->n = gls_lights_count(s);
     if (sh->n > GLS_MAX_LIGHTS)
         sh->n = GLS_MAX_LIGHTS; /* refused by gls_lighting_create */
@@ -277,15 +259,15 @@ gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, s
         GLint units = 0;
         glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
         if (units < 1 + 2 * GLS_MAX_LIGHTS) {
-            snprintf(err, errlen, "shadows: %s: point lights' cube maps need %d texture units, GL has %d",
-                     gls_glctx_backend(ctx), 1 + 2 * GLS_MAX_LIGHTS, units);
+            snprintf(err, errlen, "shadows: point lights' cube maps need %d texture units, GL has %d",
+                     1 + 2 * GLS_MAX_LIGHTS, units);
             free(sh);
             return NULL;
         }
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS); /* PCF across the faces' edges */
     }
     glGenTextures((GLsizei)sh->n, sh->tex);
-    sh->glGenFramebuffers((GLsizei)sh->n, sh->fbo);
+    sh->gl->glGenFramebuffers((GLsizei)sh->n, sh->fbo);
     GLint prev = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev);
     int bad = 0;
@@ -302,7 +284,7 @@ gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, s
         bad = depth_target(sh, i, GL_TEXTURE_2D, GL_CLAMP_TO_BORDER, GL_TEXTURE_2D);
     }
     glBindTexture(GL_TEXTURE_2D, 0);
-    sh->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
+    sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
     if (bad || glGetError() != GL_NO_ERROR) {
         while (glGetError() != GL_NO_ERROR)
             ;
@@ -337,7 +319,7 @@ void gls_shadows_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene
         gls_light_world(s, l, L);
         double len = sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
         gls_shadow_view v;
-        sh->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[n]);
+        sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, sh->fbo[n]);
         glViewport(0, 0, (GLsizei)sh->res, (GLsizei)sh->res);
         glClear(GL_DEPTH_BUFFER_BIT);
         if (len > 0 && (L[0] /= len, L[1] /= len, L[2] /= len, gls_shadow_fit(s, L, vis, sh->res, &v) == 0)) {
@@ -356,7 +338,7 @@ void gls_shadows_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene
         }
         n++;
     }
-    sh->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
+    sh->gl->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev);
     glViewport(vp[0], vp[1], vp[2], vp[3]);
     if (scissor)
         glEnable(GL_SCISSOR_TEST);
@@ -381,14 +363,14 @@ void gls_shadows_bind(const gls_shadows *sh)
 {
     for (uint32_t i = 0; i < sh->n; i++) {
         if (sh->cube[i]) {
-            sh->glActiveTexture(GL_TEXTURE1 + GLS_MAX_LIGHTS + i);
+            sh->gl->glActiveTexture(GL_TEXTURE1 + GLS_MAX_LIGHTS + i);
             glBindTexture(GL_TEXTURE_CUBE_MAP, sh->tex[i]);
             continue;
         }
-        sh->glActiveTexture(GL_TEXTURE1 + i);
+        sh->gl->glActiveTexture(GL_TEXTURE1 + i);
         glBindTexture(GL_TEXTURE_2D, sh->tex[i]);
     }
-    sh->glActiveTexture(GL_TEXTURE0);
+    sh->gl->glActiveTexture(GL_TEXTURE0);
 }
 
 void gls_shadows_destroy(gls_shadows *sh)
@@ -396,7 +378,7 @@ void gls_shadows_destroy(gls_shadows *sh)
     if (!sh)
         return;
     if (sh->n) {
-        sh->glDeleteFramebuffers((GLsizei)sh->n, sh->fbo);
+        sh->gl->glDeleteFramebuffers((GLsizei)sh->n, sh->fbo);
         glDeleteTextures((GLsizei)sh->n, sh->tex);
     }
     free(sh);

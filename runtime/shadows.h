@@ -16,7 +16,6 @@
 
 #include <stdio.h>
 #include "camera.h"
-#include "glctx.h"
 #include "scene.h"
 
 /* The bias, in units of a map texel's world size t, added to the depth of
@@ -54,10 +53,12 @@ void gls_shadow_matrix(const gls_shadow_view *v, const gls_camera *c, double S[1
 typedef struct gls_shadows gls_shadows;
 struct gls_renderer;
 
-/* The maps of s's directional and point lights, res = s->shadow_res;
- * NULL with a message when there is too little memory or GL lacks
- * something. */
-gls_shadows *gls_shadows_create(gls_glctx *ctx, const gls_scene *s, char *err, size_t errlen);
+/* The maps of s's directional and point lights, res = s->shadow_res,
+ * made with the renderer's GL entry points gl (glcalls.h; they must
+ * outlive them); NULL with a message when there is too little memory or
+ * GL lacks something. */
+typedef struct gls_glext gls_glext;
+gls_shadows *gls_shadows_create(const gls_glext *gl, const gls_scene *s, char *err, size_t errlen);
 /* Draw every map for camera c, whose draw items vis marks (NULL: all);
  * restores the framebuffer, viewport and scissor it found. */
 void gls_shadows_render(gls_shadows *sh, struct gls_renderer *r, const gls_scene *s, const gls_camera *c,

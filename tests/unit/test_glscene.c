@@ -218,6 +218,78 @@ static void test_glscene_errors(void)
     CHECK_STR(e2.message, "glscene_open: options: backend 0 or pattern 7 is not one of the enum's values");
 }
 
+/* glsplay's full options (glscene_play_*): arguments taken one at a time
+ * with glsplay's words, the checks between them, and a run that writes
+ * files and says what went wrong on the stream it is given. */
+static void test_glscene_play(void)
+{
+    glscene_error e;
+    glscene_play *r = glscene_play_new();
+    CHECK(r != NULL);
+    if (!r)
+        return;
+    CHECK(glscene_play_check(r, &e) == -1);
+    CHECK_STR(e.message, "no bundle given");
+    CHECK(glscene_play_arg(r, "--aa", "4", &e) == 2);
+    CHECK(glscene_play_arg(r, "--explain", "--aa", &e) == 1);
+    CHECK(glscene_play_arg(r, "--progress", "json", &e) == 2);
+    CHECK(glscene_play_arg(r, "--progress", "x.glsb", &e) == 1);
+    CHECK(glscene_play_arg(r, "--aa", "0", &e) == -1);
+    CHECK_STR(e.message, "--aa needs N in 1..4096, got '0'");
+    CHECK(glscene_play_arg(r, "--camera", NULL, &e) == -1);
+    CHECK_STR(e.message, "--camera needs a camera file");
+    CHECK(glscene_play_arg(r, "--bogus", NULL, &e) == -1);
+    CHECK_STR(e.message, "unknown option '--bogus'");
+    CHECK(glscene_play_arg(r, NULL, NULL, &e) == -2);
+    /* the whole message, however long the value echoed; e has what fits */
+    static char big[3000];
+    memset(big, '9', sizeof big - 1);
+    CHECK(glscene_play_arg(r, "--aa", big, &e) == -1);
+    CHECK(strlen(glscene_play_message(r)) == strlen("--aa needs N in 1..4096, got ''") + sizeof big - 1);
+    CHECK(strlen(e.message) == sizeof e.message - 1 && strncmp(e.message, glscene_play_message(r), 1023) == 0);
+    glscene_play_free(r);
+
+    /* a run: the depth file is written; a missing camera is an input error */
+    char cam[160], out[160], depth[200], missing[160];
+    snprintf(cam, sizeof cam, "%s/p.cam", dir);
+    snprintf(out, sizeof out, "%s/play", dir);
+    snprintf(depth, sizeof depth, "%s/play/p/depth_000000.pfm", dir);
+    snprintf(missing, sizeof missing, "%s/none.cam", dir);
+    write_file("p.cam", "width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\n"
+                        "far 100\n");
+    for (int k = 0; k < 2; k++) {
+        const char *args[] = {bundle, "--camera", k ? missing : cam, "-o", out, "--outputs", "depth"};
+        r = glscene_play_new();
+        int rc = 0;
+        for (int i = 0, n = 0; i < 7 && rc == 0; i += n)
+            if ((n = glscene_play_arg(r, args[i], i + 1 < 7 ? args[i + 1] : NULL, &e)) < 0)
+                rc = -1;
+        CHECK_MSG(rc == 0 && glscene_play_check(r, &e) == 0, "%s", e.message);
+        FILE *o = tmpfile(), *errs = tmpfile();
+        char msg[512] = "";
+        CHECK(o && errs);
+        if (o && errs) {
+            rc = glscene_play_run(r, o, errs);
+            rewind(errs);
+            if (!fgets(msg, sizeof msg, errs))
+                msg[0] = 0;
+        }
+        if (k == 0) {
+            CHECK_MSG(rc == 0 && msg[0] == 0, "%d %s", rc, msg);
+            CHECK(access(depth, R_OK) == 0);
+        } else {
+            char want[300];
+            snprintf(want, sizeof want, "%s: error: cannot open: ", missing);
+            CHECK_MSG(rc == 1 && strncmp(msg, want, strlen(want)) == 0, "%d %s", rc, msg);
+        }
+        if (o)
+            fclose(o);
+        if (errs)
+            fclose(errs);
+        glscene_play_free(r);
+    }
+}
+
 int main(void)
 {
     make_scene();
@@ -226,6 +298,7 @@ int main(void)
     RUN(test_glscene_move);
     RUN(test_glscene_aa);
     RUN(test_glscene_errors);
+    RUN(test_glscene_play);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     if (system(cmd)) {
