@@ -93,22 +93,24 @@ awk -F'|' -v f="$CASES" '
     }
     END { exit bad }' "$CASES" >"$t/cases" || die "malformed $CASES"
 
-# bundle SIDE SCENE NAME: the bundle of a scene; road:FILE is FILE, which
-# calls the road (unit "road"), compiled by this build once per case
+# bundle SIDE SCENE: the bundle of a scene; road:FILE is FILE, which calls
+# the road (unit "road"), compiled by this build once, into a bundle named
+# after FILE's whole path
 bundle() {
     case $2 in
     road | terrain) echo "$t/$1/$2.glsb" ;;
     road:*)
-        [ -s "$t/$1/case_$3.glsb" ] || "$NEW/glsc" -I "$NEW/scenelib.glsb" -I "$t/road" -o "$t/$1/case_$3.glsb" \
-            "${2#road:}" >&2 || die "case $3: glsc failed on ${2#road:}"
-        echo "$t/$1/case_$3.glsb" ;;
+        b_out="$t/$1/scene_$(echo "${2#road:}" | tr -c 'A-Za-z0-9_\n' '_').glsb"
+        [ -s "$b_out" ] || "$NEW/glsc" -I "$NEW/scenelib.glsb" -I "$t/road" -o "$b_out" "${2#road:}" >&2 ||
+            die "case $name: glsc failed on ${2#road:}"
+        echo "$b_out" ;;
     esac
 }
-# args SIDE SCENE [NAME]: the glsplay arguments of a scene's plain run, less
-# the camera
+# args SIDE SCENE: the glsplay arguments of a scene's plain run, less the
+# camera
 args() {
     case $2 in
-    road*) echo "$(bundle "$1" "$2" "$3") --trajectory $t/road/trajectory.txt --background 0.55,0.7,0.9" ;;
+    road*) echo "$(bundle "$1" "$2") --trajectory $t/road/trajectory.txt --background 0.55,0.7,0.9" ;;
     terrain) echo "$t/$1/terrain.glsb --trajectory $t/$1/trajectory.txt" ;;
     esac
 }
@@ -129,7 +131,7 @@ camera() {
 while IFS='|' read -r name cscene keys opts; do
     [ "$keys" = - ] || [ -r "$keys" ] || die "case $name: no camera keys file $keys"
     case $cscene in road:*) [ -r "${cscene#road:}" ] || die "case $name: no scene file ${cscene#road:}" ;; esac
-    bundle new "$cscene" "$name" >/dev/null || exit 1
+    bundle new "$cscene" >/dev/null || exit 1
 done <"$t/cases"
 # the CPU time of a run too (user + system, GL's threads included), which
 # other work on the machine disturbs less than the wall time
@@ -176,7 +178,11 @@ if [ -n "$CHECK" ]; then
         # shellcheck disable=SC2086
         once "$NEW" new "$cscene" "$ccam" $opts >/dev/null || exit 1
         [ -s "$t/out/cam/image_00000$FIRST.png" ] || die "case $name: no image"
-        echo "ok case $name ($cscene)"
+        # the plan's top object: that the case drew its own scene
+        # shellcheck disable=SC2046
+        top=$("$NEW/glsplay" $(args new "$cscene") --camera "$ccam" --explain 2>/dev/null |
+            sed -n "s/^plan for .*: top object '\([^']*\)'.*/\1/p")
+        echo "ok case $name ($cscene): top object $top"
         n=$((n + 1))
     done <"$t/cases"
     echo "$n cases of $CASES render"
