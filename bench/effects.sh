@@ -180,7 +180,7 @@ if [ -n "$CHECK" ]; then
         [ -s "$t/out/cam/image_00000$FIRST.png" ] || die "case $name: no image"
         # the plan's top object: that the case drew its own scene
         # shellcheck disable=SC2046
-        top=$("$NEW/glsplay" $(args new "$cscene") --camera "$ccam" --explain 2>/dev/null |
+        top=$("$NEW/glsplay" $(args new "$cscene") --camera "$ccam" --outputs image --explain 2>/dev/null |
             sed -n "s/^plan for .*: top object '\([^']*\)'.*/\1/p")
         echo "ok case $name ($cscene): top object $top"
         n=$((n + 1))

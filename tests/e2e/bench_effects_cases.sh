@@ -1,6 +1,7 @@
 #!/bin/sh
 # make bench-effects' cases (bench/effects.cases): the file parses, every
-# case's keys file and scene exist, and each case renders one 64x48 frame
+# case's keys file and scene exist, and each case renders one 64x48 frame of
+# its own scene (the plan's top object)
 # through bench/effects.sh's own functions (--check: no timing asserted).
 # A broken case (a missing keys file, keys glsplay refuses, a line of three
 # fields, a scene file that does not compile) fails with its reason.  Not
@@ -13,15 +14,19 @@ trap 'rm -rf "$t"' EXIT
 ok() { echo "ok $1"; }
 fail() { echo "FAIL $1: $2"; }
 
-# every case line renders: as many "ok case" lines as case lines, each name
+# every case line renders: as many "ok case" lines as case lines, each case
+# with its own scene (the plan's top object: road, terrain, or FILE's name
+# for road:FILE)
 sh bench/effects.sh --check "$BIN" >"$t/out" 2>"$t/err"
 rc=$?
 want=$(grep -cv '^[[:space:]]*\(#\|$\)' bench/effects.cases)
 got=$(grep -c '^ok case ' "$t/out")
 missing=""
-for n in $(grep -v '^[[:space:]]*\(#\|$\)' bench/effects.cases | cut -d'|' -f1); do
-    grep -q "^ok case $n (" "$t/out" || missing="$missing $n"
-done
+grep -v '^[[:space:]]*\(#\|$\)' bench/effects.cases | tr -d ' ' | cut -d'|' -f1,2 | tr '|' ' ' >"$t/names"
+while read -r n sc; do
+    case $sc in road:*) top=$(basename "${sc#road:}" .scene) ;; *) top=$sc ;; esac
+    grep -qxF "ok case $n ($sc): top object $top" "$t/out" || missing="$missing $n ($sc, top object $top)"
+done <"$t/names"
 if [ $rc -eq 0 ] && [ "$want" -gt 0 ] && [ "$got" -eq "$want" ] && [ -z "$missing" ]; then
     ok bench_effects_cases_render
 else
