@@ -104,7 +104,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
-.PHONY: gallery-truth gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
+.PHONY: gallery-truth gallery-effects gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
 all: $(TOOLS) $(SCENELIB) $(GLSCENE_LIBS)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -337,6 +337,11 @@ gallery: demo $(B)/pnghalf
 	cp out/demo/left/depth_000000_view.png docs/demo_left_depth.png
 	cp out/demo/left_sensor/image_000000.png docs/demo_left_sensor.png
 	cp out/gallery/ex_*.png docs/
+	@$(MAKE) --no-print-directory gallery-effects
+
+# The README's rows of camera effects (docs/effects_*.png): exposure, lens
+# distortion and shadows on the demo's left camera.
+gallery-effects: all $(B)/pnghalf
 	sh bench/effects_o9/gallery.sh $(B) docs
 
 # make install PREFIX=/usr/local DESTDIR=: the tools into PREFIX/bin, the

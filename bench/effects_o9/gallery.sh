@@ -1,12 +1,23 @@
 #!/bin/sh
-# The README's gallery row of camera effects (spec/camera.md "Motion blur,
-# rolling shutter, depth of field"): the demo's left camera on a rig,
-# frame 1, --aa 2, halved to 320x240 into DIR/effects_{blur,rolling,dof}.png.
+# The README's gallery rows of camera effects, halved to 320x240 into DIR.
+# Run by make gallery.  usage: gallery.sh BIN DIR
+#
+# Exposure (spec/camera.md "Motion blur, rolling shutter, depth of
+# field"): the demo's left camera on a rig, frame 1, --aa 2, into
+# DIR/effects_{blur,rolling,dof}.png.
 #   motion blur:     driving forward 0.5 m a frame (traj.txt), shutter 1
 #   rolling shutter: panning 4 degrees a frame (pan.txt), line_delay 1/480
 #                    (the readout takes 0.96 frame intervals)
 #   depth of field:  aperture 0.1 m, focus 6 m
-# Run by make gallery.  usage: gallery.sh BIN DIR
+# Lens and light (spec/camera.md "Lens distortion", "Shadows"): the demo's
+# left camera (examples/demo/left.cam), frame 0, --aa 2, into
+# DIR/effects_{distortion,fisheye,shadows}.png.
+#   distortion:      Brown-Conrady k1 = -0.3 (bench/effects/distortion.keys)
+#   fisheye:         an equisolid-angle fisheye, f = 350 px, 109 degrees
+#                    across (bench/effects/fisheye.keys)
+#   shadows:         the demo under a sun casting shadows through a 2048 x
+#                    2048 map and a sky (bench/effects/DemoShadows.scene)
+# The lens cases are make bench-effects' own keys files (bench/effects.cases).
 set -e
 B=$1 DIR=$2 H=bench/effects_o9
 t=$(mktemp -d)
@@ -22,3 +33,12 @@ for c in blur:traj rolling:pan dof:traj; do
         --outputs image -o "$t/out"
     "$B/pnghalf" "$t/out/$cam/image_000001.png" "$DIR/effects_$cam.png"
 done
+for lens in distortion fisheye; do
+    sh bench/effects/with_keys.sh examples/demo/left.cam "bench/effects/$lens.keys" >"$t/$lens.cam"
+    "$B/glsplay" "$t/demo.glsb" --camera "$t/$lens.cam" --aa 2 --background 0.55,0.7,0.9 --outputs image -o "$t/out"
+    "$B/pnghalf" "$t/out/$lens/image_000000.png" "$DIR/effects_$lens.png"
+done
+"$B/glsc" -I examples/demo -I "$B/textures" -I bench/effects bench/effects/DemoShadows.scene -o "$t/shadows.glsb" 2>/dev/null
+cp examples/demo/left.cam "$t/shadows.cam"
+"$B/glsplay" "$t/shadows.glsb" --camera "$t/shadows.cam" --aa 2 --background 0.55,0.7,0.9 --outputs image -o "$t/out"
+"$B/pnghalf" "$t/out/shadows/image_000000.png" "$DIR/effects_shadows.png"
