@@ -37,6 +37,20 @@ echo 'pose rig' >>"$t/rig/lens.cam"
 # flow and boxes through a lens (tests/py/check_lens_flow_boxes.py, against cv2)
 $PY tests/py/check_lens_flow_boxes.py "$BIN" "$BIN/scenelib.glsb" "$t/fb" ||
     echo "FAIL lens_flow_boxes: check_lens_flow_boxes.py exited with status $?"
+# ground truth is never blended: flow and boxes through the lens are the
+# same files with --aa (tests/py/flow_scene.py's scene)
+mkdir "$t/aa" && $PY tests/py/flow_scene.py "$t/aa" &&
+    "$BIN/glsc" -I "$BIN/scenelib.glsb" -o "$t/aa/f.glsb" "$t/aa/Flow.scene" 2>"$t/err" &&
+    { cat "$t/aa/cam.cam"; echo 'fisheye 0.05 -0.01 0.002 -0.0004'; } >"$t/aa/fish.cam" || echo "FAIL lens_aa_setup: $(cat "$t/err")"
+for a in 1 3; do
+    "$BIN/glsplay" "$t/aa/f.glsb" --camera "$t/aa/fish.cam" --trajectory "$t/aa/trajectory.txt" \
+        --motion "mover=$t/aa/mover.txt" --outputs image,flow,boxes --aa $a -o "$t/aa/o$a" 2>/dev/null
+done
+same=1
+for f in flow_000000.flo flow_000000.png flowmask_000000.png boxes_000000.json boxes_000001.txt; do
+    [ -f "$t/aa/o1/fish/$f" ] && cmp -s "$t/aa/o1/fish/$f" "$t/aa/o3/fish/$f" || same=0
+done
+[ $same = 1 ] && echo "ok lens_flow_boxes_same_with_aa" || echo "FAIL lens_flow_boxes_same_with_aa: files differ or missing"
 # --explain says how flow and boxes are made through the lens
 "$BIN/glsplay" "$t/tri.glsb" --camera "$t/rig/lens.cam" --trajectory "$t/traj.txt" --outputs flow,boxes --explain \
     >"$t/plan" 2>&1

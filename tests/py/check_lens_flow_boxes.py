@@ -154,6 +154,9 @@ def check_flow_lens(lens, out):
         bad = use & (err > bound)
         n = int(use.sum())
         worst = float(err[use].max()) if n else float('nan')
+        if n:
+            print('  %s frame %d: %d pixels, largest error %.4g px, largest bound %.4g px, median bound %.4g px'
+                  % (lens, k, n, worst, float(bound[use].max()), float(np.median(bound[use]))))
         result('lens_flow_%s_%d' % (lens, k), n > 20000 and not bad.any() and (what[use] == 3).sum() > 300,
                '%d of %d pixels beyond their bound (largest error %.4g px, largest bound %.4g)'
                % (int(bad.sum()), n, worst, float(bound[use].max()) if n else float('nan')))
