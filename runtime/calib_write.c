@@ -113,6 +113,41 @@ static int cv_matrix(gls_buf *b, const char *key, const double *v, int rows, int
            nums(b, v, (size_t)rows * cols, ", ", NUM_YAML) || putf(b, " ]\n");
 }
 
+/* The camera's effects (spec/camera.md "OpenCV camera files"), under the
+ * .cam file's key names, only those it has: nothing for a camera without.
+ * Words and vignetting's "poly a1 a2 a3" are strings, as cv::FileStorage
+ * writes them; noise_seed too, quoted: OpenCV reads a bare number above
+ * 2^31 - 1 wrongly, and a seed is a 64-bit whole number. */
+static int opencv_effects(gls_buf *b, const gls_camera *c)
+{
+    const gls_sensor *se = &c->sensor;
+    int e = 0;
+    if (se->vignetting == GLS_VIGNETTING_COS4)
+        e = e || putf(b, "vignetting: cos4\n");
+    if (se->vignetting == GLS_VIGNETTING_POLY)
+        e = e || putf(b, "vignetting: \"poly ") || nums(b, se->poly, 3, " ", NUM_PLAIN) || putf(b, "\"\n");
+    if (se->on & GLS_SENSOR_GAIN)
+        e = e || putf(b, "gain: ") || num(b, se->gain, NUM_YAML) || putf(b, "\n");
+    if (se->on & GLS_SENSOR_SHOT)
+        e = e || putf(b, "shot_noise: ") || num(b, se->shot_k, NUM_YAML) || putf(b, "\n");
+    if (se->on & GLS_SENSOR_READ)
+        e = e || putf(b, "read_noise: ") || num(b, se->read_sigma, NUM_YAML) || putf(b, "\n");
+    if (se->on & GLS_SENSOR_NOISE)
+        e = e || putf(b, "noise_seed: \"%llu\"\n", (unsigned long long)se->seed);
+    if (se->on & GLS_SENSOR_BAYER)
+        e = e || putf(b, "bayer: %s\n", se->bayer);
+    const struct {
+        const char *key;
+        double v;
+    } fx[] = {{"shutter", c->shutter}, {"line_delay", c->line_delay}, {"aperture", c->aperture}, {"focus", c->focus}};
+    for (size_t i = 0; i < sizeof fx / sizeof fx[0]; i++)
+        if (fx[i].v > 0)
+            e = e || putf(b, "%s: ", fx[i].key) || num(b, fx[i].v, NUM_YAML) || putf(b, "\n");
+    if (c->exposure_samples)
+        e = e || putf(b, "exposure_samples: %u\n", c->exposure_samples);
+    return e ? -1 : 0;
+}
+
 int gls_calib_opencv_yaml(gls_buf *b, const gls_camera *c, const char *name, uint32_t frame)
 {
     double K[9], D[8];
@@ -125,7 +160,7 @@ int gls_calib_opencv_yaml(gls_buf *b, const gls_camera *c, const char *name, uin
            (c->dist.model == GLS_LENS_FISHEYE && putf(b, "distortion_model: fisheye\n")) ||
            cv_matrix(b, "R", c->R, 3, 3) || cv_matrix(b, "T", c->T, 3, 1) || putf(b, "near: ") ||
            num(b, c->near, NUM_YAML) || putf(b, "\nfar: ") || num(b, c->far, NUM_YAML) ||
-           putf(b, "\npose: world\n");
+           putf(b, "\npose: world\n") || opencv_effects(b, c);
 }
 
 int gls_calib_kitti(gls_buf *b, const gls_camera *cams, size_t n)

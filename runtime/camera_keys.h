@@ -15,7 +15,7 @@ enum {
     K_DIST, /* Brown-Conrady k1 k2 p1 p2 [k3 [k4 k5 k6]]          */
     K_FISHEYE, /* cv::fisheye k1 k2 k3 k4, instead of K_DIST      */
     /* optional effects (spec/camera.md "Motion blur, rolling shutter,
-     * depth of field"); .cam files only */
+     * depth of field"); OpenCV YAML nodes of the same names too */
     K_SHUTTER, K_LINE_DELAY, K_APERTURE, K_FOCUS, K_EXPOSURE_SAMPLES,
     K_COUNT
 };

@@ -10,6 +10,7 @@
 #include <string.h>
 #include "camera_keys.h"
 #include "numfmt.h"
+#include "sensor_keys.h"
 #include "srcline.h"
 #include "textfile.h"
 
@@ -25,6 +26,10 @@ static const char *const yname[Y_COUNT] = {
     [K_RVEC] = "rvec",         [K_T] = "T",                 [K_NEAR] = "near",       [K_FAR] = "far",
     [K_POSE] = "pose",         [K_DIST] = "distortion_coefficients",                 [Y_TVEC] = "tvec",
     [Y_DMODEL] = "distortion_model",
+    /* the effects, under the .cam file's names (spec/camera.md "OpenCV
+     * camera files"); the sensor's keys are read apart (sensor_value) */
+    [K_SHUTTER] = "shutter", [K_LINE_DELAY] = "line_delay", [K_APERTURE] = "aperture", [K_FOCUS] = "focus",
+    [K_EXPOSURE_SAMPLES] = "exposure_samples",
     /* not keys of the file; named in messages about K's entries */
     [K_FX] = "fx", [K_FY] = "fy", [K_CX] = "cx", [K_CY] = "cy", [K_SKEW] = "skew"};
 /* OpenCV's distortion coefficients, in its order */
@@ -211,6 +216,25 @@ static int scalar(const src *s, gls_camera_keys *keys, int k, char *v, unsigned 
     return why ? fail(s, line, vc, "key '%s': '%s' %s", yname[k], v, why) : 0;
 }
 
+/* A sensor key's line (sensor_keys.h): its value, quoted or not, split
+ * into words in place (the quotes blanked, so columns stay the line's)
+ * and checked by the .cam file's own code, with its messages. */
+#define SENSOR_MAX_WORDS 8
+static int sensor_value(const src *s, gls_sensor_keys *sk, int key, char *buf, char *name, char *v, unsigned line)
+{
+    char *end = NULL;
+    if (*v == '"' && (end = strchr(v + 1, '"')) != NULL) {
+        *v = ' ', *end = 0;
+    } else {
+        v[strcspn(v, "#")] = 0;
+    }
+    char *tok[SENSOR_MAX_WORDS + 1];
+    tok[0] = name;
+    int nt = 1 + gls_text_split(v, "", " \t", tok + 1, SENSOR_MAX_WORDS);
+    return gls_sensor_key_parse(sk, key, tok, nt, nt > SENSOR_MAX_WORDS, buf, line, s->text, s->len, s->fname,
+                                s->err, s->errlen);
+}
+
 /* distortion_model: which model the coefficients are for (spec/camera.md
  * "OpenCV camera files"): plumb_bob or rational_polynomial (cv::projectPoints,
  * the default) or fisheye / equidistant (cv::fisheye); ROS's names. */
@@ -238,6 +262,8 @@ int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls
     gls_camera_keys keys = zero;
     unsigned seen[Y_COUNT] = {0}, last = 1;
     int fisheye = 0; /* distortion_model: fisheye (or equidistant) */
+    gls_sensor_keys sensor; /* the sensor's keys, read apart (sensor_keys.h) */
+    gls_sensor_keys_init(&sensor);
     matrix m = {.key = -1};
     int skipping = 0; /* inside the value of a key glsplay does not read */
     gls_text_lines it = {text, len, 0, 0};
@@ -279,6 +305,13 @@ int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls
         char *v = colon + 1;
         v += strspn(v, " \t");
         unsigned vc = (unsigned)(v - buf) + 1;
+        int sk = gls_sensor_key(p);
+        if (sk >= 0) {
+            if (sensor_value(&s, &sensor, sk, buf, p, v, line))
+                return -1;
+            last = line;
+            continue;
+        }
         int k;
         for (k = 0; k < Y_COUNT; k++)
             if (yname[k] && k != K_FX && k != K_FY && k != K_CX && k != K_CY && k != K_SKEW &&
@@ -348,5 +381,8 @@ int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls
     names[K_FISHEYE] = yname[K_DIST];
     if (seen[Y_TVEC])
         names[K_T] = "tvec";
-    return gls_camera_from_keys(&keys, names, text, len, fname, use, notes, cam, err, errlen);
+    if (gls_camera_from_keys(&keys, names, text, len, fname, use, notes, cam, err, errlen))
+        return -1;
+    cam->sensor = sensor.s;
+    return 0;
 }

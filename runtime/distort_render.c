@@ -174,6 +174,11 @@ static size_t nearest(const gls_camera *f, double x, double y)
     return j * f->width + i;
 }
 
+size_t gls_distort_frame_nearest(const gls_distort_frame *fr, size_t i)
+{
+    return nearest(&fr->lay.fine, fr->ray[2 * i], fr->ray[2 * i + 1]);
+}
+
 void gls_distort_frame_centre(const gls_distort_frame *fr, const gls_camera *c, uint8_t *rgba, float *z)
 {
     const gls_camera *f = &fr->lay.fine;
@@ -184,20 +189,6 @@ void gls_distort_frame_centre(const gls_distort_frame *fr, const gls_camera *c, 
             memcpy(rgba + 4 * i, fr->rgba + 4 * k, 4);
         if (z)
             z[i] = fr->z[k];
-    }
-}
-
-void gls_distort_frame_gather(const gls_distort_frame *fr, const gls_camera *c, const uint32_t *fine_ids,
-                              const float *fine_normals, uint32_t *ids, float *normals)
-{
-    const gls_camera *f = &fr->lay.fine;
-    size_t n = (size_t)c->width * c->height;
-    for (size_t i = 0; i < n; i++) {
-        size_t k = nearest(f, fr->ray[2 * i], fr->ray[2 * i + 1]);
-        if (ids)
-            ids[i] = fine_ids[k];
-        if (normals)
-            memcpy(normals + 3 * i, fine_normals + 3 * k, 3 * sizeof *normals);
     }
 }
 

@@ -68,13 +68,10 @@ int gls_distort_frame_render(gls_distort_frame *f, gls_renderer *r, const gls_ca
  * rgba (W x H RGBA8) and/or depth into z; either may be NULL. */
 void gls_distort_frame_centre(const gls_distort_frame *f, const gls_camera *c, uint8_t *rgba, float *z);
 
-/* The ground-truth pass's images (gt_pass.h) drawn through the plain fine
- * camera (lay.fine, the same pose: its camera-frame normals are c's), read
- * at the pixel centres as gls_distort_frame_centre reads depth: the
- * nearest fine pixel, never blended.  ids and/or normals (NULL: not
- * wanted) are W x H (x 3). */
-void gls_distort_frame_gather(const gls_distort_frame *f, const gls_camera *c, const uint32_t *fine_ids,
-                              const float *fine_normals, uint32_t *ids, float *normals);
+/* The plain fine image's pixel nearest to image pixel i's centre ray
+ * (index into lay.fine's pixels): the rule every ground truth through the
+ * lens reads by. */
+size_t gls_distort_frame_nearest(const gls_distort_frame *f, size_t i);
 
 /* The plan's samples through the lens, bilinear in the anti-aliased fine
  * image, into acc (initialised for c's size).  -1 when out of memory. */

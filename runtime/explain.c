@@ -3,7 +3,9 @@
 #include <stdlib.h>
 #include "aa_onepass.h"
 #include "aa_render.h"
+#include "distort.h"
 #include "distort_render.h"
+#include "lens_truth.h"
 #include "exposure.h"
 #include "lighting.h"
 #include "shadows.h"
@@ -251,5 +253,12 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         if (outputs & GLS_OUT_BOXES_ALL)
             fprintf(out, "  boxes: the ground-truth pass's instance ids and one pass per visible instance drawn "
                          "alone (its occlusion); writes boxes (KITTI labels, JSON)\n");
+        if (gls_distort_on(c) && (outputs & GLS_OUT_FLOW_ALL))
+            fprintf(out, "  lens: flow: the depth of frame t+1 drawn by the fine camera and read at each pixel "
+                         "centre's ray; points projected by the %s model\n", gls_distort_model_name(&c->dist));
+        if (gls_distort_on(c) && (outputs & GLS_OUT_BOXES_ALL))
+            fprintf(out, "  lens: boxes: each instance drawn alone by the fine camera and read at each pixel "
+                         "centre's ray; truncated from %d points an edge through the %s model\n",
+                    GLS_LENS_BOX_EDGE_STEPS + 1, gls_distort_model_name(&c->dist));
     }
 }

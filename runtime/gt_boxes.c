@@ -71,6 +71,18 @@ static rv3 to_cam(const gls_camera *c, rv3 p)
     return rv(q.x + c->T[0], q.y + c->T[1], q.z + c->T[2]);
 }
 
+double gls_box_truncation_of(const gls_camera *c, double u0, double v0, double u1, double v1)
+{
+    if (!(u1 >= u0 && v1 >= v0))
+        return 1; /* wholly nearer than near */
+    double area = (u1 - u0) * (v1 - v0);
+    if (!(area > 0))
+        return 0;
+    double iu = fmin(u1, c->width - 0.5) - fmax(u0, -0.5), iv = fmin(v1, c->height - 0.5) - fmax(v0, -0.5);
+    double in = iu > 0 && iv > 0 ? iu * iv : 0;
+    return 1 - in / area;
+}
+
 /* Fraction of the 3D box's image outside the image: the bounding
  * rectangle of its corners' projections (the box clipped at the near
  * plane first) against the image's [-0.5, W - 0.5] x [-0.5, H - 0.5]. */
@@ -98,14 +110,7 @@ static double truncation(const gls_camera *c, const double k[8][3])
             double u = (c->fx * p[0] + c->skew * p[1]) / p[2] + c->cx, v = c->fy * p[1] / p[2] + c->cy;
             u0 = fmin(u0, u), u1 = fmax(u1, u), v0 = fmin(v0, v), v1 = fmax(v1, v);
         }
-    if (!(u1 >= u0 && v1 >= v0))
-        return 1; /* wholly nearer than near */
-    double area = (u1 - u0) * (v1 - v0);
-    if (!(area > 0))
-        return 0;
-    double iu = fmin(u1, c->width - 0.5) - fmax(u0, -0.5), iv = fmin(v1, c->height - 0.5) - fmax(v0, -0.5);
-    double in = iu > 0 && iv > 0 ? iu * iv : 0;
-    return 1 - in / area;
+    return gls_box_truncation_of(c, u0, v0, u1, v1);
 }
 
 /* The angle in (-pi, pi]. */
@@ -168,7 +173,37 @@ static void box_3d(const gls_scene *s, const gls_camera *c, gls_box *b)
     /* + 0.0: no "-0" in the files */
     b->ry = (len[b->len] > 0 ? atan2(-d.z, d.x) : 0) + 0.0;
     b->alpha = wrap(b->ry - atan2(bot.x, bot.z)) + 0.0;
-    b->truncated = truncation(c, (const double(*)[3])b->corners);
+}
+
+int gls_boxes_base(const gls_scene *s, const gls_camera *c, const uint32_t *ids, gls_box **boxes, size_t *n)
+{
+    uint32_t w = c->width, h = c->height;
+    size_t np = (size_t)w * h, k = 0;
+    *boxes = NULL, *n = 0;
+    uint32_t *v = distinct_ids(ids, np, &k);
+    gls_box *b = k ? calloc(k, sizeof *b) : NULL;
+    uint32_t(*mm)[4] = k ? malloc(k * sizeof *mm) : NULL;
+    if (!v || (k && (!b || !mm))) {
+        free(v), free(b), free(mm);
+        return -1;
+    }
+    for (size_t j = 0; j < k; j++)
+        b[j].inst = v[j] - 1;
+    boxes_2d(ids, w, h, v, b, k, mm);
+    for (size_t j = 0; j < k; j++)
+        box_3d(s, c, &b[j]);
+    free(v), free(mm);
+    *boxes = b, *n = k;
+    return 0;
+}
+
+void gls_box_set_alone(gls_box *b, uint64_t alone)
+{
+    /* the same surfaces drawn alone: at least the pixels showing them,
+     * but GL may round an edge pixel differently */
+    b->alone = alone < b->pixels ? b->pixels : alone;
+    b->visible = (double)b->pixels / (double)b->alone;
+    b->occluded = gls_box_occlusion_level(b->visible);
 }
 
 int gls_boxes_compute(gls_renderer *r, const gls_scene *s, const gls_camera *c, const uint32_t *ids,
@@ -176,20 +211,15 @@ int gls_boxes_compute(gls_renderer *r, const gls_scene *s, const gls_camera *c, 
 {
     uint32_t w = c->width, h = c->height;
     size_t np = (size_t)w * h, k = 0;
-    *boxes = NULL, *n = 0;
-    uint32_t *v = distinct_ids(ids, np, &k);
-    gls_box *b = k ? calloc(k, sizeof *b) : NULL;
+    gls_box *b = NULL;
+    if (gls_boxes_base(s, c, ids, &b, &k))
+        return -1;
     uint8_t *vis = k ? calloc(s->nitems ? s->nitems : 1, 1) : NULL;
     float *z = k ? malloc(np * sizeof *z) : NULL;
-    uint32_t(*mm)[4] = k ? malloc(k * sizeof *mm) : NULL;
-    if (!v || (k && (!b || !vis || !z || !mm))) {
-        free(v), free(b), free(vis), free(z), free(mm);
+    if (k && (!vis || !z)) {
+        free(b), free(vis), free(z);
         return -1;
     }
-    for (size_t j = 0; j < k; j++)
-        b[j].inst = v[j] - 1;
-    boxes_2d(ids, w, h, v, b, k, mm);
-    free(mm);
     gls_render_prepare(r, c);
     static const double m[6] = {1, 0, 0.5, 0, 1, 0.5}; /* image (u, v) -> window (u + 1/2, v + 1/2) */
     const uint32_t sc[4] = {0, 0, w, h};
@@ -198,23 +228,19 @@ int gls_boxes_compute(gls_renderer *r, const gls_scene *s, const gls_camera *c, 
          * instance's items are not one run */
         for (uint32_t i = 0; i < s->nitems; i++)
             vis[i] = s->items[i].inst == b[j].inst;
-        box_3d(s, c, &b[j]);
+        b[j].truncated = truncation(c, (const double(*)[3])b[j].corners);
         gls_render_mapped(r, c, m, w, h, sc, vis);
         gls_render_read_z(r, z);
+        uint64_t alone = 0;
         for (size_t i = 0; i < np; i++)
-            b[j].alone += isfinite(z[i]) != 0;
-        /* the same surfaces drawn alone: at least the pixels showing
-         * them, but GL may round an edge pixel differently */
-        if (b[j].alone < b[j].pixels)
-            b[j].alone = b[j].pixels;
-        b[j].visible = (double)b[j].pixels / (double)b[j].alone;
-        b[j].occluded = gls_box_occlusion_level(b[j].visible);
+            alone += isfinite(z[i]) != 0;
+        gls_box_set_alone(&b[j], alone);
     }
     if (k) {
         char err[256];
         gls_renderer_set_size(r, w, h, err, sizeof err); /* same size: its viewport and scissor back */
     }
-    free(v), free(vis), free(z);
+    free(vis), free(z);
     *boxes = b, *n = k;
     return 0;
 }

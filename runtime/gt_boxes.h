@@ -42,6 +42,21 @@ typedef struct {
 int gls_boxes_compute(gls_renderer *r, const gls_scene *s, const gls_camera *c, const uint32_t *ids,
                       gls_box **boxes, size_t *n);
 
+/* What the boxes of camera c need of no pass (the lens or not): the 2D
+ * boxes and pixel counts from ids and the 3D boxes and KITTI angles;
+ * truncated, alone, visible and occluded left 0.  0 with *boxes, *n, or
+ * -1 when out of memory. */
+int gls_boxes_base(const gls_scene *s, const gls_camera *c, const uint32_t *ids, gls_box **boxes, size_t *n);
+/* Set alone (at least pixels), visible and occluded from the pixels the
+ * box's instance covers drawn alone. */
+void gls_box_set_alone(gls_box *b, uint64_t alone);
+
+/* 1 - area(R ∩ I) / area(R) for the rectangle R = [u0, u1] x [v0, v1]
+ * of a box's image and I = [-0.5, W - 0.5] x [-0.5, H - 0.5]: 1 when R
+ * is empty (u1 < u0: the box is wholly nearer than near), 0 when it has
+ * no area. */
+double gls_box_truncation_of(const gls_camera *c, double u0, double v0, double u1, double v1);
+
 /* KITTI occlusion level of a visible fraction: 0 (at least 0.9 of the
  * instance's pixels visible), 1 (at least 0.5), 2 (less). */
 int gls_box_occlusion_level(double visible);

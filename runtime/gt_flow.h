@@ -53,6 +53,17 @@ void gls_flow_moves_free(gls_flow_moves *m);
  * posed at t+1, camera c1).  uv: 2 floats a pixel, top row first (u'-u,
  * v'-v; GLS_FLOW_UNKNOWN where there is no surface or the point is behind
  * the camera at t+1); mask: GLS_FLOW_* a pixel. */
+/* World point P of instance id (instance + 1) at t, moved to t+1 in place
+ * (no change for an instance nothing moves). */
+void gls_flow_move_point(const gls_flow_moves *m, uint32_t id, double P[3]);
+/* The mask value of a point at depth Z in camera c1 (frame t+1) seen at
+ * image position (u1, v1): GLS_FLOW_OUT outside the image or the near..far
+ * range, GLS_FLOW_OCCLUDED behind z1 (the depth of frame t+1, c1's size)
+ * by more than the tolerance above, else GLS_FLOW_VISIBLE.  spread (px)
+ * is added to both offsets: how far z1[j] may have been read from pixel
+ * j's centre (0 without a lens; through one, half a fine pixel). */
+uint8_t gls_flow_visibility(const gls_camera *c1, const float *z1, double u1, double v1, double Z, double spread);
+
 void gls_flow_compute(const gls_camera *c0, const gls_camera *c1, const uint32_t *inst, const float *z,
                       const float *z1, const gls_flow_moves *m, float *uv, uint8_t *mask);
 

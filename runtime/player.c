@@ -27,6 +27,7 @@
 #include "glctx.h"
 #include "gt_boxes.h"
 #include "gt_flow.h"
+#include "lens_truth.h"
 #include "gt_landmarks.h"
 #include "gt_pass.h"
 #include "gt_table.h"
@@ -375,8 +376,8 @@ static int output_on(const session *s, size_t k)
  * (its camera pose and motions; an extra centre pass), then the scene
  * posed back for this frame's other cameras.  0 with *uv and *mask, or -1
  * with the whole line in msg (empty: out of memory). */
-static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_t frame, const uint32_t *inst,
-                      const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
+static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *df, const char *name, uint32_t frame,
+                      const uint32_t *inst, const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height;
     float *z1 = malloc(n * sizeof *z1);
@@ -393,14 +394,19 @@ static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_
         motion_apply(s->ms, s->next->frame);
         gls_flow_moves_take(s->moves, s->ms->scene, 1);
     }
-    rc = gls_gt_render(s->r, &c1, NULL, NULL, z1, err, sizeof err);
+    /* a lens (df): the next frame's depth through it, its points projected by its model */
+    rc = df ? gls_lens_gt_render(s->r, df, &c1, NULL, NULL, z1, err, sizeof err)
+            : gls_gt_render(s->r, &c1, NULL, NULL, z1, err, sizeof err);
     if (s->ms->n)
         motion_apply(s->ms, frame);
     if (rc) {
         snprintf(msg, msglen, "glsplay: error: camera %s: %s", name, err);
         goto out;
     }
-    gls_flow_compute(c, &c1, inst, z, z1, s->moves, *uv, *mask);
+    if (df)
+        gls_flow_compute_lens(c, &c1, df, inst, z, z1, s->moves, *uv, *mask);
+    else
+        gls_flow_compute(c, &c1, inst, z, z1, s->moves, *uv, *mask);
     uint32_t x, y;
     float fu, fv;
     if ((s->o->outputs & GLS_OUT_FLOW) && gls_flow_kitti_check(*uv, *mask, c->width, c->height, &x, &y, &fu, &fv)) {
@@ -630,26 +636,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     } else if (lens) {
         if (rgba || z)
             gls_distort_frame_centre(&df, c, rgba, z);
-        if (gt_ids || normal) {
-            /* through the lens: the ground-truth pass drawn by the plain
-             * fine camera, read at each pixel centre's ray (flow is
-             * refused with a lens, so gt_z is not wanted here) */
-            const gls_camera *fc = &df.lay.fine;
-            size_t fn = (size_t)fc->width * fc->height;
-            uint32_t *fids = gt_ids ? malloc(fn * sizeof *fids) : NULL;
-            float *fnrm = normal ? malloc(fn * 3 * sizeof *fnrm) : NULL;
-            if ((gt_ids && !fids) || (normal && !fnrm)) {
-                free(fids), free(fnrm);
-                goto oom;
-            }
-            int e = gls_gt_render(r, fc, fids, fnrm, NULL, err, sizeof err);
-            if (!e)
-                gls_distort_frame_gather(&df, c, fids, fnrm, gt_ids, normal);
-            free(fids), free(fnrm);
-            if (e) {
-                snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
-                goto out;
-            }
+        /* through the lens: the ground-truth pass drawn by the plain fine
+         * camera, read at each pixel centre's ray (lens_truth.h) */
+        if ((gt_ids || normal) && gls_lens_gt_render(r, &df, c, gt_ids, normal, gt_z, err, sizeof err)) {
+            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
+            goto out;
         }
     } else {
         if (centre) {
@@ -720,9 +711,14 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
-    if (want_boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
+    if (want_boxes && lens) {
+        if (gls_boxes_compute_lens(r, s->ms->scene, c, &df, gt_ids, &boxes, &nboxes, err, sizeof err)) {
+            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
+            goto out;
+        }
+    } else if (want_boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
         goto oom;
-    if (want_flow && flow_frame(s, c, name, frame, gt_ids, gt_z, &flow, &flowmask, msg, sizeof msg)) {
+    if (want_flow && flow_frame(s, c, lens ? &df : NULL, name, frame, gt_ids, gt_z, &flow, &flowmask, msg, sizeof msg)) {
         if (msg[0])
             goto out;
         goto oom;
@@ -1070,17 +1066,14 @@ static int rectified_check(const gls_play_opts *o, const gls_camera *cams, const
 }
 
 /* The outputs not made through a lens: disparity (a rectified pair has no
- * distortion: rectify first), flow and boxes (their reprojection and 3D
- * boxes' truncation use the pinhole model).  0, or -1 after a message. */
+ * distortion: rectify first).  0, or -1 after a message. */
 static int lens_outputs_check(const gls_play_opts *o, const gls_camera *c, const char *path, FILE *errs)
 {
     static const struct {
         unsigned bits;
         const char *word, *why;
     } no[] = {{GLS_OUT_DISPARITY, "disparity", "a rectified pair has no lens distortion"},
-              {GLS_OUT_DISPARITY16, "disparity16", "a rectified pair has no lens distortion"},
-              {GLS_OUT_FLOW_ALL, "flow", "flow is not made through a lens yet"},
-              {GLS_OUT_BOXES_ALL, "boxes", "boxes are not made through a lens yet"}};
+              {GLS_OUT_DISPARITY16, "disparity16", "a rectified pair has no lens distortion"}};
     if (!gls_distort_on(c))
         return 0;
     for (size_t i = 0; i < sizeof no / sizeof no[0]; i++)

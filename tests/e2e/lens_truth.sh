@@ -1,7 +1,8 @@
 #!/bin/sh
 # Ground truth through a lens (spec/outputs.md "Through a lens"): instance
 # ids, normals and landmarks of a distorted camera (tests/py/check_lens_truth.py,
-# against cv2), and the outputs refused with a lens, asserted verbatim.
+# against cv2), flow and boxes (tests/py/check_lens_flow_boxes.py), and the
+# outputs refused with a lens, asserted verbatim.
 # Prints "ok NAME" / "FAIL NAME: why".
 BIN=${GLS_BIN:-build}
 PY=/usr/bin/python3
@@ -31,18 +32,34 @@ refused() { # NAME WORD WHY ARGS...
 }
 refused lens_refuses_disparity disparity "a rectified pair has no lens distortion" \
     --camera "$t/lens.cam" --camera "$t/lens_r.cam" --outputs disparity
-cp "$t/lens.cam" "$t/rig/lens.cam" 2>/dev/null || { mkdir "$t/rig" && cp "$t/lens.cam" "$t/rig/lens.cam"; }
+mkdir "$t/rig" && cp "$t/lens.cam" "$t/rig/lens.cam"
 echo 'pose rig' >>"$t/rig/lens.cam"
-"$BIN/glsplay" "$t/tri.glsb" --camera "$t/rig/lens.cam" --trajectory "$t/traj.txt" --outputs flow -o "$t/out_flow" \
-    >/dev/null 2>"$t/err"
-rc=$?
-want="glsplay: error: $t/rig/lens.cam: --outputs flow needs a camera without lens distortion: flow is not made through a lens yet"
-if [ $rc -eq 1 ] && [ "$(cat "$t/err")" = "$want" ] && [ ! -e "$t/out_flow" ]; then
-    echo "ok lens_refuses_flow"
+# flow and boxes through a lens (tests/py/check_lens_flow_boxes.py, against cv2)
+$PY tests/py/check_lens_flow_boxes.py "$BIN" "$BIN/scenelib.glsb" "$t/fb" ||
+    echo "FAIL lens_flow_boxes: check_lens_flow_boxes.py exited with status $?"
+# ground truth is never blended: flow and boxes through the lens are the
+# same files with --aa (tests/py/flow_scene.py's scene)
+mkdir "$t/aa" && $PY tests/py/flow_scene.py "$t/aa" &&
+    "$BIN/glsc" -I "$BIN/scenelib.glsb" -o "$t/aa/f.glsb" "$t/aa/Flow.scene" 2>"$t/err" &&
+    { cat "$t/aa/cam.cam"; echo 'fisheye 0.05 -0.01 0.002 -0.0004'; } >"$t/aa/fish.cam" || echo "FAIL lens_aa_setup: $(cat "$t/err")"
+for a in 1 3; do
+    "$BIN/glsplay" "$t/aa/f.glsb" --camera "$t/aa/fish.cam" --trajectory "$t/aa/trajectory.txt" \
+        --motion "mover=$t/aa/mover.txt" --outputs image,flow,boxes --aa $a -o "$t/aa/o$a" 2>/dev/null
+done
+same=1
+for f in flow_000000.flo flow_000000.png flowmask_000000.png boxes_000000.json boxes_000001.txt; do
+    [ -f "$t/aa/o1/fish/$f" ] && cmp -s "$t/aa/o1/fish/$f" "$t/aa/o3/fish/$f" || same=0
+done
+[ $same = 1 ] && echo "ok lens_flow_boxes_same_with_aa" || echo "FAIL lens_flow_boxes_same_with_aa: files differ or missing"
+# --explain says how flow and boxes are made through the lens
+"$BIN/glsplay" "$t/tri.glsb" --camera "$t/rig/lens.cam" --trajectory "$t/traj.txt" --outputs flow,boxes --explain \
+    >"$t/plan" 2>&1
+if grep -qx "  lens: flow: the depth of frame t+1 drawn by the fine camera and read at each pixel centre's ray; points projected by the Brown-Conrady model" "$t/plan" &&
+    grep -qx "  lens: boxes: each instance drawn alone by the fine camera and read at each pixel centre's ray; truncated from 65 points an edge through the Brown-Conrady model" "$t/plan"; then
+    echo "ok lens_flow_boxes_explain"
 else
-    echo "FAIL lens_refuses_flow: exit $rc: $(cat "$t/err")"
+    echo "FAIL lens_flow_boxes_explain: $(grep 'lens' "$t/plan")"
 fi
-refused lens_refuses_boxes boxes "boxes are not made through a lens yet" --camera "$t/lens.cam" --outputs boxes
 # effects that do not combine yet (spec/outputs.md "Effects that do not
 # combine yet"): refused before rendering, nothing written
 refused_fx() { # NAME WANT ARGS...
