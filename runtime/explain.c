@@ -4,6 +4,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "distort_render.h"
+#include "distort_exposure.h"
 #include "exposure.h"
 #include "lighting.h"
 #include "shadows.h"
@@ -183,6 +184,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                     c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
         gls_distort_explain(out, c, &p);
         gls_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
+        gls_distort_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
         gls_aa_fine_layout lay;
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
         if (aa && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {

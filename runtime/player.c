@@ -20,6 +20,7 @@
 #include "atomic_write.h"
 #include "calib_write.h"
 #include "distort.h"
+#include "distort_exposure.h"
 #include "distort_render.h"
 #include "frame_files.h"
 #include "frame_record.h"
@@ -593,8 +594,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     gls_frame_files *f = NULL;
     int rc = -1;
     /* a lens: one undistorted fine image, read through the inverse model
-       (distort_render.h); never with the exposure's effects (refused by
-       exposure_setup) */
+       (distort_render.h); with the exposure's effects, one at each
+       sub-frame time, lens point and band (distort_exposure.h) */
     int lens = gls_distort_on(c);
     gls_distort_frame df;
     memset(&df, 0, sizeof df);
@@ -606,7 +607,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (lens && gls_distort_frame_render(&df, r, c, plan,
                                          (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) ||
                                              (o->outputs & GLS_OUT_POINTS),
-                                         (o->outputs & GLS_OUT_FROM_Z) != 0, aa, o->aa_memory, err, sizeof err)) {
+                                         (o->outputs & GLS_OUT_FROM_Z) != 0, aa && !fx, o->aa_memory, err,
+                                         sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
@@ -622,7 +624,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))) ||
         (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
         goto oom;
-    if (band < c->height) {
+    if (band < c->height && lens) {
+        /* flow and boxes are refused with a rolling shutter (exposure_setup) */
+        if (gls_distort_truth_bands(r, c, &df, band, pose_at, s, rgba, z, gt_ids, normal, err, sizeof err)) {
+            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
+            goto out;
+        }
+    } else if (band < c->height) {
         /* flow and boxes are refused with a rolling shutter (exposure_setup) */
         if (centre_bands(s, c, band, rgba, z, gt_ids, normal, msg, sizeof msg))
             goto out;
@@ -669,7 +677,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
-        if (fx) {
+        if (fx && lens) {
+            if (gls_distort_exposure_render(r, c, &ex, plan, &df, pose_at, s, band, o->aa_memory, name, &acc, msg,
+                                            sizeof msg))
+                goto out;
+        } else if (fx) {
             /* motion blur, rolling shutter, depth of field: the plan at
              * each sub-frame time and lens point (exposure.h) */
             if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, band, msg, sizeof msg))
@@ -1126,13 +1138,6 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
         if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
             gls_exposure_fits(&e, plan, why, sizeof why)) {
             fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);
-            return 1;
-        }
-        /* a lens's image is read through the inverse model from one fine
-         * render: not yet at sub-frame times or lens points */
-        if (gls_exposure_on(&e) && gls_distort_on(c)) {
-            fprintf(errs, "glsplay: error: camera %s: shutter, line_delay or aperture with lens distortion is not "
-                          "supported yet: the distorted image is made from one undistorted render\n", names[i]);
             return 1;
         }
         /* flow and boxes start from one ground-truth pass at the frame

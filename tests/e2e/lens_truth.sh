@@ -57,9 +57,6 @@ refused_fx() { # NAME WANT ARGS...
     fi
 }
 mkdir -p "$t/fx"
-{ cat "$t/rig/lens.cam"; echo 'shutter 0.5'; } >"$t/fx/lensblur.cam"
-refused_fx effects_refuse_lens "glsplay: error: camera lensblur: shutter, line_delay or aperture with lens distortion is not supported yet: the distorted image is made from one undistorted render" \
-    --camera "$t/fx/lensblur.cam" --trajectory "$t/traj.txt"
 printf 'width 64\nheight 48\nfx 60\nfy 60\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\npose rig\nline_delay 0.001\n' >"$t/fx/rs.cam"
 refused_fx effects_refuse_rolling_flow "glsplay: error: camera rs: --outputs flow with line_delay (rolling shutter) is not supported: each row is exposed at its own time" \
     --camera "$t/fx/rs.cam" --trajectory "$t/traj.txt" --outputs image,flow

@@ -1,0 +1,208 @@
+#!/usr/bin/python3
+"""Motion blur, rolling shutter and depth of field through a distorted lens
+(spec/camera.md "Through a lens" under "Motion blur, rolling shutter, depth
+of field") against images computed here, independently of the player: each
+pixel's area (a dense grid of sub-pixel points) mapped through the inverse
+model (cv2.undistortPointsIter) onto the scene's plane, at each sub-frame
+time (the midpoints of the exposure's equal sub-intervals) or at each row's
+time.  Prints "ok NAME" / "FAIL NAME: why".
+
+  check_exposure_lens.py BIN DIR
+"""
+import os
+import subprocess
+import sys
+import numpy as np
+import cv2
+
+OK = True
+
+
+def result(name, ok, why=''):
+    global OK
+    OK &= bool(ok)
+    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
+
+
+def run(args, want_rc=0):
+    p = subprocess.run(args, capture_output=True, text=True)
+    if p.returncode != want_rc:
+        raise SystemExit('FAIL exposure_lens_setup: %s: exit %d: %s' % (' '.join(args), p.returncode, p.stderr))
+    return p
+
+
+BIN, D = sys.argv[1], sys.argv[2]
+os.makedirs(D + '/src', exist_ok=True)
+W, H, FX = 96, 48, 60.0
+CX, CY = (W - 1) / 2, (H - 1) / 2
+DIST = [-0.12, 0.0, 0.0, 0.0]  # barrel: one-to-one over the image
+KM = np.array([[FX, 0, CX], [0, FX, CY], [0, 0, 1]])
+Z0 = 10.0
+SUB = 8  # sub-pixel points per axis for the expected images
+# The lens's image reads each anti-aliasing sample bilinearly in a fine
+# image of half-pixel boxes (spec/camera.md "The distorted image"): an
+# edge is spread by about half a pixel, which moves a pixel beside it by up
+# to about 1/8 from the exact box (the sharp lens image shows the same).
+# Edges that cross it (a blurred ramp, a spread edge) average that out.
+TOL_EDGE = 0.16
+
+
+def camera(path, extra='', pose=''):
+    with open(path, 'w') as f:
+        f.write('width %d\nheight %d\nfx %r\nfy %r\ncx %r\ncy %r\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 1000\n'
+                'distortion %s\n' % (W, H, FX, FX, CX, CY, ' '.join(repr(k) for k in DIST)) + pose + extra)
+
+
+def grey(path):
+    im = cv2.imread(path, cv2.IMREAD_UNCHANGED)
+    if im is None:
+        raise SystemExit('FAIL exposure_lens_setup: cannot read ' + path)
+    return im[:, :, 0].astype(np.float64) / (65535.0 if im.dtype == np.uint16 else 255.0)
+
+
+# the undistorted rays (x, y) of SUB x SUB points spread over every pixel
+# (midpoints of equal sub-squares: the box filter), shape (H, W, SUB*SUB)
+o = (np.arange(SUB) + 0.5) / SUB - 0.5
+ou, ov = np.meshgrid(o, o)
+uu = np.arange(W)[None, :, None] + ou.ravel()[None, None, :]
+vv = np.arange(H)[:, None, None] + ov.ravel()[None, None, :]
+uu, vv = np.broadcast_arrays(uu, vv)
+pts = np.stack([uu.ravel(), vv.ravel()], axis=1).reshape(-1, 1, 2).astype(np.float64)
+crit = (cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 200, 1e-14)
+ray = cv2.undistortPointsIter(pts, KM, np.array(DIST), None, None, crit).reshape(H, W, SUB * SUB, 2)
+RX, RY = ray[..., 0], ray[..., 1]
+# the pixel centres' rays
+cpts = np.stack(np.meshgrid(np.arange(W, dtype=np.float64), np.arange(H, dtype=np.float64)), axis=2).reshape(-1, 1, 2)
+cray = cv2.undistortPointsIter(cpts, KM, np.array(DIST), None, None, crit).reshape(H, W, 2)
+
+# ---- motion blur through the lens: a white 4 x 4 square at Z0 moving +x
+# one unit per frame.  The expected image: the mean of the distorted sharp
+# images at the K sub-frame times of the shutter.
+with open(D + '/src/Sq.scene', 'w') as f:
+    f.write('color(1, 1, 1);\npoly { vert(-2, -2, 0); vert(2, -2, 0); vert(2, 2, 0); vert(-2, 2, 0); }\n')
+with open(D + '/src/Moving.scene', 'w') as f:
+    f.write('push; trans(0, 0, %r); call("Sq", "mover"); pop;\n' % Z0)
+run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/moving.glsb', 'Moving'])
+with open(D + '/mover.txt', 'w') as f:
+    f.write('# glsroad motion 1\n')
+    for k in range(4):
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %d 0 0\n' % (k, k, k))
+S, K = 0.5, 16
+camera(D + '/lblur.cam', 'shutter %r\nexposure_samples %d\n' % (S, K))
+out = D + '/blur'
+p = run([BIN + '/glsplay', D + '/moving.glsb', '--camera', D + '/lblur.cam', '--motion', 'mover=' + D + '/mover.txt',
+         '--frame', '1', '--aa', '4', '--outputs', 'image,depth', '--image-format', 'png16', '-o', out, '--explain'])
+result('lens_motion_blur_explain', 'motion blur: on (key shutter 0.5)' in p.stdout and
+       'lens with the exposure: each of the 16 sub-frame renders draws the anti-aliased undistorted image' in p.stdout,
+       p.stdout[-900:])
+
+
+def square(t):
+    """the sharp image at frame 1 + t: the square's area in each pixel"""
+    X, Y = RX * Z0, RY * Z0
+    inside = (X >= -1 + t) & (X <= 3 + t) & (Y >= -2) & (Y <= 2)
+    return inside.mean(axis=2)
+
+
+times = S * ((np.arange(K) + 0.5) / K - 0.5)
+want = np.mean([square(t) for t in times], axis=0)
+sharp = square(0.0)
+img = grey(out + '/lblur/image_000001.png')
+err = np.abs(img - want)
+# the rows between the square's top and bottom edges (v 11.5 .. 35.5):
+# only the blurred ramps, the fine image's spread averaged over them; the
+# 4x4 lattice against the dense box
+mid = slice(15, 33)
+result('lens_motion_blur_image', err[mid].max() <= 0.03 and err.max() <= TOL_EDGE and
+       np.abs(sharp - want)[mid].max() > 0.3,
+       'largest error %.4f at %s, %.4f in rows 15..32 (the blur changes pixels by %.3f)'
+       % (err.max(), np.unravel_index(err.argmax(), err.shape), err[mid].max(), np.abs(sharp - want).max()))
+# the area of each of those rows is the blurred row's whatever the ramps
+row_err = np.abs(img.sum(axis=1) - want.sum(axis=1))[mid].max()
+result('lens_motion_blur_row_area', row_err <= 0.05, 'row sums differ by %.4f px' % row_err)
+# depth: at the frame time through the lens, never blurred
+z = cv2.imread(out + '/lblur/depth_000001.pfm', cv2.IMREAD_UNCHANGED)
+X, Y = cray[..., 0] * Z0, cray[..., 1] * Z0
+cov = (X >= -1) & (X <= 3) & (Y >= -2) & (Y <= 2)
+zok = np.isfinite(z)
+edge = np.zeros_like(cov)
+for dx in (-1, 0, 1):
+    for dy in (-1, 0, 1):
+        edge |= np.roll(np.roll(cov, dx, 1), dy, 0) != cov
+result('lens_motion_blur_depth_frame_time', z is not None and np.array_equal(zok[~edge], cov[~edge]) and
+       np.abs(z[zok] - Z0).max() < 1e-3, 'the depth is not the frame time\'s square at Z0')
+
+# ---- rolling shutter through the lens: a camera translating +x one unit
+# per frame looks at a bright half-plane x >= 0 at Z0; distorted row v is
+# exposed at frame 1 + v D.
+with open(D + '/src/Half.scene', 'w') as f:
+    f.write('color(1, 1, 1);\npoly { vert(0, -50, %r); vert(100, -50, %r); vert(100, 50, %r); vert(0, 50, %r); }\n'
+            % ((Z0,) * 4))
+run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/half.glsb', 'Half'])
+with open(D + '/traj.txt', 'w') as f:
+    for k in range(4):
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %d 0 0\n' % (k, k, -k))  # T = -R C, C = (k, 0, 0)
+DL = 1.0 / H
+camera(D + '/lrs.cam', 'line_delay %r\n' % DL, 'pose rig\n')
+out = D + '/rs'
+p = run([BIN + '/glsplay', D + '/half.glsb', '--camera', D + '/lrs.cam', '--trajectory', D + '/traj.txt', '--frames',
+         '1', '--aa', '4', '--outputs', 'image,depth', '--image-format', 'png16', '-o', out, '--explain'])
+result('lens_rolling_explain', 'rolling shutter: on (key line_delay' in p.stdout and
+       'lens with the exposure: ground truth per band of rows' in p.stdout, p.stdout[-900:])
+tv = 1 + np.arange(H) * DL  # each row's time: the camera centre's x
+want = ((RX * Z0 + tv[:, None, None]) >= 0).mean(axis=2)
+glob = ((RX * Z0 + 1) >= 0).mean(axis=2)  # a global shutter at the frame time
+img = grey(out + '/lrs/image_000001.png')
+# the edge's column per row: the covered length of the row
+got_e, want_e, glob_e = (W - img.sum(axis=1)), (W - want.sum(axis=1)), (W - glob.sum(axis=1))
+err = np.abs(got_e - want_e)
+# bands of at most 1/8 px of motion at their middle row's time (1/16 px),
+# the box filters and 16-bit rounding (1/32 px)
+result('lens_rolling_edge_per_row', err.max() <= 1.0 / 16 + 1.0 / 32 and np.abs(glob_e - want_e).max() > 0.5,
+       'largest error %.4f px at row %d (edge %.4f, want %.4f); global shutter differs by %.3f px'
+       % (err.max(), err.argmax(), got_e[err.argmax()], want_e[err.argmax()], np.abs(glob_e - want_e).max()))
+result('lens_rolling_image', np.abs(img - want).max() <= TOL_EDGE, 'largest pixel error %.4f' % np.abs(img - want).max())
+# depth per row at the row's time through the lens: the pixel centres on
+# the plane (those within a quarter pixel of the edge left out: the band's
+# time and the nearest fine pixel)
+z = cv2.imread(out + '/lrs/depth_000001.pfm', cv2.IMREAD_UNCHANGED)
+cov = (cray[..., 0] * Z0 + tv[:, None]) >= 0
+near = np.abs(cray[..., 0] * Z0 + tv[:, None]) < 0.25 * Z0 / FX
+bad = np.nonzero(((np.isfinite(z) != cov) & ~near).any(axis=1))[0]
+result('lens_rolling_depth_per_row', z is not None and len(bad) == 0,
+       'rows whose covered pixels are not those of the row\'s time: %s' % bad[:8])
+
+# ---- depth of field through the lens: an edge in the plane of focus is
+# where the lens without aperture puts it (the shear acts on the
+# undistorted ray, which the plane Zc = focus does not see); an edge
+# beyond it is spread, about the same place.
+A, F = 0.5, 5.0
+for Z, tag in ((F, 'in_focus'), (Z0, 'defocus')):
+    with open(D + '/src/Edge.scene', 'w') as f:
+        f.write('color(1, 1, 1);\npoly { vert(0, -50, %r); vert(100, -50, %r); vert(100, 50, %r); vert(0, 50, %r); }\n'
+                % ((Z,) * 4))
+    run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/edge.glsb', 'Edge'])
+    camera(D + '/ldof.cam', 'aperture %r\nfocus %r\nexposure_samples 64\n' % (A, F))
+    out = D + '/dof_' + tag
+    p = run([BIN + '/glsplay', D + '/edge.glsb', '--camera', D + '/ldof.cam', '--aa', '4', '--outputs', 'image',
+             '--image-format', 'png16', '-o', out, '--explain'])
+    img = grey(out + '/ldof/image_000000.png')
+    want = (RX >= 0).mean(axis=2)  # the sharp edge through the lens
+    e_err = np.abs(img.sum(axis=1) - want.sum(axis=1)).max()
+    if tag == 'in_focus':
+        result('lens_depth_of_field_explain', 'depth of field: on (keys aperture 0.5, focus 5)' in p.stdout and
+               'and lens point (sheared before the lens model)' in p.stdout, p.stdout[-900:])
+        err = np.abs(img - want).max()
+        # a sharp edge: the lens's spread of up to half a pixel, about 1/16
+        # beside an edge on a pixel border (no ramp to average it out)
+        result('lens_depth_of_field_in_focus_unchanged', err <= 0.08 and e_err <= 1.0 / 16,
+               'largest pixel error %.4f, edge moved %.4f px' % (err, e_err))
+    else:
+        # the circle of confusion, undistorted pixels: FX A |Z - F| / (Z F)
+        c = FX * A * abs(Z - F) / (Z * F)
+        mid = img[H // 2]
+        lit = np.nonzero((mid > 0.01) & (mid < 0.99))[0]
+        width = lit[-1] - lit[0] + 1 if len(lit) else 0
+        result('lens_depth_of_field_spread', e_err <= 0.1 and abs(width - (c + 1)) <= 1.5,
+               'edge moved %.4f px; blurred over %d px, c + 1 = %.3f' % (e_err, width, c + 1))
+sys.exit(0 if OK else 1)
