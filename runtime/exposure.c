@@ -270,3 +270,23 @@ void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_
             K, K == 1 ? "" : "s", per, per == 1 ? "" : "s", e.rolling ? ", x the bands of rows" : "", K * per,
             e.rolling ? "centre pass, row by row at each row's time" : "centre pass at the frame time, lens centre");
 }
+
+double (*gls_exposure_row_poses(const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud))[12]
+{
+    double (*pose)[12] = malloc((c->height ? c->height : 1) * sizeof *pose);
+    if (!pose)
+        return NULL;
+    uint32_t h = band ? band : c->height;
+    for (uint32_t v0 = 0; v0 < c->height; v0 += h) {
+        uint32_t v1 = v0 + h < c->height ? v0 + h : c->height;
+        gls_camera at = *c;
+        pose_at(ud, c->line_delay * (v0 + v1 - 1) / 2.0, &at);
+        for (uint32_t v = v0; v < v1; v++) {
+            memcpy(pose[v], at.R, sizeof at.R);
+            memcpy(pose[v] + 9, at.T, sizeof at.T);
+        }
+    }
+    gls_camera at = *c;
+    pose_at(ud, 0, &at);
+    return pose;
+}

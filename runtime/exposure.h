@@ -98,6 +98,12 @@ int gls_exposure_render_bands(const gls_camera *c, const gls_exposure *e, const 
 int gls_exposure_landmarks(const gls_scene *s, const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud,
                            gls_landmarks *l);
 
+/* Rolling shutter: each row's camera pose (R row-major, then T), that of
+ * its band of `band` rows (the middle row's time), the pose its depth was
+ * drawn with; the scene left at s = 0.  A malloc'd H x 12 array, or NULL
+ * when out of memory. */
+double (*gls_exposure_row_poses(const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud))[12];
+
 /* --explain: what the effects of camera c cost. */
 void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p);
 

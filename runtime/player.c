@@ -772,6 +772,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (f->landmarks && band < c->height &&
         gls_exposure_landmarks(s->scene, c, band, pose_at, s, f->landmarks))
         goto oom;
+    /* rolling shutter: each row's points through the pose its depth was
+     * drawn with (spec/outputs.md) */
+    if ((o->outputs & GLS_OUT_POINTS) && band < c->height &&
+        !(f->row_pose = gls_exposure_row_poses(c, band, pose_at, s)))
+        goto oom;
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
     /* the writer needs the ids only for the id images and tables */
     f->gt_inst = (o->outputs & GLS_OUT_IDS) ? gt_ids : NULL, f->normal = normal, f->gt = s->gt;
@@ -1146,14 +1151,6 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
             fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) is not supported: "
                           "each row is exposed at its own time\n", names[i],
                     o->outputs & GLS_OUT_FLOW_ALL ? "flow" : "boxes");
-            return 1;
-        }
-        /* each row's depth is at its own time, in that time's camera
-         * frame: the points would need a camera per row */
-        if (e.rolling && (o->outputs & GLS_OUT_POINTS)) {
-            fprintf(errs, "glsplay: error: camera %s: --outputs points with line_delay (rolling shutter) is not "
-                          "supported: each row is exposed at its own time, the point cloud needs one camera pose per "
-                          "frame\n", names[i]);
             return 1;
         }
         need_rig |= e.blur || e.rolling;

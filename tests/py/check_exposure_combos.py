@@ -7,7 +7,7 @@ model (cv2.undistortPointsIter) onto the scene's plane, at each sub-frame
 time (the midpoints of the exposure's equal sub-intervals) or at each row's
 time.  Prints "ok NAME" / "FAIL NAME: why".
 
-  check_exposure_lens.py BIN DIR
+  check_exposure_combos.py BIN DIR
 """
 import os
 import subprocess
@@ -27,7 +27,7 @@ def result(name, ok, why=''):
 def run(args, want_rc=0):
     p = subprocess.run(args, capture_output=True, text=True)
     if p.returncode != want_rc:
-        raise SystemExit('FAIL exposure_lens_setup: %s: exit %d: %s' % (' '.join(args), p.returncode, p.stderr))
+        raise SystemExit('FAIL exposure_combos_setup: %s: exit %d: %s' % (' '.join(args), p.returncode, p.stderr))
     return p
 
 
@@ -56,7 +56,7 @@ def camera(path, extra='', pose=''):
 def grey(path):
     im = cv2.imread(path, cv2.IMREAD_UNCHANGED)
     if im is None:
-        raise SystemExit('FAIL exposure_lens_setup: cannot read ' + path)
+        raise SystemExit('FAIL exposure_combos_setup: cannot read ' + path)
     return im[:, :, 0].astype(np.float64) / (65535.0 if im.dtype == np.uint16 else 255.0)
 
 
@@ -205,4 +205,47 @@ for Z, tag in ((F, 'in_focus'), (Z0, 'defocus')):
         width = lit[-1] - lit[0] + 1 if len(lit) else 0
         result('lens_depth_of_field_spread', e_err <= 0.1 and abs(width - (c + 1)) <= 1.5,
                'edge moved %.4f px; blurred over %d px, c + 1 = %.3f' % (e_err, width, c + 1))
+
+# ---- points with a rolling shutter (spec/outputs.md): a camera moving
+# (0.5, 0, 2) a frame towards a tilted plane z = 20 + 0.3 x; each row's
+# depth is in the camera frame of its own time, and the PLY's world points
+# unprojected with that pose lie on the plane (float depth: 1e-6 relative);
+# with the frame's pose for every row they would miss it by up to the
+# readout's 2 units of travel.
+
+
+def read_ply(path):
+    with open(path, 'rb') as f:
+        data = f.read()
+    end = data.index(b'end_header\n') + len(b'end_header\n')
+    rec = np.frombuffer(data[end:], dtype=np.dtype([('p', '<f8', 3), ('c', 'u1', 3)]))
+    return rec['p']
+
+
+with open(D + '/src/Tilt.scene', 'w') as f:
+    f.write('color(1, 1, 1);\npoly { vert(-50, -50, 5); vert(50, -50, 35); vert(50, 50, 35); vert(-50, 50, 5); }\n')
+run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/tilt.glsb', 'Tilt'])
+with open(D + '/traj_z.txt', 'w') as f:
+    for k in range(4):
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %r 0 %r\n' % (k, k, -0.5 * k, -2.0 * k))  # C = (0.5 k, 0, 2 k)
+with open(D + '/prs.cam', 'w') as f:
+    f.write('width %d\nheight %d\nfx %r\nfy %r\ncx %r\ncy %r\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 1000\n'
+            'pose rig\nline_delay %r\n' % (W, H, FX, FX, CX, CY, 1.0 / H))
+camera(D + '/plrs.cam', 'line_delay %r\n' % (1.0 / H), 'pose rig\n')
+out = D + '/pts'
+run([BIN + '/glsplay', D + '/tilt.glsb', '--camera', D + '/prs.cam', '--camera', D + '/plrs.cam', '--trajectory',
+     D + '/traj_z.txt', '--frames', '1', '--outputs', 'depth,points', '-o', out])
+for cam, tol, why in (('prs', 1e-4, 'float depth'),
+                      ('plrs', 0.02, 'the nearest fine pixel\'s depth, up to 1/8 px each way off the ray, on a '
+                                     'plane whose depth changes 0.1 a pixel')):
+    P = read_ply(out + '/%s/points_000001.ply' % cam)
+    z = cv2.imread(out + '/%s/depth_000001.pfm' % cam, cv2.IMREAD_UNCHANGED)
+    off = np.abs(P[:, 2] - (20 + 0.3 * P[:, 0])) / np.sqrt(1 + 0.09) if len(P) else np.array([np.inf])
+    # the depth rows do change with the row's time: the camera moved 2
+    # units closer over the readout
+    zr = np.nanmean(np.where(np.isfinite(z), z, np.nan)[:, W // 2 - 2:W // 2 + 3], axis=1)
+    result('rolling_shutter_points_on_plane_' + ('lens' if cam == 'plrs' else 'pinhole'),
+           len(P) == np.isfinite(z).sum() and off.max() <= tol and zr[0] - zr[-1] > 1.5,
+           'points %d (depth %d), largest distance from the plane %.3g (tolerance %g: %s); depth rows %.3f..%.3f'
+           % (len(P), np.isfinite(z).sum(), off.max(), tol, why, zr[0], zr[-1]))
 sys.exit(0 if OK else 1)
