@@ -244,5 +244,15 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         if (outputs & GLS_OUT_BOXES_ALL)
             fprintf(out, "  boxes: the ground-truth pass's instance ids and one pass per visible instance drawn "
                          "alone (its occlusion); writes boxes (KITTI labels, JSON)\n");
+        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_exposure_of(c, o->trajectory || o->nmotions).rolling)
+            fprintf(out, "  rolling shutter: %s%s%s\n",
+                    outputs & GLS_OUT_FLOW_ALL ? "flow from each row's time to the row of frame t+1 whose time sees "
+                                                 "the point (a fixed point, the poses of every row of frame t+1), the "
+                                                 "depth of frame t+1 in its bands of rows"
+                                               : "",
+                    (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
+                    outputs & GLS_OUT_BOXES_ALL ? "boxes' 2D boxes from the rolling instance image, their 3D boxes "
+                                                  "and occlusion passes at the frame time"
+                                                : "");
     }
 }

@@ -93,6 +93,20 @@ static double slope(const float *z, size_t i, size_t step, int has_lo, int has_h
     return best;
 }
 
+uint8_t gls_flow_visibility(const gls_camera *c1, const float *z1, double u1, double v1, double Z)
+{
+    uint32_t w = c1->width, h = c1->height;
+    /* the nearest pixel: pixel centres are at whole (u, v) */
+    double px = floor(u1 + 0.5), py = floor(v1 + 0.5);
+    if (!(px >= 0 && px < w && py >= 0 && py < h) || Z < c1->near || Z > c1->far)
+        return GLS_FLOW_OUT;
+    size_t j = (size_t)py * w + (size_t)px;
+    double tol = GLS_FLOW_OCC_REL * Z;
+    if (isfinite(z1[j]))
+        tol += slope(z1, j, 1, px > 0, px + 1 < w) * fabs(u1 - px) + slope(z1, j, w, py > 0, py + 1 < h) * fabs(v1 - py);
+    return isfinite(z1[j]) && Z > z1[j] + tol ? GLS_FLOW_OCCLUDED : GLS_FLOW_VISIBLE;
+}
+
 void gls_flow_compute(const gls_camera *c0, const gls_camera *c1, const uint32_t *inst, const float *z,
                       const float *z1, const gls_flow_moves *m, float *uv, uint8_t *mask)
 {
@@ -123,17 +137,6 @@ void gls_flow_compute(const gls_camera *c0, const gls_camera *c1, const uint32_t
             double v1 = c1->fy * Pc1[1] / Z + c1->cy;
             uv[2 * i] = (float)(u1 - x);
             uv[2 * i + 1] = (float)(v1 - y);
-            /* the nearest pixel: pixel centres are at whole (u, v) */
-            double px = floor(u1 + 0.5), py = floor(v1 + 0.5);
-            if (!(px >= 0 && px < w && py >= 0 && py < h) || Z < c1->near || Z > c1->far) {
-                mask[i] = GLS_FLOW_OUT;
-                continue;
-            }
-            size_t j = (size_t)py * w + (size_t)px;
-            double tol = GLS_FLOW_OCC_REL * Z;
-            if (isfinite(z1[j]))
-                tol += slope(z1, j, 1, px > 0, px + 1 < w) * fabs(u1 - px) +
-                       slope(z1, j, w, py > 0, py + 1 < h) * fabs(v1 - py);
-            mask[i] = isfinite(z1[j]) && Z > z1[j] + tol ? GLS_FLOW_OCCLUDED : GLS_FLOW_VISIBLE;
+            mask[i] = gls_flow_visibility(c1, z1, u1, v1, Z);
         }
 }

@@ -53,6 +53,10 @@ void gls_flow_moves_free(gls_flow_moves *m);
  * posed at t+1, camera c1).  uv: 2 floats a pixel, top row first (u'-u,
  * v'-v; GLS_FLOW_UNKNOWN where there is no surface or the point is behind
  * the camera at t+1); mask: GLS_FLOW_* a pixel. */
+/* The mask of a point at (u1, v1), depth Z > 0, in camera c1's image of
+ * depth z1: out of view, occluded or visible (the rules above). */
+uint8_t gls_flow_visibility(const gls_camera *c1, const float *z1, double u1, double v1, double Z);
+
 void gls_flow_compute(const gls_camera *c0, const gls_camera *c1, const uint32_t *inst, const float *z,
                       const float *z1, const gls_flow_moves *m, float *uv, uint8_t *mask);
 

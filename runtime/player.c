@@ -28,6 +28,7 @@
 #include "glctx.h"
 #include "gt_boxes.h"
 #include "gt_flow.h"
+#include "gt_flow_rolling.h"
 #include "gt_landmarks.h"
 #include "gt_pass.h"
 #include "gt_table.h"
@@ -370,13 +371,18 @@ static int output_on(const session *s, size_t k)
     return (s->o->outputs & outs[k].bit) && (s->next || !(outs[k].bit & GLS_OUT_FLOW_ALL));
 }
 
+static int pose_at(void *ud, double t, gls_camera *cam);
+static int flow_frame_rolling(session *s, const gls_camera *c, const char *name, uint32_t frame, uint32_t band,
+                              const uint32_t *inst, const float *z, float *z1, float *uv, uint8_t *mask, char *msg,
+                              size_t msglen);
+
 /* The flow of camera c from frame to the trajectory's next row (gt_flow.h),
  * from this frame's ground-truth pass (inst, z): the depth of the next
  * (its camera pose and motions; an extra centre pass), then the scene
  * posed back for this frame's other cameras.  0 with *uv and *mask, or -1
  * with the whole line in msg (empty: out of memory). */
-static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_t frame, const uint32_t *inst,
-                      const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
+static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_t frame, uint32_t band,
+                      const uint32_t *inst, const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height;
     float *z1 = malloc(n * sizeof *z1);
@@ -386,6 +392,13 @@ static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_
     *mask = malloc(n ? n : 1);
     if (!z1 || !*uv || !*mask)
         goto out;
+    if (band < c->height) {
+        /* rolling shutter: both frames' rows at their own times */
+        rc = flow_frame_rolling(s, c, name, frame, band, inst, z, z1, *uv, *mask, msg, msglen);
+        if (rc)
+            goto out;
+        goto check;
+    }
     gls_camera c1 = *c;
     gls_traj_compose(s->rel->R, s->rel->T, s->next->R, s->next->T, c1.R, c1.T);
     gls_flow_moves_take(s->moves, s->ms->scene, 0);
@@ -401,6 +414,7 @@ static int flow_frame(session *s, const gls_camera *c, const char *name, uint32_
         goto out;
     }
     gls_flow_compute(c, &c1, inst, z, z1, s->moves, *uv, *mask);
+check:;
     uint32_t x, y;
     float fu, fv;
     if ((s->o->outputs & GLS_OUT_FLOW) && gls_flow_kitti_check(*uv, *mask, c->width, c->height, &x, &y, &fu, &fv)) {
@@ -419,6 +433,38 @@ out:
         *uv = NULL, *mask = NULL;
     }
     return rc;
+}
+
+/* flow_frame with a rolling shutter (gt_flow_rolling.h): the poses of
+ * every row of this frame and the next, the next frame's rolling depth.
+ * 0, or -1 with the whole line in msg (empty: out of memory). */
+static int flow_frame_rolling(session *s, const gls_camera *c, const char *name, uint32_t frame, uint32_t band,
+                              const uint32_t *inst, const float *z, float *z1, float *uv, uint8_t *mask, char *msg,
+                              size_t msglen)
+{
+    double dt = (double)s->next->frame - (double)frame, bad = 0;
+    char err[512];
+    gls_flow_rows fr;
+    int k = gls_flow_rows_fill(&fr, c, band, dt, s->moves, s->ms->scene, pose_at, s, &bad);
+    if (k == 1) {
+        char a[40];
+        gls_fmt_double(a, sizeof a, (double)frame + bad);
+        snprintf(msg, msglen, "glsplay: error: camera %s, frame %u: its flow needs the poses of the rolling readout "
+                              "of frame %llu, at frame %s beyond the rows of the trajectory or a motion file; sub-frame "
+                              "poses are interpolated between rows, never extrapolated: render fewer --frames or "
+                              "extend the file", name, frame, (unsigned long long)s->next->frame, a);
+        return -1;
+    }
+    if (k)
+        return -1;
+    if (gls_flow_rolling_depth(s->r, c, band, dt, pose_at, s, z1, err, sizeof err)) {
+        snprintf(msg, msglen, "glsplay: error: camera %s: %s", name, err);
+        gls_flow_rows_free(&fr);
+        return -1;
+    }
+    gls_flow_compute_rolling(c, &fr, s->moves, inst, z, z1, uv, mask);
+    gls_flow_rows_free(&fr);
+    return 0;
 }
 
 /* The scene and the camera s frame intervals after the frame time
@@ -507,15 +553,15 @@ static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg,
  * row's time, their rows copied out; the scene left at the frame time.
  * The buffers not asked for are NULL.  0, or -1 with msg. */
 static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t *rgba, float *z, uint32_t *inst,
-                        float *normal, char *msg, size_t msglen)
+                        float *normal, float *gt_z, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height, W = c->width;
     uint8_t *rb = rgba ? malloc(n * 4) : NULL;
-    float *zb = z ? malloc(n * sizeof *zb) : NULL, *nb = normal ? malloc(n * 3 * sizeof *nb) : NULL;
+    float *zb = z || gt_z ? malloc(n * sizeof *zb) : NULL, *nb = normal ? malloc(n * 3 * sizeof *nb) : NULL;
     uint32_t *ib = inst ? malloc(n * sizeof *ib) : NULL;
     char err[512];
     int rc = -1;
-    if ((rgba && !rb) || (z && !zb) || (normal && !nb) || (inst && !ib)) {
+    if ((rgba && !rb) || ((z || gt_z) && !zb) || (normal && !nb) || (inst && !ib)) {
         gls_frame_oom_message(msg, msglen, s->name_now, c->width, c->height, 28 * (uint64_t)n);
         goto out;
     }
@@ -535,8 +581,8 @@ static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t 
                 memcpy(z + a, zb + a, len * sizeof *z);
             }
         }
-        if (inst || normal) {
-            if (gls_gt_render(s->r, &at, ib, nb, NULL, err, sizeof err)) {
+        if (inst || normal || gt_z) {
+            if (gls_gt_render(s->r, &at, ib, nb, gt_z ? zb : NULL, err, sizeof err)) {
                 snprintf(msg, msglen, "glsplay: error: camera %s: %s", s->name_now, err);
                 goto out;
             }
@@ -544,6 +590,8 @@ static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t 
                 memcpy(inst + a, ib + a, len * sizeof *inst);
             if (normal)
                 memcpy(normal + 3 * a, nb + 3 * a, 3 * len * sizeof *normal);
+            if (gt_z) /* flow starts from the ground-truth pass's depth */
+                memcpy(gt_z + a, zb + a, len * sizeof *gt_z);
         }
     }
     rc = 0;
@@ -631,8 +679,9 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             goto out;
         }
     } else if (band < c->height) {
-        /* flow and boxes are refused with a rolling shutter (exposure_setup) */
-        if (centre_bands(s, c, band, rgba, z, gt_ids, normal, msg, sizeof msg))
+        /* flow starts from each band's ground-truth depth; boxes take
+         * their 2D boxes from this instance image */
+        if (centre_bands(s, c, band, rgba, z, gt_ids, normal, gt_z, msg, sizeof msg))
             goto out;
     } else if (lens) {
         if (rgba || z)
@@ -733,7 +782,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     }
     if (want_boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
         goto oom;
-    if (want_flow && flow_frame(s, c, name, frame, gt_ids, gt_z, &flow, &flowmask, msg, sizeof msg)) {
+    if (want_flow && flow_frame(s, c, name, frame, band, gt_ids, gt_z, &flow, &flowmask, msg, sizeof msg)) {
         if (msg[0])
             goto out;
         goto oom;
@@ -1143,14 +1192,6 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
         if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
             gls_exposure_fits(&e, plan, why, sizeof why)) {
             fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);
-            return 1;
-        }
-        /* flow and boxes start from one ground-truth pass at the frame
-         * time; a rolling shutter's rows each have their own */
-        if (e.rolling && (o->outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))) {
-            fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) is not supported: "
-                          "each row is exposed at its own time\n", names[i],
-                    o->outputs & GLS_OUT_FLOW_ALL ? "flow" : "boxes");
             return 1;
         }
         need_rig |= e.blur || e.rolling;

@@ -43,20 +43,3 @@ else
     echo "FAIL lens_refuses_flow: exit $rc: $(cat "$t/err")"
 fi
 refused lens_refuses_boxes boxes "boxes are not made through a lens yet" --camera "$t/lens.cam" --outputs boxes
-# effects that do not combine yet (spec/outputs.md "Effects that do not
-# combine yet"): refused before rendering, nothing written
-refused_fx() { # NAME WANT ARGS...
-    name=$1 want=$2
-    shift 2
-    "$BIN/glsplay" "$t/tri.glsb" "$@" -o "$t/out_$name" >/dev/null 2>"$t/err"
-    rc=$?
-    if [ $rc -eq 1 ] && [ "$(grep -v ': note: ' "$t/err")" = "$want" ] && [ ! -e "$t/out_$name" ]; then
-        echo "ok $name"
-    else
-        echo "FAIL $name: exit $rc: $(cat "$t/err")"
-    fi
-}
-mkdir -p "$t/fx"
-printf 'width 64\nheight 48\nfx 60\nfy 60\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\npose rig\nline_delay 0.001\n' >"$t/fx/rs.cam"
-refused_fx effects_refuse_rolling_flow "glsplay: error: camera rs: --outputs flow with line_delay (rolling shutter) is not supported: each row is exposed at its own time" \
-    --camera "$t/fx/rs.cam" --trajectory "$t/traj.txt" --outputs image,flow

@@ -248,4 +248,92 @@ for cam, tol, why in (('prs', 1e-4, 'float depth'),
            len(P) == np.isfinite(z).sum() and off.max() <= tol and zr[0] - zr[-1] > 1.5,
            'points %d (depth %d), largest distance from the plane %.3g (tolerance %g: %s); depth rows %.3f..%.3f'
            % (len(P), np.isfinite(z).sum(), off.max(), tol, why, zr[0], zr[-1]))
+
+# ---- flow with a rolling shutter (spec/outputs.md "Optical flow", "With a
+# rolling shutter"): the camera moves V = (0.5, 0.4, 2) a frame past the
+# tilted plane z = 20 + 0.3 x; line_delay 1/H (bands of one row: each row
+# at its own time).  numpy: pixel (u, v) of frame 1 sees the plane at its
+# row's time 1 + v D (the ray met with the plane); the next frame's row v'
+# that sees that point solves v' = fy (Y - Vy t) / (Z - Vz t) + cy with
+# t = 2 + v' D, a quadratic in v' (the root nearest the frame time's
+# projection); u' from the camera at that time.  The rows are
+# interpolated linearly between the poses of whole rows: within 1e-3 px.
+import json
+V = np.array([0.5, 0.4, 2.0])
+with open(D + '/traj_v.txt', 'w') as f:
+    for k in range(5):
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %r %r %r\n' % ((k, k) + tuple(-V * k)))
+with open(D + '/frs.cam', 'w') as f:
+    f.write('width %d\nheight %d\nfx %r\nfy %r\ncx %r\ncy %r\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 1000\n'
+            'pose rig\nline_delay %r\n' % (W, H, FX, FX, CX, CY, 1.0 / H))
+out = D + '/flow'
+p = run([BIN + '/glsplay', D + '/tilt.glsb', '--camera', D + '/frs.cam', '--trajectory', D + '/traj_v.txt',
+         '--frames', '1', '--outputs', 'flow', '-o', out, '--explain'])
+result('rolling_shutter_flow_explain', 'rolling shutter: flow from each row\'s time to the row of frame t+1' in p.stdout,
+       p.stdout[-600:])
+flo = cv2.readOpticalFlow(out + '/frs/flow_000001.flo')
+fmask = cv2.imread(out + '/frs/flowmask_000001.png', cv2.IMREAD_UNCHANGED)
+DL = 1.0 / H
+u, v = np.meshgrid(np.arange(W, dtype=np.float64), np.arange(H, dtype=np.float64))
+C0 = V[None, None, :] * (1 + v * DL)[..., None]
+dx, dy = (u - CX) / FX, (v - CY) / FX
+sl = (20 + 0.3 * C0[..., 0] - C0[..., 2]) / (1 - 0.3 * dx)
+X, Y, Z = C0[..., 0] + sl * dx, C0[..., 1] + sl * dy, C0[..., 2] + sl
+a = -V[2] * DL
+b = Z - 2 * V[2] + FX * V[1] * DL + CY * V[2] * DL
+c = -(FX * (Y - 2 * V[1]) + CY * (Z - 2 * V[2]))
+disc = np.sqrt(b * b - 4 * a * c)
+r1, r2 = (-b + disc) / (2 * a), (-b - disc) / (2 * a)
+v_frame = FX * (Y - 2 * V[1]) / (Z - 2 * V[2]) + CY  # the frame time's projection
+vp = np.where(np.abs(r1 - v_frame) < np.abs(r2 - v_frame), r1, r2)
+# above the first row or below the last, no row's time sees it: the
+# readout's first or last time (poses are never extrapolated); the point
+# is then out of view
+for edge_row, sel in ((0, vp < 0), (H - 1, vp > H - 1)):
+    te = 2 + edge_row * DL
+    vp = np.where(sel, FX * (Y - V[1] * te) / (Z - V[2] * te) + CY, vp)
+t = 2 + np.clip(vp, 0, H - 1) * DL
+up = FX * (X - V[0] * t) / (Z - V[2] * t) + CX
+want = np.stack([up - u, vp - v], axis=2)
+inside = (np.floor(up + 0.5) >= 0) & (np.floor(up + 0.5) < W) & (np.floor(vp + 0.5) >= 0) & (np.floor(vp + 0.5) < H)
+ferr = np.abs(flo - want).max(axis=2)
+# a global shutter's flow (frame 1 to frame 2 at the frame times) differs
+# by the readout: how much the test tells them apart
+gl_v = FX * (Y - 2 * V[1]) / (Z - 2 * V[2]) + CY - v
+result('rolling_shutter_flow_fixed_point', flo is not None and ferr.max() <= 1e-3 and
+       np.array_equal(fmask == 1, inside) and np.abs(gl_v - want[..., 1]).max() > 1,
+       'largest error %.3g px at %s (flow %s, want %s); mask visible %d, in the image %d'
+       % (ferr.max(), np.unravel_index(ferr.argmax(), ferr.shape), flo[np.unravel_index(ferr.argmax(), ferr.shape)]
+          if flo is not None else None, want[np.unravel_index(ferr.argmax(), ferr.shape)], (fmask == 1).sum(),
+          inside.sum()))
+# the next frame's readout must lie within the trajectory's rows: frame 3's
+# flow needs frame 4's rows up to 4 + (H - 1) D, beyond the last row (4)
+p = run([BIN + '/glsplay', D + '/tilt.glsb', '--camera', D + '/frs.cam', '--trajectory', D + '/traj_v.txt', '--frames',
+         '3', '--outputs', 'flow', '-o', D + '/flow_beyond'], want_rc=1)
+result('rolling_shutter_flow_beyond_rows_refused', p.stderr == 'glsplay: error: camera frs, frame 3: its flow needs '
+       'the poses of the rolling readout of frame 4, at frame 4.020833333333333 beyond the rows of the trajectory or '
+       'a motion file; sub-frame poses are interpolated between rows, never extrapolated: render fewer --frames or '
+       'extend the file\n' and not os.path.exists(D + '/flow_beyond/frs/flow_000003.flo'), repr(p.stderr))
+
+# ---- boxes with a rolling shutter: the 2D box from the rolling instance
+# image (the square's slanted sides), the 3D corners at the frame time
+with open(D + '/src/Boxed.scene', 'w') as f:
+    f.write('push; trans(0, 0, %r); call("Sq", "sq"); pop;\n' % Z0)
+run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/boxed.glsb', 'Boxed'])
+with open(D + '/traj_x.txt', 'w') as f:
+    for k in range(4):
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %r 0 0\n' % (k, k, -2.0 * k))  # C = (2 k, 0, 0)
+run([BIN + '/glsplay', D + '/boxed.glsb', '--camera', D + '/frs.cam', '--trajectory', D + '/traj_x.txt', '--frames',
+     '1', '--outputs', 'boxes,instance', '-o', D + '/boxes'])
+with open(D + '/boxes/frs/boxes_000001.json') as f:
+    bx = json.load(f)['boxes']
+Cx = 2 * (1 + v * DL)  # each row's camera centre
+cov = (np.abs(Z0 * dx + Cx) <= 2) & (np.abs(Z0 * dy) <= 2)  # pixel centres on the square at the row's time
+us, vs = u[cov], v[cov]
+want_bb = [us.min() - 0.5, vs.min() - 0.5, us.max() + 0.5, vs.max() + 0.5]
+want_c = np.array([[(2 if k & 1 else -2) - 2, 2 if k & 2 else -2, Z0] for k in range(8)])  # frame 1: C = (2, 0, 0)
+ok = len(bx) == 1 and np.allclose(bx[0]['bbox'], want_bb, atol=0) and \
+    np.abs(np.array(bx[0]['corners']) - want_c).max() < 1e-9
+result('rolling_shutter_boxes', ok, 'boxes %s; want bbox %s, corners %s' % (
+    [(b['bbox'], b['corners']) for b in bx], want_bb, want_c.tolist()))
 sys.exit(0 if OK else 1)
