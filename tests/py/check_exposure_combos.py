@@ -315,6 +315,33 @@ result('rolling_shutter_flow_beyond_rows_refused', p.stderr == 'glsplay: error: 
        'a motion file; sub-frame poses are interpolated between rows, never extrapolated: render fewer --frames or '
        'extend the file\n' and not os.path.exists(D + '/flow_beyond/frs/flow_000003.flo'), repr(p.stderr))
 
+# a moving instance under a still rolling camera: the square (at Z0, in
+# front of a wall at 30) moves (1, 0.5) a frame, 6 and 3 px; its row in
+# the next frame is later by dv rows, so it has moved for 1 + dv D frame
+# intervals: dv = 3 (1 + dv D), dv = 3 / (1 - 3 D), du = 6 (1 + dv D)
+with open(D + '/src/MovWall.scene', 'w') as f:
+    f.write('poly { vert(-50, -50, 30); vert(50, -50, 30); vert(50, 50, 30); vert(-50, 50, 30); }\n'
+            'push; trans(0, 0, %r); call("Sq", "mover"); pop;\n' % Z0)
+run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/movwall.glsb', 'MovWall'])
+with open(D + '/mover2.txt', 'w') as f:
+    f.write('# glsroad motion 1\n')
+    for k in range(4):
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %r %r 0\n' % (k, k, 1.0 * k, 0.5 * k))
+with open(D + '/still.txt', 'w') as f:
+    for k in range(4):
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 0 0 0\n' % (k, k))
+run([BIN + '/glsplay', D + '/movwall.glsb', '--camera', D + '/frs.cam', '--trajectory', D + '/still.txt', '--motion',
+     'mover=' + D + '/mover2.txt', '--frames', '1', '--outputs', 'flow,instance', '-o', D + '/movflow'])
+flo = cv2.readOpticalFlow(D + '/movflow/frs/flow_000001.flo')
+ids = cv2.imread(D + '/movflow/frs/instance_000001.png', cv2.IMREAD_UNCHANGED)
+sq = ids == ids.max()
+dv = 3 / (1 - 3 * DL)
+du = 6 * (1 + dv * DL)
+e_sq = np.abs(flo[sq] - [du, dv]).max() if sq.any() else np.inf
+e_bg = np.abs(flo[(ids > 0) & ~sq]).max()
+result('rolling_shutter_flow_moving_instance', sq.sum() > 100 and e_sq <= 1e-3 and e_bg <= 1e-3,
+       'square %d px, flow off by %.3g (want %.4f, %.4f); still wall off by %.3g' % (sq.sum(), e_sq, du, dv, e_bg))
+
 # ---- boxes with a rolling shutter: the 2D box from the rolling instance
 # image (the square's slanted sides), the 3D corners at the frame time
 with open(D + '/src/Boxed.scene', 'w') as f:
