@@ -93,12 +93,9 @@ uint64_t gls_distort_fine_samples(const gls_aa_plan *p)
     return m < 4 ? 4 : m;
 }
 
-/* The anti-aliased fine image: the one-pass lattice (box) through the
- * fine camera, as 16-bit RGB. */
-static int render_aa(gls_distort_frame *fr, gls_renderer *r, const gls_aa_plan *p, uint64_t aa_memory, char *err,
-                     size_t errlen)
+int gls_distort_render_aa(gls_renderer *r, const gls_camera *f, const gls_aa_plan *p, uint64_t aa_memory,
+                          uint16_t *rgb16, char *err, size_t errlen)
 {
-    const gls_camera *f = &fr->lay_aa.fine;
     gls_aa_opts o = gls_aa_defaults();
     o.samples = gls_distort_fine_samples(p);
     gls_aa_plan fp;
@@ -106,19 +103,30 @@ static int render_aa(gls_distort_frame *fr, gls_renderer *r, const gls_aa_plan *
     memset(&acc, 0, sizeof acc);
     if (gls_aa_plan_init(&fp, &o, err, errlen))
         return -1;
-    size_t nf = (size_t)f->width * f->height;
-    fr->rgb16 = malloc(3 * nf * sizeof *fr->rgb16);
-    if (!fr->rgb16 || gls_accum_init(&acc, f->width, f->height, 0, 0)) {
-        gls_accum_free(&acc);
+    if (gls_accum_init(&acc, f->width, f->height, 0, 0)) {
         snprintf(err, errlen, "out of memory for the %ux%u anti-aliased undistorted image", f->width, f->height);
         return -1;
     }
     gls_aa_fine_opts fo = {aa_memory, 0, 0, NULL, NULL, NULL, NULL};
     int rc = gls_aa_render_fine(r, f, &fp, &fo, &acc, NULL, err, errlen);
     if (rc == 0)
-        gls_accum_rgb16(&acc, fr->rgb16);
+        gls_accum_rgb16(&acc, rgb16);
     gls_accum_free(&acc);
     return rc;
+}
+
+/* The anti-aliased fine image: the one-pass lattice (box) through the
+ * fine camera, as 16-bit RGB. */
+static int render_aa(gls_distort_frame *fr, gls_renderer *r, const gls_aa_plan *p, uint64_t aa_memory, char *err,
+                     size_t errlen)
+{
+    const gls_camera *f = &fr->lay_aa.fine;
+    fr->rgb16 = malloc(3 * (size_t)f->width * f->height * sizeof *fr->rgb16);
+    if (!fr->rgb16) {
+        snprintf(err, errlen, "out of memory for the %ux%u anti-aliased undistorted image", f->width, f->height);
+        return -1;
+    }
+    return gls_distort_render_aa(r, f, p, aa_memory, fr->rgb16, err, errlen);
 }
 
 int gls_distort_frame_render(gls_distort_frame *fr, gls_renderer *r, const gls_camera *c, const gls_aa_plan *p,
@@ -240,15 +248,18 @@ static void *sample_image(void *arg)
     return NULL;
 }
 
-int gls_distort_frame_accum(const gls_distort_frame *fr, const gls_camera *c, const gls_aa_plan *p, gls_accum *acc)
+int gls_distort_frame_accum_rows(const gls_distort_frame *fr, const gls_camera *c, const gls_aa_plan *p, uint32_t v0,
+                                 uint32_t v1, gls_accum *acc)
 {
     size_t n = (size_t)c->width * c->height;
-    uint8_t *img = malloc(4 * n);
+    /* zero: the rows outside v0..v1 are added too, and never read */
+    uint8_t *img = v0 == 0 && v1 == c->height ? malloc(4 * n) : calloc(n ? 4 * n : 1, 1);
     if (!img)
         return -1;
+    uint32_t mid = v0 + (v1 - v0) / 2;
     for (uint64_t k = 0; k < p->count; k++) {
         uint64_t w;
-        sample_rows part[2] = {{fr, c, 0, 0, 0, c->height / 2, img}, {fr, c, 0, 0, c->height / 2, c->height, img}};
+        sample_rows part[2] = {{fr, c, 0, 0, v0, mid, img}, {fr, c, 0, 0, mid, v1, img}};
         gls_aa_sample(p, k, &part[0].ou, &part[0].ov, &w);
         if (!w)
             continue; /* outside a lattice Gaussian's window */
@@ -266,6 +277,11 @@ int gls_distort_frame_accum(const gls_distort_frame *fr, const gls_camera *c, co
     }
     free(img);
     return 0;
+}
+
+int gls_distort_frame_accum(const gls_distort_frame *fr, const gls_camera *c, const gls_aa_plan *p, gls_accum *acc)
+{
+    return gls_distort_frame_accum_rows(fr, c, p, 0, c->height, acc);
 }
 
 void gls_distort_frame_free(gls_distort_frame *f)

@@ -77,6 +77,17 @@ size_t gls_distort_frame_nearest(const gls_distort_frame *f, size_t i);
  * image, into acc (initialised for c's size).  -1 when out of memory. */
 int gls_distort_frame_accum(const gls_distort_frame *f, const gls_camera *c, const gls_aa_plan *p, gls_accum *acc);
 
+/* The same for rows v0..v1-1 only (the other rows of acc get zero
+ * samples: a band of a rolling shutter, distort_exposure.h). */
+int gls_distort_frame_accum_rows(const gls_distort_frame *f, const gls_camera *c, const gls_aa_plan *p, uint32_t v0,
+                                 uint32_t v1, gls_accum *acc);
+
+/* The anti-aliased fine image of plan p through the undistorted camera f
+ * (the one-pass lattice, gls_distort_fine_samples(p) a fine pixel, box)
+ * into rgb16 (f's size, RGB16).  -1 with a message. */
+int gls_distort_render_aa(gls_renderer *r, const gls_camera *f, const gls_aa_plan *p, uint64_t aa_memory,
+                          uint16_t *rgb16, char *err, size_t errlen);
+
 void gls_distort_frame_free(gls_distort_frame *f);
 
 /* --explain: the camera's lens model and how its image is made (nothing

@@ -6,6 +6,7 @@
 #include "distort.h"
 #include "distort_render.h"
 #include "lens_truth.h"
+#include "distort_exposure.h"
 #include "exposure.h"
 #include "lighting.h"
 #include "shadows.h"
@@ -194,6 +195,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                     c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
         gls_distort_explain(out, c, &p);
         gls_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
+        gls_distort_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
         gls_aa_fine_layout lay;
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
         if (aa && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
@@ -260,5 +262,15 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  lens: boxes: each instance drawn alone by the fine camera and read at each pixel "
                          "centre's ray; truncated from %d points an edge through the %s model\n",
                     GLS_LENS_BOX_EDGE_STEPS + 1, gls_distort_model_name(&c->dist));
+        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_exposure_of(c, o->trajectory || o->nmotions).rolling)
+            fprintf(out, "  rolling shutter: %s%s%s\n",
+                    outputs & GLS_OUT_FLOW_ALL ? "flow from each row's time to the row of frame t+1 whose time sees "
+                                                 "the point (a fixed point, the poses of every row of frame t+1), the "
+                                                 "depth of frame t+1 in its bands of rows"
+                                               : "",
+                    (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
+                    outputs & GLS_OUT_BOXES_ALL ? "boxes' 2D boxes from the rolling instance image, their 3D boxes "
+                                                  "and occlusion passes at the frame time"
+                                                : "");
     }
 }

@@ -173,16 +173,15 @@ static void accum_clear(gls_accum *a)
     a->samples = a->wsum = 0;
 }
 
-int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
-                        gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
-                        uint32_t band, char *msg, size_t msglen)
+int gls_exposure_render_bands(const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
+                              gls_pose_at_fn pose_at, void *pose_ud, gls_render_band_fn render_band, void *band_ud,
+                              gls_accum *acc, uint32_t band, char *msg, size_t msglen)
 {
     char why[300];
     if (gls_exposure_fits(e, p, why, sizeof why)) {
         snprintf(msg, msglen, "glsplay: error: camera: %s", why);
         return -1;
     }
-    (void)r;
     uint32_t H = c->height, h = band ? band : H;
     gls_accum tmp;
     if (gls_accum_init(&tmp, c->width, H, acc->weighted, acc->mixed != NULL)) {
@@ -198,11 +197,10 @@ int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure
             uint32_t v1 = v0 + h < H ? v0 + h : H;
             /* the band's middle row's time */
             double t = s + (e->rolling ? c->line_delay * (v0 + v1 - 1) / 2.0 : 0);
-            gls_camera at = *c, cam;
-            pose_at(ud, t, &at);
-            gls_exposure_lens(&at, lx, ly, &cam);
+            gls_camera at = *c;
+            pose_at(pose_ud, t, &at);
             accum_clear(&tmp);
-            rc = render_plan(ud, &cam, &tmp, msg, msglen);
+            rc = render_band(band_ud, &at, lx, ly, v0, v1, &tmp, msg, msglen);
             if (rc == 0)
                 add_rows(acc, &tmp, v0, v1, j == 0);
             wsum = tmp.wsum, samples = tmp.samples;
@@ -211,9 +209,35 @@ int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure
         acc->samples += samples;
     }
     gls_camera cam = *c;
-    pose_at(ud, 0, &cam);
+    pose_at(pose_ud, 0, &cam);
     gls_accum_free(&tmp);
     return rc;
+}
+
+/* gls_exposure_render's band: the whole plan through the pinhole camera
+ * at the band's pose and lens point (every row drawn, the band's kept). */
+typedef struct {
+    gls_render_plan_fn render_plan;
+    void *ud;
+} plan_band;
+
+static int render_plan_band(void *ud, const gls_camera *at, double lx, double ly, uint32_t v0, uint32_t v1,
+                            gls_accum *tmp, char *msg, size_t msglen)
+{
+    const plan_band *pb = ud;
+    gls_camera cam;
+    (void)v0, (void)v1;
+    gls_exposure_lens(at, lx, ly, &cam);
+    return pb->render_plan(pb->ud, &cam, tmp, msg, msglen);
+}
+
+int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
+                        gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
+                        uint32_t band, char *msg, size_t msglen)
+{
+    (void)r;
+    plan_band pb = {render_plan, ud};
+    return gls_exposure_render_bands(c, e, p, pose_at, ud, render_plan_band, &pb, acc, band, msg, msglen);
 }
 
 void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p)
@@ -245,4 +269,24 @@ void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_
                  "from an accumulator of %llu samples per pixel; depth and ground truth from the unblurred %s\n",
             K, K == 1 ? "" : "s", per, per == 1 ? "" : "s", e.rolling ? ", x the bands of rows" : "", K * per,
             e.rolling ? "centre pass, row by row at each row's time" : "centre pass at the frame time, lens centre");
+}
+
+double (*gls_exposure_row_poses(const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud))[12]
+{
+    double (*pose)[12] = malloc((c->height ? c->height : 1) * sizeof *pose);
+    if (!pose)
+        return NULL;
+    uint32_t h = band ? band : c->height;
+    for (uint32_t v0 = 0; v0 < c->height; v0 += h) {
+        uint32_t v1 = v0 + h < c->height ? v0 + h : c->height;
+        gls_camera at = *c;
+        pose_at(ud, c->line_delay * (v0 + v1 - 1) / 2.0, &at);
+        for (uint32_t v = v0; v < v1; v++) {
+            memcpy(pose[v], at.R, sizeof at.R);
+            memcpy(pose[v] + 9, at.T, sizeof at.T);
+        }
+    }
+    gls_camera at = *c;
+    pose_at(ud, 0, &at);
+    return pose;
 }

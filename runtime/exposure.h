@@ -78,12 +78,31 @@ int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure
                         gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
                         uint32_t band, char *msg, size_t msglen);
 
+/* One band of one sample: rows v0..v1-1 of the image through camera at
+ * (posed at the band's time, not yet moved to the lens point (lx, ly))
+ * drawn into tmp (cleared, c's size; only those rows are kept).  0, or -1
+ * with msg. */
+typedef int (*gls_render_band_fn)(void *ud, const gls_camera *at, double lx, double ly, uint32_t v0, uint32_t v1,
+                                  gls_accum *tmp, char *msg, size_t msglen);
+
+/* gls_exposure_render with the band drawn by render_band (a lens,
+ * distort_exposure.h): the same samples, bands, times and sums. */
+int gls_exposure_render_bands(const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
+                              gls_pose_at_fn pose_at, void *pose_ud, gls_render_band_fn render_band, void *band_ud,
+                              gls_accum *acc, uint32_t band, char *msg, size_t msglen);
+
 /* Rolling shutter: landmark k of l (taken at the frame time) replaced by
  * where it is at the time of the band of `band` rows it projects into,
  * with that time's camera pose (l->pose); the scene left at s = 0.  0,
  * or -1 when out of memory. */
 int gls_exposure_landmarks(const gls_scene *s, const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud,
                            gls_landmarks *l);
+
+/* Rolling shutter: each row's camera pose (R row-major, then T), that of
+ * its band of `band` rows (the middle row's time), the pose its depth was
+ * drawn with; the scene left at s = 0.  A malloc'd H x 12 array, or NULL
+ * when out of memory. */
+double (*gls_exposure_row_poses(const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud))[12];
 
 /* --explain: what the effects of camera c cost. */
 void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p);

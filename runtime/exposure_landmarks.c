@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "distort.h"
 #include "exposure.h"
 
 int gls_exposure_landmarks(const gls_scene *s, const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud,
@@ -37,7 +38,11 @@ int gls_exposure_landmarks(const gls_scene *s, const gls_camera *c, uint32_t ban
             gls_camera_to_cam(&at, X, pc);
             if (!(pc[2] > at.near))
                 continue;
-            double row = floor(at.fy * pc[1] / pc[2] + at.cy + 0.5);
+            /* through a lens, the row it is drawn in is the distorted one */
+            double u, v = at.fy * pc[1] / pc[2] + at.cy;
+            if (gls_distort_on(&at))
+                gls_distort_project(&at, pc, &u, &v);
+            double row = floor(v + 0.5);
             double d = row < v0 ? v0 - row : row > v1 - 1 ? row - (v1 - 1) : 0;
             if (d < best[k]) {
                 best[k] = d;

@@ -93,7 +93,7 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
     case GLS_OUT_DEPTH:
         return encode_float(f, f->z, 1, buf);
     case GLS_OUT_POINTS:
-        return gls_encode_ply(c, f->z, f->rgba, buf, &np);
+        return gls_encode_ply_rows(c, (const double (*)[12])f->row_pose, f->z, f->rgba, buf, &np);
     case GLS_OUT_LANDMARKS:
         return gls_encode_landmarks_csv(f->landmarks, c, f->z, buf);
     case GLS_OUT_DISPARITY:
@@ -191,6 +191,7 @@ static void destroy(gls_write_job *job)
     free(f->mask);
     free(f->image);
     free(f->z);
+    free(f->row_pose);
     gls_landmarks_free(f->landmarks);
     free(f->gt_inst);
     free(f->normal);

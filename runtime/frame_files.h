@@ -40,6 +40,7 @@ typedef struct {
     const gls_box_names *box_names; /* the run's, outlives the job */
     void *image;
     float *z;
+    double (*row_pose)[12]; /* rolling shutter: each row's camera pose for the points, or NULL */
     gls_landmarks *landmarks; /* --outputs landmarks: this frame's, or NULL */
     /* the ground-truth pass (gt_pass.h): instance per pixel, normals;
      * gt, the run's ids (outlives the job) */

@@ -138,6 +138,12 @@ int gls_encode_pfm_rgb(const float *rgb, uint32_t w, uint32_t h, gls_buf *out)
 
 int gls_encode_ply(const gls_camera *c, const float *z, const uint8_t *rgba, gls_buf *out, uint64_t *npoints)
 {
+    return gls_encode_ply_rows(c, NULL, z, rgba, out, npoints);
+}
+
+int gls_encode_ply_rows(const gls_camera *c, const double (*row_pose)[12], const float *z, const uint8_t *rgba,
+                        gls_buf *out, uint64_t *npoints)
+{
     size_t n = (size_t)c->width * c->height;
     uint64_t count = 0;
     for (size_t i = 0; i < n; i++)
@@ -152,20 +158,26 @@ int gls_encode_ply(const gls_camera *c, const float *z, const uint8_t *rgba, gls
                      (unsigned long long)count);
     if (gls_buf_put(out, hdr, (size_t)k) || gls_buf_reserve(out, (size_t)count * 27))
         return -1;
-    for (uint32_t v = 0; v < c->height; v++)
+    gls_camera at = *c;
+    for (uint32_t v = 0; v < c->height; v++) {
+        if (row_pose) { /* a rolling shutter's row: its own camera pose */
+            memcpy(at.R, row_pose[v], sizeof at.R);
+            memcpy(at.T, row_pose[v] + 9, sizeof at.T);
+        }
         for (uint32_t u = 0; u < c->width; u++) {
             size_t i = (size_t)v * c->width + u;
             if (!isfinite(z[i]))
                 continue;
             double Pc[3], P[3];
-            gls_camera_unproject(c, u, v, z[i], Pc);
-            gls_camera_to_world(c, Pc, P);
+            gls_camera_unproject(&at, u, v, z[i], Pc);
+            gls_camera_to_world(&at, Pc, P);
             uint8_t *p = out->data + out->len;
             for (int j = 0; j < 3; j++)
                 gls_le_put_f64(p + 8 * j, P[j]);
             memcpy(p + 24, rgba + 4 * i, 3);
             out->len += 27;
         }
+    }
     *npoints = count;
     return 0;
 }

@@ -49,5 +49,10 @@ int gls_encode_pfm(const float *z, uint32_t w, uint32_t h, gls_buf *out);
  * units from the origin) and uchar red green blue.  Points are in pixel
  * order, row by row from the top.  *npoints receives the count. */
 int gls_encode_ply(const gls_camera *c, const float *z, const uint8_t *rgba, gls_buf *out, uint64_t *npoints);
+/* The same with row v unprojected through the camera pose row_pose[v]
+ * (R row-major, then T; a rolling shutter's rows, exposure.h), or c's
+ * for every row when row_pose is NULL. */
+int gls_encode_ply_rows(const gls_camera *c, const double (*row_pose)[12], const float *z, const uint8_t *rgba,
+                        gls_buf *out, uint64_t *npoints);
 
 #endif

@@ -20,6 +20,7 @@
 #include "atomic_write.h"
 #include "calib_write.h"
 #include "distort.h"
+#include "distort_exposure.h"
 #include "distort_render.h"
 #include "frame_files.h"
 #include "frame_record.h"
@@ -27,6 +28,7 @@
 #include "glctx.h"
 #include "gt_boxes.h"
 #include "gt_flow.h"
+#include "gt_flow_rolling.h"
 #include "lens_truth.h"
 #include "gt_landmarks.h"
 #include "gt_pass.h"
@@ -371,12 +373,18 @@ static int output_on(const session *s, size_t k)
     return (s->o->outputs & outs[k].bit) && (s->next || !(outs[k].bit & GLS_OUT_FLOW_ALL));
 }
 
+static int pose_at(void *ud, double t, gls_camera *cam);
+static int flow_frame_rolling(session *s, const gls_camera *c, const char *name, uint32_t frame, uint32_t band,
+                              const uint32_t *inst, const float *z, float *z1, float *uv, uint8_t *mask, char *msg,
+                              size_t msglen);
+
 /* The flow of camera c from frame to the trajectory's next row (gt_flow.h),
  * from this frame's ground-truth pass (inst, z): the depth of the next
  * (its camera pose and motions; an extra centre pass), then the scene
  * posed back for this frame's other cameras.  0 with *uv and *mask, or -1
  * with the whole line in msg (empty: out of memory). */
 static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *df, const char *name, uint32_t frame,
+                      uint32_t band,
                       const uint32_t *inst, const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height;
@@ -387,6 +395,13 @@ static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *
     *mask = malloc(n ? n : 1);
     if (!z1 || !*uv || !*mask)
         goto out;
+    if (band < c->height) {
+        /* rolling shutter: both frames' rows at their own times */
+        rc = flow_frame_rolling(s, c, name, frame, band, inst, z, z1, *uv, *mask, msg, msglen);
+        if (rc)
+            goto out;
+        goto check;
+    }
     gls_camera c1 = *c;
     gls_traj_compose(s->rel->R, s->rel->T, s->next->R, s->next->T, c1.R, c1.T);
     gls_flow_moves_take(s->moves, s->ms->scene, 0);
@@ -407,6 +422,7 @@ static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *
         gls_flow_compute_lens(c, &c1, df, inst, z, z1, s->moves, *uv, *mask);
     else
         gls_flow_compute(c, &c1, inst, z, z1, s->moves, *uv, *mask);
+check:;
     uint32_t x, y;
     float fu, fv;
     if ((s->o->outputs & GLS_OUT_FLOW) && gls_flow_kitti_check(*uv, *mask, c->width, c->height, &x, &y, &fu, &fv)) {
@@ -425,6 +441,38 @@ out:
         *uv = NULL, *mask = NULL;
     }
     return rc;
+}
+
+/* flow_frame with a rolling shutter (gt_flow_rolling.h): the poses of
+ * every row of this frame and the next, the next frame's rolling depth.
+ * 0, or -1 with the whole line in msg (empty: out of memory). */
+static int flow_frame_rolling(session *s, const gls_camera *c, const char *name, uint32_t frame, uint32_t band,
+                              const uint32_t *inst, const float *z, float *z1, float *uv, uint8_t *mask, char *msg,
+                              size_t msglen)
+{
+    double dt = (double)s->next->frame - (double)frame, bad = 0;
+    char err[512];
+    gls_flow_rows fr;
+    int k = gls_flow_rows_fill(&fr, c, band, dt, s->moves, s->ms->scene, pose_at, s, &bad);
+    if (k == 1) {
+        char a[40];
+        gls_fmt_double(a, sizeof a, (double)frame + bad);
+        snprintf(msg, msglen, "glsplay: error: camera %s, frame %u: its flow needs the poses of the rolling readout "
+                              "of frame %llu, at frame %s beyond the rows of the trajectory or a motion file; sub-frame "
+                              "poses are interpolated between rows, never extrapolated: render fewer --frames or "
+                              "extend the file", name, frame, (unsigned long long)s->next->frame, a);
+        return -1;
+    }
+    if (k)
+        return -1;
+    if (gls_flow_rolling_depth(s->r, c, band, dt, pose_at, s, z1, err, sizeof err)) {
+        snprintf(msg, msglen, "glsplay: error: camera %s: %s", name, err);
+        gls_flow_rows_free(&fr);
+        return -1;
+    }
+    gls_flow_compute_rolling(c, &fr, s->moves, inst, z, z1, uv, mask);
+    gls_flow_rows_free(&fr);
+    return 0;
 }
 
 /* The scene and the camera s frame intervals after the frame time
@@ -513,15 +561,15 @@ static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg,
  * row's time, their rows copied out; the scene left at the frame time.
  * The buffers not asked for are NULL.  0, or -1 with msg. */
 static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t *rgba, float *z, uint32_t *inst,
-                        float *normal, char *msg, size_t msglen)
+                        float *normal, float *gt_z, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height, W = c->width;
     uint8_t *rb = rgba ? malloc(n * 4) : NULL;
-    float *zb = z ? malloc(n * sizeof *zb) : NULL, *nb = normal ? malloc(n * 3 * sizeof *nb) : NULL;
+    float *zb = z || gt_z ? malloc(n * sizeof *zb) : NULL, *nb = normal ? malloc(n * 3 * sizeof *nb) : NULL;
     uint32_t *ib = inst ? malloc(n * sizeof *ib) : NULL;
     char err[512];
     int rc = -1;
-    if ((rgba && !rb) || (z && !zb) || (normal && !nb) || (inst && !ib)) {
+    if ((rgba && !rb) || ((z || gt_z) && !zb) || (normal && !nb) || (inst && !ib)) {
         gls_frame_oom_message(msg, msglen, s->name_now, c->width, c->height, 28 * (uint64_t)n);
         goto out;
     }
@@ -541,8 +589,8 @@ static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t 
                 memcpy(z + a, zb + a, len * sizeof *z);
             }
         }
-        if (inst || normal) {
-            if (gls_gt_render(s->r, &at, ib, nb, NULL, err, sizeof err)) {
+        if (inst || normal || gt_z) {
+            if (gls_gt_render(s->r, &at, ib, nb, gt_z ? zb : NULL, err, sizeof err)) {
                 snprintf(msg, msglen, "glsplay: error: camera %s: %s", s->name_now, err);
                 goto out;
             }
@@ -550,6 +598,8 @@ static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t 
                 memcpy(inst + a, ib + a, len * sizeof *inst);
             if (normal)
                 memcpy(normal + 3 * a, nb + 3 * a, 3 * len * sizeof *normal);
+            if (gt_z) /* flow starts from the ground-truth pass's depth */
+                memcpy(gt_z + a, zb + a, len * sizeof *gt_z);
         }
     }
     rc = 0;
@@ -600,8 +650,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     gls_frame_files *f = NULL;
     int rc = -1;
     /* a lens: one undistorted fine image, read through the inverse model
-       (distort_render.h); never with the exposure's effects (refused by
-       exposure_setup) */
+       (distort_render.h); with the exposure's effects, one at each
+       sub-frame time, lens point and band (distort_exposure.h) */
     int lens = gls_distort_on(c);
     gls_distort_frame df;
     memset(&df, 0, sizeof df);
@@ -613,7 +663,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (lens && gls_distort_frame_render(&df, r, c, plan,
                                          (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) ||
                                              (o->outputs & GLS_OUT_POINTS),
-                                         (o->outputs & GLS_OUT_FROM_Z) != 0, aa, o->aa_memory, err, sizeof err)) {
+                                         (o->outputs & GLS_OUT_FROM_Z) != 0, aa && !fx, o->aa_memory, err,
+                                         sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
@@ -629,9 +680,17 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))) ||
         (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
         goto oom;
-    if (band < c->height) {
-        /* flow and boxes are refused with a rolling shutter (exposure_setup) */
-        if (centre_bands(s, c, band, rgba, z, gt_ids, normal, msg, sizeof msg))
+    if (band < c->height && lens) {
+        /* flow and boxes are refused with a rolling shutter through a lens
+         * (exposure_setup) */
+        if (gls_distort_truth_bands(r, c, &df, band, pose_at, s, rgba, z, gt_ids, normal, err, sizeof err)) {
+            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
+            goto out;
+        }
+    } else if (band < c->height) {
+        /* flow starts from each band's ground-truth depth; boxes take
+         * their 2D boxes from this instance image */
+        if (centre_bands(s, c, band, rgba, z, gt_ids, normal, gt_z, msg, sizeof msg))
             goto out;
     } else if (lens) {
         if (rgba || z)
@@ -661,7 +720,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
-        if (fx) {
+        if (fx && lens) {
+            if (gls_distort_exposure_render(r, c, &ex, plan, &df, pose_at, s, band, o->aa_memory, name, &acc, msg,
+                                            sizeof msg))
+                goto out;
+        } else if (fx) {
             /* motion blur, rolling shutter, depth of field: the plan at
              * each sub-frame time and lens point (exposure.h) */
             if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, band, msg, sizeof msg))
@@ -718,7 +781,8 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         }
     } else if (want_boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
         goto oom;
-    if (want_flow && flow_frame(s, c, lens ? &df : NULL, name, frame, gt_ids, gt_z, &flow, &flowmask, msg, sizeof msg)) {
+    if (want_flow && flow_frame(s, c, lens ? &df : NULL, name, frame, band, gt_ids, gt_z, &flow, &flowmask, msg,
+                                sizeof msg)) {
         if (msg[0])
             goto out;
         goto oom;
@@ -756,6 +820,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     /* rolling shutter: each landmark at its band's time, as its rows */
     if (f->landmarks && band < c->height &&
         gls_exposure_landmarks(s->scene, c, band, pose_at, s, f->landmarks))
+        goto oom;
+    /* rolling shutter: each row's points through the pose its depth was
+     * drawn with (spec/outputs.md) */
+    if ((o->outputs & GLS_OUT_POINTS) && band < c->height &&
+        !(f->row_pose = gls_exposure_row_poses(c, band, pose_at, s)))
         goto oom;
     f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
     /* the writer needs the ids only for the id images and tables */
@@ -1124,27 +1193,14 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
             fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);
             return 1;
         }
-        /* a lens's image is read through the inverse model from one fine
-         * render: not yet at sub-frame times or lens points */
-        if (gls_exposure_on(&e) && gls_distort_on(c)) {
-            fprintf(errs, "glsplay: error: camera %s: shutter, line_delay or aperture with lens distortion is not "
-                          "supported yet: the distorted image is made from one undistorted render\n", names[i]);
-            return 1;
-        }
-        /* flow and boxes start from one ground-truth pass at the frame
-         * time; a rolling shutter's rows each have their own */
-        if (e.rolling && (o->outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))) {
-            fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) is not supported: "
-                          "each row is exposed at its own time\n", names[i],
-                    o->outputs & GLS_OUT_FLOW_ALL ? "flow" : "boxes");
-            return 1;
-        }
-        /* each row's depth is at its own time, in that time's camera
-         * frame: the points would need a camera per row */
-        if (e.rolling && (o->outputs & GLS_OUT_POINTS)) {
-            fprintf(errs, "glsplay: error: camera %s: --outputs points with line_delay (rolling shutter) is not "
-                          "supported: each row is exposed at its own time, the point cloud needs one camera pose per "
-                          "frame\n", names[i]);
+        /* the rolling flow's fixed point is solved through the pinhole
+         * projection (gt_flow_rolling.h), and the boxes of a rolling
+         * image through a lens are not tested: not yet */
+        if (e.rolling && gls_distort_on(c) && (o->outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))) {
+            fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) and lens "
+                          "distortion is not supported yet: the rolling %s made for a pinhole camera\n",
+                    names[i], o->outputs & GLS_OUT_FLOW_ALL ? "flow" : "boxes",
+                    o->outputs & GLS_OUT_FLOW_ALL ? "flow is" : "boxes are");
             return 1;
         }
         need_rig |= e.blur || e.rolling;

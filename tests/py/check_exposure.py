@@ -193,12 +193,7 @@ for r, y in zip(rows, MARK_Y):
             abs(float(r['depth']) - Z0) < 1e-9 and r['in_image'] == '1' and r['visible'] == '1'):
         bad.append((r['name'], r['u'], uu, r['v'], vv, r['visible']))
 result('rolling_shutter_landmarks_per_row', len(rows) == len(MARK_Y) and not bad, 'rows %d; %s' % (len(rows), bad))
-# the points would need a camera per row: refused
-p = run([BIN + '/glsplay', D + '/half.glsb', '--camera', D + '/rs.cam', '--trajectory', D + '/traj.txt', '--frames',
-         '1', '--outputs', 'image,points', '-o', D + '/rs_points'], want_rc=1)
-result('rolling_shutter_points_refused', p.stderr == 'glsplay: error: camera rs: --outputs points with line_delay '
-       '(rolling shutter) is not supported: each row is exposed at its own time, the point cloud needs one camera '
-       'pose per frame\n' and not os.path.exists(D + '/rs_points/rs/image_000001.png'), repr(p.stderr))
+# points with a rolling shutter: tests/py/check_exposure_combos.py
 
 # ---- depth of field: an edge (a half-plane x >= 0) at depth Z seen
 # through a lens of diameter A focused at F.  Lens point l shifts it by

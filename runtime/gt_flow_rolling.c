@@ -1,0 +1,189 @@
+/* Optical flow with a rolling shutter (gt_flow_rolling.h). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "gt_flow_rolling.h"
+#include "gt_pass.h"
+
+void gls_flow_rows_free(gls_flow_rows *fr)
+{
+    free(fr->cam0);
+    free(fr->inv0);
+    free(fr->cam1);
+    free(fr->w1);
+    memset(fr, 0, sizeof *fr);
+}
+
+static void put_pose(double dst[12], const gls_camera *c)
+{
+    memcpy(dst, c->R, 9 * sizeof *dst);
+    memcpy(dst + 9, c->T, 3 * sizeof *dst);
+}
+
+int gls_flow_rows_fill(gls_flow_rows *fr, const gls_camera *c, uint32_t band, double next_dt, gls_flow_moves *m,
+                       const gls_scene *s, gls_pose_at_fn pose_at, void *ud, double *bad)
+{
+    memset(fr, 0, sizeof *fr);
+    uint32_t H = c->height, n = m->n, h = band ? band : H;
+    size_t rows = H ? H : 1, per = n ? n : 1;
+    fr->H = H, fr->n = n;
+    fr->cam0 = malloc(rows * sizeof *fr->cam0);
+    fr->cam1 = malloc(rows * sizeof *fr->cam1);
+    fr->inv0 = malloc(rows * per * sizeof *fr->inv0);
+    fr->w1 = malloc(rows * per * sizeof *fr->w1);
+    if (!fr->cam0 || !fr->cam1 || !fr->inv0 || !fr->w1) {
+        gls_flow_rows_free(fr);
+        return -1;
+    }
+    int rc = 0;
+    gls_camera at = *c;
+    /* frame t: each band at its middle row's time, as its depth */
+    for (uint32_t v0 = 0; v0 < H && rc == 0; v0 += h) {
+        uint32_t v1 = v0 + h < H ? v0 + h : H;
+        double t = c->line_delay * (v0 + v1 - 1) / 2.0;
+        if (pose_at(ud, t, &at)) {
+            *bad = t, rc = 1;
+            break;
+        }
+        gls_flow_moves_take(m, s, 0);
+        for (uint32_t v = v0; v < v1; v++) {
+            put_pose(fr->cam0[v], &at);
+            if (n)
+                memcpy(fr->inv0 + (size_t)v * n, m->inv0, n * sizeof *m->inv0);
+        }
+    }
+    /* frame t+1: every row's own time */
+    for (uint32_t v = 0; v < H && rc == 0; v++) {
+        double t = next_dt + c->line_delay * v;
+        if (pose_at(ud, t, &at)) {
+            *bad = t, rc = 1;
+            break;
+        }
+        gls_flow_moves_take(m, s, 1);
+        put_pose(fr->cam1[v], &at);
+        if (n)
+            memcpy(fr->w1 + (size_t)v * n, m->w1, n * sizeof *m->w1);
+    }
+    at = *c;
+    pose_at(ud, 0, &at);
+    if (rc)
+        gls_flow_rows_free(fr);
+    return rc;
+}
+
+int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, uint32_t band, double next_dt,
+                           gls_pose_at_fn pose_at, void *ud, float *z1, char *err, size_t errlen)
+{
+    size_t n = (size_t)c->width * c->height, W = c->width;
+    uint32_t h = band ? band : c->height;
+    float *zb = malloc((n ? n : 1) * sizeof *zb);
+    int rc = 0;
+    if (!zb) {
+        snprintf(err, errlen, "out of memory for the next frame's depth");
+        return -1;
+    }
+    for (uint32_t v0 = 0; v0 < c->height && rc == 0; v0 += h) {
+        uint32_t v1 = v0 + h < c->height ? v0 + h : c->height;
+        gls_camera at = *c;
+        pose_at(ud, next_dt + c->line_delay * (v0 + v1 - 1) / 2.0, &at);
+        rc = gls_gt_render(r, &at, NULL, NULL, zb, err, errlen);
+        if (rc == 0)
+            memcpy(z1 + W * v0, zb + W * v0, W * (v1 - v0) * sizeof *z1);
+    }
+    gls_camera at = *c;
+    pose_at(ud, 0, &at);
+    free(zb);
+    return rc;
+}
+
+/* y = M x for a 3x4 affine M. */
+static void apply34(const double M[12], const double x[3], double y[3])
+{
+    for (int r = 0; r < 3; r++)
+        y[r] = M[4 * r] * x[0] + M[4 * r + 1] * x[1] + M[4 * r + 2] * x[2] + M[4 * r + 3];
+}
+
+/* The point (world P, or Po in its instance's frame when k is a moving
+ * instance) in frame t+1's camera at row r's time: pixel (u, v) and Zc. */
+static void at_row(const gls_camera *c, const gls_flow_rows *fr, uint32_t k, const double P[3], uint32_t r,
+                   double out[3])
+{
+    double X[3], Pc[3];
+    if (k != GLS_NONE)
+        apply34(fr->w1[(size_t)r * fr->n + k], P, X);
+    else
+        memcpy(X, P, sizeof X);
+    gls_camera at = *c;
+    memcpy(at.R, fr->cam1[r], sizeof at.R);
+    memcpy(at.T, fr->cam1[r] + 9, sizeof at.T);
+    gls_camera_to_cam(&at, X, Pc);
+    out[2] = Pc[2];
+    out[0] = (c->fx * Pc[0] + c->skew * Pc[1]) / Pc[2] + c->cx;
+    out[1] = c->fy * Pc[1] / Pc[2] + c->cy;
+}
+
+/* u, v, Zc at the (clamped) continuous row y: linear between rows. */
+static void at_time(const gls_camera *c, const gls_flow_rows *fr, uint32_t k, const double P[3], double y,
+                    double out[3])
+{
+    double top = (double)(fr->H - 1), yc = y < 0 ? 0 : y > top ? top : y;
+    uint32_t r = (uint32_t)floor(yc);
+    double a = yc - r, p[3], q[3];
+    at_row(c, fr, k, P, r, p);
+    if (a == 0 || r + 1 >= fr->H) {
+        memcpy(out, p, sizeof p);
+        return;
+    }
+    at_row(c, fr, k, P, r + 1, q);
+    for (int i = 0; i < 3; i++)
+        out[i] = p[i] + a * (q[i] - p[i]);
+}
+
+void gls_flow_compute_rolling(const gls_camera *c, const gls_flow_rows *fr, const gls_flow_moves *m,
+                              const uint32_t *inst, const float *z, const float *z1, float *uv, uint8_t *mask)
+{
+    uint32_t w = c->width, h = c->height;
+    gls_camera c0 = *c;
+    for (uint32_t y = 0; y < h; y++) {
+        memcpy(c0.R, fr->cam0[y], sizeof c0.R);
+        memcpy(c0.T, fr->cam0[y] + 9, sizeof c0.T);
+        for (uint32_t x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            uv[2 * i] = uv[2 * i + 1] = GLS_FLOW_UNKNOWN;
+            mask[i] = GLS_FLOW_NONE;
+            if (!inst[i] || !isfinite(z[i]))
+                continue;
+            double Pc[3], P[3];
+            gls_camera_unproject(&c0, x, y, z[i], Pc);
+            gls_camera_to_world(&c0, Pc, P);
+            uint32_t k = m->n ? m->slot[inst[i] - 1] : GLS_NONE;
+            if (k != GLS_NONE) { /* to the instance's frame at its row's time */
+                double Po[3];
+                apply34(fr->inv0[(size_t)y * fr->n + k], P, Po);
+                memcpy(P, Po, sizeof P);
+            }
+            /* the fixed point v' = y(v'), from row 0's time */
+            double p[3], v = 0;
+            int ok = 0;
+            for (int it = 0; it < GLS_FLOW_RS_ITER; it++) {
+                at_time(c, fr, k, P, v, p);
+                if (!(p[2] > 0))
+                    break;
+                double step = fabs(p[1] - v);
+                v = p[1];
+                if (step <= GLS_FLOW_RS_TOL) {
+                    ok = 1;
+                    break;
+                }
+            }
+            if (!ok) { /* behind the camera, or no row sees it: no image position */
+                mask[i] = GLS_FLOW_OUT;
+                continue;
+            }
+            at_time(c, fr, k, P, v, p);
+            uv[2 * i] = (float)(p[0] - x);
+            uv[2 * i + 1] = (float)(v - y);
+            mask[i] = gls_flow_visibility(c, z1, p[0], v, p[2], 0);
+        }
+    }
+}
