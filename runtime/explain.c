@@ -277,8 +277,8 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  lens with the rolling shutter: %s%s%s\n",
                     outputs & GLS_OUT_FLOW_ALL ? "flow: each pixel's point on its centre's ray at its band's depth, "
                                                  "the row of frame t+1 whose time sees it through the model at every "
-                                                 "row's pose, the depth of frame t+1 of each band read at the pixel "
-                                                 "centres' rays"
+                                                 "row's pose, the depth of frame t+1 from one more ground-truth pass of "
+                                                 "the whole fine image per band, read at the pixel centres' rays"
                                                : "",
                     (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
                     outputs & GLS_OUT_BOXES_ALL ? "boxes: 2D boxes from the rolling instance image through the lens, "
