@@ -105,7 +105,7 @@ int gls_distort_exposure_render(gls_renderer *r, const gls_camera *c, const gls_
 
 int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_distort_frame *df, uint32_t band,
                             gls_pose_at_fn pose_at, void *ud, uint8_t *rgba, float *z, uint32_t *inst, float *normal,
-                            char *err, size_t errlen)
+                            float *gt_z, char *err, size_t errlen)
 {
     const gls_camera *f0 = &df->lay.fine;
     size_t n = (size_t)c->width * c->height, nf = (size_t)f0->width * f0->height, W = c->width;
@@ -114,10 +114,12 @@ int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_dist
     view.z = z ? malloc(nf * sizeof *view.z) : NULL;
     uint32_t *fids = inst ? malloc(nf * sizeof *fids) : NULL;
     float *fnrm = normal ? malloc(3 * nf * sizeof *fnrm) : NULL;
+    float *fgz = gt_z ? malloc(nf * sizeof *fgz) : NULL;
     float *zb = z ? malloc(n * sizeof *zb) : NULL;
     uint8_t *rb = rgba ? malloc(4 * n) : NULL;
     int rc = -1;
-    if ((rgba && (!view.rgba || !rb)) || (z && (!view.z || !zb)) || (inst && !fids) || (normal && !fnrm)) {
+    if ((rgba && (!view.rgba || !rb)) || (z && (!view.z || !zb)) || (inst && !fids) || (normal && !fnrm) ||
+        (gt_z && !fgz)) {
         snprintf(err, errlen, "out of memory for the %ux%u undistorted image of a band of rows", f0->width,
                  f0->height);
         goto out;
@@ -145,8 +147,8 @@ int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_dist
             if (z)
                 memcpy(z + a, zb + a, len * sizeof *z);
         }
-        if (inst || normal) {
-            if (gls_gt_render(r, &view.lay.fine, fids, fnrm, NULL, err, errlen))
+        if (inst || normal || gt_z) {
+            if (gls_gt_render(r, &view.lay.fine, fids, fnrm, fgz, err, errlen))
                 goto out;
             /* the band's pixels read at their nearest fine pixel, the
              * rule of every ground truth through a lens */
@@ -156,6 +158,8 @@ int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_dist
                     inst[i] = fids[k];
                 if (normal)
                     memcpy(normal + 3 * i, fnrm + 3 * k, 3 * sizeof *normal);
+                if (gt_z)
+                    gt_z[i] = fgz[k];
             }
         }
     }
@@ -169,6 +173,7 @@ out:
     free(view.z);
     free(fids);
     free(fnrm);
+    free(fgz);
     free(zb);
     free(rb);
     return rc;

@@ -272,5 +272,17 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                     outputs & GLS_OUT_BOXES_ALL ? "boxes' 2D boxes from the rolling instance image, their 3D boxes "
                                                   "and occlusion passes at the frame time"
                                                 : "");
+        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_distort_on(c) &&
+            gls_exposure_of(c, o->trajectory || o->nmotions).rolling)
+            fprintf(out, "  lens with the rolling shutter: %s%s%s\n",
+                    outputs & GLS_OUT_FLOW_ALL ? "flow: each pixel's point on its centre's ray at its band's depth, "
+                                                 "the row of frame t+1 whose time sees it through the model at every "
+                                                 "row's pose, the depth of frame t+1 from one more ground-truth pass of "
+                                                 "the whole fine image per band, read at the pixel centres' rays"
+                                               : "",
+                    (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
+                    outputs & GLS_OUT_BOXES_ALL ? "boxes: 2D boxes from the rolling instance image through the lens, "
+                                                  "truncation and occlusion through the model at the frame time"
+                                                : "");
     }
 }

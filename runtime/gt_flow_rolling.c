@@ -2,6 +2,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "distort.h"
+#include "distort_exposure.h"
 #include "gt_flow_rolling.h"
 #include "gt_pass.h"
 
@@ -71,9 +73,30 @@ int gls_flow_rows_fill(gls_flow_rows *fr, const gls_camera *c, uint32_t band, do
     return rc;
 }
 
-int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, uint32_t band, double next_dt,
-                           gls_pose_at_fn pose_at, void *ud, float *z1, char *err, size_t errlen)
+/* pose_at shifted by a frame interval: the next frame's bands through
+ * gls_distort_truth_bands, which takes times from the frame time */
+typedef struct {
+    gls_pose_at_fn pose_at;
+    void *ud;
+    double dt;
+} shifted;
+
+static int pose_shifted(void *ud, double t, gls_camera *cam)
 {
+    shifted *sh = ud;
+    return sh->pose_at(sh->ud, sh->dt + t, cam);
+}
+
+int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_distort_frame *f, uint32_t band,
+                           double next_dt, gls_pose_at_fn pose_at, void *ud, float *z1, char *err, size_t errlen)
+{
+    if (f) {
+        shifted sh = {pose_at, ud, next_dt};
+        int rc = gls_distort_truth_bands(r, c, f, band, pose_shifted, &sh, NULL, NULL, NULL, NULL, z1, err, errlen);
+        gls_camera at = *c;
+        pose_at(ud, 0, &at); /* the scene back at frame t */
+        return rc;
+    }
     size_t n = (size_t)c->width * c->height, W = c->width;
     uint32_t h = band ? band : c->height;
     float *zb = malloc((n ? n : 1) * sizeof *zb);
@@ -104,9 +127,12 @@ static void apply34(const double M[12], const double x[3], double y[3])
 }
 
 /* The point (world P, or Po in its instance's frame when k is a moving
- * instance) in frame t+1's camera at row r's time: pixel (u, v) and Zc. */
-static void at_row(const gls_camera *c, const gls_flow_rows *fr, uint32_t k, const double P[3], uint32_t r,
-                   double out[3])
+ * instance) in frame t+1's camera at row r's time: pixel (u, v) and Zc,
+ * projected by the lens model when f (distorted rows: the row whose time
+ * sees it).  0; -1 when the lens images it nowhere (behind the camera or
+ * at or beyond the model's fold). */
+static int at_row(const gls_camera *c, const gls_distort_frame *f, const gls_flow_rows *fr, uint32_t k,
+                  const double P[3], uint32_t r, double out[3])
 {
     double X[3], Pc[3];
     if (k != GLS_NONE)
@@ -118,31 +144,47 @@ static void at_row(const gls_camera *c, const gls_flow_rows *fr, uint32_t k, con
     memcpy(at.T, fr->cam1[r] + 9, sizeof at.T);
     gls_camera_to_cam(&at, X, Pc);
     out[2] = Pc[2];
+    if (f) {
+        double x = Pc[0] / Pc[2], y = Pc[1] / Pc[2];
+        if (!(Pc[2] > 0) || !(x * x + y * y < c->dist.max_r2))
+            return -1;
+        gls_distort_project(c, Pc, &out[0], &out[1]);
+        return 0;
+    }
     out[0] = (c->fx * Pc[0] + c->skew * Pc[1]) / Pc[2] + c->cx;
     out[1] = c->fy * Pc[1] / Pc[2] + c->cy;
+    return 0;
 }
 
-/* u, v, Zc at the (clamped) continuous row y: linear between rows. */
-static void at_time(const gls_camera *c, const gls_flow_rows *fr, uint32_t k, const double P[3], double y,
-                    double out[3])
+/* u, v, Zc at the (clamped) continuous row y: linear between rows.  -1
+ * as at_row at either row. */
+static int at_time(const gls_camera *c, const gls_distort_frame *f, const gls_flow_rows *fr, uint32_t k,
+                   const double P[3], double y, double out[3])
 {
     double top = (double)(fr->H - 1), yc = y < 0 ? 0 : y > top ? top : y;
     uint32_t r = (uint32_t)floor(yc);
     double a = yc - r, p[3], q[3];
-    at_row(c, fr, k, P, r, p);
+    if (at_row(c, f, fr, k, P, r, p))
+        return -1;
     if (a == 0 || r + 1 >= fr->H) {
         memcpy(out, p, sizeof p);
-        return;
+        return 0;
     }
-    at_row(c, fr, k, P, r + 1, q);
+    if (at_row(c, f, fr, k, P, r + 1, q))
+        return -1;
     for (int i = 0; i < 3; i++)
         out[i] = p[i] + a * (q[i] - p[i]);
+    return 0;
 }
 
-void gls_flow_compute_rolling(const gls_camera *c, const gls_flow_rows *fr, const gls_flow_moves *m,
-                              const uint32_t *inst, const float *z, const float *z1, float *uv, uint8_t *mask)
+void gls_flow_compute_rolling(const gls_camera *c, const gls_distort_frame *f, const gls_flow_rows *fr,
+                              const gls_flow_moves *m, const uint32_t *inst, const float *z, const float *z1,
+                              float *uv, uint8_t *mask)
 {
     uint32_t w = c->width, h = c->height;
+    /* through a lens z and z1 were each read at the nearest fine pixel, up
+     * to half a fine pixel from the centre (lens_truth.h) */
+    double spread = f ? 1 / f->lay.mag : 0;
     gls_camera c0 = *c;
     for (uint32_t y = 0; y < h; y++) {
         memcpy(c0.R, fr->cam0[y], sizeof c0.R);
@@ -154,7 +196,11 @@ void gls_flow_compute_rolling(const gls_camera *c, const gls_flow_rows *fr, cons
             if (!inst[i] || !isfinite(z[i]))
                 continue;
             double Pc[3], P[3];
-            gls_camera_unproject(&c0, x, y, z[i], Pc);
+            if (f) { /* the pixel centre's exact ray through the lens */
+                Pc[0] = z[i] * f->ray[2 * i], Pc[1] = z[i] * f->ray[2 * i + 1], Pc[2] = z[i];
+            } else {
+                gls_camera_unproject(&c0, x, y, z[i], Pc);
+            }
             gls_camera_to_world(&c0, Pc, P);
             uint32_t k = m->n ? m->slot[inst[i] - 1] : GLS_NONE;
             if (k != GLS_NONE) { /* to the instance's frame at its row's time */
@@ -166,8 +212,7 @@ void gls_flow_compute_rolling(const gls_camera *c, const gls_flow_rows *fr, cons
             double p[3], v = 0;
             int ok = 0;
             for (int it = 0; it < GLS_FLOW_RS_ITER; it++) {
-                at_time(c, fr, k, P, v, p);
-                if (!(p[2] > 0))
+                if (at_time(c, f, fr, k, P, v, p) || !(p[2] > 0))
                     break;
                 double step = fabs(p[1] - v);
                 v = p[1];
@@ -176,14 +221,17 @@ void gls_flow_compute_rolling(const gls_camera *c, const gls_flow_rows *fr, cons
                     break;
                 }
             }
-            if (!ok) { /* behind the camera, or no row sees it: no image position */
+            if (!ok) { /* behind the camera, past the lens's fold, or no row sees it: no image position */
                 mask[i] = GLS_FLOW_OUT;
                 continue;
             }
-            at_time(c, fr, k, P, v, p);
+            if (at_time(c, f, fr, k, P, v, p)) {
+                mask[i] = GLS_FLOW_OUT;
+                continue;
+            }
             uv[2 * i] = (float)(p[0] - x);
             uv[2 * i + 1] = (float)(v - y);
-            mask[i] = gls_flow_visibility(c, z1, p[0], v, p[2], 0);
+            mask[i] = gls_flow_visibility(c, z1, p[0], v, p[2], spread);
         }
     }
 }

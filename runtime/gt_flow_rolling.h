@@ -17,6 +17,7 @@
 #define GLS_GT_FLOW_ROLLING_H
 
 #include <stdint.h>
+#include "distort_render.h"
 #include "exposure.h"
 #include "gt_flow.h"
 
@@ -41,15 +42,25 @@ int gls_flow_rows_fill(gls_flow_rows *fr, const gls_camera *c, uint32_t band, do
 void gls_flow_rows_free(gls_flow_rows *fr);
 
 /* Frame t+1's rolling depth (bands of `band` rows at t1's row times)
- * into z1 (c's size; the renderer at c's size).  Leaves the scene at
- * frame t.  0, or -1 with a message (no prefix) in err. */
-int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, uint32_t band, double next_dt,
-                           gls_pose_at_fn pose_at, void *ud, float *z1, char *err, size_t errlen);
+ * into z1 (c's size; the renderer at c's size); through f's lens (NULL:
+ * none) each band's ground-truth depth read at the nearest fine pixel
+ * (gls_distort_truth_bands; the renderer left at another size).  Leaves
+ * the scene at frame t.  0, or -1 with a message (no prefix) in err. */
+int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_distort_frame *f, uint32_t band,
+                           double next_dt, gls_pose_at_fn pose_at, void *ud, float *z1, char *err, size_t errlen);
 
 /* The flow of every pixel of camera c (its size, intrinsics, near and
  * far) from the rolling ground truth of frame t (inst, z) into frame
- * t+1's rolling image (depth z1), as gls_flow_compute's uv and mask. */
-void gls_flow_compute_rolling(const gls_camera *c, const gls_flow_rows *fr, const gls_flow_moves *m,
-                              const uint32_t *inst, const float *z, const float *z1, float *uv, uint8_t *mask);
+ * t+1's rolling image (depth z1), as gls_flow_compute's uv and mask.
+ * Through a lens (f: c's frame, its pixel centres' rays; NULL: none, a
+ * pinhole): pixel i's point is z[i] times its centre's exact ray, y and u
+ * are the lens model's projection (gls_distort_project) at each row's
+ * pose, a row where the point lies behind the camera or at or beyond the
+ * model's fold ends the iteration (no flow, as one that does not settle),
+ * and the visibility has the lens's spread of one fine pixel
+ * (gls_flow_compute_lens). */
+void gls_flow_compute_rolling(const gls_camera *c, const gls_distort_frame *f, const gls_flow_rows *fr,
+                              const gls_flow_moves *m, const uint32_t *inst, const float *z, const float *z1,
+                              float *uv, uint8_t *mask);
 
 #endif

@@ -374,9 +374,9 @@ static int output_on(const session *s, size_t k)
 }
 
 static int pose_at(void *ud, double t, gls_camera *cam);
-static int flow_frame_rolling(session *s, const gls_camera *c, const char *name, uint32_t frame, uint32_t band,
-                              const uint32_t *inst, const float *z, float *z1, float *uv, uint8_t *mask, char *msg,
-                              size_t msglen);
+static int flow_frame_rolling(session *s, const gls_camera *c, const gls_distort_frame *df, const char *name,
+                              uint32_t frame, uint32_t band, const uint32_t *inst, const float *z, float *z1, float *uv,
+                              uint8_t *mask, char *msg, size_t msglen);
 
 /* The flow of camera c from frame to the trajectory's next row (gt_flow.h),
  * from this frame's ground-truth pass (inst, z): the depth of the next
@@ -396,8 +396,9 @@ static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *
     if (!z1 || !*uv || !*mask)
         goto out;
     if (band < c->height) {
-        /* rolling shutter: both frames' rows at their own times */
-        rc = flow_frame_rolling(s, c, name, frame, band, inst, z, z1, *uv, *mask, msg, msglen);
+        /* rolling shutter: both frames' rows at their own times (a lens,
+         * df: their points projected by its model) */
+        rc = flow_frame_rolling(s, c, df, name, frame, band, inst, z, z1, *uv, *mask, msg, msglen);
         if (rc)
             goto out;
         goto check;
@@ -444,11 +445,12 @@ out:
 }
 
 /* flow_frame with a rolling shutter (gt_flow_rolling.h): the poses of
- * every row of this frame and the next, the next frame's rolling depth.
- * 0, or -1 with the whole line in msg (empty: out of memory). */
-static int flow_frame_rolling(session *s, const gls_camera *c, const char *name, uint32_t frame, uint32_t band,
-                              const uint32_t *inst, const float *z, float *z1, float *uv, uint8_t *mask, char *msg,
-                              size_t msglen)
+ * every row of this frame and the next, the next frame's rolling depth
+ * (through df's lens when df).  0, or -1 with the whole line in msg
+ * (empty: out of memory). */
+static int flow_frame_rolling(session *s, const gls_camera *c, const gls_distort_frame *df, const char *name,
+                              uint32_t frame, uint32_t band, const uint32_t *inst, const float *z, float *z1, float *uv,
+                              uint8_t *mask, char *msg, size_t msglen)
 {
     double dt = (double)s->next->frame - (double)frame, bad = 0;
     char err[512];
@@ -465,12 +467,12 @@ static int flow_frame_rolling(session *s, const gls_camera *c, const char *name,
     }
     if (k)
         return -1;
-    if (gls_flow_rolling_depth(s->r, c, band, dt, pose_at, s, z1, err, sizeof err)) {
+    if (gls_flow_rolling_depth(s->r, c, df, band, dt, pose_at, s, z1, err, sizeof err)) {
         snprintf(msg, msglen, "glsplay: error: camera %s: %s", name, err);
         gls_flow_rows_free(&fr);
         return -1;
     }
-    gls_flow_compute_rolling(c, &fr, s->moves, inst, z, z1, uv, mask);
+    gls_flow_compute_rolling(c, df, &fr, s->moves, inst, z, z1, uv, mask);
     gls_flow_rows_free(&fr);
     return 0;
 }
@@ -681,9 +683,9 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
         goto oom;
     if (band < c->height && lens) {
-        /* flow and boxes are refused with a rolling shutter through a lens
-         * (exposure_setup) */
-        if (gls_distort_truth_bands(r, c, &df, band, pose_at, s, rgba, z, gt_ids, normal, err, sizeof err)) {
+        /* flow starts from each band's ground-truth depth at the nearest
+         * fine pixel; boxes take their 2D boxes from this instance image */
+        if (gls_distort_truth_bands(r, c, &df, band, pose_at, s, rgba, z, gt_ids, normal, gt_z, err, sizeof err)) {
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
@@ -1191,16 +1193,6 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
         if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
             gls_exposure_fits(&e, plan, why, sizeof why)) {
             fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);
-            return 1;
-        }
-        /* the rolling flow's fixed point is solved through the pinhole
-         * projection (gt_flow_rolling.h), and the boxes of a rolling
-         * image through a lens are not tested: not yet */
-        if (e.rolling && gls_distort_on(c) && (o->outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))) {
-            fprintf(errs, "glsplay: error: camera %s: --outputs %s with line_delay (rolling shutter) and lens "
-                          "distortion is not supported yet: the rolling %s made for a pinhole camera\n",
-                    names[i], o->outputs & GLS_OUT_FLOW_ALL ? "flow" : "boxes",
-                    o->outputs & GLS_OUT_FLOW_ALL ? "flow is" : "boxes are");
             return 1;
         }
         need_rig |= e.blur || e.rolling;

@@ -1,8 +1,9 @@
 #!/bin/sh
 # Ground truth through a lens (spec/outputs.md "Through a lens"): instance
 # ids, normals and landmarks of a distorted camera (tests/py/check_lens_truth.py,
-# against cv2), flow and boxes (tests/py/check_lens_flow_boxes.py), and the
-# outputs refused with a lens, asserted verbatim.
+# against cv2), flow and boxes (tests/py/check_lens_flow_boxes.py; with a
+# rolling shutter, tests/py/check_lens_rolling.py), and the outputs refused
+# with a lens, asserted verbatim.
 # Prints "ok NAME" / "FAIL NAME: why".
 BIN=${GLS_BIN:-build}
 PY=/usr/bin/python3
@@ -34,21 +35,10 @@ refused lens_refuses_disparity disparity "a rectified pair has no lens distortio
     --camera "$t/lens.cam" --camera "$t/lens_r.cam" --outputs disparity
 mkdir "$t/rig" && cp "$t/lens.cam" "$t/rig/lens.cam"
 echo 'pose rig' >>"$t/rig/lens.cam"
-# a rolling shutter through a lens: flow and boxes not yet (refused before
-# anything is drawn)
-mkdir "$t/rl" && { cat "$t/rig/lens.cam"; echo 'line_delay 0.001'; } >"$t/rl/rl.cam"
-for w in flow boxes; do
-    "$BIN/glsplay" "$t/tri.glsb" --camera "$t/rl/rl.cam" --trajectory "$t/traj.txt" --outputs image,$w \
-        -o "$t/out_rl_$w" >/dev/null 2>"$t/err"
-    rc=$?
-    what=$([ $w = flow ] && echo "flow is" || echo "boxes are")
-    want="glsplay: error: camera rl: --outputs $w with line_delay (rolling shutter) and lens distortion is not supported yet: the rolling $what made for a pinhole camera"
-    if [ $rc -eq 1 ] && [ "$(grep -v ': note: ' "$t/err")" = "$want" ] && [ ! -e "$t/out_rl_$w" ]; then
-        echo "ok lens_rolling_refuses_$w"
-    else
-        echo "FAIL lens_rolling_refuses_$w: exit $rc: $(cat "$t/err")"
-    fi
-done
+# flow and boxes from a rolling shutter through a lens
+# (tests/py/check_lens_rolling.py, against cv2 and a fixed point in numpy)
+$PY tests/py/check_lens_rolling.py "$BIN" "$t/rl" ||
+    echo "FAIL lens_rolling_flow_boxes: check_lens_rolling.py exited with status $?"
 # flow and boxes through a lens (tests/py/check_lens_flow_boxes.py, against cv2)
 $PY tests/py/check_lens_flow_boxes.py "$BIN" "$BIN/scenelib.glsb" "$t/fb" ||
     echo "FAIL lens_flow_boxes: check_lens_flow_boxes.py exited with status $?"
