@@ -17,6 +17,9 @@
 #                    across (bench/effects/fisheye.keys)
 #   shadows:         the demo under a sun casting shadows through a 2048 x
 #                    2048 map and a sky (bench/effects/DemoShadows.scene)
+#   point shadows:   the demo at night under a street lamp casting shadows
+#                    through a cube map (bench/effects/DemoPointShadows.scene),
+#                    into DIR/effects_point_shadows.png
 # The lens cases are make bench-effects' own keys files (bench/effects.cases).
 set -e
 B=$1 DIR=$2 H=bench/effects_o9
@@ -42,3 +45,9 @@ done
 cp examples/demo/left.cam "$t/shadows.cam"
 "$B/glsplay" "$t/shadows.glsb" --camera "$t/shadows.cam" --aa 2 --background 0.55,0.7,0.9 --outputs image -o "$t/out"
 "$B/pnghalf" "$t/out/shadows/image_000000.png" "$DIR/effects_shadows.png"
+"$B/glsc" -I examples/demo -I "$B/textures" -I bench/effects bench/effects/DemoPointShadows.scene \
+    -o "$t/point_shadows.glsb" 2>/dev/null
+cp examples/demo/left.cam "$t/point_shadows.cam"
+"$B/glsplay" "$t/point_shadows.glsb" --camera "$t/point_shadows.cam" --aa 2 --background 0.02,0.02,0.05 \
+    --outputs image -o "$t/out"
+"$B/pnghalf" "$t/out/point_shadows/image_000000.png" "$DIR/effects_point_shadows.png"
