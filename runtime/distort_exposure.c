@@ -150,17 +150,8 @@ int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_dist
         if (inst || normal || gt_z) {
             if (gls_gt_render(r, &view.lay.fine, fids, fnrm, fgz, err, errlen))
                 goto out;
-            /* the band's pixels read at their nearest fine pixel, the
-             * rule of every ground truth through a lens */
-            for (size_t i = a; i < a + len; i++) {
-                size_t k = gls_distort_frame_nearest(&view, i);
-                if (inst)
-                    inst[i] = fids[k];
-                if (normal)
-                    memcpy(normal + 3 * i, fnrm + 3 * k, 3 * sizeof *normal);
-                if (gt_z)
-                    gt_z[i] = fgz[k];
-            }
+            /* the band's pixels, the rule of every ground truth through a lens */
+            gls_distort_frame_read_truth(&view, a, a + len, fids, fnrm, fgz, inst, normal, gt_z);
         }
     }
     rc = 0;

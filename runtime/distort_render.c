@@ -187,6 +187,21 @@ size_t gls_distort_frame_nearest(const gls_distort_frame *fr, size_t i)
     return nearest(&fr->lay.fine, fr->ray[2 * i], fr->ray[2 * i + 1]);
 }
 
+void gls_distort_frame_read_truth(const gls_distort_frame *fr, size_t i0, size_t i1, const uint32_t *fine_ids,
+                                  const float *fine_normals, const float *fine_z, uint32_t *ids, float *normals,
+                                  float *z)
+{
+    for (size_t i = i0; i < i1; i++) {
+        size_t k = gls_distort_frame_nearest(fr, i);
+        if (ids)
+            ids[i] = fine_ids[k];
+        if (normals)
+            memcpy(normals + 3 * i, fine_normals + 3 * k, 3 * sizeof *normals);
+        if (z)
+            z[i] = fine_z[k];
+    }
+}
+
 void gls_distort_frame_centre(const gls_distort_frame *fr, const gls_camera *c, uint8_t *rgba, float *z)
 {
     const gls_camera *f = &fr->lay.fine;

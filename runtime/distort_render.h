@@ -72,6 +72,13 @@ void gls_distort_frame_centre(const gls_distort_frame *f, const gls_camera *c, u
  * (index into lay.fine's pixels): the rule every ground truth through the
  * lens reads by. */
 size_t gls_distort_frame_nearest(const gls_distort_frame *f, size_t i);
+/* Image pixels i0 <= i < i1 of the ground-truth pass's fine images
+ * (fine ids, normals and depth, as gt_pass.h draws them by lay.fine), each
+ * read at its nearest fine pixel, into ids, normals, z (any may be NULL:
+ * not wanted). */
+void gls_distort_frame_read_truth(const gls_distort_frame *f, size_t i0, size_t i1, const uint32_t *fine_ids,
+                                  const float *fine_normals, const float *fine_z, uint32_t *ids, float *normals,
+                                  float *z);
 
 /* The plan's samples through the lens, bilinear in the anti-aliased fine
  * image, into acc (initialised for c's size).  -1 when out of memory. */

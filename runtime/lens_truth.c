@@ -32,15 +32,7 @@ int gls_lens_gt_render(gls_renderer *r, const gls_distort_frame *f, const gls_ca
     if ((z && gls_renderer_set_size(r, fc.width, fc.height, err, errlen)) ||
         gls_gt_render(r, &fc, fids, fnrm, fz, err, errlen))
         goto out;
-    for (size_t i = 0; i < n; i++) {
-        size_t k = gls_distort_frame_nearest(f, i);
-        if (ids)
-            ids[i] = fids[k];
-        if (normals)
-            memcpy(normals + 3 * i, fnrm + 3 * k, 3 * sizeof *normals);
-        if (z)
-            z[i] = fz[k];
-    }
+    gls_distort_frame_read_truth(f, 0, n, fids, fnrm, fz, ids, normals, z);
     rc = 0;
 out:
     free(fids), free(fnrm), free(fz);
