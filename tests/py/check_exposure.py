@@ -11,25 +11,14 @@ ground truth at the frame time; off when nothing asks for it.  Prints
 """
 import csv
 import os
-import subprocess
 import sys
 import numpy as np
 import cv2
 
-OK = True
+from glstest import Checks
 
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
-
-
-def run(args, want_rc=0):
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != want_rc:
-        raise SystemExit('FAIL exposure_setup: %s: exit %d: %s' % (' '.join(args), p.returncode, p.stderr))
-    return p
+CHECKS = Checks('exposure_setup')
+result, run = CHECKS.result, CHECKS.run
 
 
 BIN, D = sys.argv[1], sys.argv[2]
@@ -295,4 +284,4 @@ want = ('glsplay: error: camera blur: exposure_samples 64 times the anti-aliasin
         'accumulator adds exactly (a Gaussian filter: at most 16 sub-frame renders); lower exposure_samples or --aa\n')
 result('exposure_accumulator_range_refused', p.stderr == want and not os.path.exists(D + '/gauss/blur'),
        repr(p.stderr))
-sys.exit(0 if OK else 1)
+CHECKS.exit()

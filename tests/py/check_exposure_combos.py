@@ -10,25 +10,14 @@ time.  Prints "ok NAME" / "FAIL NAME: why".
   check_exposure_combos.py BIN DIR
 """
 import os
-import subprocess
 import sys
 import numpy as np
 import cv2
 
-OK = True
+from glstest import Checks
 
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
-
-
-def run(args, want_rc=0):
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != want_rc:
-        raise SystemExit('FAIL exposure_combos_setup: %s: exit %d: %s' % (' '.join(args), p.returncode, p.stderr))
-    return p
+CHECKS = Checks('exposure_combos_setup')
+result, run = CHECKS.result, CHECKS.run
 
 
 BIN, D = sys.argv[1], sys.argv[2]
@@ -363,4 +352,4 @@ ok = len(bx) == 1 and np.allclose(bx[0]['bbox'], want_bb, atol=0) and \
     np.abs(np.array(bx[0]['corners']) - want_c).max() < 1e-9
 result('rolling_shutter_boxes', ok, 'boxes %s; want bbox %s, corners %s' % (
     [(b['bbox'], b['corners']) for b in bx], want_bb, want_c.tolist()))
-sys.exit(0 if OK else 1)
+CHECKS.exit()

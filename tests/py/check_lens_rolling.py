@@ -12,25 +12,14 @@ candidate row's time.  Prints "ok NAME" / "FAIL NAME: why".
 """
 import json
 import os
-import subprocess
 import sys
 import numpy as np
 import cv2
 
-OK = True
+from glstest import Checks
 
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
-
-
-def run(args, want_rc=0):
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != want_rc:
-        raise SystemExit('FAIL lens_rolling_setup: %s: exit %d: %s' % (' '.join(args), p.returncode, p.stderr))
-    return p
+CHECKS = Checks('lens_rolling_setup')
+result, run = CHECKS.result, CHECKS.run
 
 
 BIN, D = sys.argv[1], sys.argv[2]
@@ -295,4 +284,4 @@ for lens in LENSES:
            'bbox %s, want between %s and %s (global shutter %s); corners %s, want %s; truncated %r, cv2 %r; '
            'visible %.4f, rays %.4f' % (got.tolist(), bs.tolist(), bm.tolist(), glob.tolist(), bx[0]['corners'],
                                          want_c.tolist(), bx[0]['truncated'], trunc, bx[0]['visible_fraction'], frac))
-sys.exit(0 if OK else 1)
+CHECKS.exit()

@@ -3,6 +3,7 @@ tests/run.sh counts, writing a file with its directories, and running a
 tool (an exception with its message when it fails)."""
 import os
 import subprocess
+import sys
 
 
 def ok(name):
@@ -24,6 +25,30 @@ def run(*args):
     if r.returncode != 0:
         raise RuntimeError("%s: exit %d: %s" % (args[0], r.returncode, r.stderr.strip()))
     return r.stdout
+
+
+class Checks:
+    """A check script's results: result() prints the line and remembers a
+    failure (passed says whether all passed); run() runs a tool that must
+    exit with want_rc, else ends the script with "FAIL SETUP: ...", SETUP
+    the name given."""
+
+    def __init__(self, setup):
+        self.setup = setup
+        self.passed = True
+
+    def result(self, name, good, why=''):
+        self.passed &= bool(good)
+        print(('ok %s' % name) if good else ('FAIL %s: %s' % (name, why)))
+
+    def run(self, args, want_rc=0):
+        p = subprocess.run(args, capture_output=True, text=True)
+        if p.returncode != want_rc:
+            raise SystemExit('FAIL %s: %s: exit %d: %s' % (self.setup, ' '.join(args), p.returncode, p.stderr))
+        return p
+
+    def exit(self):
+        sys.exit(0 if self.passed else 1)
 
 
 def look_at(C, target):
