@@ -108,50 +108,55 @@ int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_dist
                             float *gt_z, char *err, size_t errlen)
 {
     const gls_camera *f0 = &df->lay.fine;
-    size_t n = (size_t)c->width * c->height, nf = (size_t)f0->width * f0->height, W = c->width;
+    size_t nf = (size_t)f0->width * f0->height, W = c->width;
     gls_distort_frame view = *df;
     view.rgba = rgba ? malloc(4 * nf) : NULL;
     view.z = z ? malloc(nf * sizeof *view.z) : NULL;
     uint32_t *fids = inst ? malloc(nf * sizeof *fids) : NULL;
     float *fnrm = normal ? malloc(3 * nf * sizeof *fnrm) : NULL;
     float *fgz = gt_z ? malloc(nf * sizeof *fgz) : NULL;
-    float *zb = z ? malloc(n * sizeof *zb) : NULL;
-    uint8_t *rb = rgba ? malloc(4 * n) : NULL;
     int rc = -1;
-    if ((rgba && (!view.rgba || !rb)) || (z && (!view.z || !zb)) || (inst && !fids) || (normal && !fnrm) ||
-        (gt_z && !fgz)) {
+    if ((rgba && !view.rgba) || (z && !view.z) || (inst && !fids) || (normal && !fnrm) || (gt_z && !fgz)) {
         snprintf(err, errlen, "out of memory for the %ux%u undistorted image of a band of rows", f0->width,
                  f0->height);
         goto out;
     }
+    /* GLS_LENS_BANDS_WHOLE=1 (tests/e2e/lens_bands.sh only): every band
+     * draws and reads the whole fine image, as before the rows were
+     * narrowed; the outputs must be the same bytes */
+    const char *env = getenv("GLS_LENS_BANDS_WHOLE");
+    int whole = env && strcmp(env, "1") == 0;
     /* every pass of a band at the plain fine image's size (gt_pass.h draws
      * at the size set) */
     if (gls_renderer_set_size(r, f0->width, f0->height, err, errlen))
         goto out;
     for (uint32_t v0 = 0; v0 < c->height; v0 += band) {
         uint32_t v1 = v0 + band < c->height ? v0 + band : c->height;
-        size_t a = W * v0, len = W * (v1 - v0);
+        size_t a = W * v0, b = W * v1;
+        /* the fine rows the band's pixels read (their nearest fine
+         * pixels): drawn (scissored, so bit for bit the whole pass's
+         * rows) and read back, no others */
+        uint32_t r0 = 0, r1 = f0->height - 1;
+        if (!whole)
+            gls_distort_frame_nearest_rows(&view, a, b, &r0, &r1);
+        uint32_t rows = r1 - r0 + 1;
         gls_camera at = *c;
         pose_at(ud, c->line_delay * (v0 + v1 - 1) / 2.0, &at);
         memcpy(view.lay.fine.R, at.R, sizeof at.R);
         memcpy(view.lay.fine.T, at.T, sizeof at.T);
         if (rgba || z) {
-            gls_render_pass(r, &view.lay.fine, 0.0, 0.0);
+            gls_render_pass_rows(r, &view.lay.fine, r0, rows);
             if (rgba)
-                gls_render_read_rgba(r, view.rgba);
+                gls_render_read_rgba_rows(r, r0, rows, view.rgba);
             if (z)
-                gls_render_read_z(r, view.z);
-            gls_distort_frame_centre(&view, c, rb, zb);
-            if (rgba)
-                memcpy(rgba + 4 * a, rb + 4 * a, 4 * len);
-            if (z)
-                memcpy(z + a, zb + a, len * sizeof *z);
+                gls_render_read_z_rows(r, r0, rows, view.z);
+            gls_distort_frame_centre_range(&view, a, b, rgba, z);
         }
         if (inst || normal || gt_z) {
-            if (gls_gt_render(r, &view.lay.fine, fids, fnrm, fgz, err, errlen))
+            if (gls_gt_render_rows(r, &view.lay.fine, r0, rows, fids, fnrm, fgz, err, errlen))
                 goto out;
             /* the band's pixels, the rule of every ground truth through a lens */
-            gls_distort_frame_read_truth(&view, a, a + len, fids, fnrm, fgz, inst, normal, gt_z);
+            gls_distort_frame_read_truth(&view, a, b, fids, fnrm, fgz, inst, normal, gt_z);
         }
     }
     rc = 0;
@@ -165,8 +170,6 @@ out:
     free(fids);
     free(fnrm);
     free(fgz);
-    free(zb);
-    free(rb);
     return rc;
 }
 
@@ -189,6 +192,6 @@ void gls_distort_exposure_explain(FILE *out, const gls_camera *c, int moving, co
             (unsigned long long)p->count);
     if (e.rolling)
         fprintf(out, "  lens with the exposure: ground truth per band of rows: one plain undistorted pass (and one "
-                     "ground-truth pass when ids or normals are asked for) at the band's time, read at the band's "
-                     "pixel centres\n");
+                     "ground-truth pass when ids or normals are asked for) at the band's time, drawn and read in "
+                     "only the fine rows the band's pixel centres read (nearest fine pixel)\n");
 }

@@ -202,12 +202,28 @@ void gls_distort_frame_read_truth(const gls_distort_frame *fr, size_t i0, size_t
     }
 }
 
+void gls_distort_frame_nearest_rows(const gls_distort_frame *fr, size_t i0, size_t i1, uint32_t *r0, uint32_t *r1)
+{
+    size_t lo = SIZE_MAX, hi = 0, w = fr->lay.fine.width;
+    for (size_t i = i0; i < i1; i++) {
+        size_t row = gls_distort_frame_nearest(fr, i) / w;
+        lo = row < lo ? row : lo;
+        hi = row > hi ? row : hi;
+    }
+    if (lo > hi) /* no pixels: one row, read by none */
+        lo = hi = 0;
+    *r0 = (uint32_t)lo, *r1 = (uint32_t)hi;
+}
+
 void gls_distort_frame_centre(const gls_distort_frame *fr, const gls_camera *c, uint8_t *rgba, float *z)
 {
-    const gls_camera *f = &fr->lay.fine;
-    size_t n = (size_t)c->width * c->height;
-    for (size_t i = 0; i < n; i++) {
-        size_t k = nearest(f, fr->ray[2 * i], fr->ray[2 * i + 1]);
+    gls_distort_frame_centre_range(fr, 0, (size_t)c->width * c->height, rgba, z);
+}
+
+void gls_distort_frame_centre_range(const gls_distort_frame *fr, size_t i0, size_t i1, uint8_t *rgba, float *z)
+{
+    for (size_t i = i0; i < i1; i++) {
+        size_t k = gls_distort_frame_nearest(fr, i);
         if (rgba)
             memcpy(rgba + 4 * i, fr->rgba + 4 * k, 4);
         if (z)

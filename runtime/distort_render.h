@@ -67,6 +67,8 @@ int gls_distort_frame_render(gls_distort_frame *f, gls_renderer *r, const gls_ca
 /* Ground truth at the pixel centres (nearest fine pixel): colour into
  * rgba (W x H RGBA8) and/or depth into z; either may be NULL. */
 void gls_distort_frame_centre(const gls_distort_frame *f, const gls_camera *c, uint8_t *rgba, float *z);
+/* The same for image pixels i0 <= i < i1 only (rgba, z: whole images). */
+void gls_distort_frame_centre_range(const gls_distort_frame *f, size_t i0, size_t i1, uint8_t *rgba, float *z);
 
 /* The plain fine image's pixel nearest to image pixel i's centre ray
  * (index into lay.fine's pixels): the rule every ground truth through the
@@ -76,6 +78,10 @@ size_t gls_distort_frame_nearest(const gls_distort_frame *f, size_t i);
  * (fine ids, normals and depth, as gt_pass.h draws them by lay.fine), each
  * read at its nearest fine pixel, into ids, normals, z (any may be NULL:
  * not wanted). */
+/* The fine rows r0..r1 (inclusive) that image pixels i0 <= i < i1 read
+ * by that rule, from the same rays: exactly the rows their ground truth
+ * needs drawn (a rolling shutter's band, distort_exposure.c). */
+void gls_distort_frame_nearest_rows(const gls_distort_frame *f, size_t i0, size_t i1, uint32_t *r0, uint32_t *r1);
 void gls_distort_frame_read_truth(const gls_distort_frame *f, size_t i0, size_t i1, const uint32_t *fine_ids,
                                   const float *fine_normals, const float *fine_z, uint32_t *ids, float *normals,
                                   float *z);

@@ -252,6 +252,12 @@ static int gt_normals(gt_state *g, const gls_scene *s, char *err, size_t errlen)
 int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *normal, float *z, char *err,
                   size_t errlen)
 {
+    return gls_gt_render_rows(r, c, 0, c->height, inst, normal, z, err, errlen);
+}
+
+int gls_gt_render_rows(gls_renderer *r, const gls_camera *c, uint32_t y0, uint32_t rows, uint32_t *inst,
+                       float *normal, float *z, char *err, size_t errlen)
+{
     gt_state *g = gls_renderer_ext(r);
     if (!g) {
         g = gt_create(r, gls_renderer_scene(r), err, errlen);
@@ -261,10 +267,11 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
     }
     uint32_t w = c->width, h = c->height;
     /* what the colour pass set up, restored afterwards */
-    GLint fbo = 0, vp[4], scissor = 0, alpha = 0;
+    GLint fbo = 0, vp[4], scissor = 0, box[4], alpha = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &fbo);
     glGetIntegerv(GL_VIEWPORT, vp);
     glGetIntegerv(GL_SCISSOR_TEST, &scissor);
+    glGetIntegerv(GL_SCISSOR_BOX, box);
     glGetIntegerv(GL_ALPHA_TEST, &alpha);
     int rc = gt_size(g, w, h, err, errlen);
     if (rc == 0 && normal)
@@ -273,7 +280,13 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
         static const GLuint id0[4] = {0, 0, 0, 0};
         g->gl->glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
         static const GLfloat n0[4] = {0, 0, 0, 0}, d0 = 0; /* reversed Z: far is 0 */
-        glDisable(GL_SCISSOR_TEST);
+        int part = y0 > 0 || rows < h;
+        if (part) { /* the rows asked for: clears and fragments obey the scissor */
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, (GLint)y0, (GLsizei)w, (GLsizei)rows);
+        } else {
+            glDisable(GL_SCISSOR_TEST);
+        }
         glDisable(GL_ALPHA_TEST); /* the shader discards instead */
         glViewport(0, 0, (GLsizei)w, (GLsizei)h);
         g->gl->glClearBufferuiv(GL_COLOR, 0, id0);
@@ -294,16 +307,17 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
         gls_render_hooked(r, c, gt_item, g);
         g->gl->glUseProgram(0);
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        size_t at = (size_t)y0 * w; /* rows y0.. at their place */
         if (inst) {
             glReadBuffer(GL_COLOR_ATTACHMENT0);
-            glReadPixels(0, 0, (GLsizei)w, (GLsizei)h, GL_RED_INTEGER, GL_UNSIGNED_INT, inst);
+            glReadPixels(0, (GLint)y0, (GLsizei)w, (GLsizei)rows, GL_RED_INTEGER, GL_UNSIGNED_INT, inst + at);
         }
         if (normal) {
             glReadBuffer(GL_COLOR_ATTACHMENT1);
-            glReadPixels(0, 0, (GLsizei)w, (GLsizei)h, GL_RGB, GL_FLOAT, normal);
+            glReadPixels(0, (GLint)y0, (GLsizei)w, (GLsizei)rows, GL_RGB, GL_FLOAT, normal + 3 * at);
         }
         if (z)
-            gls_render_read_z(r, z); /* from the bound (ground-truth) framebuffer */
+            gls_render_read_z_rows(r, y0, rows, z); /* from the bound (ground-truth) framebuffer */
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         GLenum e = glGetError();
         if (e != GL_NO_ERROR) {
@@ -313,8 +327,11 @@ int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *n
     }
     g->gl->glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fbo);
     glViewport(vp[0], vp[1], vp[2], vp[3]);
+    glScissor(box[0], box[1], box[2], box[3]);
     if (scissor)
         glEnable(GL_SCISSOR_TEST);
+    else
+        glDisable(GL_SCISSOR_TEST);
     if (alpha)
         glEnable(GL_ALPHA_TEST);
     return rc;

@@ -33,5 +33,11 @@
  * without what the pass needs, out of memory). */
 int gls_gt_render(gls_renderer *r, const gls_camera *c, uint32_t *inst, float *normal, float *z, char *err,
                   size_t errlen);
+/* The same drawing and reading only image rows y0..y0+rows-1 (a scissor,
+ * the whole pass's viewport and projection: those rows bit for bit the
+ * whole pass's), into inst, normal, z (whole images) at their place; the
+ * other rows untouched. */
+int gls_gt_render_rows(gls_renderer *r, const gls_camera *c, uint32_t y0, uint32_t rows, uint32_t *inst,
+                       float *normal, float *z, char *err, size_t errlen);
 
 #endif

@@ -538,6 +538,20 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
     gls_render_tiles(r, c, 1, &du, &dv);
 }
 
+void gls_render_pass_rows(gls_renderer *r, const gls_camera *c, uint32_t y0, uint32_t rows)
+{
+    if (y0 == 0 && rows >= r->height) {
+        gls_render_pass(r, c, 0.0, 0.0);
+        return;
+    }
+    /* a plain framebuffer has the scissor off (gls_renderer_set_mosaic):
+       on for this pass only; clear and fragments both obey it */
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, (GLint)y0, (GLsizei)r->width, (GLsizei)rows);
+    gls_render_pass(r, c, 0.0, 0.0);
+    glDisable(GL_SCISSOR_TEST);
+}
+
 /* The shadow maps for camera c (centre C, nnear near items prepared),
  * before a colour pass that draws the items vis marks. */
 static void draw_shadow_maps(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear,
@@ -690,20 +704,31 @@ void gls_render_read_mosaic(gls_renderer *r, uint32_t rows, uint8_t *rgba)
 
 void gls_render_read_rgba(gls_renderer *r, uint8_t *rgba)
 {
+    gls_render_read_rgba_rows(r, 0, r->height, rgba);
+}
+
+void gls_render_read_rgba_rows(gls_renderer *r, uint32_t y0, uint32_t rows, uint8_t *rgba)
+{
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, (GLsizei)r->width, (GLsizei)r->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glReadPixels(0, (GLint)y0, (GLsizei)r->width, (GLsizei)rows, GL_RGBA, GL_UNSIGNED_BYTE,
+                 rgba + 4 * (size_t)y0 * r->width);
 }
 
 void gls_render_read_z(gls_renderer *r, float *z)
 {
-    size_t n = (size_t)r->width * r->height;
+    gls_render_read_z_rows(r, 0, r->height, z);
+}
+
+void gls_render_read_z_rows(gls_renderer *r, uint32_t y0, uint32_t rows, float *z)
+{
+    size_t i0 = (size_t)y0 * r->width, i1 = i0 + (size_t)rows * r->width;
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, (GLsizei)r->width, (GLsizei)r->height, GL_DEPTH_COMPONENT, GL_FLOAT, r->dbuf);
+    glReadPixels(0, (GLint)y0, (GLsizei)r->width, (GLsizei)rows, GL_DEPTH_COMPONENT, GL_FLOAT, r->dbuf + i0);
     /* z_ndc = d = (a*ze + b) / -ze with ze = -Zc  =>  Zc = b / (d + a).
      * a = n/(f-n) and b = n f/(f-n) exactly as the floats GL used, so the
      * inversion adds no error of its own.  d == 0 is the clear value. */
     double a = r->zc_a, b = r->zc_b;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = i0; i < i1; i++) {
         double d = r->dbuf[i];
         z[i] = d > 0 ? (float)(b / (d + a)) : INFINITY;
     }

@@ -55,6 +55,13 @@ uint32_t gls_renderer_max_dim(const gls_renderer *r);
  * width/height must equal the framebuffer size. */
 void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv);
 
+/* gls_render_pass without jitter that clears and draws only framebuffer
+ * (= image) rows y0..y0+rows-1 of a plain framebuffer (no mosaic): a
+ * scissor, with the whole pass's viewport and projection, so those rows
+ * are the whole pass's bit for bit; the other rows keep what they held.
+ * For passes of which only some rows are read (distort_exposure.c). */
+void gls_render_pass_rows(gls_renderer *r, const gls_camera *c, uint32_t y0, uint32_t rows);
+
 /* Render n <= kx * ky passes into the mosaic's tiles 0..n-1, pass t with
  * jitter (du[t], dv[t]); one clear for all.  gls_render_pass() is this
  * with n = 1. */
@@ -126,6 +133,10 @@ void gls_render_read_mosaic(gls_renderer *r, uint32_t rows, uint8_t *rgba);
  * exactly as they were handed to GL (as float), in double. */
 void gls_render_read_rgba(gls_renderer *r, uint8_t *rgba);
 void gls_render_read_z(gls_renderer *r, float *z);
+/* The same for rows y0..y0+rows-1 only, into rgba / z at their place in
+ * the whole image (the other rows untouched). */
+void gls_render_read_rgba_rows(gls_renderer *r, uint32_t y0, uint32_t rows, uint8_t *rgba);
+void gls_render_read_z_rows(gls_renderer *r, uint32_t y0, uint32_t rows, float *z);
 
 /* GL_RENDERER and GL_VERSION strings of the context, for reports. */
 const char *gls_renderer_gl_name(const gls_renderer *r);

@@ -1,8 +1,10 @@
 /* The ground-truth pass (runtime/gt_pass.h): instance ids against the
  * closed-form footprints of two boxes, normals against the box face each
  * pixel's ray enters first, depth bit for bit the colour pass's, and ids
- * cut exactly where an alpha-tested texture cuts the image.  The expected
- * values come from a double-precision camera model written here. */
+ * cut exactly where an alpha-tested texture cuts the image; passes of some
+ * rows only (a scissor) give those rows of the whole passes bit for bit and
+ * leave the others alone.  The expected values come from a double-precision
+ * camera model written here. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -180,6 +182,60 @@ static void gt_run_end(gt_run *g)
     free(g->id), free(g->nrm), free(g->z), free(g->z0);
 }
 
+/* Passes of some rows only (gls_render_pass_rows, gls_gt_render_rows):
+ * rows y0..y0+rows-1 bit for bit the whole pass's (rgba, z: the colour
+ * pass's; id, nrm, gz: the ground-truth pass's), the other rows of the
+ * framebuffers still what camera o drew there and of the host buffers
+ * untouched. */
+static void rows_check(gls_renderer *r, const gls_camera *c, const gls_camera *o, uint32_t y0, uint32_t rows,
+                       const uint8_t *rgba, const float *z, const uint32_t *id, const float *nrm, const float *gz)
+{
+    char err[512];
+    size_t w = c->width, n = w * c->height, a = w * y0, b = a + w * rows;
+    uint8_t *rgba2 = malloc(4 * n), *orgba = malloc(4 * n);
+    float *z2 = malloc(n * sizeof *z2), *nrm2 = malloc(3 * n * sizeof *nrm2), *gz2 = malloc(n * sizeof *gz2);
+    uint32_t *id2 = malloc(n * sizeof *id2), *oid = malloc(n * sizeof *oid);
+    /* camera o's whole passes first, then c's rows over them */
+    gls_render_pass(r, o, 0, 0);
+    gls_render_read_rgba(r, orgba);
+    CHECK(gls_gt_render(r, o, oid, NULL, NULL, err, sizeof err) == 0);
+    memset(rgba2, 0xab, 4 * n), memset(z2, 0xab, n * sizeof *z2);
+    gls_render_pass_rows(r, c, y0, rows);
+    gls_render_read_rgba_rows(r, y0, rows, rgba2);
+    gls_render_read_z_rows(r, y0, rows, z2);
+    CHECK(memcmp(rgba2 + 4 * a, rgba + 4 * a, 4 * (b - a)) == 0);
+    CHECK(memcmp(z2 + a, z + a, (b - a) * sizeof *z) == 0);
+    int untouched = 1;
+    for (size_t i = 0; i < 4 * n; i++)
+        untouched &= (i >= 4 * a && i < 4 * b) || rgba2[i] == 0xab;
+    CHECK(untouched);
+    memset(id2, 0xab, n * sizeof *id2), memset(nrm2, 0xab, 3 * n * sizeof *nrm2), memset(gz2, 0xab, n * sizeof *gz2);
+    CHECK(gls_gt_render_rows(r, c, y0, rows, id2, nrm2, gz2, err, sizeof err) == 0);
+    CHECK(memcmp(id2 + a, id + a, (b - a) * sizeof *id) == 0);
+    CHECK(memcmp(nrm2 + 3 * a, nrm + 3 * a, 3 * (b - a) * sizeof *nrm) == 0);
+    CHECK(memcmp(gz2 + a, gz + a, (b - a) * sizeof *gz) == 0);
+    for (size_t i = 0; i < n; i++)
+        untouched &= (i >= a && i < b) || id2[i] == 0xababababu;
+    CHECK(untouched);
+    /* the framebuffers' other rows: camera o's, neither cleared nor drawn */
+    gls_render_read_rgba(r, rgba2);
+    CHECK(gls_gt_render_rows(r, c, y0, rows, id2, NULL, NULL, err, sizeof err) == 0);
+    int kept = 1, nkept = 0;
+    for (size_t i = 0; i < n; i++)
+        if (i < a || i >= b) {
+            kept &= memcmp(rgba2 + 4 * i, orgba + 4 * i, 4) == 0;
+            nkept += memcmp(rgba2 + 4 * i, rgba + 4 * i, 4) != 0;
+        }
+    CHECK(kept && nkept > 0);
+    /* the scissor is off again: a whole pass is the whole image */
+    gls_render_pass(r, c, 0, 0);
+    gls_render_read_rgba(r, rgba2);
+    CHECK(memcmp(rgba2, rgba, 4 * n) == 0);
+    CHECK(gls_gt_render(r, c, id2, NULL, NULL, err, sizeof err) == 0);
+    CHECK(memcmp(id2, id, n * sizeof *id) == 0);
+    free(rgba2), free(orgba), free(z2), free(nrm2), free(gz2), free(id2), free(oid);
+}
+
 /* Box "cube" called twice (instances 1 and 2): A near, B behind it and
  * partly hidden by it, through a rotated camera. */
 static void test_two_boxes(void)
@@ -279,6 +335,13 @@ static void test_two_boxes(void)
     CHECK(memcmp(id, id2, n * sizeof *id) == 0);
     CHECK(memcmp(nrm, nrm2, n * 3 * sizeof *nrm) == 0);
     CHECK(memcmp(rgba, rgba2, n * 4) == 0);
+    /* some rows only: the top, a middle band through both boxes, the
+     * bottom, one row; another camera (moved) drew the rest */
+    gls_camera o = c;
+    o.T[0] += 0.4;
+    static const uint32_t rr[4][2] = {{0, 20}, {70, 41}, {150, 30}, {95, 1}};
+    for (int k = 0; k < 4; k++)
+        rows_check(r, &c, &o, rr[k][0], rr[k][1], rgba, z0, id, nrm, z);
     free(rgba), free(rgba2), free(id2), free(nrm2);
     gt_run_end(&g);
     gls_scene_free(&s);
