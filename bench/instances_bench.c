@@ -14,13 +14,17 @@
  *          outside the view) or from above (all: all of it in view);
  *          --one: a single tree (the memory baseline); --no-cull:
  *          every item drawn (gls_scene.no_cull), to measure what culling
- *          saves.  One untimed frame
+ *          saves; --no-occlusion: occlusion culling off (render.h; on
+ *          by default, as in glsplay).  One untimed frame
  *          (warm-up), then FRAMES timed; prints "forest FPS drawn D culled C
  *          items I of N rss KIB loaded KIB geometry B table B setup S": rss
  *          is the peak resident set (KiB), loaded the peak before the
  *          first frame (bundle, scene and GL buffers), geometry and table
  *          gls_scene_memory's bytes, setup the seconds to build the
- *          bundle and the scene and draw the first frame. */
+ *          bundle and the scene and draw the first frame; then "occluded
+ *          O same S": items the first timed frame skipped as occluded, and
+ *          S = 1 when that frame's colour and depth are byte-identical to
+ *          the same frame drawn with occlusion culling off (0 otherwise). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -168,7 +172,7 @@ static long peak_rss_kib(void)
 int main(int argc, char **argv)
 {
     char err[256];
-    int flatten = 0, no_cull = 0, one = 0, forest = argc > 1 && strcmp(argv[1], "forest") == 0, edge = 0, frames = PS_FRAMES;
+    int flatten = 0, no_cull = 0, no_occlusion = 0, one = 0, forest = argc > 1 && strcmp(argv[1], "forest") == 0, edge = 0, frames = PS_FRAMES;
     int a = 2;
     if (forest && argc > 2 && (strcmp(argv[2], "edge") == 0 || strcmp(argv[2], "all") == 0))
         edge = strcmp(argv[2], "edge") == 0, a = 3;
@@ -177,6 +181,8 @@ int main(int argc, char **argv)
             flatten = 1;
         else if (strcmp(argv[a], "--no-cull") == 0)
             no_cull = 1;
+        else if (strcmp(argv[a], "--no-occlusion") == 0)
+            no_occlusion = 1;
         else if (forest && strcmp(argv[a], "--one") == 0)
             one = 1;
         else
@@ -186,7 +192,7 @@ int main(int argc, char **argv)
         frames = atoi(argv[a++]);
     if (argc < 2 || (!forest && strcmp(argv[1], "random") != 0) || (forest && a == 2) || a != argc || frames < 1) {
         fprintf(stderr, "usage: instances_bench random [--flatten]\n"
-                        "       instances_bench forest edge|all [--flatten] [--no-cull] [--one] FRAMES\n");
+                        "       instances_bench forest edge|all [--flatten] [--no-cull] [--no-occlusion] [--one] FRAMES\n");
         return 2;
     }
     gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
@@ -203,6 +209,8 @@ int main(int argc, char **argv)
     }
     sc.no_cull = no_cull;
     gls_renderer *r = gls_renderer_create(ctx, b, &sc, err, sizeof err);
+    if (r && no_occlusion)
+        gls_renderer_set_occlusion(r, GLS_OCCLUSION_OFF);
     if (!r || gls_renderer_set_size(r, 640, 480, err, sizeof err)) {
         fprintf(stderr, "instances_bench: %s\n", err);
         return 1;
@@ -233,9 +241,23 @@ int main(int argc, char **argv)
         uint64_t geo, table;
         gls_scene_cull(&sc, &c0, ivis, vis, &st);
         gls_scene_memory(&sc, &geo, &table);
-        printf("forest %.3f drawn %u culled %u items %u of %u rss %ld loaded %ld geometry %llu table %llu setup %.2f\n",
+        printf("forest %.3f drawn %u culled %u items %u of %u rss %ld loaded %ld geometry %llu table %llu setup %.2f",
                frames / (t2 - t1), st.drawn, st.culled, st.items_drawn, sc.nitems, peak_rss_kib(), rss_loaded,
                (unsigned long long)geo, (unsigned long long)table, t1 - t0);
+        /* the first timed frame again, as drawn and with occlusion off */
+        size_t np = (size_t)640 * 480;
+        uint8_t *rgba2 = malloc(np * 4);
+        float *z2 = malloc(np * 4);
+        gls_render_pass(r, &c0, 0, 0);
+        uint32_t occluded = gls_render_occluded(r);
+        gls_render_read_rgba(r, rgba);
+        gls_render_read_z(r, z);
+        gls_renderer_set_occlusion(r, GLS_OCCLUSION_OFF);
+        gls_render_pass(r, &c0, 0, 0);
+        gls_render_read_rgba(r, rgba2);
+        gls_render_read_z(r, z2);
+        printf(" occluded %u same %d\n", occluded, memcmp(rgba, rgba2, np * 4) == 0 && memcmp(z, z2, np * 4) == 0);
+        free(rgba2), free(z2);
         free(ivis), free(vis);
     } else {
         printf("random %.2f triangles %u items %u renderer %s\n", frames / (t2 - t1), sc.nverts / 3, sc.nitems,

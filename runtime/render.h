@@ -16,6 +16,7 @@
 #include "bundle.h"
 #include "camera.h"
 #include "glctx.h"
+#include "occlusion.h"
 #include "scene.h"
 #include "scene_cull.h"
 
@@ -126,6 +127,12 @@ void gls_render_read_mosaic(gls_renderer *r, uint32_t rows, uint8_t *rgba);
  * exactly as they were handed to GL (as float), in double. */
 void gls_render_read_rgba(gls_renderer *r, uint8_t *rgba);
 void gls_render_read_z(gls_renderer *r, float *z);
+
+/* Occlusion culling of colour passes (occlusion.h): GLS_OCCLUSION_AUTO by
+ * default; the image is the same in every mode, only the time differs. */
+void gls_renderer_set_occlusion(gls_renderer *r, gls_occlusion_mode mode);
+/* Items the last colour pass (or mapped tile) skipped as occluded. */
+uint32_t gls_render_occluded(const gls_renderer *r);
 
 /* GL_RENDERER and GL_VERSION strings of the context, for reports. */
 const char *gls_renderer_gl_name(const gls_renderer *r);
