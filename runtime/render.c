@@ -574,12 +574,13 @@ static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const
     r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->occ_vbo);
     r->gl.glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)o->ntested * GLS_OCCLUSION_BOX_VERTS * s->stride),
                        o->boxes, GL_STREAM_DRAW);
-    /* rounds of 1/64 of the tested units, then doubling: the near ones,
-     * which hide the most, get into the depth soonest */
-    uint32_t first = o->ntested / 64;
-    if (first < 16)
-        first = 16;
-    for (uint32_t k0 = 0, round = first; k0 < o->ntested; k0 += round, round *= 2) {
+    /* GLS_OCCLUSION_ROUNDS rounds (of at least 16 units): units tested in
+     * one round do not hide each other, so fewer rounds hide less; each
+     * round waits for its queries */
+    uint32_t round = o->ntested / GLS_OCCLUSION_ROUNDS + 1;
+    if (round < 16)
+        round = 16;
+    for (uint32_t k0 = 0; k0 < o->ntested; k0 += round) {
         uint32_t k1 = k0 + round < o->ntested ? k0 + round : o->ntested;
         double MV[16];
         float f[16];
