@@ -15,7 +15,11 @@
  *          --one: a single tree (the memory baseline); --no-cull:
  *          every item drawn (gls_scene.no_cull), to measure what culling
  *          saves; --no-occlusion: occlusion culling off (render.h; on
- *          by default, as in glsplay).  One untimed frame
+ *          by default, as in glsplay); --sparse: each of the tree's
+ *          quads a tenth as wide (ribs with gaps between them: the same
+ *          triangles and boxes, which overlap in the view as much, but
+ *          hide little: the case occlusion culling cannot win).  One
+ *          untimed frame
  *          (warm-up), then FRAMES timed; prints "forest FPS drawn D culled C
  *          items I of N rss KIB loaded KIB geometry B table B setup S": rss
  *          is the peak resident set (KiB), loaded the peak before the
@@ -77,6 +81,7 @@ static gls_bundle *random_bundle(void)
 /* Ring k of the tree: height and radius.  Ring 0..1 is the trunk (radius
  * 0.3 m, 0 to 2 m); rings 1..TREE_RINGS + 1 the crown, an ellipsoid
  * (radius 2.5 m, 2 to 9 m tall). */
+static int sparse; /* --sparse: each quad a tenth as wide (ribs) */
 static void ring(int k, double *y, double *r)
 {
     if (k == 0) {
@@ -102,7 +107,22 @@ static void tree(tb *t)
                 c[2 * s + e] = k == 0 ? (gls_rgba){0.4f, 0.25f, 0.1f, 1}
                                       : (gls_rgba){0.1f, (float)(0.3 + 0.04 * y), 0.1f, 1};
             }
-        tb_prim4(t, GLS_PRIM_QSTRIP, 2 * (TREE_SEG + 1), p, c, NULL);
+        if (!sparse) {
+            tb_prim4(t, GLS_PRIM_QSTRIP, 2 * (TREE_SEG + 1), p, c, NULL);
+            continue;
+        }
+        for (int s = 0; s < TREE_SEG; s++) { /* a rib: the quad's first tenth */
+            gls_vec4 q[4];
+            gls_rgba qc[4];
+            for (int v = 0; v < 4; v++) {
+                int e = v == 1 || v == 2, w = v >= 2; /* corners (s, 0) (s, 1) (s+.1, 1) (s+.1, 0) */
+                double y, r, a = 2 * M_PI * (s + 0.1 * w) / TREE_SEG;
+                ring(k + e, &y, &r);
+                q[v] = (gls_vec4){r * cos(a), y, r * sin(a), 1};
+                qc[v] = c[2 * s + e];
+            }
+            tb_prim4(t, GLS_PRIM_POLY, 4, q, qc, NULL);
+        }
     }
 }
 
@@ -183,6 +203,8 @@ int main(int argc, char **argv)
             no_cull = 1;
         else if (strcmp(argv[a], "--no-occlusion") == 0)
             no_occlusion = 1;
+        else if (forest && strcmp(argv[a], "--sparse") == 0)
+            sparse = 1;
         else if (forest && strcmp(argv[a], "--one") == 0)
             one = 1;
         else
@@ -192,7 +214,7 @@ int main(int argc, char **argv)
         frames = atoi(argv[a++]);
     if (argc < 2 || (!forest && strcmp(argv[1], "random") != 0) || (forest && a == 2) || a != argc || frames < 1) {
         fprintf(stderr, "usage: instances_bench random [--flatten]\n"
-                        "       instances_bench forest edge|all [--flatten] [--no-cull] [--no-occlusion] [--one] FRAMES\n");
+                        "       instances_bench forest edge|all [--flatten] [--no-cull] [--no-occlusion] [--sparse] [--one] FRAMES\n");
         return 2;
     }
     gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);

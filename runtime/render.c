@@ -580,6 +580,7 @@ static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const
     uint32_t round = o->ntested / GLS_OCCLUSION_ROUNDS + 1;
     if (round < 16)
         round = 16;
+    uint32_t hidden = 0;
     for (uint32_t k0 = 0; k0 < o->ntested; k0 += round) {
         uint32_t k1 = k0 + round < o->ntested ? k0 + round : o->ntested;
         double MV[16];
@@ -611,6 +612,12 @@ static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const
             }
         }
         glDepthMask(GL_TRUE);
+        hidden += k1 - k0 - shown;
+        /* an eighth tested and almost nothing hidden: the view overlaps
+         * without hiding (sparse geometry in big boxes); the rest is drawn
+         * untested rather than pre-drawn and tested for nothing */
+        if (k1 >= o->ntested / GLS_OCCLUSION_PROBE && GLS_OCCLUSION_STOP * hidden < k1)
+            break;
         if (shown && k1 < o->ntested) {
             draw_all(r, c, C, nnear, o->occluder);
             for (uint32_t k = k0; k < k1; k++)
