@@ -135,6 +135,7 @@ SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
 SEES_test_instances := runtime
+SEES_test_occlusion := runtime
 SEES_test_outputs := runtime
 SEES_test_writer := runtime
 SEES_test_progress := runtime

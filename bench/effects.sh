@@ -239,7 +239,7 @@ echo "make bench-effects ($(date -u +%Y-%m-%d)): time per frame, ms, median (min
 echo "runs of $FRAMES frames each (frames $FIRST..$((FIRST + FRAMES - 1))), 640x480, image output only (start-up, upload and PNG writing included)"
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(uname -sr)"
 "$NEW/glsplay" "$t/new/terrain.glsb" --camera "$t/new/rig.cam" --trajectory "$t/new/trajectory.txt" --explain 2>/dev/null |
-    grep -E '^GL_RENDERER:'
+    grep -E '^(backend|GL_RENDERER):'
 echo "this build: $commit; base: $BASE (the build before issue 16, from git archive)"
 echo "scenes: road = the road demo (the base's glsroad output, textured), left rig camera;"
 echo "        terrain = bench/play_scene.h's height field, 100,352 triangles, its camera path"

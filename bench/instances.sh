@@ -15,7 +15,11 @@
 #     (a) from the forest's edge looking along it (most of it culled),
 #     INST_EDGE_FRAMES (default 10), target >= 5x flattened (with the
 #     flattened path's own per-cell culling, and without it: every cell
-#     drawn, as the player drew before issue 14); (b) from
+#     drawn, as the player drew before issue 14), and with occlusion
+#     culling (the default) against --no-occlusion, checking the first
+#     frame is byte-identical both ways, also for the trees as sparse
+#     ribs (--sparse: boxes that hide little, occlusion's worst case);
+#     (b) from
 #     above, all of it in view, INST_ALL_FRAMES (default 3).
 B=${1:-build}
 REPS=${INST_REPS:-2}
@@ -52,9 +56,13 @@ run() { "$@" || { echo "bench-instances: $* failed" >&2; exit 1; }; }
     echo "2. forest: 100 x 100 instances of one 2,000-triangle tree (20,000,000 triangles), 640x480"
     one=$(run $IB forest all --one 1) || exit 1
     ei=$(run $IB forest edge "$EF") || exit 1
+    eo=$(run $IB forest edge --no-occlusion "$EF") || exit 1
+    es=$(run $IB forest edge --sparse "$EF") || exit 1
+    esn=$(run $IB forest edge --sparse --no-occlusion "$EF") || exit 1
     ef=$(run $IB forest edge --flatten "$EF") || exit 1
     en=$(run $IB forest edge --flatten --no-cull "$EF") || exit 1
     ai=$(run $IB forest all "$AF") || exit 1
+    ao=$(run $IB forest all --no-occlusion "$AF") || exit 1
     af=$(run $IB forest all --flatten "$AF") || exit 1
     mib() { awk -v k="$1" 'BEGIN { printf "%.1f MiB", k / 1024 }'; }
     mb() { awk -v b="$1" 'BEGIN { printf "%.2f MiB", b / 1048576 }'; }
@@ -67,10 +75,13 @@ run() { "$@" || { echo "bench-instances: $* failed" >&2; exit 1; }; }
     echo "(a) from the edge, looking along it, $EF frames:"
     echo "  instances drawn $(field "$ei" drawn), culled $(field "$ei" culled) of $n ($(awk -v c="$(field "$ei" culled)" -v n="$n" 'BEGIN { printf "%.1f %%", 100 * c / n }') culled); draw items $(field "$ei" items) of $(field "$ei" of)"
     echo "  --flatten (one instance, culled per 64-unit cell): cells drawn $(field "$ef" items) of $(field "$ef" of)"
+    echo "  occlusion culling (the default): $(field "$ei" occluded) of the $(field "$ei" items) draw items skipped as hidden in the first frame; image and depth byte-identical to occlusion off: $([ "$(field "$ei" same)" = 1 ] && echo yes || echo NO)"
+    echo "  frames/s: instanced $(field "$ei" forest), instanced with occlusion off $(field "$eo" forest) (occlusion: $(awk -v a="$(field "$ei" forest)" -v b="$(field "$eo" forest)" 'BEGIN { printf "%.2fx", a / b }'))"
+    echo "  the same trees as ribs (--sparse: each quad a tenth as wide; the same boxes, which hide little): $(field "$es" occluded) items skipped; frames/s $(field "$es" forest), with occlusion off $(field "$esn" forest) (occlusion: $(awk -v a="$(field "$es" forest)" -v b="$(field "$esn" forest)" 'BEGIN { printf "%.2fx", a / b }')); byte-identical: $([ "$(field "$es" same)" = 1 ] && echo yes || echo NO)"
     echo "  frames/s: instanced $(field "$ei" forest), --flatten $(field "$ef" forest), instanced/flattened $(awk -v a="$(field "$ei" forest)" -v b="$(field "$ef" forest)" 'BEGIN { printf "%.2f", a / b }')"
     echo "  frames/s: flattened with culling off (every cell drawn, as the player before issue 14) $(field "$en" forest), instanced/that $(awk -v a="$(field "$ei" forest)" -v b="$(field "$en" forest)" 'BEGIN { printf "%.2f", a / b }')"
     echo "(b) from above, all of it in view, $AF frames:"
-    echo "  instances drawn $(field "$ai" drawn), culled $(field "$ai" culled)"
+    echo "  instances drawn $(field "$ai" drawn), culled $(field "$ai" culled); occlusion culling $( [ "$(field "$ai" occluded)" = 0 ] && echo "not used (auto: little overlaps)" || echo "skipped $(field "$ai" occluded) items"); frames/s with occlusion off $(field "$ao" forest)"
     echo "  frames/s: instanced $(field "$ai" forest), --flatten $(field "$af" forest), instanced/flattened $(awk -v a="$(field "$ai" forest)" -v b="$(field "$af" forest)" 'BEGIN { printf "%.2f", a / b }')"
     echo
     echo "targets (issue 14):"

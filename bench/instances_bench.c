@@ -14,13 +14,21 @@
  *          outside the view) or from above (all: all of it in view);
  *          --one: a single tree (the memory baseline); --no-cull:
  *          every item drawn (gls_scene.no_cull), to measure what culling
- *          saves.  One untimed frame
+ *          saves; --no-occlusion: occlusion culling off (render.h; on
+ *          by default, as in glsplay); --sparse: each of the tree's
+ *          quads a tenth as wide (ribs with gaps between them: the same
+ *          triangles and boxes, which overlap in the view as much, but
+ *          hide little: the case occlusion culling cannot win).  One
+ *          untimed frame
  *          (warm-up), then FRAMES timed; prints "forest FPS drawn D culled C
  *          items I of N rss KIB loaded KIB geometry B table B setup S": rss
  *          is the peak resident set (KiB), loaded the peak before the
  *          first frame (bundle, scene and GL buffers), geometry and table
  *          gls_scene_memory's bytes, setup the seconds to build the
- *          bundle and the scene and draw the first frame. */
+ *          bundle and the scene and draw the first frame; then "occluded
+ *          O same S": items the first timed frame skipped as occluded, and
+ *          S = 1 when that frame's colour and depth are byte-identical to
+ *          the same frame drawn with occlusion culling off (0 otherwise). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -73,6 +81,7 @@ static gls_bundle *random_bundle(void)
 /* Ring k of the tree: height and radius.  Ring 0..1 is the trunk (radius
  * 0.3 m, 0 to 2 m); rings 1..TREE_RINGS + 1 the crown, an ellipsoid
  * (radius 2.5 m, 2 to 9 m tall). */
+static int sparse; /* --sparse: each quad a tenth as wide (ribs) */
 static void ring(int k, double *y, double *r)
 {
     if (k == 0) {
@@ -98,7 +107,22 @@ static void tree(tb *t)
                 c[2 * s + e] = k == 0 ? (gls_rgba){0.4f, 0.25f, 0.1f, 1}
                                       : (gls_rgba){0.1f, (float)(0.3 + 0.04 * y), 0.1f, 1};
             }
-        tb_prim4(t, GLS_PRIM_QSTRIP, 2 * (TREE_SEG + 1), p, c, NULL);
+        if (!sparse) {
+            tb_prim4(t, GLS_PRIM_QSTRIP, 2 * (TREE_SEG + 1), p, c, NULL);
+            continue;
+        }
+        for (int s = 0; s < TREE_SEG; s++) { /* a rib: the quad's first tenth */
+            gls_vec4 q[4];
+            gls_rgba qc[4];
+            for (int v = 0; v < 4; v++) {
+                int e = v == 1 || v == 2, w = v >= 2; /* corners (s, 0) (s, 1) (s+.1, 1) (s+.1, 0) */
+                double y, r, a = 2 * M_PI * (s + 0.1 * w) / TREE_SEG;
+                ring(k + e, &y, &r);
+                q[v] = (gls_vec4){r * cos(a), y, r * sin(a), 1};
+                qc[v] = c[2 * s + e];
+            }
+            tb_prim4(t, GLS_PRIM_POLY, 4, q, qc, NULL);
+        }
     }
 }
 
@@ -168,7 +192,7 @@ static long peak_rss_kib(void)
 int main(int argc, char **argv)
 {
     char err[256];
-    int flatten = 0, no_cull = 0, one = 0, forest = argc > 1 && strcmp(argv[1], "forest") == 0, edge = 0, frames = PS_FRAMES;
+    int flatten = 0, no_cull = 0, no_occlusion = 0, one = 0, forest = argc > 1 && strcmp(argv[1], "forest") == 0, edge = 0, frames = PS_FRAMES;
     int a = 2;
     if (forest && argc > 2 && (strcmp(argv[2], "edge") == 0 || strcmp(argv[2], "all") == 0))
         edge = strcmp(argv[2], "edge") == 0, a = 3;
@@ -177,6 +201,10 @@ int main(int argc, char **argv)
             flatten = 1;
         else if (strcmp(argv[a], "--no-cull") == 0)
             no_cull = 1;
+        else if (strcmp(argv[a], "--no-occlusion") == 0)
+            no_occlusion = 1;
+        else if (forest && strcmp(argv[a], "--sparse") == 0)
+            sparse = 1;
         else if (forest && strcmp(argv[a], "--one") == 0)
             one = 1;
         else
@@ -186,7 +214,7 @@ int main(int argc, char **argv)
         frames = atoi(argv[a++]);
     if (argc < 2 || (!forest && strcmp(argv[1], "random") != 0) || (forest && a == 2) || a != argc || frames < 1) {
         fprintf(stderr, "usage: instances_bench random [--flatten]\n"
-                        "       instances_bench forest edge|all [--flatten] [--no-cull] [--one] FRAMES\n");
+                        "       instances_bench forest edge|all [--flatten] [--no-cull] [--no-occlusion] [--sparse] [--one] FRAMES\n");
         return 2;
     }
     gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
@@ -203,6 +231,8 @@ int main(int argc, char **argv)
     }
     sc.no_cull = no_cull;
     gls_renderer *r = gls_renderer_create(ctx, b, &sc, err, sizeof err);
+    if (r && no_occlusion)
+        gls_renderer_set_occlusion(r, GLS_OCCLUSION_OFF);
     if (!r || gls_renderer_set_size(r, 640, 480, err, sizeof err)) {
         fprintf(stderr, "instances_bench: %s\n", err);
         return 1;
@@ -233,9 +263,23 @@ int main(int argc, char **argv)
         uint64_t geo, table;
         gls_scene_cull(&sc, &c0, ivis, vis, &st);
         gls_scene_memory(&sc, &geo, &table);
-        printf("forest %.3f drawn %u culled %u items %u of %u rss %ld loaded %ld geometry %llu table %llu setup %.2f\n",
+        printf("forest %.3f drawn %u culled %u items %u of %u rss %ld loaded %ld geometry %llu table %llu setup %.2f",
                frames / (t2 - t1), st.drawn, st.culled, st.items_drawn, sc.nitems, peak_rss_kib(), rss_loaded,
                (unsigned long long)geo, (unsigned long long)table, t1 - t0);
+        /* the first timed frame again, as drawn and with occlusion off */
+        size_t np = (size_t)640 * 480;
+        uint8_t *rgba2 = malloc(np * 4);
+        float *z2 = malloc(np * 4);
+        gls_render_pass(r, &c0, 0, 0);
+        uint32_t occluded = gls_render_occluded(r);
+        gls_render_read_rgba(r, rgba);
+        gls_render_read_z(r, z);
+        gls_renderer_set_occlusion(r, GLS_OCCLUSION_OFF);
+        gls_render_pass(r, &c0, 0, 0);
+        gls_render_read_rgba(r, rgba2);
+        gls_render_read_z(r, z2);
+        printf(" occluded %u same %d\n", occluded, memcmp(rgba, rgba2, np * 4) == 0 && memcmp(z, z2, np * 4) == 0);
+        free(rgba2), free(z2);
         free(ivis), free(vis);
     } else {
         printf("random %.2f triangles %u items %u renderer %s\n", frames / (t2 - t1), sc.nverts / 3, sc.nitems,

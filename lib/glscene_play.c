@@ -14,6 +14,7 @@
 #include <string.h>
 #include "buf.h"
 #include "glscene_internal.h"
+#include "occlusion.h"
 #include "player.h"
 #include "trajectory.h"
 
@@ -307,6 +308,16 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
         if (!has_val || parse_uint(next, 0, 1, &v))
             return play_fail(r, e, -1, "--writer-threads needs 0 or 1, got '%s'", val);
         o->writer_threads = (unsigned)v;
+        return 2;
+    } else if (strcmp(a, "--occlusion") == 0) {
+        if (has_val && strcmp(next, "auto") == 0)
+            o->occlusion = GLS_OCCLUSION_AUTO;
+        else if (has_val && strcmp(next, "on") == 0)
+            o->occlusion = GLS_OCCLUSION_ON;
+        else if (has_val && strcmp(next, "off") == 0)
+            o->occlusion = GLS_OCCLUSION_OFF;
+        else
+            return play_fail(r, e, -1, "--occlusion needs auto, on or off, got '%s'", val);
         return 2;
     } else if (strcmp(a, "--anisotropic") == 0) {
         unsigned long long v;

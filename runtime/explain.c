@@ -1,6 +1,7 @@
 /* glsplay --explain: the rendering plan, derived from the bundle's
  * feature bits (which the reader has checked against the content). */
 #include <stdlib.h>
+#include <string.h>
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "distort.h"
@@ -13,6 +14,7 @@
 #include "out_disparity.h"
 #include "units.h"
 #include "player.h"
+#include "occlusion.h"
 #include "scene_cull.h"
 #include "frame_writer.h"
 #include "outputs.h"
@@ -52,6 +54,38 @@ static void explain_backend(FILE *out, const gls_play_opts *o, const gls_glctx *
     fprintf(out, "GL_RENDERER: %s; GL_VERSION: %s\n", gi->renderer, gi->version);
 }
 
+/* What occlusion culling (occlusion.h) does with camera c's first frame:
+ * the plan only; what the queries hide is known when GL has drawn. */
+static void explain_occlusion(FILE *out, gls_occlusion *po, const gls_scene *s, const gls_camera *c,
+                              const uint8_t *vis, const gls_play_opts *o)
+{
+    gls_occlusion occ = *po;
+    double C[3];
+    gls_camera_centre(c, C);
+    if (o->occlusion == GLS_OCCLUSION_OFF) {
+        fprintf(out, "    occlusion culling: off (--occlusion off)\n");
+        return;
+    }
+    int rc = gls_occlusion_plan(&occ, (gls_occlusion_mode)o->occlusion, s, c, C, vis);
+    if (rc > 0) {
+        uint32_t first = 0;
+        for (uint32_t i = 0; i < s->nitems; i++)
+            first += occ.occluder[i];
+        fprintf(out, "    occlusion culling: %u boxes tested in occlusion queries, nearest first, behind %u draw items "
+                     "drawn depth-only (boxes over the image %.1f times)\n", occ.ntested, first, occ.overdraw);
+    } else if (rc == 0) {
+        fprintf(out, "    occlusion culling: not used (%s%s; boxes over the image %.1f times, %u boxes, %llu vertices; "
+                     "auto needs %.0f, %u and %u)\n",
+                o->occlusion == GLS_OCCLUSION_AUTO ? "auto" : "nothing to test",
+                o->occlusion == GLS_OCCLUSION_AUTO ? ", too little to gain" : "", occ.overdraw, occ.nunits,
+                (unsigned long long)occ.total_verts, GLS_OCCLUSION_MIN_OVERDRAW, GLS_OCCLUSION_MIN_UNITS,
+                GLS_OCCLUSION_MIN_VERTS);
+    } else {
+        fprintf(out, "    occlusion culling: out of memory, not used\n");
+    }
+    *po = occ; /* its buffers, reused by the next camera */
+}
+
 /* Instances, their memory, and what each camera culls in its first
  * frame (cams are posed for it: with a trajectory, its first frame). */
 static void explain_instances(FILE *out, const gls_scene *s, const gls_camera *cams, const char *const *names,
@@ -69,14 +103,18 @@ static void explain_instances(FILE *out, const gls_scene *s, const gls_camera *c
                  "instance table %s\n", s->ninst, drawing, s->nprotos, s->nitems,
             o->flatten ? ", every call inlined (--flatten)" : "", g, tb);
     uint8_t *ivis = malloc(s->ninst ? s->ninst : 1), *vis = malloc(s->nitems ? s->nitems : 1);
+    gls_occlusion occ;
+    memset(&occ, 0, sizeof occ);
     for (size_t k = 0; ivis && vis && k < n; k++) {
         gls_cull_stats st;
         gls_scene_cull(s, &cams[k], ivis, vis, &st);
         fprintf(out, "  camera %s, first frame: %u instances drawn, %u culled (outside the view); %u of %u items drawn\n",
                 names[k], st.drawn, st.culled, st.items_drawn, s->nitems);
+        explain_occlusion(out, &occ, s, &cams[k], vis, o);
     }
     free(ivis);
     free(vis);
+    gls_occlusion_free(&occ);
 }
 
 void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,

@@ -25,8 +25,8 @@
 #include "glctx.h"
 
 #define GLS_GLCALLS(X)                                                                                  \
-    X(glAlphaFunc) X(glBindTexture) X(glClear) X(glClearColor) X(glClearDepth) X(glColor4ub)            \
-    X(glColorPointer) X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDisableClientState) X(glDrawArrays) X(glDrawBuffer)   \
+    X(glAlphaFunc) X(glBindTexture) X(glClear) X(glClearColor) X(glClearDepth) X(glColor4ub) X(glColorMask) \
+    X(glColorPointer) X(glDeleteTextures) X(glDepthFunc) X(glDepthMask) X(glDisable) X(glDisableClientState) X(glDrawArrays) X(glDrawBuffer)   \
     X(glEnable) X(glEnableClientState) X(glFinish) X(glFlush) X(glGenTextures) X(glGetError)            \
     X(glGetFloatv) X(glGetIntegerv) X(glGetString) X(glLoadMatrixf) X(glMatrixMode) X(glNormalPointer) X(glPixelStorei)    \
     X(glReadBuffer) X(glReadPixels) X(glScissor) X(glTexCoord2f) X(glTexCoordPointer) X(glTexEnvi)      \
@@ -50,9 +50,11 @@ extern _Thread_local const gls_glcalls *gls_glcalls_current;
 #define glClearColor (gls_glcalls_current->p_glClearColor)
 #define glClearDepth (gls_glcalls_current->p_glClearDepth)
 #define glColor4ub (gls_glcalls_current->p_glColor4ub)
+#define glColorMask (gls_glcalls_current->p_glColorMask)
 #define glColorPointer (gls_glcalls_current->p_glColorPointer)
 #define glDeleteTextures (gls_glcalls_current->p_glDeleteTextures)
 #define glDepthFunc (gls_glcalls_current->p_glDepthFunc)
+#define glDepthMask (gls_glcalls_current->p_glDepthMask)
 #define glDisable (gls_glcalls_current->p_glDisable)
 #define glDisableClientState (gls_glcalls_current->p_glDisableClientState)
 #define glDrawArrays (gls_glcalls_current->p_glDrawArrays)
@@ -135,7 +137,12 @@ extern _Thread_local const gls_glcalls *gls_glcalls_current;
     X(PFNGLATTACHSHADERPROC, glAttachShader)                              \
     X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                \
     X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                              \
-    X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)
+    X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                    \
+    X(PFNGLGENQUERIESPROC, glGenQueries)                                  \
+    X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                            \
+    X(PFNGLBEGINQUERYPROC, glBeginQuery)                                  \
+    X(PFNGLENDQUERYPROC, glEndQuery)                                      \
+    X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)
 
 typedef struct gls_glext {
 #define GLS_GLEXT_MEMBER(type, name) type name;

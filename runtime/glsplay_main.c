@@ -53,6 +53,8 @@ static const char usage_text[] =
     "                         calib.txt (KITTI) and NAME/camera_info.yaml (ROS)\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
     "  --background R,G,B     colour where no surface is, components 0..1 (default 0,0,0)\n"
+    "  --occlusion M          occlusion culling: auto (default: when many boxes overlap\n"
+    "                         in the view), on or off; the images are the same\n"
     "  --anisotropic N        anisotropic texture filtering up to N x, N in 1..16\n"
     "                         (default 1: off; sharper textures at grazing angles, but\n"
     "                         llvmpipe takes minutes per frame with it: make bench-aa)\n"

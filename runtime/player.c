@@ -1355,6 +1355,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_bundle_free(b);
     b = NULL;
     gls_renderer_set_background(r, o->background);
+    gls_renderer_set_occlusion(r, (gls_occlusion_mode)o->occlusion);
     if (o->anisotropy > 1 && gls_renderer_set_anisotropy(r, o->anisotropy, err, sizeof err)) {
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;

@@ -91,6 +91,8 @@ typedef struct {
     uint32_t aa_tiles;           /* samples per GL pass, 0 = automatic   */
     uint64_t aa_memory;          /* one-pass anti-aliasing: bytes for the
                                     fine framebuffer's tiles, 0 = default */
+    int occlusion;               /* gls_occlusion_mode (occlusion.h):
+                                    0 = auto, the default               */
     uint32_t anisotropy;         /* anisotropic texture filtering up to N x;
                                     0 or 1 = off (the fast default)     */
     int progress;                /* GLS_PROGRESS_*: what goes to errs     */

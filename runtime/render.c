@@ -24,6 +24,7 @@
 #include <string.h>
 #include "glcalls.h"
 #include "lighting.h"
+#include "occlusion.h"
 #include "render.h"
 #include "shadows.h"
 #include "scene_cull.h"
@@ -63,6 +64,13 @@ struct gls_renderer {
     uint32_t pass_nnear;       /* near items, for the shadow maps' draw */
     void *ext;                 /* gls_renderer_set_ext: freed with r    */
     void (*ext_free)(void *);
+    gls_occlusion_mode occ_mode; /* occlusion culling (occlusion.h)     */
+    gls_occlusion occ;         /* its plan, reused from pass to pass   */
+    GLuint occ_vbo;            /* the tested boxes                      */
+    GLuint *occ_q;             /* one query per tested box              */
+    uint32_t occ_nq;
+    uint8_t *ovis;             /* the pass's items after occlusion      */
+    uint32_t occluded;         /* items the last colour pass skipped    */
 };
 
 void gls_mat_to_gl(const double rm[16], float cm[16])
@@ -236,10 +244,13 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
     }
     set_pointers(r, scene);
     r->gl.glGenBuffers(1, &r->near_vbo);
+    r->gl.glGenBuffers(1, &r->occ_vbo);
     r->near_list = malloc((scene->nitems ? scene->nitems : 1) * sizeof *r->near_list);
     r->ivis = malloc(scene->ninst ? scene->ninst : 1);
     r->vis = malloc(scene->nitems ? scene->nitems : 1);
-    if (!r->near_list || !r->ivis || !r->vis) {
+    r->ovis = malloc(scene->nitems ? scene->nitems : 1);
+    r->occ_mode = GLS_OCCLUSION_AUTO;
+    if (!r->near_list || !r->ivis || !r->vis || !r->ovis) {
         snprintf(err, errlen, "out of memory");
         gls_renderer_destroy(r);
         return NULL;
@@ -527,6 +538,97 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
         gls_lighting_end(r->light);
 }
 
+/* Occlusion culling of a colour pass (occlusion.h), with the projection,
+ * viewport and scissor of the pass set and its depth cleared.  With depth
+ * writes on and colour writes off: the occluders drawn; then, nearest
+ * first, a round of tested items at a time: their padded boxes drawn in
+ * occlusion queries (depth writes off), and the items whose box showed
+ * drawn, so that they hide the farther rounds.  Then the depth is cleared
+ * again and the pass draws what is left in its own order, as if nothing
+ * had happened.  Returns the items to draw: vis less those no sample of
+ * whose box passed (vis itself when nothing is tested). */
+static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear,
+                                     const uint8_t *vis)
+{
+    static const double I[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const gls_scene *s = r->scene;
+    gls_occlusion *o = &r->occ;
+    r->occluded = 0;
+    if (!r->ovis || gls_occlusion_plan(o, r->occ_mode, s, c, C, vis) <= 0)
+        return vis;
+    if (o->ntested > r->occ_nq) {
+        GLuint *q = realloc(r->occ_q, o->ntested * sizeof *q);
+        if (!q)
+            return vis;
+        r->occ_q = q;
+        r->gl.glGenQueries((GLsizei)(o->ntested - r->occ_nq), q + r->occ_nq);
+        r->occ_nq = o->ntested;
+    }
+    if (vis)
+        memcpy(r->ovis, vis, s->nitems);
+    else
+        memset(r->ovis, 1, s->nitems);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    draw_all(r, c, C, nnear, o->occluder);
+    memset(o->occluder, 0, s->nitems); /* from here: the round's items that showed */
+    r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->occ_vbo);
+    r->gl.glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)o->ntested * GLS_OCCLUSION_BOX_VERTS * s->stride),
+                       o->boxes, GL_STREAM_DRAW);
+    /* GLS_OCCLUSION_ROUNDS rounds (of at least 16 units): units tested in
+     * one round do not hide each other, so fewer rounds hide less; each
+     * round waits for its queries */
+    uint32_t round = o->ntested / GLS_OCCLUSION_ROUNDS + 1;
+    if (round < 16)
+        round = 16;
+    uint32_t hidden = 0;
+    for (uint32_t k0 = 0; k0 < o->ntested; k0 += round) {
+        uint32_t k1 = k0 + round < o->ntested ? k0 + round : o->ntested;
+        double MV[16];
+        float f[16];
+        item_modelview(c, I, C, MV); /* the boxes are relative to C */
+        gls_mat_to_gl(MV, f);
+        glLoadMatrixf(f);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_TEXTURE_2D);
+        if (!s->has_color)
+            glColor4ub(255, 255, 255, 255); /* alpha 1: the alpha test passes */
+        r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->occ_vbo);
+        set_pointers(r, s);
+        for (uint32_t k = k0; k < k1; k++) {
+            r->gl.glBeginQuery(GL_ANY_SAMPLES_PASSED, r->occ_q[k]);
+            glDrawArrays(GL_TRIANGLES, (GLint)(k * GLS_OCCLUSION_BOX_VERTS), (GLsizei)GLS_OCCLUSION_BOX_VERTS);
+            r->gl.glEndQuery(GL_ANY_SAMPLES_PASSED);
+        }
+        uint32_t shown = 0;
+        for (uint32_t k = k0; k < k1; k++) {
+            GLuint any = 1;
+            r->gl.glGetQueryObjectuiv(r->occ_q[k], GL_QUERY_RESULT, &any);
+            if (any) {
+                gls_occlusion_mark(o, k, o->occluder, 1);
+                shown++;
+            } else {
+                gls_occlusion_mark(o, k, r->ovis, 0);
+                r->occluded += gls_occlusion_items(o, k);
+            }
+        }
+        glDepthMask(GL_TRUE);
+        hidden += k1 - k0 - shown;
+        /* an eighth tested and almost nothing hidden: the view overlaps
+         * without hiding (sparse geometry in big boxes); the rest is drawn
+         * untested rather than pre-drawn and tested for nothing */
+        if (k1 >= o->ntested / GLS_OCCLUSION_PROBE && GLS_OCCLUSION_STOP * hidden < k1)
+            break;
+        if (shown && k1 < o->ntested) {
+            draw_all(r, c, C, nnear, o->occluder);
+            for (uint32_t k = k0; k < k1; k++)
+                gls_occlusion_mark(o, k, o->occluder, 0);
+        }
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    return r->ovis;
+}
+
 void gls_renderer_set_background(gls_renderer *r, const float rgb[3])
 {
     (void)r; /* state of the current context, which r owns */
@@ -596,7 +698,7 @@ void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const do
             glScissor(x, y, (GLsizei)r->width, (GLsizei)r->height);
         }
         load_projection(r, c, du[t], dv[t]);
-        draw_all(r, c, C, nnear, r->vis);
+        draw_all(r, c, C, nnear, occlusion_cull(r, c, C, nnear, r->vis));
     }
 }
 
@@ -669,7 +771,7 @@ void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], 
     glMatrixMode(GL_PROJECTION);
     glLoadMatrixf(f);
     glMatrixMode(GL_MODELVIEW);
-    draw_all(r, c, C, r->nnear, vis);
+    draw_all(r, c, C, r->nnear, occlusion_cull(r, c, C, r->nnear, vis));
 }
 
 void gls_render_read_rect(gls_renderer *r, uint32_t width, const uint32_t sc[4], uint8_t *rgba)
@@ -734,6 +836,9 @@ void gls_render_read_z_rows(gls_renderer *r, uint32_t y0, uint32_t rows, float *
     }
 }
 
+void gls_renderer_set_occlusion(gls_renderer *r, gls_occlusion_mode mode) { r->occ_mode = mode; }
+uint32_t gls_render_occluded(const gls_renderer *r) { return r->occluded; }
+
 const char *gls_renderer_gl_name(const gls_renderer *r) { return r->gl_name; }
 const char *gls_renderer_gl_version(const gls_renderer *r) { return r->gl_version; }
 int gls_renderer_anisotropic(const gls_renderer *r) { return r->aniso; }
@@ -782,6 +887,13 @@ void gls_renderer_destroy(gls_renderer *r)
         r->gl.glDeleteBuffers(1, &r->vbo);
     if (r->near_vbo)
         r->gl.glDeleteBuffers(1, &r->near_vbo);
+    if (r->occ_vbo)
+        r->gl.glDeleteBuffers(1, &r->occ_vbo);
+    if (r->occ_nq)
+        r->gl.glDeleteQueries((GLsizei)r->occ_nq, r->occ_q);
+    free(r->occ_q);
+    free(r->ovis);
+    gls_occlusion_free(&r->occ);
     free(r->near_buf);
     free(r->near_list);
     free(r->ivis);

@@ -16,6 +16,7 @@
 #include "bundle.h"
 #include "camera.h"
 #include "glctx.h"
+#include "occlusion.h"
 #include "scene.h"
 #include "scene_cull.h"
 
@@ -137,6 +138,12 @@ void gls_render_read_z(gls_renderer *r, float *z);
  * the whole image (the other rows untouched). */
 void gls_render_read_rgba_rows(gls_renderer *r, uint32_t y0, uint32_t rows, uint8_t *rgba);
 void gls_render_read_z_rows(gls_renderer *r, uint32_t y0, uint32_t rows, float *z);
+
+/* Occlusion culling of colour passes (occlusion.h): GLS_OCCLUSION_AUTO by
+ * default; the image is the same in every mode, only the time differs. */
+void gls_renderer_set_occlusion(gls_renderer *r, gls_occlusion_mode mode);
+/* Items the last colour pass (or mapped tile) skipped as occluded. */
+uint32_t gls_render_occluded(const gls_renderer *r);
 
 /* GL_RENDERER and GL_VERSION strings of the context, for reports. */
 const char *gls_renderer_gl_name(const gls_renderer *r);

@@ -1,0 +1,262 @@
+/* Occlusion culling's plan (occlusion.h): GL-free, so the padding and the
+ * near-plane rule are tested without a context. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "occlusion.h"
+#include "scene_cull.h"
+
+/* Relative margin of a tested box: its faces lie this fraction of (box
+ * size + distance) outside the item's own box.  Float rounding of the
+ * item's vertices and of the box's is about 2^-24 (6e-8) of the distance
+ * a few times over; 1e-4 keeps the box's front faces nearer than anything
+ * inside it, in depth as GL computes it, for rays up to 89 degrees off the
+ * optical axis, and costs nothing measurable in what is culled. */
+#define PAD 1e-4
+
+/* Rows of the inverse of W's linear part (row-major 4x4, affine): 0, or
+ * -1 when it is singular or not finite. */
+static int inverse3(const double W[16], double Wi[9])
+{
+    double a = W[0], b = W[1], c = W[2], d = W[4], e = W[5], f = W[6], g = W[8], h = W[9], k = W[10];
+    double A = e * k - f * h, B = f * g - d * k, Cc = d * h - e * g;
+    double det = a * A + b * B + c * Cc;
+    if (!isfinite(det) || fabs(det) < 1e-300)
+        return -1;
+    double m[9] = {A, c * h - b * k, b * f - c * e, B, a * k - c * g, c * d - a * f, Cc, b * g - a * h, a * e - b * d};
+    for (int i = 0; i < 9; i++)
+        Wi[i] = m[i] / det;
+    return 0;
+}
+
+int gls_occlusion_box(const gls_camera *c, const double C[3], const double W[16], const double plo[3],
+                      const double phi[3], const double wlo[3], const double whi[3], double corner[8][3])
+{
+    double size = 0, d2 = 0;
+    for (int j = 0; j < 3; j++) {
+        double m = 0.5 * (wlo[j] + whi[j]) - C[j];
+        size = fmax(size, whi[j] - wlo[j]);
+        d2 += m * m;
+    }
+    double pad = PAD * (size + sqrt(d2)), Wi[9];
+    if (W && inverse3(W, Wi) == 0) {
+        /* the proto box under W, each face moved out by pad in the world:
+         * face j's normal is row j of W^-1 over its length, so a step of
+         * pad along it is pad * |row j| in proto units */
+        double p[3];
+        for (int j = 0; j < 3; j++)
+            p[j] = pad * sqrt(Wi[3 * j] * Wi[3 * j] + Wi[3 * j + 1] * Wi[3 * j + 1] + Wi[3 * j + 2] * Wi[3 * j + 2]);
+        for (int k = 0; k < 8; k++) {
+            double q[3];
+            for (int j = 0; j < 3; j++)
+                q[j] = k >> j & 1 ? phi[j] + p[j] : plo[j] - p[j];
+            for (int i = 0; i < 3; i++)
+                corner[k][i] = W[4 * i] * q[0] + W[4 * i + 1] * q[1] + W[4 * i + 2] * q[2] + W[4 * i + 3] - C[i];
+        }
+    } else {
+        for (int k = 0; k < 8; k++)
+            for (int j = 0; j < 3; j++)
+                corner[k][j] = (k >> j & 1 ? whi[j] + pad : wlo[j] - pad) - C[j];
+    }
+    for (int k = 0; k < 8; k++) {
+        /* camera z of the corner: R (P - C), T = -R C cancelling exactly */
+        double z = c->R[6] * corner[k][0] + c->R[7] * corner[k][1] + c->R[8] * corner[k][2];
+        if (!(z > c->near * (1 + 1e-6)) || !isfinite(z))
+            return -1;
+    }
+    return 0;
+}
+
+static const double *sort_key;
+static int by_key(const void *pa, const void *pb)
+{
+    uint32_t a = *(const uint32_t *)pa, b = *(const uint32_t *)pb;
+    if (sort_key[a] != sort_key[b])
+        return sort_key[a] < sort_key[b] ? -1 : 1;
+    return a < b ? -1 : a > b; /* deterministic among equals */
+}
+
+/* Distance from C to the box lo..hi (0 inside). */
+static double box_distance(const double C[3], const double lo[3], const double hi[3])
+{
+    double d2 = 0;
+    for (int j = 0; j < 3; j++) {
+        double e = C[j] < lo[j] ? lo[j] - C[j] : C[j] > hi[j] ? C[j] - hi[j] : 0;
+        d2 += e * e;
+    }
+    return sqrt(d2);
+}
+
+/* The 12 triangles of a box by its corners (occlusion.h bit order). */
+static const uint8_t box_tris[GLS_OCCLUSION_BOX_VERTS] = {
+    0, 2, 1, 1, 2, 3, /* z low  */ 4, 5, 6, 5, 7, 6, /* z high */
+    0, 1, 4, 1, 5, 4, /* y low  */ 2, 6, 3, 3, 6, 7, /* y high */
+    0, 4, 2, 2, 4, 6, /* x low  */ 1, 3, 5, 3, 7, 5, /* x high */
+};
+
+/* Units: runs of consecutive kept items of one instance (drawing order
+ * keeps an instance's items of one draw key together), tested as one box
+ * (their union): one query for a tree in four cells rather than four. */
+static int make_units(gls_occlusion *o, const gls_scene *s, const uint8_t *vis)
+{
+    o->nunits = 0;
+    for (uint32_t i = 0; i < s->nitems; i++) {
+        if (vis && !vis[i])
+            continue;
+        const gls_item *it = &s->items[i];
+        const gls_chunk *ch = &s->chunks[it->chunk];
+        uint32_t u = o->nunits;
+        if (u && s->items[o->items[o->unit_first[u - 1] + o->unit_n[u - 1] - 1]].inst == it->inst &&
+            o->unit_first[u - 1] + o->unit_n[u - 1] == o->nitems_in && o->unit_n[u - 1] < GLS_OCCLUSION_UNIT_ITEMS) {
+            u--;
+            o->unit_n[u]++;
+            for (int j = 0; j < 3; j++) {
+                o->lo[3 * u + j] = fmin(o->lo[3 * u + j], it->lo[j]);
+                o->hi[3 * u + j] = fmax(o->hi[3 * u + j], it->hi[j]);
+                o->plo[3 * u + j] = fmin(o->plo[3 * u + j], ch->lo[j]);
+                o->phi[3 * u + j] = fmax(o->phi[3 * u + j], ch->hi[j]);
+            }
+        } else {
+            o->unit_first[u] = o->nitems_in, o->unit_n[u] = 1, o->unit_verts[u] = 0;
+            memcpy(o->lo + 3 * u, it->lo, sizeof it->lo);
+            memcpy(o->hi + 3 * u, it->hi, sizeof it->hi);
+            memcpy(o->plo + 3 * u, ch->lo, sizeof ch->lo);
+            memcpy(o->phi + 3 * u, ch->hi, sizeof ch->hi);
+            o->nunits++;
+        }
+        o->unit_verts[u] += ch->count;
+        o->items[o->nitems_in++] = i;
+    }
+    return 0;
+}
+
+/* The units' boxes' projected areas (bounding rectangles within the
+ * image) over the image's: an upper bound on how often a pixel is drawn
+ * over, and so on what occlusion can save. */
+static double overdraw(const gls_occlusion *o, const gls_camera *c)
+{
+    double area = 0, W = c->width, H = c->height;
+    for (uint32_t u = 0; u < o->nunits; u++) {
+        double b[4];
+        gls_box_image_bounds(c, o->lo + 3 * u, o->hi + 3 * u, b);
+        double w = fmin(b[2], W) - fmax(b[0], 0), h = fmin(b[3], H) - fmax(b[1], 0);
+        if (w > 0 && h > 0)
+            area += w * h;
+    }
+    return area / (W * H);
+}
+
+static int grow(gls_occlusion *o, uint32_t n)
+{
+    if (o->cap >= n)
+        return 0;
+    free(o->occluder), free(o->tested), free(o->order), free(o->key), free(o->items);
+    free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
+    free(o->plo), free(o->phi);
+    o->occluder = malloc(n);
+    o->tested = malloc(n * sizeof *o->tested);
+    o->order = malloc(n * sizeof *o->order);
+    o->key = malloc(n * sizeof *o->key);
+    o->items = malloc(n * sizeof *o->items);
+    o->unit_first = malloc(n * sizeof *o->unit_first);
+    o->unit_n = malloc(n * sizeof *o->unit_n);
+    o->unit_verts = malloc(n * sizeof *o->unit_verts);
+    o->lo = malloc(3 * n * sizeof *o->lo);
+    o->hi = malloc(3 * n * sizeof *o->hi);
+    o->plo = malloc(3 * n * sizeof *o->plo);
+    o->phi = malloc(3 * n * sizeof *o->phi);
+    o->cap = n;
+    if (!o->occluder || !o->tested || !o->order || !o->key || !o->items || !o->unit_first || !o->unit_n ||
+        !o->unit_verts || !o->lo || !o->hi || !o->plo || !o->phi) {
+        o->cap = 0;
+        return -1;
+    }
+    return 0;
+}
+
+/* Mark unit u's items in m. */
+static void mark_unit(const gls_occlusion *o, uint32_t u, uint8_t *m)
+{
+    for (uint32_t k = 0; k < o->unit_n[u]; k++)
+        m[o->items[o->unit_first[u] + k]] = 1;
+}
+
+int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scene *s, const gls_camera *c,
+                       const double C[3], const uint8_t *vis)
+{
+    o->ntested = 0, o->nunits = 0, o->nitems_in = 0, o->overdraw = 0, o->total_verts = 0;
+    if (mode == GLS_OCCLUSION_OFF || s->nitems < 2)
+        return 0;
+    if (grow(o, s->nitems))
+        return -1;
+    memset(o->occluder, 0, s->nitems);
+    make_units(o, s, vis);
+    uint64_t total = 0;
+    uint32_t n = o->nunits;
+    for (uint32_t u = 0; u < n; u++) {
+        total += o->unit_verts[u];
+        o->key[u] = box_distance(C, o->lo + 3 * u, o->hi + 3 * u);
+        o->order[u] = u;
+    }
+    o->total_verts = total;
+    o->overdraw = overdraw(o, c);
+    if (n < 2 || (mode == GLS_OCCLUSION_AUTO && (total < GLS_OCCLUSION_MIN_VERTS || n < GLS_OCCLUSION_MIN_UNITS ||
+                                                 o->overdraw < GLS_OCCLUSION_MIN_OVERDRAW)))
+        return 0;
+    sort_key = o->key;
+    qsort(o->order, n, sizeof *o->order, by_key);
+    /* the nearest units, at least one, up to the share of the vertices */
+    uint64_t occ = 0;
+    uint32_t k = 0;
+    do {
+        uint32_t u = o->order[k++];
+        mark_unit(o, u, o->occluder);
+        occ += o->unit_verts[u];
+    } while (k < n && (double)(occ + o->unit_verts[o->order[k]]) <=
+                          GLS_OCCLUSION_OCCLUDER_SHARE * (double)total);
+    size_t need = (size_t)(n - k) * GLS_OCCLUSION_BOX_VERTS * s->stride;
+    if (need > o->box_cap) {
+        uint8_t *nb = realloc(o->boxes, need);
+        if (!nb)
+            return -1;
+        o->boxes = nb, o->box_cap = need;
+    }
+    for (; k < n; k++) {
+        uint32_t u = o->order[k];
+        double corner[8][3];
+        const double *W = s->inst[s->items[o->items[o->unit_first[u]]].inst].world;
+        if (gls_occlusion_box(c, C, W, o->plo + 3 * u, o->phi + 3 * u, o->lo + 3 * u, o->hi + 3 * u, corner)) {
+            mark_unit(o, u, o->occluder); /* reaches the near plane: untested, an occluder */
+            continue;
+        }
+        uint8_t *v = o->boxes + (size_t)o->ntested * GLS_OCCLUSION_BOX_VERTS * s->stride;
+        memset(v, 0, GLS_OCCLUSION_BOX_VERTS * s->stride);
+        for (uint32_t t = 0; t < GLS_OCCLUSION_BOX_VERTS; t++, v += s->stride) {
+            float p[3];
+            for (int j = 0; j < 3; j++)
+                p[j] = (float)corner[box_tris[t]][j];
+            memcpy(v, p, sizeof p);
+            if (s->has_color)
+                memset(v + s->color_offset, 255, 4);
+        }
+        o->tested[o->ntested++] = u;
+    }
+    return o->ntested > 0;
+}
+
+void gls_occlusion_mark(const gls_occlusion *o, uint32_t t, uint8_t *m, uint8_t value)
+{
+    uint32_t u = o->tested[t];
+    for (uint32_t k = 0; k < o->unit_n[u]; k++)
+        m[o->items[o->unit_first[u] + k]] = value;
+}
+
+uint32_t gls_occlusion_items(const gls_occlusion *o, uint32_t t) { return o->unit_n[o->tested[t]]; }
+
+void gls_occlusion_free(gls_occlusion *o)
+{
+    free(o->occluder), free(o->tested), free(o->order), free(o->key), free(o->boxes), free(o->items);
+    free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
+    free(o->plo), free(o->phi);
+    memset(o, 0, sizeof *o);
+}

@@ -1,0 +1,112 @@
+/* Occlusion culling of draw items, the GL-free half: which items go into
+ * the depth-only pre-pass (the occluders), which are tested, and the
+ * padded boxes the test draws (render.c draws them in occlusion queries).
+ *
+ * Exactness (spec/bundle.md 9.3, "Occlusion culling"): an item is skipped only
+ * when no sample of its padded box passes the depth test against the
+ * occluders' depth.  Every fragment the item could draw lies behind the
+ * box's front faces at that sample (the box contains it with a margin far
+ * above float rounding), and the occluders are drawn again, in the
+ * original order, in the real pass, so the skipped fragment could never
+ * have been the nearest there, nor tied with it: the image is the same,
+ * byte for byte, with and without occlusion culling.  Boxes that reach
+ * the near plane are never tested (their clipped faces would leave holes).
+ */
+#ifndef GLS_OCCLUSION_H
+#define GLS_OCCLUSION_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "camera.h"
+#include "scene.h"
+
+typedef enum {
+    GLS_OCCLUSION_AUTO, /* test when it is likely to pay (the default: 0)   */
+    GLS_OCCLUSION_ON,   /* test whenever there is something to test        */
+    GLS_OCCLUSION_OFF   /* draw every item the frustum keeps               */
+} gls_occlusion_mode;
+
+/* AUTO tests only when the items the frustum keeps hold at least this many
+ * vertices: below it the pre-pass and the queries cost more than they
+ * save (bench/instances_bench measures both sides). */
+#define GLS_OCCLUSION_MIN_VERTS 200000u
+/* The occluders: the nearest items (by the distance from the camera centre
+ * to their box) holding up to this fraction of the kept vertices. */
+#define GLS_OCCLUSION_OCCLUDER_SHARE 0.03
+/* The tested units are tested in this many rounds, nearest first, each
+ * against the occluders and the units of earlier rounds that showed
+ * (measured on the bench's forest: 16 hide fewer, 64 and 128 cost the
+ * same as 32). */
+#define GLS_OCCLUSION_ROUNDS 32u
+/* Once 1/GLS_OCCLUSION_PROBE of the tested units are tested, testing
+ * stops if fewer than 1 in GLS_OCCLUSION_STOP of them were hidden: the
+ * rest are drawn untested (measured by make bench-instances: the forest
+ * from its edge hides 12 % of them by then, its --sparse variant, the
+ * same boxes around ribs, 1 %; testing on made that one twice as slow,
+ * stopping there costs it about 10 %). */
+#define GLS_OCCLUSION_PROBE 16u
+#define GLS_OCCLUSION_STOP 16u
+/* AUTO tests only scenes of many units (instances' runs of items): with
+ * a few large ones, the boxes' fill costs more than they hide. */
+#define GLS_OCCLUSION_MIN_UNITS 256u
+/* AUTO tests only when the units' boxes cover the image this many times
+ * over (their projected bounding rectangles): below it little can hide. */
+#define GLS_OCCLUSION_MIN_OVERDRAW 4.0
+/* Vertices of one box: 12 triangles. */
+#define GLS_OCCLUSION_BOX_VERTS 36u
+
+/* Items of one instance tested together, at most (make_units). */
+#define GLS_OCCLUSION_UNIT_ITEMS 8u
+
+typedef struct {
+    uint8_t *occluder;  /* per item: 1 if drawn in the pre-pass         */
+    uint32_t *tested;   /* units whose box is drawn in a query, nearest
+                           first                                         */
+    uint32_t ntested;
+    /* units: runs of kept items of one instance (their indices in
+       items[unit_first .. + unit_n]), their vertices and union box */
+    uint32_t *items, nitems_in, *unit_first, *unit_n, nunits;
+    uint64_t *unit_verts;
+    double *lo, *hi;    /* world box (for the distance and the overdraw) */
+    double *plo, *phi;  /* box in the instance's frame (the one tested)  */
+    uint8_t *boxes;     /* ntested * 36 vertices of `stride` bytes: the
+                           padded box relative to the camera centre
+                           (float x, y, z at offset 0), the rest white /
+                           zero, so the scene's own attribute pointers
+                           can read them                                */
+    /* why: the plan's figures (gls_occlusion_plan fills them in even when
+       it returns 0 because AUTO finds too little to gain) */
+    double overdraw;
+    uint64_t total_verts;
+    /* scratch */
+    uint32_t *order;
+    double *key;
+    size_t cap, box_cap;
+} gls_occlusion;
+
+/* Plan a pass of camera c (centre C) over the items vis keeps: 1 when
+ * there are occluders and items to test, 0 when the pass should draw as
+ * it is (mode OFF, too little to gain, nothing to test), -1 when out of
+ * memory (then draw as it is too).  stride and color_offset are the
+ * scene's vertex layout (has_color: white there). */
+int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scene *s, const gls_camera *c,
+                       const double C[3], const uint8_t *vis);
+
+/* The padded box tested for geometry within box plo..phi of an
+ * instance's frame, W its world transform (row-major, affine), wlo..whi
+ * its world box: the box plo..phi under W (an oriented box, tighter than
+ * the world one for a turned instance; the world box when W is singular
+ * or NULL), each face moved out by the margin, relative to C, as 8
+ * corners (bit 0: x, bit 1: y, bit 2: z high).  0, or -1 when any
+ * corner is not in front of the near plane (or not finite): never tested. */
+int gls_occlusion_box(const gls_camera *c, const double C[3], const double W[16], const double plo[3],
+                      const double phi[3], const double wlo[3], const double whi[3], double corner[8][3]);
+
+/* Set m[i] = value for the items of tested unit t (o->tested[t]); how
+ * many items it has. */
+void gls_occlusion_mark(const gls_occlusion *o, uint32_t t, uint8_t *m, uint8_t value);
+uint32_t gls_occlusion_items(const gls_occlusion *o, uint32_t t);
+
+void gls_occlusion_free(gls_occlusion *o);
+
+#endif
