@@ -60,8 +60,14 @@ extern const char *const gls_feature_why[32];
 /* Vertices the top-level object draws once every call is unrolled: calls
  * share objects, so a small bundle can describe an exponentially large
  * scene (A calls B twice, B calls C twice, ...).  2^26 vertices is about
- * 1.5 GiB in the player. */
+ * 1.5 GiB in the flattened form (glsplay --flatten), which refuses more;
+ * bundles are bounded by their call paths instead. */
 #define GLS_MAX_EXPANDED_VERTICES (1ull << 26)
+/* Call paths from the top-level object (the top itself included): each
+ * is at most one instance of the player's instanced form, which keeps
+ * the objects' geometry once, so this, not the vertices once unrolled,
+ * bounds a bundle.  2^22 instances are about 2.5 GiB in the player. */
+#define GLS_MAX_CALL_PATHS (1u << 22)
 
 typedef struct {
     double x, y, z, w;
