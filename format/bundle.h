@@ -203,6 +203,10 @@ uint64_t gls_bundle_expanded_vertices(const gls_bundle *b, uint32_t oi);
  * reach), saturated at UINT64_MAX; nobjects entries, malloc'd (free it),
  * or NULL when out of memory.  The bundle must be acyclic (validated). */
 uint64_t *gls_bundle_paths(const gls_bundle *b, uint32_t top);
+/* The number of call paths from top (1 for top alone, the sum of
+ * gls_bundle_paths), saturated at UINT64_MAX, in *n: 0, or -1 when out of
+ * memory.  The bundle must be acyclic (validated). */
+int gls_bundle_count_paths(const gls_bundle *b, uint32_t top, uint64_t *n);
 
 /* The same with a chosen section codec (layout.h GLS_CODEC_*): uncompressed
  * bundles are for fuzzing seeds and for looking at with a hex editor. */

@@ -255,8 +255,10 @@ static void test_motion_unknown_name(void)
 }
 
 /* 2^11 instances of a 65,536-vertex fan: 2^27 vertices flattened, twice
- * the old limit, and about 13 GB as flattened triangles; instanced, one
- * fan and a table.  Only the first fan is in view: the others are culled. */
+ * the flattened form's limit, and about 13 GB as flattened triangles;
+ * instanced, one fan and a table.  The validator accepts it (4095 call
+ * paths), gls_scene_flatten refuses it before building anything.  Only
+ * the first fan is in view: the others are culled. */
 static void test_beyond_flattened_limit(void)
 {
     enum { NV = 65536, LEVELS = 11 };
@@ -281,10 +283,13 @@ static void test_beyond_flattened_limit(void)
         tb_call(&t, prev);
         prev = o;
     }
-    gls_bundle *b = tb_finish_unchecked(&t);
+    gls_bundle *b = tb_finish(&t); /* validated */
     CHECK(gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES);
     gls_scene s;
     char err[256];
+    CHECK(gls_scene_flatten(b, &s, err, sizeof err) != 0);
+    CHECK_STR(err, "level10 draws more than 67108864 vertices once its calls are unrolled: too large to flatten (drop "
+                   "--flatten to draw it instanced)");
     CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
     CHECK(s.nverts == 3 * (NV - 2) && s.nprotos >= 1);
     uint32_t leaves = 0;
