@@ -135,11 +135,14 @@ typedef struct {
  *   an inlined call's callee once per call): 2^28 of them take 3 s
  *   (colours) to 17 s (rotations) on the 2-core reference machine;
  * - lights on all call paths (each shaded light is one of the 8 of
- *   GLS_MAX_LIGHTS, ambient ones are summed). */
+ *   GLS_MAX_LIGHTS, ambient ones are summed);
+ * - draw items (each instance times its proto's chunks, 56 bytes each,
+ *   culled every frame): 2^26 of them are 3.5 GiB. */
 #define GLS_SCENE_MAX_INSTANCES GLS_MAX_CALL_PATHS
 #define GLS_SCENE_MAX_VERTS (1u << 28)
 #define GLS_SCENE_MAX_WALK (1u << 28)
 #define GLS_SCENE_MAX_PLACED_LIGHTS (1u << 16)
+#define GLS_SCENE_MAX_ITEMS (1u << 26)
 
 typedef struct {
     uint32_t features;     /* the bundle's GLS_FEAT_* bits                */

@@ -866,7 +866,9 @@ static int make_chunks(walker *w, gls_scene *s)
     return 0;
 }
 
-/* Items of every instance with geometry, sorted into drawing order. */
+/* Items of every instance with geometry, sorted into drawing order.  0,
+ * -1 when out of memory, -2 when there would be more than
+ * GLS_SCENE_MAX_ITEMS. */
 static int make_items(gls_scene *s)
 {
     size_t n = 0;
@@ -877,8 +879,8 @@ static int make_items(gls_scene *s)
         in->nitems = in->proto == GLS_NONE ? 0 : s->protos[in->proto].nchunks;
         n += in->nitems;
     }
-    if (n > UINT32_MAX)
-        return -1;
+    if (n > GLS_SCENE_MAX_ITEMS)
+        return -2;
     s->items = malloc((n ? n : 1) * sizeof *s->items);
     if (!s->items)
         return -1;
@@ -973,8 +975,16 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     w.lights = NULL;
     s->nverts = (uint32_t)(w.ntri * 3);
     s->dropped = w.dropped;
-    if (make_chunks(&w, s) || make_items(s) || gls_markwalk_finish(&w.marks, s)) {
-        snprintf(err, errlen, "out of memory while building the scene");
+    int made = make_chunks(&w, s);
+    if (!made)
+        made = make_items(s);
+    if (!made)
+        made = gls_markwalk_finish(&w.marks, s);
+    if (made) {
+        snprintf(err, errlen, "%s",
+                 made == -2 ? "more than 67108864 draw items (instances times the chunks of their geometry): too "
+                              "many to draw"
+                            : "out of memory while building the scene");
         goto out;
     }
     gls_scene_update(s);
