@@ -88,11 +88,20 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
         gls_bundle_free(b);
         return -1;
     }
-    uint64_t nv = gls_bundle_expanded_vertices(b, b->top);
-    if (nv > GLS_MAX_EXPANDED_VERTICES) {
+    /* each call path is an instance to draw: bounded like the player's
+     * instance table (the vertices on all paths are not: the player keeps
+     * each object's geometry once) */
+    uint64_t np = 0;
+    if (gls_bundle_count_paths(b, b->top, &np)) {
+        gls_error_at(&c->diag, GLS_NOLOC, "out of memory");
+        gls_bundle_free(b);
+        return -1;
+    }
+    if (np > GLS_MAX_CALL_PATHS) {
         gls_error_at(&c->diag, GLS_NOLOC,
-                     "%s draws more than %llu vertices once its calls are unrolled: too large to render",
-                     u->name, (unsigned long long)GLS_MAX_EXPANDED_VERTICES);
+                     "%s has more than %u call paths (instances to draw) once its calls are unrolled: too many "
+                     "to render",
+                     u->name, GLS_MAX_CALL_PATHS);
         gls_bundle_free(b);
         return -1;
     }

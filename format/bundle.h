@@ -60,8 +60,14 @@ extern const char *const gls_feature_why[32];
 /* Vertices the top-level object draws once every call is unrolled: calls
  * share objects, so a small bundle can describe an exponentially large
  * scene (A calls B twice, B calls C twice, ...).  2^26 vertices is about
- * 1.5 GiB in the player. */
+ * 1.5 GiB in the flattened form (glsplay --flatten), which refuses more;
+ * bundles are bounded by their call paths instead. */
 #define GLS_MAX_EXPANDED_VERTICES (1ull << 26)
+/* Call paths from the top-level object (the top itself included): each
+ * is at most one instance of the player's instanced form, which keeps
+ * the objects' geometry once, so this, not the vertices once unrolled,
+ * bounds a bundle.  2^22 instances are about 2.5 GiB in the player. */
+#define GLS_MAX_CALL_PATHS (1u << 22)
 
 typedef struct {
     double x, y, z, w;
@@ -197,6 +203,10 @@ uint64_t gls_bundle_expanded_vertices(const gls_bundle *b, uint32_t oi);
  * reach), saturated at UINT64_MAX; nobjects entries, malloc'd (free it),
  * or NULL when out of memory.  The bundle must be acyclic (validated). */
 uint64_t *gls_bundle_paths(const gls_bundle *b, uint32_t top);
+/* The number of call paths from top (1 for top alone, the sum of
+ * gls_bundle_paths), saturated at UINT64_MAX, in *n: 0, or -1 when out of
+ * memory.  The bundle must be acyclic (validated). */
+int gls_bundle_count_paths(const gls_bundle *b, uint32_t top, uint64_t *n);
 
 /* The same with a chosen section codec (layout.h GLS_CODEC_*): uncompressed
  * bundles are for fuzzing seeds and for looking at with a hex editor. */

@@ -593,6 +593,18 @@ done:
     return paths;
 }
 
+int gls_bundle_count_paths(const gls_bundle *b, uint32_t top, uint64_t *n)
+{
+    uint64_t *paths = gls_bundle_paths(b, top);
+    if (!paths)
+        return -1;
+    *n = 0;
+    for (uint32_t i = 0; i < b->nobjects; i++)
+        *n = *n + paths[i] < *n ? UINT64_MAX : *n + paths[i];
+    free(paths);
+    return 0;
+}
+
 int gls_bundle_validate(const gls_bundle *b, gls_error *err)
 {
     if (b->nobjects > GLS_MAX_OBJECTS || b->ntextures > GLS_MAX_TEXTURES)
@@ -606,9 +618,12 @@ int gls_bundle_validate(const gls_bundle *b, gls_error *err)
             return -1;
     if (check_calls(b, err) || check_instance_names(b, err) || gls_check_mark_names(b, err))
         return -1;
-    if (b->top != GLS_NONE && gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES)
-        FAIL("top-level object %s draws more than %llu vertices once its calls are unrolled", b->objects[b->top].name,
-             (unsigned long long)GLS_MAX_EXPANDED_VERTICES);
+    uint64_t paths = 0;
+    if (b->top != GLS_NONE && gls_bundle_count_paths(b, b->top, &paths))
+        FAIL("out of memory");
+    if (paths > GLS_MAX_CALL_PATHS)
+        FAIL("top-level object %s has more than %u call paths (instances to draw) once its calls are unrolled",
+             b->objects[b->top].name, GLS_MAX_CALL_PATHS);
     return 0;
 fail:
     return -1;

@@ -123,10 +123,26 @@ typedef struct {
     double lo[3], hi[3];   /* world box of the chunk under the instance   */
 } gls_item;
 
-/* Limits of the instanced form (spec/bundle.md section 10): instances
- * (call paths, each ~500 bytes) and unique vertices (GL's int range). */
-#define GLS_SCENE_MAX_INSTANCES (1u << 22)
-#define GLS_SCENE_MAX_VERTS 0x7fffffffu
+/* Limits of the instanced form (spec/bundle.md section 10), checked as
+ * the bundle is walked, so that load time and memory follow unique
+ * geometry and the instance table:
+ * - instances: call paths, each ~600 bytes with its draw items; the
+ *   validator's bound on a top's call paths (GLS_MAX_CALL_PATHS);
+ * - unique vertices: about 140 bytes each at the peak of a load (180 in
+ *   a lit scene), so 2^28 of them is up to about 36 GiB (48 GiB lit);
+ * - instructions decoded (each object once per drawing state it is
+ *   entered with, every later entry replayed from a record, scene_build.c;
+ *   an inlined call's callee once per call): 2^28 of them take 3 s
+ *   (colours) to 17 s (rotations) on the 2-core reference machine;
+ * - lights on all call paths (each shaded light is one of the 8 of
+ *   GLS_MAX_LIGHTS, ambient ones are summed);
+ * - draw items (each instance times its proto's chunks, 56 bytes each,
+ *   culled every frame): 2^26 of them are 3.5 GiB. */
+#define GLS_SCENE_MAX_INSTANCES GLS_MAX_CALL_PATHS
+#define GLS_SCENE_MAX_VERTS (1u << 28)
+#define GLS_SCENE_MAX_WALK (1u << 28)
+#define GLS_SCENE_MAX_PLACED_LIGHTS (1u << 16)
+#define GLS_SCENE_MAX_ITEMS (1u << 26)
 
 typedef struct {
     uint32_t features;     /* the bundle's GLS_FEAT_* bits                */

@@ -7,9 +7,12 @@
  * callee on a copy (an implicit push/pop), so a callee's changes never
  * leak.  An affine CALL starts a new instance (M = identity in its frame);
  * its proto is built by the first walk that enters the object with that
- * drawing state, later walks only look for calls.  The validator
- * guarantees that every index is in range, the pushes balance and calls
- * nest at most GLS_MAX_CALL_DEPTH deep, so recursion on CALL is bounded.
+ * drawing state, which also records what else the walk does (record);
+ * later entries replay the record instead of decoding the object again.
+ * The validator guarantees that every index is in range, the pushes
+ * balance, calls nest at most GLS_MAX_CALL_DEPTH deep (so recursion on
+ * CALL is bounded) and there are at most GLS_MAX_CALL_PATHS call paths;
+ * the limits of scene.h, checked as the walk goes, bound the rest.
  */
 #include <math.h>
 #include <stdio.h>
@@ -35,6 +38,39 @@ typedef struct {
     uint32_t zorder; /* the first vertex's place in its cell, Morton order */
     uint32_t idx; /* emission order: the final tie-break, for determinism */
 } tri;
+
+/* What a walk of an instance's object does besides drawing, recorded
+ * the first time the object is entered with a drawing state and replayed
+ * on every later entry with that state (enter(), replay()): so the
+ * instructions of an object are decoded once per drawing state, not once
+ * per call path, and load time follows the distinct protos plus the call
+ * paths (spec/bundle.md 12.3).  Events come in walk order, so instances,
+ * landmarks and lights come out in the same order as from a full walk. */
+enum {
+    EV_ENTER, /* an instance: callee obj, its call's k, state, name     */
+    EV_IN,    /* an inlined call (landmark paths only): obj, k          */
+    EV_OUT,   /* its end                                                */
+    EV_MARK,  /* landmark obj at a position in the instance's frame     */
+    EV_LIGHT  /* a light in the instance's frame                        */
+};
+typedef struct {
+    uint8_t kind;
+    uint32_t obj, k;
+    size_t at;             /* ENTER: a state, MARK: double[4], LIGHT: a
+                              gls_light, at this offset in data            */
+    const char *name;      /* ENTER: the bundle's instance name, or NULL  */
+} event;
+
+/* The events of one proto entered with one raw texture state: the proto
+ * keys on the drawing state that reaches its prims (texture and mode
+ * normalised), but a texture or texmode instruction inside the object
+ * makes the raw pair matter to what its calls get. */
+typedef struct {
+    uint32_t mode, texture, next; /* next: the proto's next record      */
+    event *ev;
+    size_t nev, evcap;
+    gls_buf data;
+} record;
 
 typedef struct {
     const gls_bundle *b;
@@ -64,6 +100,13 @@ typedef struct {
     size_t ninst, icap;
     const char *limit;     /* a limit crossed: the message               */
     gls_markwalk marks;    /* landmarks and the call path (scene_marks.h) */
+    uint64_t walked;       /* instructions decoded (GLS_SCENE_MAX_WALK)   */
+    record *recs;          /* instanced: what walks did besides drawing  */
+    size_t nrecs, rcap;
+    uint32_t *proto_rec;   /* per proto: its first record, or GLS_NONE    */
+    size_t prcap;
+    size_t *saved;         /* replay: path lengths to go back to          */
+    size_t nsaved, scap;
 } walker;
 
 static void identity(double A[16])
@@ -252,8 +295,8 @@ static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const state 
         w->dropped++;
         return;
     }
-    if (w->ntri >= GLS_SCENE_MAX_VERTS / 3) {
-        w->limit = "more than 715827882 unique triangles (2^31 - 1 vertices): too many to draw";
+    if (3 * (w->ntri + 1) > GLS_SCENE_MAX_VERTS) {
+        w->limit = "more than 268435456 unique vertices: too many to draw";
         w->oom = 1;
         return;
     }
@@ -383,10 +426,12 @@ static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
             return p;
         }
     }
-    if (gls_grow(&w->protos, &w->pcap, w->nprotos + 1, sizeof *w->protos)) {
+    if (gls_grow(&w->protos, &w->pcap, w->nprotos + 1, sizeof *w->protos) ||
+        gls_grow(&w->proto_rec, &w->prcap, w->nprotos + 1, sizeof *w->proto_rec)) {
         w->oom = 1;
         return GLS_NONE;
     }
+    w->proto_rec[w->nprotos] = GLS_NONE;
     gls_proto *q = &w->protos[w->nprotos];
     memset(q, 0, sizeof *q);
     q->object = oi;
@@ -400,18 +445,68 @@ static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
     return (uint32_t)w->nprotos++;
 }
 
-static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto);
+static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto, uint32_t rec);
 
-/* A light met on the walk, kept with its instance (like a landmark): a
- * direction by M (w = 0), a position by M divided by its w. */
-static int add_light(walker *w, const state *st, const gls_insn *in, uint32_t inst)
+/* The record of proto p entered with st's raw texture state; *made = 1
+ * if it was just made (then this walk fills it).  GLS_NONE when out of
+ * memory. */
+static uint32_t record_for(walker *w, uint32_t p, const state *st, int *made)
 {
-    if (gls_grow(&w->lights, &w->lcap, w->nlights + 1, sizeof *w->lights))
-        return -1;
-    gls_light *l = &w->lights[w->nlights++];
+    for (uint32_t r = w->proto_rec[p]; r != GLS_NONE; r = w->recs[r].next)
+        if (w->recs[r].mode == st->mode && w->recs[r].texture == st->texture) {
+            *made = 0;
+            return r;
+        }
+    if (gls_grow(&w->recs, &w->rcap, w->nrecs + 1, sizeof *w->recs)) {
+        w->oom = 1;
+        return GLS_NONE;
+    }
+    record *r = &w->recs[w->nrecs];
+    memset(r, 0, sizeof *r);
+    r->mode = st->mode;
+    r->texture = st->texture;
+    r->next = w->proto_rec[p];
+    w->proto_rec[p] = (uint32_t)w->nrecs;
+    *made = 1;
+    return (uint32_t)w->nrecs++;
+}
+
+/* Append an event (and n bytes of data) to record r; none when r is
+ * GLS_NONE (a flattened walk, or an object already recorded). */
+static void rec_put(walker *w, uint32_t r, int kind, uint32_t obj, uint32_t k, const void *data, size_t n,
+                    const char *name)
+{
+    if (r == GLS_NONE)
+        return;
+    record *rc = &w->recs[r];
+    if (gls_grow(&rc->ev, &rc->evcap, rc->nev + 1, sizeof *rc->ev) || (n && gls_buf_put(&rc->data, data, n))) {
+        w->oom = 1;
+        return;
+    }
+    rc->ev[rc->nev++] = (event){(uint8_t)kind, obj, k, rc->data.len - n, name};
+}
+
+/* The end of an inlined call: an EV_IN just before it is dropped with it
+ * (nothing in between needs the path), so an object's record holds no
+ * more path events than it has landmarks, lights and instances to place
+ * under them. */
+static void rec_out(walker *w, uint32_t r)
+{
+    if (r == GLS_NONE)
+        return;
+    record *rc = &w->recs[r];
+    if (rc->nev && rc->ev[rc->nev - 1].kind == EV_IN)
+        rc->nev--;
+    else
+        rec_put(w, r, EV_OUT, 0, 0, NULL, 0, NULL);
+}
+
+/* A light met on the walk, in its instance's frame (like a landmark): a
+ * direction by M (w = 0), a position by M divided by its w. */
+static void light_of(const state *st, const gls_insn *in, gls_light *l)
+{
     memset(l, 0, sizeof *l);
     l->kind = in->u[GLS_ARG_LIGHT_KIND];
-    l->inst = inst;
     double hw = l->kind == GLS_LIGHT_POINT ? 1.0 : 0.0;
     if (l->kind != GLS_LIGHT_AMBIENT)
         m4_apply(st->M, in->d[GLS_ARG_LIGHT_X], in->d[GLS_ARG_LIGHT_Y], in->d[GLS_ARG_LIGHT_Z], hw, l->p);
@@ -421,7 +516,88 @@ static int add_light(walker *w, const state *st, const gls_insn *in, uint32_t in
     for (int i = 0; i < 3; i++)
         l->rgb[i] = in->d[GLS_ARG_LIGHT_R + i];
     l->atten = in->d[GLS_ARG_LIGHT_ATTEN];
-    return 0;
+}
+
+/* Keep light l with instance inst; the limit bounds what a bundle whose
+ * lights sit on many call paths can ask for. */
+static void put_light(walker *w, const gls_light *l, uint32_t inst)
+{
+    if (w->nlights >= GLS_SCENE_MAX_PLACED_LIGHTS) {
+        w->limit = "more than 65536 lights (lights on every call path): too many to shade";
+        w->oom = 1;
+        return;
+    }
+    if (gls_grow(&w->lights, &w->lcap, w->nlights + 1, sizeof *w->lights)) {
+        w->oom = 1;
+        return;
+    }
+    w->lights[w->nlights] = *l;
+    w->lights[w->nlights++].inst = inst;
+}
+
+/* A landmark placed by the current call path. */
+static void put_mark(walker *w, uint32_t inst, uint32_t name, const double h[4])
+{
+    switch (gls_markwalk_place(&w->marks, inst, name, h)) {
+    case -2:
+        w->limit = "more than 16777216 landmarks (marks on every call path): too many to report";
+        /* fall through */
+    case -1:
+        w->oom = 1;
+        break;
+    default:
+        break;
+    }
+}
+
+static void enter(walker *w, uint32_t oi, state st, uint32_t parent, const char *name);
+
+/* Instance inst's object entered again with the state of record r: what
+ * its first walk did besides drawing, without decoding it again. */
+static void replay(walker *w, uint32_t r, uint32_t inst)
+{
+    size_t base = w->nsaved;
+    for (size_t e = 0; !w->oom && e < w->recs[r].nev; e++) {
+        const event ev = w->recs[r].ev[e]; /* enter() may move w->recs */
+        const uint8_t *at = w->recs[r].data.data + ev.at;
+        size_t saved;
+        switch (ev.kind) {
+        case EV_ENTER: {
+            state st;
+            memcpy(&st, at, sizeof st);
+            if (gls_markwalk_enter(&w->marks, ev.obj, ev.k, &saved)) {
+                w->oom = 1;
+                break;
+            }
+            enter(w, ev.obj, st, inst, ev.name);
+            gls_markwalk_leave(&w->marks, saved);
+            break;
+        }
+        case EV_IN:
+            if (gls_grow(&w->saved, &w->scap, w->nsaved + 1, sizeof *w->saved) ||
+                gls_markwalk_enter(&w->marks, ev.obj, ev.k, &w->saved[w->nsaved++]))
+                w->oom = 1;
+            break;
+        case EV_OUT:
+            gls_markwalk_leave(&w->marks, w->saved[--w->nsaved]);
+            break;
+        case EV_MARK: {
+            double h[4];
+            memcpy(h, at, sizeof h);
+            put_mark(w, inst, ev.obj, h);
+            break;
+        }
+        case EV_LIGHT: {
+            gls_light l;
+            memcpy(&l, at, sizeof l);
+            put_light(w, &l, inst);
+            break;
+        }
+        default:
+            break;
+        }
+    }
+    w->nsaved = base;
 }
 
 /* A new instance of object oi, called from instance parent with st (its
@@ -461,12 +637,23 @@ static void enter(walker *w, uint32_t oi, state st, uint32_t parent, const char 
     if (!fresh && !object_calls(w, oi))
         return;
     identity(st.M);
-    run(w, oi, st, i, fresh ? n->proto : GLS_NONE);
+    uint32_t r = GLS_NONE;
+    int made = 1;
+    if (w->instanced && object_calls(w, oi)) { /* flattened: one entry, the top */
+        r = record_for(w, n->proto, &st, &made);
+        if (r == GLS_NONE)
+            return;
+    }
+    if (made)
+        run(w, oi, st, i, fresh ? n->proto : GLS_NONE, r);
+    else
+        replay(w, r, i);
 }
 
 /* Walk object oi in instance inst's frame; prims go to proto (GLS_NONE:
- * built already, only calls matter). */
-static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
+ * built already, only calls matter), what else it does to record rec
+ * (GLS_NONE: none). */
+static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto, uint32_t rec)
 {
     const gls_object *o = &w->b->objects[oi];
     size_t pos = 0, base = w->sp, saved;
@@ -476,7 +663,14 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
     const uint32_t *callk = w->marks.on ? gls_markwalk_calls(&w->marks, oi) : NULL;
     if (w->marks.on && !callk)
         w->oom = 1;
+    gls_light l;
     while (!w->oom && gls_insn_decode(o->code, o->code_len, &pos, &in) == 0) {
+        if (++w->walked > GLS_SCENE_MAX_WALK) {
+            w->limit = "more than 268435456 instructions to walk (objects once per drawing state, inlined calls once "
+                       "per call): too large to load";
+            w->oom = 1;
+            break;
+        }
         switch (in.op) {
         case GLS_OP_END:
             w->sp = base;
@@ -518,36 +712,36 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
             st = w->stack[--w->sp];
             break;
         case GLS_OP_CALL:
-        case GLS_OP_CALLN:
+        case GLS_OP_CALLN: {
             /* by value: the callee gets a copy.  Instanced: an affine call
              * is an instance; a named call (CALLN) always is one, with the
              * bundle's name, so --motion can move it (a projective matrix
              * goes to GL as it is: no exactness claim for that rare case).
              * Flattened (--flatten): both are inlined, names unused.
              * The call path goes on for the landmarks in the callee. */
-            if (gls_markwalk_enter(&w->marks, in.u[GLS_ARG_CALL_OBJECT], callk ? callk[ncall++] : 0, &saved)) {
+            uint32_t callee = in.u[GLS_ARG_CALL_OBJECT], k = callk ? callk[ncall++] : 0;
+            if (gls_markwalk_enter(&w->marks, callee, k, &saved)) {
                 w->oom = 1;
                 break;
             }
-            if (w->instanced && (in.op == GLS_OP_CALLN || is_affine(st.M)))
-                enter(w, in.u[GLS_ARG_CALL_OBJECT], st, inst,
-                      in.op == GLS_OP_CALLN ? w->b->instnames[in.u[GLS_ARG_CALLN_NAME]] : NULL);
-            else
-                run(w, in.u[GLS_ARG_CALL_OBJECT], st, inst, proto);
+            if (w->instanced && (in.op == GLS_OP_CALLN || is_affine(st.M))) {
+                const char *name = in.op == GLS_OP_CALLN ? w->b->instnames[in.u[GLS_ARG_CALLN_NAME]] : NULL;
+                rec_put(w, rec, EV_ENTER, callee, k, &st, sizeof st, name);
+                enter(w, callee, st, inst, name);
+            } else {
+                if (w->marks.on)
+                    rec_put(w, rec, EV_IN, callee, k, NULL, 0, NULL);
+                run(w, callee, st, inst, proto, rec);
+                if (w->marks.on)
+                    rec_out(w, rec);
+            }
             gls_markwalk_leave(&w->marks, saved);
             break;
+        }
         case GLS_OP_MARK: /* in the instance's frame, like a vertex; drawn by no proto */
             m4_apply(st.M, in.d[GLS_ARG_MARK_X], in.d[GLS_ARG_MARK_Y], in.d[GLS_ARG_MARK_Z], 1.0, h);
-            switch (gls_markwalk_place(&w->marks, inst, in.u[GLS_ARG_MARK_NAME], h)) {
-            case -2:
-                w->limit = "more than 16777216 landmarks (marks on every call path): too many to report";
-                /* fall through */
-            case -1:
-                w->oom = 1;
-                break;
-            default:
-                break;
-            }
+            rec_put(w, rec, EV_MARK, in.u[GLS_ARG_MARK_NAME], 0, h, sizeof h, NULL);
+            put_mark(w, inst, in.u[GLS_ARG_MARK_NAME], h);
             break;
         case GLS_OP_PRIM:
         case GLS_OP_PRIMN: /* normals: fetch(); unlit, exactly a PRIM */
@@ -562,8 +756,9 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto)
             memcpy(st.spec, in.d + GLS_ARG_SPECULAR_R, sizeof st.spec);
             break;
         case GLS_OP_LIGHT: /* in the instance's frame, like a mark */
-            if (add_light(w, &st, &in, inst))
-                w->oom = 1;
+            light_of(&st, &in, &l);
+            rec_put(w, rec, EV_LIGHT, 0, 0, &l, sizeof l, NULL);
+            put_light(w, &l, inst);
             break;
         default:
             break;
@@ -671,7 +866,9 @@ static int make_chunks(walker *w, gls_scene *s)
     return 0;
 }
 
-/* Items of every instance with geometry, sorted into drawing order. */
+/* Items of every instance with geometry, sorted into drawing order.  0,
+ * -1 when out of memory, -2 when there would be more than
+ * GLS_SCENE_MAX_ITEMS. */
 static int make_items(gls_scene *s)
 {
     size_t n = 0;
@@ -682,8 +879,8 @@ static int make_items(gls_scene *s)
         in->nitems = in->proto == GLS_NONE ? 0 : s->protos[in->proto].nchunks;
         n += in->nitems;
     }
-    if (n > UINT32_MAX)
-        return -1;
+    if (n > GLS_SCENE_MAX_ITEMS)
+        return -2;
     s->items = malloc((n ? n : 1) * sizeof *s->items);
     if (!s->items)
         return -1;
@@ -709,6 +906,15 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     memset(s, 0, sizeof *s);
     if (b->top == GLS_NONE) {
         snprintf(err, errlen, "the bundle is a library (it has no top-level object): nothing to play");
+        return -1;
+    }
+    /* the flattened form holds every vertex on every call path: bounded
+     * by that, before anything is built */
+    if (!instanced && gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES) {
+        snprintf(err, errlen,
+                 "%s draws more than %llu vertices once its calls are unrolled: too large to flatten (drop "
+                 "--flatten to draw it instanced)",
+                 b->objects[b->top].name, (unsigned long long)GLS_MAX_EXPANDED_VERTICES);
         return -1;
     }
     walker w;
@@ -769,8 +975,16 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     w.lights = NULL;
     s->nverts = (uint32_t)(w.ntri * 3);
     s->dropped = w.dropped;
-    if (make_chunks(&w, s) || make_items(s) || gls_markwalk_finish(&w.marks, s)) {
-        snprintf(err, errlen, "out of memory while building the scene");
+    int made = make_chunks(&w, s);
+    if (!made)
+        made = make_items(s);
+    if (!made)
+        made = gls_markwalk_finish(&w.marks, s);
+    if (made) {
+        snprintf(err, errlen, "%s",
+                 made == -2 ? "more than 67108864 draw items (instances times the chunks of their geometry): too "
+                              "many to draw"
+                            : "out of memory while building the scene");
         goto out;
     }
     gls_scene_update(s);
@@ -790,6 +1004,11 @@ out:
     free(w.inst);
     free(w.proto_head);
     free(w.has_call);
+    for (size_t i = 0; i < w.nrecs; i++)
+        free(w.recs[i].ev), free(w.recs[i].data.data);
+    free(w.recs);
+    free(w.proto_rec);
+    free(w.saved);
     gls_markwalk_free(&w.marks);
     if (rc)
         gls_scene_free(s);

@@ -221,15 +221,15 @@ else
     fail stale_GLSCENE_PATH_entry_ignored "rc=$rc $(cat "$tmp/err")"
 fi
 
-# A call DAG that unrolls to an exponential number of vertices (each level
-# calls the next twice: 2^30 triangles from 31 small files) is refused at
-# compile time, before any player would try to draw it.
+# A call DAG that unrolls to an exponential number of call paths (each
+# level calls the next twice: 2^31 - 1 paths, 2^30 triangles, from 31 small
+# files) is refused at compile time, before any player would try to draw it.
 mkdir -p "$tmp/bomb"
 i=0
 while [ $i -lt 30 ]; do printf 'call("B%d");\ncall("B%d");\n' $((i + 1)) $((i + 1)) >"$tmp/bomb/B$i.scene"; i=$((i + 1)); done
 echo 'tfan { vert(0); vert(1); vert(2); }' >"$tmp/bomb/B30.scene"
 "$BIN/glsc" -I "$tmp/bomb" -o "$tmp/bomb.glsb" B0 2>"$tmp/err"; rc=$?
-if [ $rc -eq 1 ] && grep -q 'B0 draws more than 67108864 vertices once its calls are unrolled' "$tmp/err"; then
+if [ $rc -eq 1 ] && [ "$(cat "$tmp/err")" = "glsc: error: B0 has more than 4194304 call paths (instances to draw) once its calls are unrolled: too many to render" ]; then
     ok call_expansion_bomb_refused
 else
     fail call_expansion_bomb_refused "rc=$rc $(head -2 "$tmp/err")"

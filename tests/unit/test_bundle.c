@@ -466,8 +466,10 @@ static void test_opcode_table(void)
     CHECK(GLS_ARG_PRIM_N == 1 && GLS_ARG_ROT_Z == 3 && GLS_ARG_TRANSFORM_A33 == 15);
 }
 
-/* A valid-looking bundle whose calls unroll to 3 * 2^30 vertices: the
- * validator refuses it, so no player ever tries to flatten it. */
+/* A valid-looking bundle whose calls unroll to 3 * 2^30 vertices on
+ * 2^31 - 1 call paths: the validator refuses it for its paths (the
+ * player's instances), and gls_bundle_expanded_vertices still says what
+ * --flatten would need. */
 static void test_expansion_bomb_refused(void)
 {
     enum { LEVELS = 31 };
@@ -500,7 +502,47 @@ static void test_expansion_bomb_refused(void)
     CHECK(gls_bundle_expanded_vertices(b, LEVELS - 1) == 3);
     CHECK(gls_bundle_expanded_vertices(b, LEVELS - 10) == 3u << 9);
     CHECK(gls_bundle_expanded_vertices(b, 0) == GLS_MAX_EXPANDED_VERTICES + 1);
-    expect_invalid(b, "once its calls are unrolled");
+    uint64_t n = 0;
+    CHECK(gls_bundle_count_paths(b, 0, &n) == 0 && n == (1ull << LEVELS) - 1);
+    CHECK(gls_bundle_count_paths(b, LEVELS - 3, &n) == 0 && n == 7);
+    expect_invalid(b, "top-level object b.L00 has more than 4194304 call paths (instances to draw) once its calls are "
+                      "unrolled");
+}
+
+/* A top calling an object that draws nothing `calls` times: calls + 1
+ * call paths. */
+static gls_bundle *make_calls_bundle(uint32_t calls)
+{
+    gls_bundle *b = calloc(1, sizeof *b);
+    b->version = GLS_FORMAT_VERSION;
+    b->nobjects = 2;
+    b->objects = calloc(2, sizeof *b->objects);
+    gls_buf code = {0};
+    gls_insn in = {.op = GLS_OP_CALL, .u = {1}};
+    for (uint32_t i = 0; i < calls; i++)
+        gls_insn_encode(&code, &in);
+    in = (gls_insn){.op = GLS_OP_END};
+    gls_insn_encode(&code, &in);
+    b->objects[0] = (gls_object){strdup("a.Top"), code.data, (uint32_t)code.len, calls + 1, NULL};
+    code = (gls_buf){0};
+    gls_insn_encode(&code, &in);
+    b->objects[1] = (gls_object){strdup("b.Empty"), code.data, (uint32_t)code.len, 1, NULL};
+    b->top = 0;
+    return b;
+}
+
+/* The call-path bound is exact, and counts paths to objects that draw
+ * nothing: such paths cost the player an instance each. */
+static void test_call_paths_bound(void)
+{
+    gls_bundle *b = make_calls_bundle(GLS_MAX_CALL_PATHS - 1);
+    gls_error err = {{0}, 0};
+    CHECK_MSG(gls_bundle_validate(b, &err) == 0, "2^22 call paths refused: %s", err.msg);
+    gls_bundle_free(b);
+    b = make_calls_bundle(GLS_MAX_CALL_PATHS);
+    CHECK(gls_bundle_expanded_vertices(b, 0) == 0);
+    expect_invalid(b, "top-level object a.Top has more than 4194304 call paths (instances to draw) once its calls are "
+                      "unrolled");
 }
 
 /* make_bundle() with a.Top's call of a.Tri named: CALLN a.Tri "car1"
@@ -809,6 +851,7 @@ int main(void)
     RUN(test_templates);
     RUN(test_opcode_table);
     RUN(test_expansion_bomb_refused);
+    RUN(test_call_paths_bound);
     RUN(test_instance_names);
     RUN(test_mark_names);
     RUN(test_class_names);

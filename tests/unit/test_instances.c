@@ -11,6 +11,7 @@
 #include "motion.h"
 #include "player.h"
 #include "player_scene.h"
+#include "vec.h"
 
 static gls_glctx *ctx;
 static const double I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -254,8 +255,10 @@ static void test_motion_unknown_name(void)
 }
 
 /* 2^11 instances of a 65,536-vertex fan: 2^27 vertices flattened, twice
- * the old limit, and about 13 GB as flattened triangles; instanced, one
- * fan and a table.  Only the first fan is in view: the others are culled. */
+ * the flattened form's limit, and about 13 GB as flattened triangles;
+ * instanced, one fan and a table.  The validator accepts it (4095 call
+ * paths), gls_scene_flatten refuses it before building anything.  Only
+ * the first fan is in view: the others are culled. */
 static void test_beyond_flattened_limit(void)
 {
     enum { NV = 65536, LEVELS = 11 };
@@ -280,10 +283,13 @@ static void test_beyond_flattened_limit(void)
         tb_call(&t, prev);
         prev = o;
     }
-    gls_bundle *b = tb_finish_unchecked(&t);
+    gls_bundle *b = tb_finish(&t); /* validated */
     CHECK(gls_bundle_expanded_vertices(b, b->top) > GLS_MAX_EXPANDED_VERTICES);
     gls_scene s;
     char err[256];
+    CHECK(gls_scene_flatten(b, &s, err, sizeof err) != 0);
+    CHECK_STR(err, "level10 draws more than 67108864 vertices once its calls are unrolled: too large to flatten (drop "
+                   "--flatten to draw it instanced)");
     CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
     CHECK(s.nverts == 3 * (NV - 2) && s.nprotos >= 1);
     uint32_t leaves = 0;
@@ -307,6 +313,91 @@ static void test_beyond_flattened_limit(void)
     CHECK(n > 60 && n < 100 && fabs(cu - 15.5) < 0.3 && fabs(cv - 15.5) < 0.3);
     free(rgba);
     gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
+/* An object entered on many call paths is walked once per drawing state
+ * and replayed from a record on the other paths (scene_build.c): its
+ * landmarks (one behind an inlined projective call, so the record keeps
+ * the path through it), lights and instances must come out exactly as a
+ * full walk of every path places them, the flattened walk (which inlines
+ * everything): same order, names, paths and world positions.  b.Lamp is
+ * entered three times with one drawing state and once more with the same
+ * proto but another raw texture mode (a second record). */
+static void test_replay_matches_flatten(void)
+{
+    tb t;
+    tb_init(&t);
+    uint32_t top = tb_object(&t, "a.Top", 1);
+    uint32_t lamp = tb_object(&t, "b.Lamp", 0);
+    uint32_t post = tb_object(&t, "c.Post", 0);
+    uint32_t tip = tb_object(&t, "d.Tip", 0);
+    double tri[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    t.cur = top;
+    for (int i = 0; i < 4; i++) {
+        tb_op0(&t, GLS_OP_PUSH);
+        tb_trans(&t, 10.0 * i, 0, 5);
+        tb_rot(&t, 30.0 * i, 0, 1, 0);
+        if (i == 3)
+            tb_u1(&t, GLS_OP_TEXMODE, GLS_MODE_MODULATE); /* no texture: the same proto */
+        tb_call(&t, lamp);
+        tb_op0(&t, GLS_OP_POP);
+    }
+    t.cur = lamp;
+    tb_poly(&t, 3, tri);
+    for (int i = 0; i < 2; i++) {
+        tb_trans(&t, 0, 2, 0);
+        tb_call(&t, post);
+    }
+    t.cur = post;
+    tb_poly(&t, 3, tri);
+    uint32_t mk_base[1] = {0}, mk_tip[1] = {1}, lk[1] = {GLS_LIGHT_POINT};
+    tb_insn(&t, GLS_OP_LIGHT, (double[]){0, 3, 0, 1, 1, 1, 0}, lk);
+    tb_op0(&t, GLS_OP_PUSH);
+    /* projective: the call is inlined into c.Post's instance */
+    tb_insn(&t, GLS_OP_TRANSFORM, (double[]){1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 0, 0, 0, 0.125, 1}, NULL);
+    tb_call(&t, tip);
+    tb_op0(&t, GLS_OP_POP);
+    tb_insn(&t, GLS_OP_MARK, (double[]){0.5, 0.25, 0}, mk_base); /* its path: back out of d.Tip */
+    t.cur = tip;
+    tb_insn(&t, GLS_OP_MARK, (double[]){0, 1, 2}, mk_tip);
+    t.b->nmarknames = 2;
+    t.b->marknames = malloc(2 * sizeof *t.b->marknames);
+    t.b->marknames[0] = strdup("base");
+    t.b->marknames[1] = strdup("tip");
+    gls_bundle *b = tb_finish(&t);
+    gls_scene s, f;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    CHECK(gls_scene_flatten(b, &f, err, sizeof err) == 0);
+    /* 1 top, 4 lamps, 8 posts: each post with its own mark and the tip's */
+    CHECK(s.ninst == 13 && s.nmarks == 16 && f.nmarks == 16 && s.nlights == 8 && f.nlights == 8);
+    CHECK(s.nprotos == 3);
+    for (uint32_t k = 0; k < s.nmarks && k < f.nmarks; k++) {
+        double a[3], c[3];
+        gls_scene_mark_world(&s, k, a);
+        gls_scene_mark_world(&f, k, c);
+        CHECK_MSG(s.marks[k].name == f.marks[k].name && strcmp(s.marks[k].path, f.marks[k].path) == 0,
+                  "mark %u: %s vs %s", k, s.marks[k].path, f.marks[k].path);
+        for (int j = 0; j < 3; j++)
+            CHECK_NEAR(a[j], c[j], 1e-9 * (1 + fabs(c[j])));
+    }
+    CHECK_STR(s.marks[14].path, "a.Top > b.Lamp#4 > c.Post#2 > d.Tip#1");
+    CHECK_STR(s.marks[15].path, "a.Top > b.Lamp#4 > c.Post#2");
+    for (uint32_t k = 0; k < s.nlights && k < f.nlights; k++) {
+        double a[4];
+        m4_apply(s.inst[s.lights[k].inst].world, s.lights[k].p[0], s.lights[k].p[1], s.lights[k].p[2],
+                 s.lights[k].p[3], a);
+        CHECK(s.lights[k].kind == GLS_LIGHT_POINT && f.lights[k].inst == 0);
+        for (int j = 0; j < 3; j++)
+            CHECK_NEAR(a[j], f.lights[k].p[j], 1e-9 * (1 + fabs(f.lights[k].p[j])));
+    }
+    /* instances in walk order: each lamp followed by its two posts */
+    for (uint32_t i = 1; i < s.ninst; i++)
+        CHECK(s.inst[i].object == ((i - 1) % 3 == 0 ? lamp : post) &&
+              s.inst[i].parent == ((i - 1) % 3 == 0 ? 0 : i - (i - 1) % 3));
+    gls_scene_free(&s);
+    gls_scene_free(&f);
     gls_bundle_free(b);
 }
 
@@ -379,6 +470,7 @@ int main(void)
     RUN(test_motion_files);
     RUN(test_motion_unknown_name);
     RUN(test_beyond_flattened_limit);
+    RUN(test_replay_matches_flatten);
     RUN(test_draw_order_within_cell);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
