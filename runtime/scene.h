@@ -66,7 +66,9 @@ typedef struct {
     uint32_t first_chunk, nchunks; /* its chunks, sorted by key then cell */
     uint32_t ntris;
     double lo[3], hi[3];   /* bounding box in the proto's frame (double)   */
-    /* build only: the drawing state it was entered with, next proto of
+    /* build only: the drawing state it was entered with (texture and
+     * mode as they were, not normalised: an object that selects a
+     * texture itself draws it in the mode it inherits), next proto of
      * the same object */
     uint8_t rgba[4];
     double spec[4];        /* the specular state (lit scenes)             */

@@ -415,12 +415,10 @@ static int object_calls(walker *w, uint32_t oi)
  * memory. */
 static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
 {
-    gls_drawkey key;
-    state_key(w, st, &key);
     uint8_t rgba[4] = {unorm8(st->rgba[0]), unorm8(st->rgba[1]), unorm8(st->rgba[2]), 255};
     for (uint32_t p = w->proto_head[oi]; p != GLS_NONE; p = w->protos[p].next) {
         const gls_proto *q = &w->protos[p];
-        if (q->texture == key.texture && q->mode == key.mode && memcmp(q->rgba, rgba, 4) == 0 &&
+        if (q->texture == st->texture && q->mode == st->mode && memcmp(q->rgba, rgba, 4) == 0 &&
             memcmp(q->spec, st->spec, sizeof q->spec) == 0) {
             *fresh = 0;
             return p;
@@ -435,8 +433,8 @@ static uint32_t proto_for(walker *w, uint32_t oi, const state *st, int *fresh)
     gls_proto *q = &w->protos[w->nprotos];
     memset(q, 0, sizeof *q);
     q->object = oi;
-    q->texture = key.texture;
-    q->mode = key.mode;
+    q->texture = st->texture;
+    q->mode = st->mode;
     memcpy(q->rgba, rgba, 4);
     memcpy(q->spec, st->spec, sizeof q->spec);
     q->next = w->proto_head[oi];

@@ -457,6 +457,53 @@ static void test_draw_order_within_cell(void)
     gls_bundle_free(b);
 }
 
+/* An object that selects a texture itself but inherits the texture mode,
+ * called twice with no texture: once after texmode(modulate), once after
+ * texmode(replace).  Its prims draw in the inherited mode, so the two
+ * calls must not share one proto (their normalised state, no texture, is
+ * the same): the instanced image equals the flattened one. */
+static void test_inherited_texmode(void)
+{
+    tb t;
+    tb_init(&t);
+    uint8_t tex[4 * 4 * 4];
+    for (int i = 0; i < 16; i++) /* a green texture, opaque */
+        tex[4 * i] = 0, tex[4 * i + 1] = 200, tex[4 * i + 2] = 0, tex[4 * i + 3] = 255;
+    uint32_t tx = tb_texture(&t, "green.png", 4, 4, tex);
+    uint32_t sq = tb_object(&t, "square", 0);
+    tb_u1(&t, GLS_OP_TEXTURE, tx);
+    gls_vec4 p[4] = {{-0.5, -0.5, 0, 1}, {0.5, -0.5, 0, 1}, {0.5, 0.5, 0, 1}, {-0.5, 0.5, 0, 1}};
+    gls_st st[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    tb_prim4(&t, GLS_PRIM_POLY, 4, p, NULL, st);
+    tb_object(&t, "top", 1);
+    tb_color(&t, 1, 0, 0, 1); /* modulate: green x red = black; replace: green */
+    for (int k = 0; k < 2; k++) {
+        tb_u1(&t, GLS_OP_TEXMODE, k ? GLS_MODE_REPLACE : GLS_MODE_MODULATE);
+        tb_op0(&t, GLS_OP_PUSH);
+        tb_trans(&t, k ? 0.75 : -0.75, 0, 4);
+        tb_call(&t, sq);
+        tb_op0(&t, GLS_OP_POP);
+    }
+    gls_bundle *b = tb_finish(&t);
+    double T0[3] = {0, 0, 0};
+    gls_camera c = tb_camera(64, 32, 40, 40, 31.5, 15.5, 0, I3, T0, 0.1, 100);
+    uint8_t inst[64 * 32 * 4], flat[64 * 32 * 4];
+    gls_scene s, f;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0 && gls_scene_flatten(b, &f, err, sizeof err) == 0);
+    CHECK(render_scene(&s, b, &c, inst) == 0 && render_scene(&f, b, &c, flat) == 0);
+    size_t green = 0, diff = 0;
+    for (size_t i = 0; i < sizeof inst; i += 4) {
+        green += flat[i + 1] > 150 && flat[i] < 50;
+        diff += memcmp(inst + i, flat + i, 4) != 0;
+    }
+    printf("  flattened: %zu green (replace) pixels; instanced differs in %zu pixels\n", green, diff);
+    CHECK(green > 50);
+    CHECK(diff == 0);
+    gls_scene_free(&s), gls_scene_free(&f);
+    gls_bundle_free(b);
+}
+
 int main(void)
 {
     char err[256];
@@ -472,6 +519,7 @@ int main(void)
     RUN(test_beyond_flattened_limit);
     RUN(test_replay_matches_flatten);
     RUN(test_draw_order_within_cell);
+    RUN(test_inherited_texmode);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
 }
