@@ -339,7 +339,7 @@ static void test_replay_matches_flatten(void)
         tb_trans(&t, 10.0 * i, 0, 5);
         tb_rot(&t, 30.0 * i, 0, 1, 0);
         if (i == 3)
-            tb_u1(&t, GLS_OP_TEXMODE, GLS_MODE_MODULATE); /* no texture: the same proto */
+            tb_u1(&t, GLS_OP_TEXMODE, GLS_MODE_MODULATE); /* no texture, but a proto of its own (and its posts') */
         tb_call(&t, lamp);
         tb_op0(&t, GLS_OP_POP);
     }
@@ -372,7 +372,7 @@ static void test_replay_matches_flatten(void)
     CHECK(gls_scene_flatten(b, &f, err, sizeof err) == 0);
     /* 1 top, 4 lamps, 8 posts: each post with its own mark and the tip's */
     CHECK(s.ninst == 13 && s.nmarks == 16 && f.nmarks == 16 && s.nlights == 8 && f.nlights == 8);
-    CHECK(s.nprotos == 3);
+    CHECK(s.nprotos == 5); /* top; lamp and post, each as entered with and without the texmode */
     for (uint32_t k = 0; k < s.nmarks && k < f.nmarks; k++) {
         double a[3], c[3];
         gls_scene_mark_world(&s, k, a);
