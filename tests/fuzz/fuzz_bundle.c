@@ -1,6 +1,7 @@
 /* libFuzzer target: the bundle reader and validator on arbitrary bytes;
  * whatever it accepts is then walked the way the tools walk it (dump,
- * scene flattening), which must stay in bounds.
+ * scene flattening, the player's instanced load with its recorded walks),
+ * which must stay in bounds.
  *
  * The target rewrites the header's file size and CRC to match the input
  * before reading, so that mutations get past the checksum and exercise
@@ -42,6 +43,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         gls_scene s;
         char msg[256];
         if (gls_scene_flatten(b, &s, msg, sizeof msg) == 0)
+            gls_scene_free(&s);
+    }
+    /* the instanced load (what glsplay draws by default), scenes of up to
+     * 4096 call paths: records replayed on every path after the first */
+    uint64_t paths;
+    if (b->top != GLS_NONE && gls_bundle_count_paths(b, b->top, &paths) == 0 && paths <= 4096) {
+        gls_scene s;
+        char msg[256];
+        if (gls_scene_load(b, &s, msg, sizeof msg) == 0)
             gls_scene_free(&s);
     }
     gls_bundle_free(b);
