@@ -525,7 +525,8 @@ static int render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, 
             return -1;
         }
         /* only rows v0..v1-1 drawn (scissored: the whole pass's bits),
-         * read back and added; the plans below draw every row */
+         * read back and added; so do the lattice and grid below, the
+         * jittered passes draw every row */
         gls_render_pass_rows(r, c, v0, v1 - v0);
         gls_render_read_rgba_rows(r, v0, v1 - v0, rgba);
         gls_accum_add_rows(acc, v0, v1 - v0, rgba, (size_t)c->width * 4, 1);
@@ -534,9 +535,10 @@ static int render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, 
     }
     if (gls_aa_fine_ok(plan)) {
         /* lattice and grid: the samples are the pixels of a fine
-         * framebuffer drawn in tiles (aa_onepass.h) */
+         * framebuffer drawn in tiles (aa_onepass.h), those of rows
+         * v0..v1-1 only */
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name, estimate_from_tiles, s};
-        if (gls_aa_render_fine(r, c, plan, &fo, acc, NULL, err, sizeof err)) {
+        if (gls_aa_render_fine_rows(r, c, plan, &fo, v0, v1, acc, NULL, err, sizeof err)) {
             char mem[32];
             gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
             snprintf(msg, msglen, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)", name, err,

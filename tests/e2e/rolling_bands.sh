@@ -3,8 +3,9 @@
 # it needs (spec/outputs.md "With a rolling shutter", "Through a lens"):
 # through a lens the fine rows its pixels read (runtime/distort_exposure.c,
 # gls_distort_truth_bands), through a pinhole the band's own rows
-# (runtime/player.c centre_bands, the image's bands of one sample a pixel,
-# gt_flow_rolling.c for the next frame's depth).  Every output must be the
+# (runtime/player.c centre_bands; the image's bands: one sample a pixel,
+# or a lattice plan's fine tiles, aa_onepass.c; gt_flow_rolling.c for the
+# next frame's depth).  Every output must be the
 # same bytes as with each band drawing and reading the whole image
 # (GLS_BANDS_WHOLE=1, the switch that exists for this test).  The scene
 # of tests/py/flow_scene.py (a moving box: ids, normals, flow, boxes),
@@ -66,5 +67,5 @@ ALL=image,depth,points,instance,normals,flow,boxes
 same lens_bands_same_bytes 24 --camera "$t/brown.cam" --camera "$t/fish.cam" --outputs $ALL
 # one sample a pixel: the image's bands narrowed too
 same pinhole_bands_same_bytes 26 --camera "$t/pin.cam" --camera "$t/combo.cam" --outputs $ALL,landmarks
-# anti-aliased (the image's bands draw every row): the ground truth's
+# anti-aliased (the lattice's fine tiles narrowed to each band's samples)
 same pinhole_bands_aa_same_bytes 26 --camera "$t/pin.cam" --camera "$t/combo.cam" --aa 2 --outputs $ALL,edges
