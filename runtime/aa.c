@@ -339,6 +339,27 @@ void gls_accum_add(gls_accum *a, const uint8_t *rgba, size_t stride, uint64_t w)
     gls_accum_add_tiles(a, &rgba, stride, 1, &w);
 }
 
+void gls_accum_add_rows(gls_accum *a, uint32_t y0, uint32_t rows, const uint8_t *rgba, size_t stride, uint64_t w)
+{
+    /* the accumulator of those rows alone: the same sums, row buffer and
+     * counts, seen from row y0 */
+    size_t at = (size_t)a->width * y0;
+    gls_accum v = *a;
+    v.height = rows;
+    if (v.sum32)
+        v.sum32 += 4 * at;
+    if (v.sum64)
+        v.sum64 += 4 * at;
+    if (v.first)
+        v.first += at;
+    if (v.mixed)
+        v.mixed += at;
+    const uint8_t *top = rgba + stride * y0;
+    gls_accum_add_tiles(&v, &top, stride, 1, &w);
+    a->samples = v.samples;
+    a->wsum = v.wsum;
+}
+
 static inline uint64_t sum_at(const gls_accum *a, size_t i)
 {
     return a->weighted ? a->sum64[i] : a->sum32[i];

@@ -283,17 +283,18 @@ static int pixel_range(const gls_aa_fine *f, const kernel *k, int64_t X0, int64_
     return r[0] <= r[1] && r[2] <= r[3];
 }
 
-/* The part of tile [X0, X0 + tw) x [Y0, Y0 + th) that samples of the
- * image can fall in: the parallelogram A [-g, W + g] x [-g, H + g] (g:
- * the Gaussian's cells and a pixel of margin) clipped to the tile; its
- * bounding box, tile-relative, as a scissor {x, y, w, h}.  0 if empty. */
-static int tile_scissor(const gls_aa_fine *f, uint32_t W, uint32_t H, double g, int64_t X0, int64_t Y0, uint32_t tw,
-                        uint32_t th, uint32_t sc[4])
+/* The part of tile [X0, X0 + tw) x [Y0, Y0 + th) that samples of image
+ * rows v0..v1-1 can fall in: the parallelogram A [-g, W + g] x
+ * [v0 - g, v1 + g] (g: the Gaussian's cells and a pixel of margin; the
+ * whole image: v0 = 0, v1 = H) clipped to the tile; its bounding box,
+ * tile-relative, as a scissor {x, y, w, h}.  0 if empty. */
+static int tile_scissor(const gls_aa_fine *f, uint32_t W, uint32_t v0, uint32_t v1, double g, int64_t X0, int64_t Y0,
+                        uint32_t tw, uint32_t th, uint32_t sc[4])
 {
     double poly[16][2], tmp[16][2];
     int n = 4;
     for (int i = 0; i < 4; i++) {
-        double u = (i == 1 || i == 2) ? W + g : -g, v = i >= 2 ? H + g : -g;
+        double u = (i == 1 || i == 2) ? W + g : -g, v = i >= 2 ? v1 + g : v0 - g;
         poly[i][0] = (double)f->a[0][0] * u + (double)f->a[0][1] * v - (double)X0;
         poly[i][1] = (double)f->a[1][0] * u + (double)f->a[1][1] * v - (double)Y0;
     }
@@ -334,8 +335,14 @@ static int tile_scissor(const gls_aa_fine *f, uint32_t W, uint32_t H, double g, 
 }
 
 
-int gls_aa_render_fine(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_fine_opts *fo_in,
+int gls_aa_render_fine(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_fine_opts *fo,
                        gls_accum *acc, gls_aa_fine_stats *st, char *err, size_t errlen)
+{
+    return gls_aa_render_fine_rows(r, c, p, fo, 0, c->height, acc, st, err, errlen);
+}
+
+int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_fine_opts *fo_in,
+                            uint32_t v0, uint32_t v1, gls_accum *acc, gls_aa_fine_stats *st, char *err, size_t errlen)
 {
     gls_aa_fine_opts fo0;
     memset(&fo0, 0, sizeof fo0);
@@ -395,10 +402,14 @@ int gls_aa_render_fine(gls_renderer *r, const gls_camera *c, const gls_aa_plan *
             int64_t X0 = x0 + (int64_t)(t % tx) * tw, Y0 = y0 + (int64_t)(t / tx) * th;
             int64_t rng[4];
             done++;
-            if (!pixel_range(f, &k, X0, Y0, X0 + tw, Y0 + th, W, H, rng)) {
+            /* the pixels of rows v0..v1-1 whose samples the tile holds */
+            if (!pixel_range(f, &k, X0, Y0, X0 + tw, Y0 + th, W, H, rng) || rng[3] < (int64_t)v0 ||
+                rng[2] > (int64_t)v1 - 1) {
                 s.tiles_skipped++;
                 continue;
             }
+            rng[2] = rng[2] < (int64_t)v0 ? (int64_t)v0 : rng[2];
+            rng[3] = rng[3] > (int64_t)v1 - 1 ? (int64_t)v1 - 1 : rng[3];
             /* geometry that can reach the samples of those pixels: their
              * squares, the Gaussian's cells, a pixel of margin */
             double R = (double)(gls_aa_weighted(p) ? p->radius : 0) + 1.5;
@@ -409,7 +420,7 @@ int gls_aa_render_fine(gls_renderer *r, const gls_camera *c, const gls_aa_plan *
             }
             double m[6];
             uint32_t sc[4];
-            if (!tile_scissor(f, W, H, R + 1, X0, Y0, tw, th, sc)) {
+            if (!tile_scissor(f, W, v0, v1, R + 1, X0, Y0, tw, th, sc)) {
                 s.tiles_skipped++;
                 continue;
             }

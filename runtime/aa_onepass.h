@@ -52,5 +52,12 @@ int gls_aa_fine_plan(const gls_aa_plan *p, uint32_t w, uint32_t h, uint32_t maxd
  * camera's size.  -1 with a message on failure. */
 int gls_aa_render_fine(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_fine_opts *fo,
                        gls_accum *acc, gls_aa_fine_stats *st, char *err, size_t errlen);
+/* The same for image rows v0..v1-1 only (a rolling shutter's band): the
+ * same tiles at the same places, those no pixel of the rows needs
+ * skipped, the others scissored to the samples of the rows, so those
+ * rows' sums are the whole render's bit for bit; acc's other rows get
+ * nothing (or part of their samples: not to be read). */
+int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_fine_opts *fo,
+                            uint32_t v0, uint32_t v1, gls_accum *acc, gls_aa_fine_stats *st, char *err, size_t errlen);
 
 #endif

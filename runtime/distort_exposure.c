@@ -121,11 +121,8 @@ int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_dist
                  f0->height);
         goto out;
     }
-    /* GLS_LENS_BANDS_WHOLE=1 (tests/e2e/lens_bands.sh only): every band
-     * draws and reads the whole fine image, as before the rows were
-     * narrowed; the outputs must be the same bytes */
-    const char *env = getenv("GLS_LENS_BANDS_WHOLE");
-    int whole = env && strcmp(env, "1") == 0;
+    /* the test's switch: every band draws and reads the whole fine image */
+    int whole = gls_exposure_bands_whole();
     /* every pass of a band at the plain fine image's size (gt_pass.h draws
      * at the size set) */
     if (gls_renderer_set_size(r, f0->width, f0->height, err, errlen))

@@ -141,6 +141,12 @@ uint32_t gls_exposure_band_rows(const gls_renderer *r, const gls_camera *c, cons
     return !(speed > 0) || h >= H ? H : h < 1 ? 1 : (uint32_t)h;
 }
 
+int gls_exposure_bands_whole(void)
+{
+    const char *env = getenv("GLS_BANDS_WHOLE");
+    return env && strcmp(env, "1") == 0;
+}
+
 /* acc's rows v0..v1-1 += src's (sums, and which pixels are mixed); first:
  * src is acc's first sample of those rows. */
 static void add_rows(gls_accum *acc, const gls_accum *src, uint32_t v0, uint32_t v1, int first)
@@ -214,8 +220,9 @@ int gls_exposure_render_bands(const gls_camera *c, const gls_exposure *e, const 
     return rc;
 }
 
-/* gls_exposure_render's band: the whole plan through the pinhole camera
- * at the band's pose and lens point (every row drawn, the band's kept). */
+/* gls_exposure_render's band: the plan through the pinhole camera at the
+ * band's pose and lens point, asked for the band's rows (all of them with
+ * the test's switch); the band's kept. */
 typedef struct {
     gls_render_plan_fn render_plan;
     void *ud;
@@ -226,9 +233,10 @@ static int render_plan_band(void *ud, const gls_camera *at, double lx, double ly
 {
     const plan_band *pb = ud;
     gls_camera cam;
-    (void)v0, (void)v1;
     gls_exposure_lens(at, lx, ly, &cam);
-    return pb->render_plan(pb->ud, &cam, tmp, msg, msglen);
+    if (gls_exposure_bands_whole())
+        v0 = 0, v1 = at->height;
+    return pb->render_plan(pb->ud, &cam, v0, v1, tmp, msg, msglen);
 }
 
 int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,

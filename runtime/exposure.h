@@ -36,9 +36,12 @@
 typedef int (*gls_pose_at_fn)(void *ud, double s, gls_camera *cam);
 
 /* Render the plan through camera c into acc (initialised for c's size,
- * unweighted or weighted as the plan, tracking mixed pixels or not).
+ * unweighted or weighted as the plan, tracking mixed pixels or not):
+ * at least image rows v0..v1-1 (a band of a rolling shutter), which are
+ * the same bits as in the whole image; the other rows may be left out.
  * 0, or -1 with a complete message in msg. */
-typedef int (*gls_render_plan_fn)(void *ud, const gls_camera *c, gls_accum *acc, char *msg, size_t msglen);
+typedef int (*gls_render_plan_fn)(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, gls_accum *acc, char *msg,
+                                  size_t msglen);
 
 typedef struct {
     int blur, rolling, dof;  /* which effects are on                      */
@@ -62,6 +65,13 @@ void gls_exposure_lens(const gls_camera *c, double lx, double ly, gls_camera *ou
 /* Do K sub-frame renders of the plan fit the accumulator's exact range?
  * 0, or -1 with why. */
 int gls_exposure_fits(const gls_exposure *e, const gls_aa_plan *p, char *why, size_t whylen);
+
+/* The test-only switch GLS_BANDS_WHOLE=1 (tests/e2e/rolling_bands.sh):
+ * every band of a rolling shutter draws and reads back the whole image
+ * (the fine image through a lens), as before the bands' rows were
+ * narrowed, so that the test can compare the outputs byte for byte; 0
+ * (narrowed: only the rows a band keeps) otherwise. */
+int gls_exposure_bands_whole(void);
 
 /* Rows per band for rolling shutter: at most GLS_BAND_PX pixels of image
  * motion within a band, from the projected corners of the scene's item

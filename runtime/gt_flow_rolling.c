@@ -97,11 +97,15 @@ int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_disto
         pose_at(ud, 0, &at); /* the scene back at frame t */
         return rc;
     }
+    /* each band's ground-truth pass scissored to its rows and read
+     * straight into them; with the test's switch (exposure.h) the whole
+     * image into a scratch buffer, its rows copied */
     size_t n = (size_t)c->width * c->height, W = c->width;
     uint32_t h = band ? band : c->height;
-    float *zb = malloc((n ? n : 1) * sizeof *zb);
+    int whole = gls_exposure_bands_whole();
+    float *zb = whole ? malloc((n ? n : 1) * sizeof *zb) : NULL;
     int rc = 0;
-    if (!zb) {
+    if (whole && !zb) {
         snprintf(err, errlen, "out of memory for the next frame's depth");
         return -1;
     }
@@ -109,9 +113,13 @@ int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_disto
         uint32_t v1 = v0 + h < c->height ? v0 + h : c->height;
         gls_camera at = *c;
         pose_at(ud, next_dt + c->line_delay * (v0 + v1 - 1) / 2.0, &at);
-        rc = gls_gt_render(r, &at, NULL, NULL, zb, err, errlen);
-        if (rc == 0)
-            memcpy(z1 + W * v0, zb + W * v0, W * (v1 - v0) * sizeof *z1);
+        if (whole) {
+            rc = gls_gt_render(r, &at, NULL, NULL, zb, err, errlen);
+            if (rc == 0)
+                memcpy(z1 + W * v0, zb + W * v0, W * (v1 - v0) * sizeof *z1);
+        } else {
+            rc = gls_gt_render_rows(r, &at, v0, v1 - v0, NULL, NULL, z1, err, errlen);
+        }
     }
     gls_camera at = *c;
     pose_at(ud, 0, &at);

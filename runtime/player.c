@@ -508,7 +508,8 @@ static int pose_at(void *ud, double t, gls_camera *cam)
  * stratified, one plain pass without anti-aliasing.  0, or -1 with the
  * message in msg.  Also the exposure's render of one sub-frame sample
  * (exposure.h), whence the signature. */
-static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg, size_t msglen)
+static int render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, gls_accum *acc, char *msg,
+                       size_t msglen)
 {
     static const char lower_size[] = "lower --size (or the camera's width and height)";
     session *s = ud;
@@ -523,17 +524,21 @@ static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg,
             gls_frame_oom_message(msg, msglen, name, c->width, c->height, (uint64_t)c->width * c->height * 4);
             return -1;
         }
-        gls_render_pass(r, c, 0.0, 0.0);
-        gls_render_read_rgba(r, rgba);
-        gls_accum_add(acc, rgba, (size_t)c->width * 4, 1);
+        /* only rows v0..v1-1 drawn (scissored: the whole pass's bits),
+         * read back and added; so do the lattice and grid below, the
+         * jittered passes draw every row */
+        gls_render_pass_rows(r, c, v0, v1 - v0);
+        gls_render_read_rgba_rows(r, v0, v1 - v0, rgba);
+        gls_accum_add_rows(acc, v0, v1 - v0, rgba, (size_t)c->width * 4, 1);
         free(rgba);
         return 0;
     }
     if (gls_aa_fine_ok(plan)) {
         /* lattice and grid: the samples are the pixels of a fine
-         * framebuffer drawn in tiles (aa_onepass.h) */
+         * framebuffer drawn in tiles (aa_onepass.h), those of rows
+         * v0..v1-1 only */
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name, estimate_from_tiles, s};
-        if (gls_aa_render_fine(r, c, plan, &fo, acc, NULL, err, sizeof err)) {
+        if (gls_aa_render_fine_rows(r, c, plan, &fo, v0, v1, acc, NULL, err, sizeof err)) {
             char mem[32];
             gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
             snprintf(msg, msglen, "glsplay: error: camera %s: %s; lower --aa-memory (%s now)", name, err,
@@ -560,48 +565,58 @@ static int render_plan(void *ud, const gls_camera *c, gls_accum *acc, char *msg,
 
 /* Rolling shutter: the centre pass (colour, depth) and the ground-truth
  * pass (ids, normals) of each band of `band` rows drawn at its middle
- * row's time, their rows copied out; the scene left at the frame time.
- * The buffers not asked for are NULL.  0, or -1 with msg. */
+ * row's time, scissored to the band's rows (the whole pass's viewport and
+ * projection, so the same bits) and read back straight into their place;
+ * the scene left at the frame time.  The buffers not asked for are NULL.
+ * With the test's switch (gls_exposure_bands_whole) each band draws and
+ * reads the whole image into scratch buffers and copies its rows out, as
+ * before the rows were narrowed.  0, or -1 with msg. */
 static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t *rgba, float *z, uint32_t *inst,
                         float *normal, float *gt_z, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height, W = c->width;
-    uint8_t *rb = rgba ? malloc(n * 4) : NULL;
-    float *zb = z || gt_z ? malloc(n * sizeof *zb) : NULL, *nb = normal ? malloc(n * 3 * sizeof *nb) : NULL;
-    uint32_t *ib = inst ? malloc(n * sizeof *ib) : NULL;
+    int whole = gls_exposure_bands_whole();
+    uint8_t *rb = whole && rgba ? malloc(n * 4) : NULL;
+    float *zb = whole && z ? malloc(n * sizeof *zb) : NULL, *gb = whole && gt_z ? malloc(n * sizeof *gb) : NULL;
+    float *nb = whole && normal ? malloc(n * 3 * sizeof *nb) : NULL;
+    uint32_t *ib = whole && inst ? malloc(n * sizeof *ib) : NULL;
     char err[512];
     int rc = -1;
-    if ((rgba && !rb) || ((z || gt_z) && !zb) || (normal && !nb) || (inst && !ib)) {
-        gls_frame_oom_message(msg, msglen, s->name_now, c->width, c->height, 28 * (uint64_t)n);
+    if (whole && ((rgba && !rb) || (z && !zb) || (gt_z && !gb) || (normal && !nb) || (inst && !ib))) {
+        gls_frame_oom_message(msg, msglen, s->name_now, c->width, c->height, 32 * (uint64_t)n);
         goto out;
     }
     for (uint32_t v0 = 0; v0 < c->height; v0 += band) {
         uint32_t v1 = v0 + band < c->height ? v0 + band : c->height;
         size_t a = W * v0, len = W * (v1 - v0);
+        /* the rows drawn and read, and where they are read into */
+        uint32_t y0 = whole ? 0 : v0, rows = whole ? c->height : v1 - v0;
         gls_camera at = *c;
         pose_at(s, c->line_delay * (v0 + v1 - 1) / 2.0, &at);
         if (rgba || z) {
-            gls_render_pass(s->r, &at, 0.0, 0.0);
-            if (rgba) {
-                gls_render_read_rgba(s->r, rb);
-                memcpy(rgba + 4 * a, rb + 4 * a, 4 * len);
-            }
-            if (z) {
-                gls_render_read_z(s->r, zb);
-                memcpy(z + a, zb + a, len * sizeof *z);
-            }
+            gls_render_pass_rows(s->r, &at, y0, rows);
+            if (rgba)
+                gls_render_read_rgba_rows(s->r, y0, rows, whole ? rb : rgba);
+            if (z)
+                gls_render_read_z_rows(s->r, y0, rows, whole ? zb : z);
         }
-        if (inst || normal || gt_z) {
-            if (gls_gt_render(s->r, &at, ib, nb, gt_z ? zb : NULL, err, sizeof err)) {
-                snprintf(msg, msglen, "glsplay: error: camera %s: %s", s->name_now, err);
-                goto out;
-            }
+        /* flow starts from the ground-truth pass's depth */
+        if ((inst || normal || gt_z) && gls_gt_render_rows(s->r, &at, y0, rows, whole ? ib : inst,
+                                                           whole ? nb : normal, whole ? gb : gt_z, err, sizeof err)) {
+            snprintf(msg, msglen, "glsplay: error: camera %s: %s", s->name_now, err);
+            goto out;
+        }
+        if (whole) { /* the band's rows of the whole images */
+            if (rgba)
+                memcpy(rgba + 4 * a, rb + 4 * a, 4 * len);
+            if (z)
+                memcpy(z + a, zb + a, len * sizeof *z);
             if (inst)
                 memcpy(inst + a, ib + a, len * sizeof *inst);
             if (normal)
                 memcpy(normal + 3 * a, nb + 3 * a, 3 * len * sizeof *normal);
-            if (gt_z) /* flow starts from the ground-truth pass's depth */
-                memcpy(gt_z + a, zb + a, len * sizeof *gt_z);
+            if (gt_z)
+                memcpy(gt_z + a, gb + a, len * sizeof *gt_z);
         }
     }
     rc = 0;
@@ -612,6 +627,7 @@ out:
     }
     free(rb);
     free(zb);
+    free(gb);
     free(nb);
     free(ib);
     return rc;
@@ -734,7 +750,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         } else if (lens) {
             if (gls_distort_frame_accum(&df, c, plan, &acc))
                 goto oom;
-        } else if (render_plan(s, c, &acc, msg, sizeof msg)) {
+        } else if (render_plan(s, c, 0, c->height, &acc, msg, sizeof msg)) {
             goto out;
         }
     }

@@ -57,6 +57,61 @@ out:
     return rc;
 }
 
+/* gls_accum_add_rows (a rolling shutter's band of one sample a pixel):
+ * the rows asked for are exactly gls_accum_add's sums and mixed pixels,
+ * unweighted and weighted, first sample and later; the other rows keep
+ * what they held; samples and wsum counted alike. */
+static void test_accum_add_rows(void)
+{
+    enum { W = 7, H = 9, Y0 = 3, ROWS = 4 };
+    uint8_t img[2][W * H * 4];
+    for (size_t i = 0; i < sizeof img[0]; i++) {
+        img[0][i] = (uint8_t)(i * 37 + 11);
+        img[1][i] = (uint8_t)(i % 5 ? img[0][i] : i * 53 + 7); /* some pixels differ */
+    }
+    for (int weighted = 0; weighted < 2; weighted++) {
+        gls_accum whole, rows;
+        CHECK(gls_accum_init(&whole, W, H, weighted, 1) == 0);
+        CHECK(gls_accum_init(&rows, W, H, weighted, 1) == 0);
+        /* the rows outside Y0..Y0+ROWS-1 hold something of their own */
+        for (size_t i = 0; i < 4 * (size_t)W * H; i++) {
+            if (i >= 4 * (size_t)W * Y0 && i < 4 * (size_t)W * (Y0 + ROWS))
+                continue;
+            if (weighted)
+                rows.sum64[i] = 1000 + i;
+            else
+                rows.sum32[i] = (uint32_t)(1000 + i);
+        }
+        for (int k = 0; k < 2; k++) {
+            uint64_t w = weighted ? 3 + 2 * (uint64_t)k : 1;
+            gls_accum_add(&whole, img[k], 4 * W, w);
+            gls_accum_add_rows(&rows, Y0, ROWS, img[k], 4 * W, w);
+            CHECK(rows.samples == whole.samples && rows.wsum == whole.wsum);
+        }
+        int same = 1, kept = 1;
+        for (size_t i = 0; i < (size_t)W * H; i++) {
+            int in = i >= (size_t)W * Y0 && i < (size_t)W * (Y0 + ROWS);
+            for (int ch = 0; ch < 4; ch++) {
+                size_t j = 4 * i + ch;
+                uint64_t a = weighted ? whole.sum64[j] : whole.sum32[j];
+                uint64_t b = weighted ? rows.sum64[j] : rows.sum32[j];
+                if (in)
+                    same &= a == b;
+                else
+                    kept &= b == 1000 + j;
+            }
+            if (in)
+                same &= whole.mixed[i] == rows.mixed[i] && whole.first[i] == rows.first[i];
+            else
+                kept &= rows.mixed[i] == 0;
+        }
+        CHECK(same);
+        CHECK(kept);
+        gls_accum_free(&whole);
+        gls_accum_free(&rows);
+    }
+}
+
 /* ---- accumulator ---------------------------------------------------- */
 
 /* 4096^2 samples of the extreme values, unweighted, 256 per call: every
@@ -475,6 +530,7 @@ int main(void)
         printf("FAIL test_aa: no GL context: %s\n", err);
         return 1;
     }
+    RUN(test_accum_add_rows);
     RUN(test_accum_limit_box);
     RUN(test_accum_limit_gauss);
     RUN(test_gauss_weights_sum);
