@@ -1,6 +1,11 @@
 /* Each instruction's own checks and the bytecode it emits
  * (spec/language.md 7), and the table of instructions that statements.c
- * looks names up in. */
+ * looks names up in.
+ *
+ * Over 500 lines because it is a catalogue: one short function per
+ * instruction of the language (about thirty), each read on its own, and
+ * the table that names them; splitting it would only scatter the table's
+ * entries. */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>

@@ -1,6 +1,12 @@
 /* Complete validation of a bundle's content.  A bundle that passes cannot
  * make a walker of its code read outside its arrays: see the list of
- * guarantees in bundle.h and spec/bundle.md "Validation". */
+ * guarantees in bundle.h and spec/bundle.md "Validation".
+ *
+ * Over 500 lines because it is the checklist of spec/bundle.md 12.2: a
+ * function for each group of checks (names, textures, vertices, operands,
+ * code, calls, instance names, call paths) sharing the one error path and
+ * the call-graph walks; the landmark names' checks, which have tables of
+ * their own, are in validate_marks.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -252,26 +258,22 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
         if (v >= ki->values)
             FAIL("object %s, instruction %u (%s): %s %u unknown", o->name, k, nm, ki->noun, v);
         break;
+    /* an index into a table of lim entries: "WHAT v >= lim NOUN" */
+#define INDEX_IN(lim, what, noun)                                                                              \
+    if (v >= (lim))                                                                                            \
+        FAIL("object %s, instruction %u (%s): " what " %u >= %u " noun, o->name, k, nm, v, (lim));           \
+    break
     case GLS_KIND_OBJECT:
-        if (v >= b->nobjects)
-            FAIL("object %s, instruction %u (%s): index %u >= %u objects", o->name, k, nm, v, b->nobjects);
-        break;
+        INDEX_IN(b->nobjects, "index", "objects");
     case GLS_KIND_TEXTURE:
-        if (v >= b->ntextures)
-            FAIL("object %s, instruction %u (%s): index %u >= %u textures", o->name, k, nm, v, b->ntextures);
-        break;
+        INDEX_IN(b->ntextures, "index", "textures");
     case GLS_KIND_INSTNAME:
-        if (v >= b->ninstnames)
-            FAIL("object %s, instruction %u (%s): instance name %u >= %u names", o->name, k, nm, v, b->ninstnames);
-        break;
+        INDEX_IN(b->ninstnames, "instance name", "names");
     case GLS_KIND_MARKNAME:
-        if (v >= b->nmarknames)
-            FAIL("object %s, instruction %u (%s): landmark name %u >= %u names", o->name, k, nm, v, b->nmarknames);
-        break;
+        INDEX_IN(b->nmarknames, "landmark name", "names");
     case GLS_KIND_CLASSNAME: /* class names share the landmarks' table */
-        if (v >= b->nmarknames)
-            FAIL("object %s, instruction %u (%s): class name %u >= %u names", o->name, k, nm, v, b->nmarknames);
-        break;
+        INDEX_IN(b->nmarknames, "class name", "names");
+#undef INDEX_IN
     case GLS_KIND_NVERT: {
         int pk = gls_op_find(in->op, GLS_KIND_PRIMKIND);
         gls_primkind kind = (gls_primkind)in->u[pk];
@@ -280,22 +282,21 @@ static int check_operand(const gls_bundle *b, const gls_object *o, uint32_t k, c
                  gls_prim_name[kind], v);
         break;
     }
+    /* the first of s.n entries of a stream of lim (none_ok: or GLS_NONE,
+       the stream unused): "NOUN v+count beyond lim" */
+#define SPAN_IN(lim, none_ok, noun)                                                                            \
+    if (!((none_ok) && v == GLS_NONE) && (v > (lim) || s.n > (lim) - v))                                       \
+        FAIL("object %s, instruction %u (%s): " noun " %u+%u beyond %u", o->name, k, nm, v, s.n, (lim));      \
+    break
     case GLS_KIND_FIRST_POS:
-        if (v > b->npos || s.n > b->npos - v)
-            FAIL("object %s, instruction %u (%s): positions %u+%u beyond %u", o->name, k, nm, v, s.n, b->npos);
-        break;
+        SPAN_IN(b->npos, 0, "positions");
     case GLS_KIND_FIRST_COL:
-        if (v != GLS_NONE && (v > b->ncol || s.n > b->ncol - v))
-            FAIL("object %s, instruction %u (%s): colours %u+%u beyond %u", o->name, k, nm, v, s.n, b->ncol);
-        break;
+        SPAN_IN(b->ncol, 1, "colours");
     case GLS_KIND_FIRST_TC:
-        if (v != GLS_NONE && (v > b->ntex || s.n > b->ntex - v))
-            FAIL("object %s, instruction %u (%s): texcoords %u+%u beyond %u", o->name, k, nm, v, s.n, b->ntex);
-        break;
+        SPAN_IN(b->ntex, 1, "texcoords");
     case GLS_KIND_FIRST_NRM:
-        if (v > b->nnrm || s.n > b->nnrm - v)
-            FAIL("object %s, instruction %u (%s): normals %u+%u beyond %u", o->name, k, nm, v, s.n, b->nnrm);
-        break;
+        SPAN_IN(b->nnrm, 0, "normals");
+#undef SPAN_IN
     case GLS_KIND_NUM:
     case GLS_KIND_ANGLE:
     case GLS_KIND_COUNT:

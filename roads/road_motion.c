@@ -1,6 +1,13 @@
 /* Motion along the road: speed profiles, the body's pitch and heave (a
  * damped spring-mass model driven by the road), the rig's pose per frame,
- * other vehicles, and the trajectory outputs (spec/road.md). */
+ * other vehicles, and the trajectory outputs (spec/road.md).
+ *
+ * Over 500 lines because its parts are one computation: the per-frame
+ * walk (road_run_trajectory) advances the speed profile, the road's
+ * roughness and the body's state together and composes the rig's pose
+ * from them; the vehicles reuse the profiles and the pose composition,
+ * and the writers are the walk's only callers.  Each part is a few
+ * static functions, in that order. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>

@@ -1,6 +1,12 @@
 /* Replay of a validated bundle into a gls_scene (scene.h): protos,
  * instances and chunks.
  *
+ * Over 500 lines because it is one pipeline over one walker: the
+ * interpreter that walks the code (and records and replays walks), the
+ * triangles it emits into the walker's arrays, and the packing of those
+ * arrays into chunks and draw items; landmarks have their own file
+ * (scene_marks.c), instance names and motion theirs (scene_instances.c).
+ *
  * The interpreter keeps the state of opcodes.h: matrix M (double, row
  * major, relative to the current instance's frame), colour, texture mode,
  * texture.  PUSH/POP save and restore it on a heap stack; CALL runs the
