@@ -1,0 +1,142 @@
+/* Packing the scene builder's triangles into chunks and draw items
+ * (scene_pack.h). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "scene_pack.h"
+
+static int key_cmp(const gls_drawkey *a, const gls_drawkey *b)
+{
+    if (a->texture != b->texture)
+        return a->texture < b->texture ? -1 : 1;
+    if (a->mode != b->mode)
+        return a->mode < b->mode ? -1 : 1;
+    return memcmp(a->rgba, b->rgba, 4);
+}
+
+static int tri_cmp(const void *pa, const void *pb)
+{
+    const gls_pack_tri *a = pa, *b = pb;
+    if (a->proto != b->proto)
+        return a->proto < b->proto ? -1 : 1;
+    int k = key_cmp(&a->key, &b->key);
+    if (k)
+        return k;
+    for (int j = 0; j < 3; j++)
+        if (a->cell[j] != b->cell[j])
+            return a->cell[j] < b->cell[j] ? -1 : 1;
+    if (a->zorder != b->zorder)
+        return a->zorder < b->zorder ? -1 : 1;
+    return a->idx < b->idx ? -1 : a->idx > b->idx;
+}
+
+/* Items in drawing order: by key, then instance, then chunk. */
+static const gls_scene *sort_scene;
+static int item_cmp(const void *pa, const void *pb)
+{
+    const gls_item *a = pa, *b = pb;
+    int k = key_cmp(&sort_scene->chunks[a->chunk].key, &sort_scene->chunks[b->chunk].key);
+    if (k)
+        return k;
+    if (a->inst != b->inst)
+        return a->inst < b->inst ? -1 : 1;
+    return a->chunk < b->chunk ? -1 : a->chunk > b->chunk;
+}
+
+int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
+{
+    s->verts = malloc(w->ntri ? w->ntri * 3 * s->stride : 1);
+    s->chunks = malloc((w->ntri ? w->ntri : 1) * sizeof *s->chunks);
+    s->exact = malloc((w->ntri ? w->ntri : 1) * 9 * sizeof *s->exact);
+    if (!s->verts || !s->chunks || !s->exact)
+        return -1;
+    for (int j = 0; j < 3; j++)
+        s->lo[j] = INFINITY, s->hi[j] = -INFINITY;
+    for (size_t p = 0; p < s->nprotos; p++)
+        for (int j = 0; j < 3; j++)
+            s->protos[p].lo[j] = INFINITY, s->protos[p].hi[j] = -INFINITY;
+    gls_chunk *ch = NULL;
+    for (size_t i = 0; i < w->ntri; i++) {
+        const gls_pack_tri *t = &w->tris[i];
+        gls_proto *pr = &s->protos[t->proto];
+        int new_proto = i == 0 || w->tris[i - 1].proto != t->proto;
+        if (!ch || new_proto || key_cmp(&ch->key, &t->key) || memcmp(w->tris[i - 1].cell, t->cell, sizeof t->cell)) {
+            if (new_proto)
+                pr->first_chunk = s->nchunks;
+            pr->nchunks++;
+            ch = &s->chunks[s->nchunks++];
+            ch->key = t->key;
+            ch->first = (uint32_t)(i * 3);
+            ch->count = 0;
+            ch->maxoff = 0;
+            for (int j = 0; j < 3; j++) {
+                ch->anchor[j] = ((double)t->cell[j] + 0.5) * GLS_SCENE_CELL;
+                ch->lo[j] = INFINITY, ch->hi[j] = -INFINITY;
+            }
+        }
+        pr->ntris++;
+        for (int k = 0; k < 3; k++) {
+            uint8_t *v = s->verts + (i * 3 + (size_t)k) * s->stride;
+            const double *p = w->wpos + 9 * (size_t)t->idx + 3 * k;
+            float off[3];
+            memcpy(s->exact + (i * 3 + (size_t)k) * 3, p, 3 * sizeof *p);
+            for (int j = 0; j < 3; j++) {
+                off[j] = (float)(p[j] - ch->anchor[j]);
+                if (fabs(p[j] - ch->anchor[j]) > ch->maxoff)
+                    ch->maxoff = fabs(p[j] - ch->anchor[j]);
+                ch->lo[j] = fmin(ch->lo[j], p[j]), ch->hi[j] = fmax(ch->hi[j], p[j]);
+                pr->lo[j] = fmin(pr->lo[j], p[j]), pr->hi[j] = fmax(pr->hi[j], p[j]);
+                s->lo[j] = fmin(s->lo[j], p[j]), s->hi[j] = fmax(s->hi[j], p[j]);
+            }
+            memcpy(v, off, sizeof off);
+            if (s->has_color)
+                memcpy(v + s->color_offset, w->wcol + 12 * (size_t)t->idx + 4 * k, 4);
+            if (s->has_texcoord)
+                memcpy(v + s->texcoord_offset, w->wtc + 6 * (size_t)t->idx + 2 * k, 8);
+            if (s->lit) {
+                memcpy(v + s->normal_offset, w->wnrm + 9 * (size_t)t->idx + 3 * k, 12);
+                memcpy(v + s->specular_offset, w->wspec + 4 * (size_t)t->idx, 16);
+            }
+        }
+        ch->count += 3;
+    }
+    return 0;
+}
+
+int gls_pack_items(gls_scene *s)
+{
+    size_t n = 0;
+    for (uint32_t i = 0; i < s->ninst; i++) {
+        gls_instance *in = &s->inst[i];
+        if (in->proto != GLS_NONE && s->protos[in->proto].nchunks == 0)
+            in->proto = GLS_NONE; /* an object that draws nothing itself */
+        in->nitems = in->proto == GLS_NONE ? 0 : s->protos[in->proto].nchunks;
+        n += in->nitems;
+    }
+    if (n > GLS_SCENE_MAX_ITEMS)
+        return -2;
+    s->items = malloc((n ? n : 1) * sizeof *s->items);
+    if (!s->items)
+        return -1;
+    for (uint32_t i = 0; i < s->ninst; i++) {
+        const gls_instance *in = &s->inst[i];
+        for (uint32_t k = 0; k < in->nitems; k++) {
+            gls_item *it = &s->items[s->nitems++];
+            it->inst = i;
+            it->chunk = s->protos[in->proto].first_chunk + k;
+        }
+    }
+    sort_scene = s;
+    if (s->nitems)
+        qsort(s->items, s->nitems, sizeof *s->items, item_cmp);
+    for (uint32_t i = 0; i < s->nitems; i++)
+        if (i == 0 || key_cmp(&s->chunks[s->items[i - 1].chunk].key, &s->chunks[s->items[i].chunk].key))
+            s->nbatches++;
+    return 0;
+}
+
+void gls_pack_sort(gls_pack_tri *t, size_t n)
+{
+    if (n) /* qsort(NULL, 0) is undefined */
+        qsort(t, n, sizeof *t, tri_cmp);
+}

@@ -1,0 +1,47 @@
+/* The last stage of building a gls_scene (scene_build.c): the walk's
+ * triangles, sorted into drawing order, packed into chunks of one proto,
+ * draw key and 64-unit cell (float offsets from the cell's anchor, exact
+ * positions kept beside them), and the instances' draw items sorted by
+ * key, instance and chunk.  Private to the scene builder. */
+#ifndef GLS_SCENE_PACK_H
+#define GLS_SCENE_PACK_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "scene.h"
+
+/* One triangle before chunking: its proto, draw key, cell and the
+ * walk's index of its vertices. */
+typedef struct {
+    uint32_t proto;
+    gls_drawkey key;
+    int64_t cell[3];
+    uint32_t zorder; /* the first vertex's place in its cell, Morton order */
+    uint32_t idx; /* emission order: the final tie-break, for determinism */
+} gls_pack_tri;
+
+/* The walk's triangles and their vertices' data, by emission index:
+ * positions (9 doubles a triangle, in the proto's frame), colours (12
+ * bytes), texture coordinates (6 floats), and for lit scenes normals (9
+ * floats) and the specular state (4 floats). */
+typedef struct {
+    const gls_pack_tri *tris;
+    size_t ntri;
+    const double *wpos;
+    const uint8_t *wcol;
+    const float *wtc, *wnrm, *wspec;
+} gls_pack_input;
+
+/* Sort triangles into drawing order: proto, key, cell, Morton order in
+ * the cell, emission order. */
+void gls_pack_sort(gls_pack_tri *t, size_t n);
+/* Chunks, vertices and the protos' and scene's boxes from the sorted
+ * triangles (s's layout, protos and instances set).  0, or -1 when out of
+ * memory. */
+int gls_pack_chunks(const gls_pack_input *w, gls_scene *s);
+/* Items of every instance with geometry, sorted into drawing order.  0,
+ * -1 when out of memory, -2 when there would be more than
+ * GLS_SCENE_MAX_ITEMS. */
+int gls_pack_items(gls_scene *s);
+
+#endif
