@@ -3,13 +3,8 @@
 # orientation, errors, no partial files.  Scenes come from
 # build/tests/test_player --write (bundles built in C, no compiler needed).
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 PLAY=$B/glsplay
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 # expect NAME STATUS PATTERN -- command...: exit status, and stderr that is
 # one line, or (an error in a text input file) the message line, the
 # offending source line and a caret line under the column.
