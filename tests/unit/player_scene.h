@@ -160,6 +160,19 @@ static inline uint32_t tb_texture(tb *t, const char *name, uint32_t w, uint32_t 
     return b->ntextures++;
 }
 
+/* A GL context of backend B for the test NAME; none ends the test with
+ * "FAIL NAME: no GL context: why" and exit status 1. */
+static inline gls_glctx *tb_glctx(gls_backend b, const char *name)
+{
+    char err[256];
+    gls_glctx *c = gls_glctx_create(b, err, sizeof err);
+    if (!c) {
+        printf("FAIL %s: no GL context: %s\n", name, err);
+        exit(1);
+    }
+    return c;
+}
+
 /* Close every object with END and compute features; no validation
  * (for scenes beyond a validator limit that the player no longer needs). */
 static inline gls_bundle *tb_finish_unchecked(tb *t)

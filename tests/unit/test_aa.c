@@ -513,12 +513,7 @@ static void test_mosaic_same_as_single(void)
 
 int main(void)
 {
-    char err[256];
-    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL test_aa: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(GLS_BACKEND_AUTO, "test_aa");
     RUN(test_accum_add_rows);
     RUN(test_accum_limit_box);
     RUN(test_accum_limit_gauss);

@@ -879,12 +879,7 @@ static void test_snapping_fine(void)
 
 int main(void)
 {
-    char err[256];
-    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL test_aa_lattice: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(GLS_BACKEND_AUTO, "test_aa_lattice");
     RUN(test_lattice_points);
     RUN(test_lattice_criterion);
     RUN(test_lattice_centred);
