@@ -38,13 +38,7 @@ done
 fps() {
     be=$1 n=$2
     shift 2
-    rm -rf "$t/out"
-    t0=$(now)
-    # shellcheck disable=SC2068
-    "$B/glsplay" $@ --frames "0:$n" --outputs image --backend "$be" -o "$t/out" 2>"$t/err" ||
-        { cat "$t/err" >&2; exit 1; }
-    t1=$(now)
-    rate "$n" "$t0" "$t1"
+    run_fps "$n" "$B/glsplay" "$@" --outputs image --backend "$be"
 }
 # row NAME FRAMES ARGS...: a table row, the best of REPEAT runs of each
 # backend, interleaved

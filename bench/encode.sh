@@ -48,12 +48,7 @@ camera "$t/rig.cam" 3 1920 1080 >"$t/hd/rig.cam"
 fps() {
     play=$1 n=$2
     shift 2
-    rm -rf "$t/out"
-    t0=$(now)
-    # shellcheck disable=SC2068
-    "$play" $@ --frames "0:$n" -o "$t/out" 2>"$t/err" || { cat "$t/err" >&2; exit 1; }
-    t1=$(now)
-    rate "$n" "$t0" "$t1"
+    run_fps "$n" "$play" "$@"
 }
 best() {
     b=0 i=0

@@ -24,6 +24,18 @@ machine() { echo "$(cpu), $(nproc) cores, $(uname -sr)"; }
 # loadavg N: the first N load averages (1, 5, 15 minutes)
 loadavg() { cut -d' ' -f1-"$1" /proc/loadavg; }
 
+# run_fps N COMMAND ARGS...: frames per second of one whole run of
+# COMMAND ARGS --frames 0:N -o $t/out (a glsplay: start-up, upload and
+# file writing included); if it fails, its errors and the bench ends
+run_fps() {
+    rf_n=$1
+    shift
+    rm -rf "$t/out"
+    rf_t0=$(now)
+    "$@" --frames "0:$rf_n" -o "$t/out" 2>"$t/err" || { cat "$t/err" >&2; exit 1; }
+    rate "$rf_n" "$rf_t0" "$(now)"
+}
+
 # now: seconds since the epoch, to the nanosecond; rate N T0 T1: N per
 # second from T0 to T1, two decimals; larger X Y: the larger number
 now() { date +%s.%N; }
