@@ -83,13 +83,18 @@ rig_cam() {
     printf 'width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\npose rig\n' >"$1"
 }
 
-# exact NAME STATUS LINE -- command...: exit status, and stderr exactly LINE
+# exact NAME STATUS LINE -- command...: exit status, and stderr exactly
+# LINE; a script that sets EXACT_LINES=1 also wants its line count (one
+# line ending in a newline, or none when LINE is empty)
+EXACT_LINES=0
 exact() {
     name=$1 want=$2 line=$3
     shift 4
     "$@" >"$t/stdout" 2>"$t/stderr"
     rc=$?
     if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
-    elif [ "$(cat "$t/stderr")" != "$line" ]; then fail "$name" "stderr is '$(cat "$t/stderr")', wanted '$line'"
+    elif [ "$(cat "$t/stderr")" != "$line" ] || { [ "$EXACT_LINES" = 1 ] &&
+        [ "$(wc -l <"$t/stderr")" -ne $([ -n "$line" ] && echo 1 || echo 0) ]; }; then
+        fail "$name" "stderr is '$(cat "$t/stderr")', wanted '$line'"
     else ok "$name"; fi
 }

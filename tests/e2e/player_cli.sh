@@ -93,17 +93,8 @@ expect player_usage_motion_flatten 2 "glsplay: error: --motion moves instances, 
 expect player_help 0 "" -- $PLAY --help
 grep -q "usage: glsplay" "$t/stdout" && ok player_help_text || fail player_help_text "no usage line"
 
-# exact NAME STATUS LINE -- command...: exit status, and stderr exactly LINE
-exact() {
-    name=$1 want=$2 line=$3
-    shift 4
-    "$@" >"$t/stdout" 2>"$t/stderr"
-    rc=$?
-    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
-    elif [ "$(cat "$t/stderr")" != "$line" ] || [ "$(wc -l <"$t/stderr")" -ne $([ -n "$line" ] && echo 1 || echo 0) ]; then
-        fail "$name" "stderr is '$(cat "$t/stderr")', wanted '$line'"
-    else ok "$name"; fi
-}
+# exact (lib.sh) from here: stderr exactly LINE, and as many lines
+EXACT_LINES=1
 # -o "": OUTDIR/NAME would be /NAME at the file-system root
 exact player_usage_empty_outdir 2 "glsplay: error: -o needs a non-empty output directory (try glsplay --help)" -- \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o ""
