@@ -15,6 +15,7 @@
 #  5. anisotropic filtering (bench/aniso.sh; minutes: only with AA_ANISO=1,
 #     otherwise the last measured table is carried over, marked so).
 B=${1:-build}
+. bench/lib.sh
 W=${AA_W:-640}
 H=${AA_H:-480}
 MS=${AA_MS:-"16 64 256 4096"}
@@ -22,8 +23,8 @@ PATTERNS=${AA_PATTERNS:-"lattice grid stratified"}
 REPS=${AA_REPS:-5}
 mkdir -p docs
 # llvmpipe allocates and frees large buffers per pass; fixed malloc
-# thresholds keep page faults out of the timings (bench/play.sh)
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+# thresholds keep page faults out of the timings (bench/lib.sh)
+fixed_malloc
 # the plot needs gnuplot (Debian package gnuplot-nox): installed here, as
 # tools/deps.sh does for the build, so make test does not need it
 if ! command -v gnuplot >/dev/null 2>&1; then
@@ -42,8 +43,8 @@ old=docs/aa_cost.txt
 [ -f "$old" ] && cp "$old" "$tmp/old.txt"
 out="$tmp/aa_cost.txt"
 {
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), Mesa llvmpipe; GL backend: --backend auto (section 2 names the one it picked)"
-echo "load average before the run: $(cut -d' ' -f1-3 /proc/loadavg) (the machine is shared: timings are best of $REPS)"
+echo "machine: $(nproc) cores, $(cpu), Mesa llvmpipe; GL backend: --backend auto (section 2 names the one it picked)"
+echo "load average before the run: $(loadavg 3) (the machine is shared: timings are best of $REPS)"
 echo
 echo "## 1. Accuracy and time, box filter, ${W}x${H}"
 echo

@@ -16,12 +16,13 @@
 #   BB_FRAMES (default 36) single-pass frames; BB_AA_FRAMES (default 3)
 #   frames at 256 samples; BB_BACKENDS (default: "egl osmesa", those built)
 B=${1:-build}
+. bench/lib.sh
 FRAMES=${BB_FRAMES:-36}
 AA_FRAMES=${BB_AA_FRAMES:-3}
 REPEAT=${BB_REPEAT:-3}
 OUT=docs/backends.txt
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+work_dir
+fixed_malloc
 
 backends=""
 for be in ${BB_BACKENDS:-egl osmesa}; do
@@ -33,18 +34,11 @@ done
 # the inputs
 . bench/sequences.sh # the road and the terrain, ROAD and TERRAIN
 
-now() { date +%s.%N; }
 # fps BACKEND FRAMES SCENE-ARGS...: frames per second of one glsplay run
 fps() {
     be=$1 n=$2
     shift 2
-    rm -rf "$t/out"
-    t0=$(now)
-    # shellcheck disable=SC2068
-    "$B/glsplay" $@ --frames "0:$n" --outputs image --backend "$be" -o "$t/out" 2>"$t/err" ||
-        { cat "$t/err" >&2; exit 1; }
-    t1=$(now)
-    awk -v n="$n" -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", n / (b - a) }'
+    run_fps "$n" "$B/glsplay" "$@" --outputs image --backend "$be"
 }
 # row NAME FRAMES ARGS...: a table row, the best of REPEAT runs of each
 # backend, interleaved
@@ -57,7 +51,7 @@ row() {
         for be in $backends; do
             f=$(fps "$be" "$n" "$@") || exit 1
             eval "b=\$best_$be"
-            eval "best_$be=$(awk -v x="$f" -v y="$b" 'BEGIN { print (x > y ? x : y) }')"
+            eval "best_$be=$(larger "$f" "$b")"
         done
         i=$((i + 1))
     done
@@ -66,9 +60,9 @@ row() {
     printf '\n'
 }
 
-load0=$(cut -d' ' -f1 /proc/loadavg)
+load0=$(loadavg 1)
 {
-echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(uname -sr)"
+echo "machine: $(machine)"
 for be in $backends; do
     "$B/glsplay" $TERRAIN --explain --backend "$be" >"$t/plan" 2>/dev/null
     grep -E '^(backend|GL_RENDERER):' "$t/plan"
@@ -96,12 +90,12 @@ for be in $backends; do
     i=0
     while [ $i -lt "$REPEAT" ]; do
         f=$("$B/bench/play_bench" --backend "$be" | awk '{print $2}') || exit 1
-        best=$(awk -v x="$f" -v y="$best" 'BEGIN { print (x > y ? x : y) }')
+        best=$(larger "$f" "$best")
         i=$((i + 1))
     done
     echo "  $be: $best frames/s"
 done
 echo
-echo "load average (1 min, other work on the machine included): $load0 before, $(cut -d' ' -f1 /proc/loadavg) after"
+echo "load average (1 min, other work on the machine included): $load0 before, $(loadavg 1) after"
 } >"$OUT"
 cat "$OUT"

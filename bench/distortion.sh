@@ -14,12 +14,13 @@
 #  3. the 15-view calibration of tests/py/check_distortion.py (make test
 #     runs it with 4 views).
 B=${1:-build}
+. bench/lib.sh
 FRAMES=${DB_FRAMES:-8}
 REPEAT=${DB_REPEAT:-2}
 PY=/usr/bin/python3
 OUT=docs/distortion.txt
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+work_dir
+fixed_malloc
 "$B/glsroad" examples/road/demo.road -o "$t/road" >/dev/null &&
     "$B/glsc" -I "$B/scenelib.glsb" -I "$t/road" -o "$t/road.glsb" "$t/road/road.scene" 2>/dev/null || exit 1
 mkdir -p "$t/pin" "$t/zero" "$t/lens"
@@ -29,7 +30,6 @@ cp examples/road/rig/left.cam "$t/pin/left.cam"
 set -- $(for m in "$t"/road/motion/*.txt; do [ -f "$m" ] && echo "--motion $(basename "$m" .txt)=$m"; done)
 MOTION="$*"
 
-now() { date +%s.%N; }
 # ms GLSPLAY CAMDIR ARGS...: milliseconds per frame, best of REPEAT runs
 ms() {
     play=$1 cam=$2
@@ -52,7 +52,7 @@ ms() {
 }
 
 {
-echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores; load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "machine: $(cpu), $(nproc) cores; load average before the run: $(loadavg 3)"
 echo "date: $(date -u +%Y-%m-%d)"
 echo
 echo "## 1. Time per frame, road demo, left rig camera 640x480, $FRAMES frames, image + depth + points"

@@ -35,6 +35,7 @@
 CHECK=""
 if [ "$1" = --check ]; then CHECK=1; shift; fi
 B=${1:-build}
+. bench/lib.sh
 RUNS=${BE_RUNS:-7}
 FRAMES=${BE_FRAMES:-12}
 CASES=${BE_CASES:-bench/effects.cases}
@@ -44,9 +45,9 @@ OUT=docs/effects.txt
 FIRST=1 SIZE=""
 [ -n "$CHECK" ] && FRAMES=1 SIZE="--size 64x48"
 t=$(mktemp -d) && trap '[ -n "$BE_KEEP" ] || rm -rf "$t"' EXIT || exit 1
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+fixed_malloc
 die() { echo "bench-effects: $*" >&2; exit 1; }
-load0=$(cut -d' ' -f1 /proc/loadavg)
+load0=$(loadavg 1)
 NEW=$(cd "$B" && pwd) || die "no build directory $B"
 
 # (a): the build before issue 16 (--check: this build stands in for it)
@@ -237,7 +238,7 @@ git diff --quiet HEAD -- runtime base format compiler roads 2>/dev/null || commi
 {
 echo "make bench-effects ($(date -u +%Y-%m-%d)): time per frame, ms, median (min..max) of $RUNS whole glsplay"
 echo "runs of $FRAMES frames each (frames $FIRST..$((FIRST + FRAMES - 1))), 640x480, image output only (start-up, upload and PNG writing included)"
-echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(uname -sr)"
+echo "machine: $(machine)"
 "$NEW/glsplay" "$t/new/terrain.glsb" --camera "$t/new/rig.cam" --trajectory "$t/new/trajectory.txt" --explain 2>/dev/null |
     grep -E '^(backend|GL_RENDERER):'
 echo "this build: $commit; base: $BASE (the build before issue 16, from git archive)"
@@ -250,6 +251,6 @@ echo "| scene | effects | wall ms/frame, median (min..max) | CPU ms/frame | cost
 echo "|---|---|---|---|---|"
 cat "$t/rows"
 echo
-echo "load average (1 min, other work on the machine included): $load0 before, $(cut -d' ' -f1 /proc/loadavg) after"
+echo "load average (1 min, other work on the machine included): $load0 before, $(loadavg 1) after"
 } >"$OUT"
 cat "$OUT"

@@ -19,12 +19,13 @@
 #   BE_FRAMES (default 36) frames at 640x480, BE_FRAMES_HD (default 12) at
 #   1920x1080.
 B=${1:-build}
+. bench/lib.sh
 FRAMES=${BE_FRAMES:-36}
 FRAMES_HD=${BE_FRAMES_HD:-12}
 REPEAT=${BE_REPEAT:-2}
 OUT=docs/encode.txt
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+work_dir
+fixed_malloc
 
 . bench/sequences.sh # the road and the terrain
 # camera CAM SCALE W H: CAM with fx fy cx cy scaled and the size set
@@ -43,23 +44,17 @@ camera examples/road/rig/left.cam 3 1920 1080 >"$t/hd/left.cam"
 camera "$t/rig.cam" 1 640 480 >"$t/sd/rig.cam"
 camera "$t/rig.cam" 3 1920 1080 >"$t/hd/rig.cam"
 
-now() { date +%s.%N; }
 # fps GLSPLAY FRAMES ARGS...: frames per second of one run
 fps() {
     play=$1 n=$2
     shift 2
-    rm -rf "$t/out"
-    t0=$(now)
-    # shellcheck disable=SC2068
-    "$play" $@ --frames "0:$n" -o "$t/out" 2>"$t/err" || { cat "$t/err" >&2; exit 1; }
-    t1=$(now)
-    awk -v n="$n" -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", n / (b - a) }'
+    run_fps "$n" "$play" "$@"
 }
 best() {
     b=0 i=0
     while [ $i -lt "$REPEAT" ]; do
         f=$(fps "$@") || exit 1
-        b=$(awk -v x="$f" -v y="$b" 'BEGIN { print (x > y ? x : y) }')
+        b=$(larger "$f" "$b")
         i=$((i + 1))
     done
     echo "$b"
@@ -76,9 +71,9 @@ row() {
     echo "| $name | $a | $b | $c | $d |"
 }
 
-load0=$(cut -d' ' -f1 /proc/loadavg)
+load0=$(loadavg 1)
 {
-echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(uname -sr)"
+echo "machine: $(machine)"
 "$B/glsplay" "$t/terrain.glsb" --camera "$t/sd/rig.cam" --explain 2>/dev/null | grep -E '^GL_RENDERER:'
 echo "date: $(date -u +%Y-%m-%d)"
 echo
@@ -112,6 +107,6 @@ done
 "$B/bench/png_bench" "$@" | sed "s|$t/f[0-9]*_||; s|/[a-z]*/image_000004.png||" |
     awk '{ printf "%-12s %-9s %-6s %-13s %8s ms %9s bytes\n", $1, $2, $3, $4, $5, $6 }'
 echo
-echo "load average (1 min, other work on the machine included): $load0 before, $(cut -d' ' -f1 /proc/loadavg) after"
+echo "load average (1 min, other work on the machine included): $load0 before, $(loadavg 1) after"
 } >"$OUT"
 cat "$OUT"

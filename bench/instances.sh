@@ -23,21 +23,22 @@
 #     above, all of it in view, INST_ALL_FRAMES (default 3).  Each
 #     forest figure is the best of INST_FOREST_REPS runs (default 3).
 B=${1:-build}
+. bench/lib.sh
 REPS=${INST_REPS:-2}
 EF=${INST_EDGE_FRAMES:-10}
 AF=${INST_ALL_FRAMES:-3}
 FREPS=${INST_FOREST_REPS:-3}
 out=docs/instances.txt
 mkdir -p docs
-# fixed malloc thresholds, as bench/play.sh explains
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+# fixed malloc thresholds, as bench/lib.sh explains
+fixed_malloc
 IB=$B/bench/instances_bench
 field() { echo "$1" | awk -v k="$2" '{ for (i = 1; i < NF; i++) if ($i == k) { print $(i + 1); exit } }'; }
 run() { "$@" || { echo "bench-instances: $* failed" >&2; exit 1; }; }
 {
     echo "make bench-instances, $(date -u +%Y-%m-%d)"
-    echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(awk '/MemTotal/ { printf "%.0f GiB", $2 / 1048576 }' /proc/meminfo)"
-    echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
+    echo "machine: $(nproc) cores, $(cpu), $(awk '/MemTotal/ { printf "%.0f GiB", $2 / 1048576 }' /proc/meminfo)"
+    echo "load average at the start: $(loadavg 3)"
     echo "malloc: $GLIBC_TUNABLES"
     echo
     echo "1. 100,352 triangles in random order, 640x480, 200 frames, colour + depth read back (frames/s)"
@@ -113,7 +114,7 @@ run() { "$@" || { echo "bench-instances: $* failed" >&2; exit 1; }; }
     echo "    against the flattened path without culling (the player before issue 14): ${e2}x: $(met "$e2" ">=" 5)"
     echo "  forest memory of the order of one tree plus the table: scene $(mb $(($(field "$ai" geometry) + $(field "$ai" table)))) (geometry + table) against $(mb "$(field "$af" geometry)") flattened; peak resident $(mib "$(field "$ai" rss)") against $(mib "$(field "$one" rss)") for one tree alone"
     echo
-    echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+    echo "load average at the end: $(loadavg 3)"
 } >"$out.tmp" || { rm -f "$out.tmp"; exit 1; }
 mv "$out.tmp" "$out"
 cat "$out"

@@ -1,12 +1,10 @@
 #!/bin/sh
 # make bench-play: player vs floor frames per second (not a pass/fail test).
 B=${1:-build}
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')"
-# llvmpipe allocates and frees large bin buffers every frame; with glibc's
-# default adaptive mmap threshold a process can end up page-faulting them
-# in anew each frame, which swamped the measurement (the floor ran at a
-# third of its speed).  Both programs run with the same fixed thresholds.
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+. bench/lib.sh
+echo "machine: $(nproc) cores, $(cpu)"
+# both programs run with the same fixed malloc thresholds (bench/lib.sh)
+fixed_malloc
 f=$($B/bench/play_floor) || exit 1
 p=$($B/bench/play_bench) || exit 1
 echo "malloc: $GLIBC_TUNABLES"

@@ -16,17 +16,17 @@
 #   BS_FRAMES (default 48) frames of each sequence; BS_PROCS (default
 #   "1 2") process counts; BS_THREADS (default "1 2 default")
 B=${1:-build}
+. bench/lib.sh
 FRAMES=${BS_FRAMES:-48}
 REPEAT=${BS_REPEAT:-3}
 PROCS=${BS_PROCS:-1 2}
 THREADS=${BS_THREADS:-1 2 default}
 OUT=docs/scaling.txt
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-export GLIBC_TUNABLES=glibc.malloc.trim_threshold=4000000000:glibc.malloc.mmap_threshold=33554432
+work_dir
+fixed_malloc
 
 . bench/sequences.sh # the road and the terrain, ROAD and TERRAIN
 
-now() { date +%s.%N; }
 # fps PROCS THREADS ARGS...: frames per second of PROCS shards run at once
 fps() {
     np=$1 th=$2
@@ -51,7 +51,7 @@ fps() {
     t1=$(now)
     [ $failed -eq 0 ] || { cat "$t"/err* >&2; exit 1; }
     [ "$(find "$t/out" -name "image_*" | wc -l)" -eq "$FRAMES" ] || { echo "bench-scaling: frames missing" >&2; exit 1; }
-    awk -v n="$FRAMES" -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", n / (b - a) }'
+    rate "$FRAMES" "$t0" "$t1"
 }
 # table NAME ARGS...: a row per process count, a column per thread setting
 table() {
@@ -64,7 +64,7 @@ table() {
             for th in $THREADS; do
                 f=$(fps "$p" "$th" "$@") || exit 1
                 eval "b=\$best_${p}_$th"
-                eval "best_${p}_$th=$(awk -v x="$f" -v y="$b" 'BEGIN { print (x > y ? x : y) }')"
+                eval "best_${p}_$th=$(larger "$f" "$b")"
             done
         done
         r=$((r + 1))
@@ -84,9 +84,9 @@ table() {
     echo
 }
 
-load0=$(cat /proc/loadavg | cut -d' ' -f1-3)
+load0=$(loadavg 3)
 {
-echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(uname -sr)"
+echo "machine: $(machine)"
 "$B/glsplay" $TERRAIN --explain 2>/dev/null | grep -E '^(backend|GL_RENDERER):'
 echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "LP_NUM_THREADS=default: unset, llvmpipe's own choice (one thread per core: $(nproc) here)"
@@ -94,6 +94,6 @@ echo "best of $REPEAT rounds; glsplay --outputs image, 640x480, whole runs (star
 echo
 table "road (examples/road/demo.road, left rig camera)" $ROAD
 table "terrain (100,352 triangles, bench/play_scene.h)" $TERRAIN
-echo "load average (1, 5, 15 min; other work on the machine included): $load0 before, $(cut -d' ' -f1-3 /proc/loadavg) after"
+echo "load average (1, 5, 15 min; other work on the machine included): $load0 before, $(loadavg 3) after"
 } >"$OUT"
 cat "$OUT"

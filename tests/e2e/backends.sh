@@ -11,15 +11,9 @@
 # through --backend egl, a GPU where there is one.
 # Prints "ok NAME" / "FAIL NAME: why"; a backend that is not built is
 # reported and skipped (tests/e2e/build_backends.sh tests such builds).
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 PLAY=$B/glsplay
-PY=/usr/bin/python3
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-for f in glsc glsplay glsroad scenelib.glsb tests/test_player; do
-    [ -e "$B/$f" ] || { fail backends_build_products "no $B/$f (run make)"; exit 0; }
-done
+need backends_build_products glsc glsplay glsroad scenelib.glsb tests/test_player
 # a backend this glsplay lacks says so and exits 2 (build_backends.sh)
 for be in egl osmesa; do
     msg=$("$PLAY" --backend $be --help 2>&1 >/dev/null)

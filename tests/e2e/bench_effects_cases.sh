@@ -7,12 +7,8 @@
 # fields, a scene file that does not compile) fails with its reason.  Not
 # under the sanitizers (CI's second pass builds no bench/play_bench; the
 # normal pass checks the same script).  Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 [ "$GLS_SANITIZED" = 1 ] && exit 0
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 
 # every case line renders: as many "ok case" lines as case lines, each case
 # with its own scene (the plan's top object: road, terrain, or FILE's name

@@ -7,8 +7,7 @@
 # the second archive must not hold the deleted source's object.  Then the
 # archives of $GLS_BIN (default build) are compared with the sources.
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
+. tests/e2e/lib.sh
 
 cp Makefile "$t/" && cp -r base "$t/base" || { echo "FAIL build_archives_from_scratch: cannot copy the tree"; exit 0; }
 printf 'int gls_archive_probe(void);\nint gls_archive_probe(void) { return 1; }\n' >"$t/base/zz_archive_probe.c"

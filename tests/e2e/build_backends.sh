@@ -10,13 +10,8 @@
 # one directory also checks that a changed choice rebuilds what it must.
 # Prints "ok NAME" / "FAIL NAME: why"; needs $GLS_BIN (default build)
 # built with both backends, for the reference images.
-B=${GLS_BIN:-build}
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-for f in glsc glsplay textures.stamp; do
-    [ -e "$B/$f" ] || { fail build_backends "no $B/$f (run make)"; exit 0; }
-done
+. tests/e2e/lib.sh
+need build_backends glsc glsplay textures.stamp
 "$B/glsc" -I examples/demo -I "$B/textures" -o "$t/demo.glsb" examples/demo/Demo.scene || exit 0
 DEMO="$t/demo.glsb --camera examples/demo/left.cam --aa 2 --size 160x120"
 # the make the test runs is not a sub-make of the one running the tests

@@ -11,8 +11,7 @@
 # programs); what is out of date before anything is touched is not judged.
 # BUILD_DEPS_TARGETS overrides the make targets (default: all units
 # programs).
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
+. tests/e2e/lib.sh
 [ -x $PY ] || { echo "FAIL build_deps: no $PY"; exit 0; }
 command -v make >/dev/null || { echo "FAIL build_deps: no make"; exit 0; }
 $PY - "$B" ${BUILD_DEPS_TARGETS:-all units programs} <<'PYEOF'

@@ -10,9 +10,8 @@
 # directory with a relative include ("../x.h"), which would bypass the rule.
 # Prints "ok NAME" / "FAIL NAME: why"; needs $GLS_BIN (default build)
 # built, for the generated grammar.h.
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 CC=${CC:-cc}
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
 
 # LAYER  a file of it  the directories it may see (gen: the compiler's
 # generated grammar.h); glsroad is the glsroad tool's main, which also reads

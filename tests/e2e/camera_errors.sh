@@ -2,9 +2,8 @@
 # Every file in tests/errors/camera/ is a camera file (.cam, or OpenCV YAML .yml) that glsplay must
 # refuse with exactly the diagnostics written in it on lines starting with
 # "#> " (message, source line, caret), exit status 1, and no output.
-BIN=${GLS_BIN:-build}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. tests/e2e/lib.sh
+tmp=$t
 "$BIN/glsc" -I tests/compiler/lang -o "$tmp/leaf.glsb" pkg.Leaf || { echo "FAIL camera_errors: setup"; exit 0; }
 for f in tests/errors/camera/*.cam tests/errors/camera/*.yml; do
     cam=$(basename "$f" | sed 's/\.\(cam\|yml\)$//') # its output name

@@ -2,11 +2,7 @@
 # Camera poses as glsplay uses them: R printed with few decimals (accepted
 # and re-orthonormalised with a note, or refused).
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 "$BIN/glsc" -I tests/compiler/lang -o "$t/leaf.glsb" pkg.Leaf || { fail camera_pose_setup "glsc"; exit 0; }
 
 # cam FILE R...: a small camera file with the given R

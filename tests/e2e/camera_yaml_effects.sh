@@ -5,13 +5,5 @@
 # bytes), reads glsplay --write-calib's calib_F.yml back with cv2 and gives
 # it back to glsplay.  The YAML errors are tests/errors/camera/opencv_*.yml
 # (camera_errors.sh).  Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-if $PY -c 'import cv2, numpy' 2>/dev/null; then
-    $PY tests/py/check_camera_yaml_effects.py "$BIN" "$BIN/scenelib.glsb" "$t" ||
-        echo "FAIL camera_yaml_effects: check_camera_yaml_effects.py exited with status $?"
-else
-    echo "FAIL camera_yaml_effects: no cv2 and numpy under $PY"
-fi
+. tests/e2e/lib.sh
+py_check camera_yaml_effects check_camera_yaml_effects.py "$BIN" "$BIN/scenelib.glsb" "$t"

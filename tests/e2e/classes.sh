@@ -5,12 +5,7 @@
 # object without one gets its nearest caller's, else its package; a
 # specialised object its template's; a library keeps them; glsdis prints
 # them.  Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 mkdir -p "$t/cls"
 # Car: declared, its geometry a called box (the box's instance is the car's)
 printf 'class("Car");\ncall("objects.BoxRed");\n' >"$t/cls/Car.scene"

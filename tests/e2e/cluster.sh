@@ -5,12 +5,8 @@
 # file byte for byte), an interrupted shard that resumes to the same
 # bytes, docs/cluster/slurm.sh run with SLURM_* variables set (not under
 # Slurm), and --progress json parsed line by line.  Prints ok/FAIL lines.
-BIN=${GLS_BIN:-build}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-PY=/usr/bin/python3
+. tests/e2e/lib.sh
+tmp=$t
 
 # the road demo: scene, trajectory, motion files
 "$BIN/glsroad" examples/road/demo.road -o "$tmp/road" >/dev/null 2>&1 &&

@@ -6,9 +6,8 @@
 # Each must exit with status 1 and leave no output file behind.
 # tests/warnings/ holds cases the same way that compile, with warnings:
 # exit status 0, the bundle written, the diagnostics exactly as written.
-BIN=${GLS_BIN:-build}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. tests/e2e/lib.sh
+tmp=$t
 for f in tests/errors/*.scene tests/errors/*/Top.scene tests/warnings/*.scene tests/warnings/*/Top.scene; do
     [ -f "$f" ] || continue
     case $f in tests/warnings/*) dir=tests/warnings want=0 kind=warning ;; *) dir=tests/errors want=1 kind=error ;; esac

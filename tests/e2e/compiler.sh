@@ -1,11 +1,9 @@
 #!/bin/sh
 # End-to-end tests of glsc and glsdis.  Prints "ok NAME" / "FAIL NAME".
-BIN=$(cd "${GLS_BIN:-build}" && pwd)
+. tests/e2e/lib.sh
+BIN=$(cd "$B" && pwd)
 ROOT=$(pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+tmp=$t
 
 # Every construct, checked in the dump against a reviewed golden file.
 if "$BIN/glsc" -I tests/compiler/lang -o "$tmp/lang.glsb" tests/compiler/lang/Top.scene &&

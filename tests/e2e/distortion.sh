@@ -3,10 +3,7 @@
 # cv2.projectPoints / cv2.fisheye.projectPoints, rendered checkerboards
 # against OpenCV's corner detector and calibration (tests/py/check_distortion.py).
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
+. tests/e2e/lib.sh
 if ! $PY -c 'import cv2, numpy' 2>/dev/null; then
     echo "FAIL distortion: no cv2 and numpy under $PY"
     exit 0

@@ -19,18 +19,9 @@
 #     agrees with the ground-truth disparity f B / Z within 1 px on at least
 #     95% of the pixels valid in both (measured 0.989), within 3 px on 97%.
 # EXAMPLES_KEEP=DIR keeps the renders.
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-if [ -n "$EXAMPLES_KEEP" ]; then
-    t=$EXAMPLES_KEEP && rm -rf "$t" && mkdir -p "$t" || exit 1
-else
-    t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-fi
-for f in glsc glsplay scenelib.glsb; do
-    [ -e "$B/$f" ] || { fail examples_build_products "no $B/$f (run make)"; exit 0; }
-done
+. tests/e2e/lib.sh
+keep_in "$EXAMPLES_KEEP"
+need examples_build_products glsc glsplay scenelib.glsb
 EXAMPLES="calibration stereo dense_stereo grouping lane signs lighting"
 
 # ---- camera files are generated and up to date --------------------------------
@@ -70,7 +61,7 @@ if ! EXAMPLES_LOOK_AA=1 EXAMPLES_OUTPUTS=image,depth EXAMPLES_DEPTH_VIEW=0 \
     sh examples/render.sh "$B" "$t/out" >"$t/render.log" 2>&1; then
     fail examples_render "examples/render.sh failed: $(tail -5 "$t/render.log" | tr '\n' ' ')"
 fi
-[ -x $PY ] && $PY -c 'import numpy, cv2' 2>/dev/null || { fail examples_python "no numpy/cv2 under $PY"; exit 0; }
+need_cv2 examples_python
 for e in $EXAMPLES; do
     $PY tests/py/examples_check.py depth "$e" "$t/out/$e"
 done

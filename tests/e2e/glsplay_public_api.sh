@@ -7,9 +7,7 @@
 # aside.  So the same main linked against the shared library, which hides
 # every internal symbol, links, and renders the same bytes as glsplay.
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
+. tests/e2e/lib.sh
 main=$B/runtime/glsplay_main.o
 so=$B/libglscene.so
 for f in "$main" "$so" "$B/libglscene.a" "$B/base/usage.o" "$B/base/stdout_check.o"; do

@@ -17,15 +17,10 @@
 # paths are recorded in bundles as spelled (spec/bundle.md, section 14);
 # the scene library is compiled as the Makefile compiles it,
 # glsc -I $B/textures --lib scenelib.
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 LIST=tests/e2e/golden.sha256
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 
-for f in glsc glsdis glsplay textures; do
-    [ -e "$B/$f" ] || { fail golden_build_products "no $B/$f (run make)"; exit 0; }
-done
+need golden_build_products glsc glsdis glsplay textures
 BIN=$(cd "$B" && pwd)
 
 mkdir -p "$t/files"

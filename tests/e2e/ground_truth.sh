@@ -4,17 +4,8 @@
 # numpy against footprints and normals computed in tests/py/check_gt.py;
 # the refusal of more instances than a 16-bit image holds.
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-if $PY -c 'import cv2, numpy' 2>/dev/null; then
-    $PY tests/py/check_gt.py "$BIN" "$t" || echo "FAIL gt_check: check_gt.py exited with status $?"
-else
-    fail gt_check "no cv2 and numpy under $PY"
-fi
+. tests/e2e/lib.sh
+py_check gt_check check_gt.py "$BIN" "$t"
 
 # More instances that draw something than a 16-bit image has ids: refused
 # before anything is rendered or created; 65535 are accepted.

@@ -4,11 +4,7 @@
 # real problem (text lines longer than 4095 bytes, text files over their
 # size limit, bundles whose header is wrong or that are not regular files).
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 "$BIN/glsc" -I tests/compiler/lang -o "$t/leaf.glsb" pkg.Leaf || { fail input_bounds_setup "glsc"; exit 0; }
 CAM=examples/demo/left.cam
 

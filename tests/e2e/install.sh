@@ -7,13 +7,10 @@
 # its tool's --help lists; a C program built against the installed
 # libglscene with pkg-config (shared and static) renders the demo, and the
 # installed Python binding imports and renders.  Prints ok/FAIL lines.
-BIN=${GLS_BIN:-build}
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
+tmp=$t
 # the sanitizer pass (GLS_SANITIZED=1) would install the same files again
 [ "$GLS_SANITIZED" = 1 ] && exit 0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 # a PREFIX that exists nowhere: if anything were written outside DESTDIR,
 # it would appear there
 PREFIX=/opt/glscene-install-test-$$

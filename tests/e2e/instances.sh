@@ -4,11 +4,7 @@
 # keeps the names of its objects' calls, and the player draws a named
 # instance where the same call without a name is drawn: the same image,
 # byte for byte.  Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 D=examples/demo
 mkdir -p "$t/named" "$t/plain" "$t/lib/v"
 # the demo scene with two of its objects named

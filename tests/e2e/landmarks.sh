@@ -5,12 +5,7 @@
 # tests/py/check_landmarks.py (spec/outputs.md "Landmarks").  The compile
 # errors are tests/errors/mark_*.scene; the validator's test_mark_names.
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 
 mkdir -p "$t/src/lm" "$t/plain/lm" "$t/cams"
 printf 'param h = 2;\nmark("foot", 0, 0, 0);\nmark("top", 0.25, h, -0.125);\ncolor(1, 0, 0);\npoly { vert(-1, 0, 0); vert(1, 0, 0); vert(0, h, 0); }\n' >"$t/src/lm/Post.scene"
@@ -31,15 +26,8 @@ else
 fi
 
 # linked through a library bundle: the same bundle, byte for byte
-"$BIN/glsc" --lib "$t/src" -o "$t/lib.glsb" 2>"$t/err" &&
-    mkdir "$t/top" && cp "$t/src/Top.scene" "$t/top/" &&
-    "$BIN/glsc" -I "$t/lib.glsb" -o "$t/linked.glsb" "$t/top/Top.scene" 2>>"$t/err"
-"$BIN/glsc" -I "$t/src" -o "$t/direct.glsb" "$t/top/Top.scene" 2>>"$t/err"
-if cmp -s "$t/linked.glsb" "$t/direct.glsb"; then
-    ok landmarks_library_link
-else
-    fail landmarks_library_link "linked and direct bundles differ: $(cat "$t/err")"
-fi
+mkdir "$t/top" && cp "$t/src/Top.scene" "$t/top/"
+linked_same landmarks_library_link "$t/src" "$t/top/Top.scene"
 
 # marks draw nothing: the image is that of the scene without them
 printf 'width 160\nheight 120\nfx 150\nfy 150\ncx 79.5\ncy 59.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\n' >"$t/cams/c.cam"

@@ -5,15 +5,8 @@
 # rolling shutter, tests/py/check_lens_rolling.py), and the outputs refused
 # with a lens, asserted verbatim.
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-if $PY -c 'import cv2, numpy' 2>/dev/null; then
-    $PY tests/py/check_lens_truth.py "$BIN" "$t/py" || echo "FAIL lens_truth: check_lens_truth.py exited with status $?"
-else
-    echo "FAIL lens_truth: no cv2 and numpy under $PY"
-fi
+. tests/e2e/lib.sh
+py_check lens_truth check_lens_truth.py "$BIN" "$t/py"
 printf 'poly { vert(-1, -1, 5); vert(1, -1, 5); vert(0, 1, 5); }\n' >"$t/Tri.scene"
 "$BIN/glsc" -I "$t" -o "$t/tri.glsb" Tri 2>"$t/err" || echo "FAIL lens_refuse_setup: $(cat "$t/err")"
 printf 'width 64\nheight 48\nfx 60\nfy 60\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\ndistortion -0.2 0.01 0 0\n' >"$t/lens.cam"

@@ -4,9 +4,7 @@
 # function of include/glscene.h); no object of the library refers to the
 # standard streams, exit or abort: errors come back as values, nothing is
 # printed.  Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
+. tests/e2e/lib.sh
 so=$B/libglscene.so
 [ -e "$so" ] && [ -e "$B/libglscene.a" ] || { echo "FAIL library_built: no $so or $B/libglscene.a (run make)"; exit 0; }
 soname=$(objdump -p "$so" | awk '$1 == "SONAME" { print $2 }')

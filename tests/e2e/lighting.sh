@@ -7,12 +7,7 @@
 # (spec/camera.md "Lighting", "Shadows").  Compile errors: tests/errors/light_*, normal_*, specular_*;
 # the validator's: test_bundle's test_lights_and_normals.  Prints
 # "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 
 mkdir -p "$t/src/lt" "$t/top"
 printf 'light(point, 0, 2, 0, 1, 0.5, 0.25, 0.5);\nspecular(0.5, 0.5, 0.5, 20);\npoly { normal(0, 0, 2); vert(0, 0, 0); vert(1, 0, 0); vert(1, 1, 0); }\n' >"$t/src/lt/Lamp.scene"
@@ -31,14 +26,7 @@ else
 fi
 
 # linked through a library bundle (normals imported): the same bytes
-"$BIN/glsc" --lib "$t/src" -o "$t/lib.glsb" 2>"$t/err" &&
-    "$BIN/glsc" -I "$t/lib.glsb" -o "$t/linked.glsb" "$t/top/Top.scene" 2>>"$t/err"
-"$BIN/glsc" -I "$t/src" -o "$t/direct.glsb" "$t/top/Top.scene" 2>>"$t/err"
-if cmp -s "$t/linked.glsb" "$t/direct.glsb"; then
-    ok lighting_library_link
-else
-    fail lighting_library_link "linked and direct bundles differ: $(cat "$t/err")"
-fi
+linked_same lighting_library_link "$t/src" "$t/top/Top.scene"
 
 # --explain: the feature, each light where the transforms put it, the cost
 printf 'width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 -1 0 0 0 -1\nT 0 0 5\nnear 0.1\nfar 100\n' >"$t/c.cam"

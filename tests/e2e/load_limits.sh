@@ -4,12 +4,7 @@
 # player's instances), not by the vertices it draws once its calls are
 # unrolled (2^26 bounds only --flatten), and no bundle makes the load walk
 # its objects once per call path.  Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 # refused NAME RC WANT [OUT]: the command just run (stderr in $t/err, exit
 # status RC) was refused with exactly WANT, exit 1, and wrote no OUT
 refused() {
@@ -19,7 +14,7 @@ refused() {
         fail "$1" "rc=$2 $(head -2 "$t/err")"
     fi
 }
-[ -x "$B/glsc" ] && [ -x "$B/glsplay" ] || { fail load_limits "no $B/glsc or $B/glsplay"; exit 0; }
+need_players load_limits
 
 # levels DIR N CALLEE BODY: DIR/L0..L(N-1).scene, each BODY then two calls
 # of the next level, 3 * 2^(N-1-i) units apart along x; the last calls

@@ -9,12 +9,8 @@
 # states the plan in each mode.  tests/unit/test_occlusion.c checks that
 # the culling really skips items and the boxes' margin.  Prints
 # "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-[ -x "$B/glsc" ] && [ -x "$B/glsplay" ] || { fail occlusion "no $B/glsc or $B/glsplay"; exit 0; }
+. tests/e2e/lib.sh
+need_players occlusion
 
 mkdir "$t/s"
 cat >"$t/s/Occl.scene" <<'SCENE'

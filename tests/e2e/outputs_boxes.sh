@@ -5,12 +5,7 @@
 # field) and boxes_F.json with numpy's corners, projections and pixel
 # coverage.  Here: --aa changes nothing, --explain.  Prints "ok NAME" /
 # "FAIL NAME: why".
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 $PY tests/py/check_boxes.py write "$t" || { fail boxes_scene "cannot write the scene"; exit 0; }
 "$B/glsc" -I "$B/scenelib.glsb" -o "$t/b.glsb" "$t/Boxes.scene" 2>"$t/err" || { fail boxes_compile "$(cat "$t/err")"; exit 0; }
 PLAY="$B/glsplay $t/b.glsb --camera $t/cam.cam"

@@ -4,26 +4,11 @@
 # against geometry computed in numpy (tests/py/check_disparity.py), the
 # refusals (a rig that is not rectified, a value a 16-bit PNG cannot hold)
 # verbatim, and --resume against the new settings.  Prints ok/FAIL lines.
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 PLAY=$B/glsplay
-PY=/usr/bin/python3
 CHECK=tests/py/check_disparity.py
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-# exact NAME STATUS LINE -- command...: exit status and the whole of stderr
-exact() {
-    name=$1 want=$2 line=$3
-    shift 4
-    "$@" >"$t/stdout" 2>"$t/stderr"
-    rc=$?
-    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
-    elif [ "$(cat "$t/stderr")" != "$line" ]; then fail "$name" "stderr is '$(cat "$t/stderr")', wanted '$line'"
-    else ok "$name"; fi
-}
 [ -x "$PLAY" ] || { fail outputs_disparity "no $PLAY"; exit 0; }
-[ -x $PY ] && $PY -c 'import numpy, cv2' 2>/dev/null || { fail outputs_disparity "no numpy/cv2 under $PY"; exit 0; }
+need_cv2 outputs_disparity
 
 # The scene: a wall x in [-3, 3], y in [-4, 1] at z = 10 and a ground y = 1,
 # z in [2, 10], x in [-3, 3] (the sky around them has no surface).

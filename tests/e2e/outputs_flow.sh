@@ -5,22 +5,7 @@
 # tests/py/check_flow.py compares the .flo, the KITTI PNG and the mask
 # with geometry computed in numpy.  Here: the last frame, the refusals,
 # --aa, --resume and --frames.  Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-# exact NAME STATUS LINE -- command...: exit status, and stderr exactly LINE
-exact() {
-    name=$1 want=$2 line=$3
-    shift 4
-    "$@" >"$t/stdout" 2>"$t/stderr"
-    rc=$?
-    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
-    elif [ "$(cat "$t/stderr")" != "$line" ]; then fail "$name" "stderr is '$(cat "$t/stderr")', wanted '$line'"
-    else ok "$name"; fi
-}
+. tests/e2e/lib.sh
 $PY tests/py/flow_scene.py "$t" || { fail flow_scene "cannot write the scene"; exit 0; }
 "$B/glsc" -I "$B/scenelib.glsb" -o "$t/f.glsb" "$t/Flow.scene" 2>"$t/err" || { fail flow_compile "$(cat "$t/err")"; exit 0; }
 PLAY="$B/glsplay $t/f.glsb --camera $t/cam.cam"

@@ -5,9 +5,7 @@
 # the trajectory (outside the moving vehicles' boxes) and checks that the
 # vehicles' pixels move otherwise, the KITTI PNG and the label lines.
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
+. tests/e2e/lib.sh
 if ROAD_FRAMES=200 ROAD_CLIP=200:202 sh examples/road/render.sh "$B" "$t/out" >"$t/log" 2>&1; then
     echo "ok road_example_flow_render"
     /usr/bin/python3 tests/py/check_road_flow.py "$t/out" examples/road/rig 200 202

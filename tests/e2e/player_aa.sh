@@ -3,13 +3,8 @@
 # with OpenCV, determinism of stratified jitter, --explain plan, --aa 1 is
 # the plain image, depth unchanged by anti-aliasing, usage errors.
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 PLAY=$B/glsplay
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 run() { name=$1; shift; if "$@" >"$t/stdout" 2>"$t/stderr"; then ok "$name"; else fail "$name" "exit $?: $(cat "$t/stderr")"; fi; }
 usage() { name=$1; shift; "$@" >/dev/null 2>"$t/stderr"; rc=$?
     [ $rc -eq 2 ] && [ "$(wc -l <"$t/stderr")" -eq 1 ] && ok "$name" || fail "$name" "exit $rc: $(cat "$t/stderr")"; }

@@ -3,13 +3,8 @@
 # orientation, errors, no partial files.  Scenes come from
 # build/tests/test_player --write (bundles built in C, no compiler needed).
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 PLAY=$B/glsplay
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 # expect NAME STATUS PATTERN -- command...: exit status, and stderr that is
 # one line, or (an error in a text input file) the message line, the
 # offending source line and a caret line under the column.
@@ -98,17 +93,8 @@ expect player_usage_motion_flatten 2 "glsplay: error: --motion moves instances, 
 expect player_help 0 "" -- $PLAY --help
 grep -q "usage: glsplay" "$t/stdout" && ok player_help_text || fail player_help_text "no usage line"
 
-# exact NAME STATUS LINE -- command...: exit status, and stderr exactly LINE
-exact() {
-    name=$1 want=$2 line=$3
-    shift 4
-    "$@" >"$t/stdout" 2>"$t/stderr"
-    rc=$?
-    if [ $rc -ne "$want" ]; then fail "$name" "exit $rc, wanted $want: $(cat "$t/stderr")"
-    elif [ "$(cat "$t/stderr")" != "$line" ] || [ "$(wc -l <"$t/stderr")" -ne $([ -n "$line" ] && echo 1 || echo 0) ]; then
-        fail "$name" "stderr is '$(cat "$t/stderr")', wanted '$line'"
-    else ok "$name"; fi
-}
+# exact (lib.sh) from here: stderr exactly LINE, and as many lines
+EXACT_LINES=1
 # -o "": OUTDIR/NAME would be /NAME at the file-system root
 exact player_usage_empty_outdir 2 "glsplay: error: -o needs a non-empty output directory (try glsplay --help)" -- \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o ""

@@ -7,13 +7,8 @@
 # each image must equal --flatten's (which culls no instance) byte for
 # byte, depth within the documented rounding.  Prints "ok NAME" /
 # "FAIL NAME: why".
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-[ -x "$B/glsc" ] && [ -x "$B/glsplay" ] || { fail player_cull "no $B/glsc or $B/glsplay"; exit 0; }
+. tests/e2e/lib.sh
+need_players player_cull
 
 mkdir "$t/s"
 cat >"$t/s/Tile.scene" <<'SCENE'

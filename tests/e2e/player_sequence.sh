@@ -1,11 +1,8 @@
 #!/bin/sh
 # glsplay over sequences: --trajectory, --frames, --resume, --frame,
 # --background; memory over 10,000 frames.  Prints ok/FAIL lines.
-BIN=${GLS_BIN:-build}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
+tmp=$t
 
 # A small scene: a red square 10 units ahead of the world origin.
 mkdir -p "$tmp/s"
@@ -15,19 +12,7 @@ poly { vert(-1, -1, 10); vert(1, -1, 10); vert(1, 1, 10); vert(-1, 1, 10); }
 SCENE
 "$BIN/glsc" -I "$tmp/s" -o "$tmp/sq.glsb" Sq || { fail sequence_setup "scene does not compile"; exit 0; }
 # the rig camera: at the rig origin, looking along the rig's +z
-cat >"$tmp/cam.cam" <<'CAM'
-width 64
-height 48
-fx 50
-fy 50
-cx 31.5
-cy 23.5
-R 1 0 0 0 1 0 0 0 1
-T 0 0 0
-near 0.1
-far 100
-pose rig
-CAM
+rig_cam "$tmp/cam.cam"
 # the rig moves 1 unit forward per frame (T = -R C with R = I)
 {
     echo "# test trajectory"

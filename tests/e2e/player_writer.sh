@@ -6,12 +6,10 @@
 # exit 1 and the usual message, at the same frame with or without the
 # thread, with no partial file and no frame record for an incomplete
 # frame.  Prints ok/FAIL lines.
-BIN=${GLS_BIN:-build}
-tmp=$(mktemp -d)
+. tests/e2e/lib.sh
+tmp=$t
 mnt=""
 trap '[ -n "$mnt" ] && umount "$mnt" 2>/dev/null; rm -rf "$tmp"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 
 # a mid-grey quadrilateral with slanted edges (0.5 -> 128 in 8 bits,
 # 128 * 257 = 32896 in 16) on a
@@ -22,19 +20,7 @@ color(0.5, 0.5, 0.5);
 poly { vert(-1, -1, 10); vert(1.1, -0.9, 10); vert(1, 1, 10); vert(-1.05, 1.02, 10); }
 SCENE
 "$BIN/glsc" -I "$tmp/s" -o "$tmp/sq.glsb" Sq || { fail writer_setup "scene does not compile"; exit 0; }
-cat >"$tmp/cam.cam" <<'CAM'
-width 64
-height 48
-fx 50
-fy 50
-cx 31.5
-cy 23.5
-R 1 0 0 0 1 0 0 0 1
-T 0 0 0
-near 0.1
-far 100
-pose rig
-CAM
+rig_cam "$tmp/cam.cam"
 { f=0; while [ $f -lt 8 ]; do echo "$f $f 1 0 0 0 1 0 0 0 1 0 0 -0.$f"; f=$((f + 1)); done; } >"$tmp/traj.txt"
 play() { "$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/traj.txt" --background 0.25,0.25,0.25 "$@"; }
 

@@ -14,17 +14,12 @@
 # checkout, as they are now, in a new git repository under mktemp -d, with
 # $GLS_BIN copied as its build/ (timestamps kept: make rebuilds nothing).
 # Nothing is written in this checkout.
-B=${GLS_BIN:-build}
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 # Under the sanitizers (CI's second pass, GLS_SANITIZED=1) the same
 # commands would only take minutes longer: they run once, on the normal build.
 [ "$GLS_SANITIZED" = 1 ] && exit 0
-for f in glsc glsdis glsplay glsroad scenelib.glsb; do
-    [ -e "$B/$f" ] || { fail readme_commands "no $B/$f (run make)"; exit 0; }
-done
+need readme_commands glsc glsdis glsplay glsroad scenelib.glsb
 command -v git >/dev/null || { fail readme_commands "no git"; exit 0; }
-t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
 repo=$t/repo
 mkdir "$repo"
 git ls-files -z --cached --others --exclude-standard |

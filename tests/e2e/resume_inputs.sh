@@ -5,11 +5,8 @@
 # camera files, the trajectory and the motion files, so a changed scene,
 # camera or trajectory re-renders every frame, and what it writes equals a
 # fresh render with the new inputs.  Prints ok/FAIL lines.
-BIN=${GLS_BIN:-build}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
+tmp=$t
 
 mkdir -p "$tmp/s"
 scene() { # COLOUR: a red or green quadrilateral 10 units ahead

@@ -2,13 +2,8 @@
 # End-to-end tests of glsroad: the CLI, description errors, outputs that
 # glsc compiles, poses checked with OpenCV, --camera-at composition.
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 R=$B/glsroad
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 [ -x "$R" ] || { fail road_cli "no $R"; exit 0; }
 
 # expect NAME STATUS EXACT-STDERR-LINE -- command...  (a command that hangs

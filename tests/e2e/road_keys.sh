@@ -3,12 +3,8 @@
 # writes them from the table the parser reads (roads/road_keys.c), and the
 # spec must hold exactly that text (tools/spec_road_keys.sh, make
 # spec-road-keys).  Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 R=$B/glsroad
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
 [ -x "$R" ] || { fail road_keys "no $R"; exit 0; }
 
 if sh tools/spec_road_keys.sh --check "$R" spec/road.md >"$t/diff" 2>&1; then ok road_keys_spec_matches

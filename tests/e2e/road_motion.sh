@@ -7,11 +7,7 @@
 # holding something else is refused.  The poses themselves are checked
 # against an independent computation in tests/unit/test_road_motion.c.
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 [ -x "$B/glsroad" ] || { fail road_motion "no $B/glsroad"; exit 0; }
 ROAD='degree 3\npoint 0 0 0\npoint 0 0 60\npoint -10 0 110\npoint -45 0 160\npoint -60 0 220\nfps 10\nduration 8\nspeed_at distance 0 10\n'
 printf "${ROAD}vehicle lead lateral -1.75 start 30 object v.Car\nvehicle_speed lead distance 0 12\nvehicle_speed lead distance 50 15\nvehicle van_2 lateral 1.75 start 150 oncoming\nvehicle_speed van_2 time 0 14\n" >"$t/a.road"

@@ -11,10 +11,7 @@
 # of tests/py/flow_scene.py (a moving box: ids, normals, flow, boxes),
 # every output each camera allows.
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
+. tests/e2e/lib.sh
 if ! $PY tests/py/flow_scene.py "$t" 2>"$t/err" ||
     ! "$BIN/glsc" -I "$BIN/scenelib.glsb" -o "$t/f.glsb" "$t/Flow.scene" 2>>"$t/err"; then
     echo "FAIL rolling_bands_setup: $(cat "$t/err")"

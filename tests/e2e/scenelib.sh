@@ -27,20 +27,11 @@
 # the same build products.
 # SCENELIB_KEEP=DIR keeps the renders (DIR/<object>/...) and the work files
 # (DIR/tmp).
-B=${GLS_BIN:-build}
+. tests/e2e/lib.sh
 BIN=$(cd "$B" 2>/dev/null && pwd)
-PY=/usr/bin/python3
-if [ -n "$SCENELIB_KEEP" ]; then
-    t=$SCENELIB_KEEP/tmp && rm -rf "$t" && mkdir -p "$t" || exit 1
-else
-    t=$(mktemp -d) && trap 'rm -rf "$t"' EXIT || exit 1
-fi
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+[ -z "$SCENELIB_KEEP" ] || keep_in "$SCENELIB_KEEP/tmp"
 
-for f in glsc glsdis glsplay gen_textures textures scenelib.glsb; do
-    [ -e "$BIN/$f" ] || { fail scenelib_build_products "no $B/$f (run make)"; exit 0; }
-done
+need scenelib_build_products glsc glsdis glsplay gen_textures textures scenelib.glsb
 
 # ---- no generated object ---------------------------------------------------
 # the generator of objects went with issue 14: every object is written in
@@ -85,7 +76,7 @@ else fail scenelib_bundle_deterministic "differ from $B/scenelib.glsb:$bad $(hea
 rm -rf "$t/a" "$t/b"
 
 # ---- per object, calibration, library bundle, README (Python) --------------
-[ -x $PY ] && $PY -c 'import numpy, cv2' 2>/dev/null || { fail scenelib_python "no numpy/cv2 under $PY"; exit 0; }
+need_cv2 scenelib_python
 cat >"$t/check.py" <<'PYEOF'
 import math, os, re, subprocess, sys
 import numpy as np

@@ -6,17 +6,8 @@
 # --resume renders again a frame whose camera's sensor changed.  The
 # keys' errors are in tests/errors/camera/sensor_*.cam (camera_errors.sh).
 # Prints "ok NAME" / "FAIL NAME: why".
-BIN=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
-if $PY -c 'import cv2, numpy' 2>/dev/null; then
-    $PY tests/py/check_sensor.py "$BIN" "$t" || echo "FAIL sensor_check: check_sensor.py exited with status $?"
-else
-    fail sensor_check "no cv2 and numpy under $PY"
-fi
+. tests/e2e/lib.sh
+py_check sensor_check check_sensor.py "$BIN" "$t"
 
 mkdir -p "$t/src" "$t/a"
 printf 'color(0.5, 0.5, 0.5);\npoly { vert(-9, -9, 5); vert(9, -9, 5); vert(9, 9, 5); vert(-9, 9, 5); }\n' >"$t/src/W.scene"

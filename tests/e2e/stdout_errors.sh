@@ -4,11 +4,9 @@
 # says exactly "TOOL: error: cannot write standard output: No space left
 # on device" (base/stdout_check.c).  The same commands writing to a file
 # exit 0, so the failure is the output's.  Prints "ok NAME" / "FAIL NAME: why".
-BIN=$(cd "${GLS_BIN:-build}" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
+BIN=$(cd "$B" && pwd)
+tmp=$t
 [ -c /dev/full ] || { fail stdout_errors "no /dev/full"; exit 0; }
 
 # full NAME TOOL command...: TOOL's standard output on /dev/full

@@ -3,9 +3,7 @@
 # scene library's textures (spec/language.md, 2.1): `glsc -I scenelib`
 # alone cannot find them (in $GLS_BIN/textures).  Prints "ok NAME" /
 # "FAIL NAME: why".
-B=${GLS_BIN:-build}
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
+. tests/e2e/lib.sh
 [ -x "$B/glsc" ] && [ -f "$B/textures/road/vegetation/tex/Birch.tga" ] || { echo "FAIL texture_hint: no $B/glsc or textures"; exit 0; }
 "$B/glsc" -I scenelib -o "$t/box.glsb" scenelib/road/vegetation/Birch.scene 2>"$t/err"
 rc=$?

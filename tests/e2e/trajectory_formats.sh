@@ -5,12 +5,7 @@
 # a KITTI file written here from trajectory.txt by numpy (camera-to-world
 # [R|c] rows in the world frame), must give the same images and depth.
 # Prints "ok NAME" / "FAIL NAME: why".
-B=${GLS_BIN:-build}
-PY=/usr/bin/python3
-t=$(mktemp -d)
-trap 'rm -rf "$t"' EXIT
-ok() { echo "ok $1"; }
-fail() { echo "FAIL $1: $2"; }
+. tests/e2e/lib.sh
 
 "$B/glsroad" examples/road/demo.road -o "$t/road" >/dev/null 2>"$t/err" &&
     "$B/glsc" -I "$t/road" -I "$B/scenelib.glsb" -o "$t/r.glsb" "$t/road/road.scene" 2>>"$t/err" ||

@@ -8,19 +8,16 @@
 """
 import json
 import math
-import subprocess
 import sys
 import numpy as np
 import cv2
 import yaml
 
-OK = True
+from glstest import Checks
 
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
+CHECKS = Checks('calib_setup')
+result = CHECKS.result
+run = CHECKS.run
 
 
 def rot(axis, a):
@@ -47,12 +44,6 @@ def write_cam(path, cam, pose=None):
 
 def K_of(c):
     return np.array([[c['fx'], c['skew'], c['cx']], [0, c['fy'], c['cy']], [0, 0, 1.0]])
-
-
-def run(args):
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit('FAIL calib_setup: %s: %s' % (' '.join(args), p.stderr))
 
 
 # The rig: left and right rectified (same K and R, 0.4 apart along the
@@ -311,4 +302,4 @@ def import_(bin_dir, t):
 if __name__ == '__main__':
     mode, bin_dir, t = sys.argv[1:4]
     {'export': export, 'import': import_}[mode](bin_dir, t)
-    sys.exit(0 if OK else 1)
+    CHECKS.exit()

@@ -130,4 +130,4 @@ if rc == 0:
     same = rc == 0 and all(filecmp.cmp('%s/o_w/%s/image_000001.png' % (D, n), '%s/o_back/%s/image_000001.png'
                                        % (D, n), shallow=False) for n in names)
     result('camera_yaml_effects_reimport', same, 'exit %d: %s' % (rc, e))
-sys.exit(1 if gt_checks.fails else 0)
+gt_checks.CHECKS.exit()

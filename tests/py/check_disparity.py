@@ -23,23 +23,9 @@ import sys
 import numpy as np
 import cv2
 
+from glstest import Checks, read_cam
 
-def result(name, good, why):
-    print(('ok %s' % name) if good else ('FAIL %s: %s' % (name, why)))
-    return good
-
-
-def read_cam(path):
-    c = {}
-    for line in open(path):
-        line = line.split('#')[0].split()
-        if line:
-            c[line[0]] = [float(x) for x in line[1:]]
-    K = np.array([[c['fx'][0], c.get('skew', [0])[0], c['cx'][0]],
-                  [0, c['fy'][0], c['cy'][0]], [0, 0, 1]])
-    R = np.array(c['R']).reshape(3, 3)
-    T = np.array(c['T'])
-    return K, R, T, int(c['width'][0]), int(c['height'][0])
+result = Checks('disparity_setup').result
 
 
 def read_pfm(path):

@@ -24,13 +24,10 @@ import sys
 import numpy as np
 import cv2
 
-OK = True
+from glstest import Checks
 
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
+CHECKS = Checks('distortion_setup')
+result = CHECKS.result
 
 
 def fmt(v):
@@ -362,7 +359,7 @@ def main():
         board(binary, d, int(sys.argv[4]))
     else:
         raise SystemExit('usage: check_distortion.py model|edges|truth|board BIN DIR [VIEWS]')
-    sys.exit(0 if OK else 1)
+    CHECKS.exit()
 
 
 main()

@@ -18,7 +18,7 @@ import cv2
 from glstest import Checks
 
 CHECKS = Checks('exposure_setup')
-result, run = CHECKS.result, CHECKS.run
+result, run, grey = CHECKS.result, CHECKS.run, CHECKS.grey
 
 
 BIN, D = sys.argv[1], sys.argv[2]
@@ -33,13 +33,6 @@ def camera(path, w, h, extra='', pose=''):
                 % (w, h, FX, FX, (w - 1) / 2, (h - 1) / 2) + pose + extra)
 
 
-def grey(path):
-    im = cv2.imread(path, cv2.IMREAD_UNCHANGED)
-    if im is None:
-        raise SystemExit('FAIL exposure_setup: cannot read ' + path)
-    return im[:, :, 0].astype(np.float64) / (65535.0 if im.dtype == np.uint16 else 255.0)
-
-
 def box_pixel(f, u, n=400):
     """f averaged over the pixel [u - 1/2, u + 1/2] (midpoint rule)"""
     x = u[:, None] + (np.arange(n)[None, :] + 0.5) / n - 0.5
@@ -49,15 +42,7 @@ def box_pixel(f, u, n=400):
 # ---- motion blur: a white 4 x 4 square at Z0 moving +x one unit (FX/Z0 =
 # 10 px) per frame, shutter S: each edge becomes a linear ramp of width
 # speed * S, the area under a row is conserved.
-with open(D + '/src/Sq.scene', 'w') as f:
-    f.write('color(1, 1, 1);\npoly { vert(-2, -2, 0); vert(2, -2, 0); vert(2, 2, 0); vert(-2, 2, 0); }\n')
-with open(D + '/src/Moving.scene', 'w') as f:
-    f.write('push; trans(0, 0, %r); call("Sq", "mover"); pop;\n' % Z0)
-run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/moving.glsb', 'Moving'])
-with open(D + '/mover.txt', 'w') as f:
-    f.write('# glsroad motion 1\n')
-    for k in range(4):
-        f.write('%d %d 1 0 0 0 1 0 0 0 1 %d 0 0\n' % (k, k, k))
+CHECKS.moving_square(BIN, D, Z0)
 W, H, S, SPEED = 160, 40, 0.5, FX / Z0
 camera(D + '/blur.cam', W, H, 'shutter %r\nexposure_samples 64\n' % S)
 camera(D + '/sharp.cam', W, H)

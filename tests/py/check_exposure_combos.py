@@ -17,7 +17,7 @@ import cv2
 from glstest import Checks
 
 CHECKS = Checks('exposure_combos_setup')
-result, run = CHECKS.result, CHECKS.run
+result, run, grey = CHECKS.result, CHECKS.run, CHECKS.grey
 
 
 BIN, D = sys.argv[1], sys.argv[2]
@@ -42,13 +42,6 @@ def camera(path, extra='', pose=''):
                 'distortion %s\n' % (W, H, FX, FX, CX, CY, ' '.join(repr(k) for k in DIST)) + pose + extra)
 
 
-def grey(path):
-    im = cv2.imread(path, cv2.IMREAD_UNCHANGED)
-    if im is None:
-        raise SystemExit('FAIL exposure_combos_setup: cannot read ' + path)
-    return im[:, :, 0].astype(np.float64) / (65535.0 if im.dtype == np.uint16 else 255.0)
-
-
 # the undistorted rays (x, y) of SUB x SUB points spread over every pixel
 # (midpoints of equal sub-squares: the box filter), shape (H, W, SUB*SUB)
 o = (np.arange(SUB) + 0.5) / SUB - 0.5
@@ -67,15 +60,7 @@ cray = cv2.undistortPointsIter(cpts, KM, np.array(DIST), None, None, crit).resha
 # ---- motion blur through the lens: a white 4 x 4 square at Z0 moving +x
 # one unit per frame.  The expected image: the mean of the distorted sharp
 # images at the K sub-frame times of the shutter.
-with open(D + '/src/Sq.scene', 'w') as f:
-    f.write('color(1, 1, 1);\npoly { vert(-2, -2, 0); vert(2, -2, 0); vert(2, 2, 0); vert(-2, 2, 0); }\n')
-with open(D + '/src/Moving.scene', 'w') as f:
-    f.write('push; trans(0, 0, %r); call("Sq", "mover"); pop;\n' % Z0)
-run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/moving.glsb', 'Moving'])
-with open(D + '/mover.txt', 'w') as f:
-    f.write('# glsroad motion 1\n')
-    for k in range(4):
-        f.write('%d %d 1 0 0 0 1 0 0 0 1 %d 0 0\n' % (k, k, k))
+CHECKS.moving_square(BIN, D, Z0)
 S, K = 0.5, 16
 camera(D + '/lblur.cam', 'shutter %r\nexposure_samples %d\n' % (S, K))
 out = D + '/blur'

@@ -11,25 +11,15 @@ faces, a named instance moved per frame (--motion).  Prints "ok NAME" /
 import json
 import math
 import os
-import subprocess
 import sys
 import numpy as np
 import cv2
 
-OK = True
+from glstest import Checks
 
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
-
-
-def run(args):
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit('FAIL gt_setup: %s: %s' % (' '.join(args), p.stderr))
-    return p
+CHECKS = Checks('gt_setup')
+result = CHECKS.result
+run = CHECKS.run
 
 
 BIN, D = sys.argv[1], sys.argv[2]
@@ -274,4 +264,4 @@ for frame in (0, 1):
     c.append((xs.mean(), ys.mean()))
 result('gt_motion_keeps_id', abs(c[1][0] - c[0][0]) < 0.5 and 10 < c[1][1] - c[0][1] < 16,
        'centroids %r' % c)
-sys.exit(0 if OK else 1)
+CHECKS.exit()

@@ -11,14 +11,11 @@ import sys
 import numpy as np
 import cv2
 
+from glstest import Checks
+
 BIN, D = sys.argv[1], sys.argv[2]
-OK = True
-
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
+CHECKS = Checks('lens_truth_setup')
+result = CHECKS.result
 
 
 # A wall at z = 0 facing -z (the camera looks at it from z < 0), a square
@@ -124,4 +121,4 @@ for lens, (key, dist, fish) in LENSES.items():
     cases = sorted(set(want.values()))
     result('lens_landmarks_visible_%s' % lens, got == want and len(cases) == 3,
            'got %s, want %s (in_image, visible)' % (got, want))
-sys.exit(0 if OK else 1)
+CHECKS.exit()

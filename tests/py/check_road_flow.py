@@ -90,7 +90,7 @@ def main(out, rig, first, last):
                    (mask == 1).sum() > 100000, "values %s" % np.unique(mask))
             result(name + "_boxes_lines", len(lines) == len(boxes) and all(len(x.split(" ")) == 15 for x in lines),
                    "%d lines, %d boxes" % (len(lines), len(boxes)))
-    return 1 if gt_checks.fails else 0
+    return 0 if gt_checks.CHECKS.passed else 1
 
 
 if __name__ == "__main__":

@@ -21,20 +21,11 @@ import sys
 import numpy as np
 import cv2
 
-OK = True
+from glstest import Checks
 
-
-def result(name, ok, why=''):
-    global OK
-    OK &= bool(ok)
-    print(('ok %s' % name) if ok else ('FAIL %s: %s' % (name, why)))
-
-
-def run(args):
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit('FAIL sensor_setup: %s: %s' % (' '.join(args), p.stderr))
-    return p
+CHECKS = Checks('sensor_setup')
+result = CHECKS.result
+run = CHECKS.run
 
 
 BIN, D = sys.argv[1], sys.argv[2]
@@ -337,4 +328,4 @@ def sans_inputs(b):
 why = [nm for nm in sorted(os.listdir(p)) if sans_inputs(raw(p + '/' + nm)) != sans_inputs(raw(n + '/' + nm))]
 result('sensor_neutral_keys_change_nothing', not why, 'differ: %s' % why)
 
-sys.exit(0 if OK else 1)
+CHECKS.exit()

@@ -28,8 +28,8 @@ def run(*args):
 
 
 class Checks:
-    """A check script's results: result() prints the line and remembers a
-    failure (passed says whether all passed); run() runs a tool that must
+    """A check script's results: result() prints the line, remembers a
+    failure (passed says whether all passed) and returns good; run() runs a tool that must
     exit with want_rc, else ends the script with "FAIL SETUP: ...", SETUP
     the name given."""
 
@@ -40,6 +40,7 @@ class Checks:
     def result(self, name, good, why=''):
         self.passed &= bool(good)
         print(('ok %s' % name) if good else ('FAIL %s: %s' % (name, why)))
+        return good
 
     def run(self, args, want_rc=0):
         p = subprocess.run(args, capture_output=True, text=True)
@@ -49,6 +50,43 @@ class Checks:
 
     def exit(self):
         sys.exit(0 if self.passed else 1)
+
+    def grey(self, path):
+        """The first channel of an 8- or 16-bit image as floats in [0, 1];
+        no image ends the script with "FAIL SETUP: cannot read PATH"."""
+        import cv2
+        import numpy as np
+        im = cv2.imread(path, cv2.IMREAD_UNCHANGED)
+        if im is None:
+            raise SystemExit('FAIL %s: cannot read %s' % (self.setup, path))
+        return im[:, :, 0].astype(np.float64) / (65535.0 if im.dtype == np.uint16 else 255.0)
+
+    def moving_square(self, BIN, D, z):
+        """A white 4 x 4 square at depth z moving +x one unit a frame
+        (frames 0 to 3): D/src/Sq.scene, D/src/Moving.scene (the square
+        called "mover"), compiled into D/moving.glsb, and its motion file
+        D/mover.txt (spec/road.md)."""
+        write(D + '/src/Sq.scene', 'color(1, 1, 1);\npoly { vert(-2, -2, 0); vert(2, -2, 0); vert(2, 2, 0); vert(-2, 2, 0); }\n')
+        write(D + '/src/Moving.scene', 'push; trans(0, 0, %r); call("Sq", "mover"); pop;\n' % z)
+        self.run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/moving.glsb', 'Moving'])
+        write(D + '/mover.txt', '# glsroad motion 1\n' + ''.join('%d %d 1 0 0 0 1 0 0 0 1 %d 0 0\n' % (k, k, k)
+                                                              for k in range(4)))
+
+
+def read_cam(path):
+    """K (with skew), R, T, width, height of a pinhole camera file
+    (spec/camera.md), read independently of the player."""
+    import numpy as np
+    c = {}
+    for line in open(path):
+        line = line.split('#')[0].split()
+        if line:
+            c[line[0]] = [float(x) for x in line[1:]]
+    K = np.array([[c['fx'][0], c.get('skew', [0])[0], c['cx'][0]],
+                  [0, c['fy'][0], c['cy'][0]], [0, 0, 1]])
+    R = np.array(c['R']).reshape(3, 3)
+    T = np.array(c['T'])
+    return K, R, T, int(c['width'][0]), int(c['height'][0])
 
 
 def look_at(C, target):

@@ -1,17 +1,10 @@
 """What the ground-truth checkers (check_flow.py, check_boxes.py) share:
-the "ok NAME" / "FAIL NAME: why" lines with a count of failures, and the
-text of a pinhole camera file (spec/camera.md)."""
+one glstest.Checks for their "ok NAME" / "FAIL NAME: why" lines (CHECKS,
+result), and the text of a pinhole camera file (spec/camera.md)."""
+from glstest import Checks
 
-fails = 0
-
-
-def result(name, good, why=""):
-    global fails
-    if good:
-        print("ok " + name)
-    else:
-        fails += 1
-        print("FAIL %s: %s" % (name, why))
+CHECKS = Checks("gt_checks_setup")
+result = CHECKS.result
 
 
 def camera_text(pose, w, h, fx, fy, cx, cy, near=0.1, far=100.0):

@@ -160,6 +160,19 @@ static inline uint32_t tb_texture(tb *t, const char *name, uint32_t w, uint32_t 
     return b->ntextures++;
 }
 
+/* A GL context of backend B for the test NAME; none ends the test with
+ * "FAIL NAME: no GL context: why" and exit status 1. */
+static inline gls_glctx *tb_glctx(gls_backend b, const char *name)
+{
+    char err[256];
+    gls_glctx *c = gls_glctx_create(b, err, sizeof err);
+    if (!c) {
+        printf("FAIL %s: no GL context: %s\n", name, err);
+        exit(1);
+    }
+    return c;
+}
+
 /* Close every object with END and compute features; no validation
  * (for scenes beyond a validator limit that the player no longer needs). */
 static inline gls_bundle *tb_finish_unchecked(tb *t)
@@ -180,21 +193,12 @@ static inline gls_bundle *tb_finish_unchecked(tb *t)
 /* Close every object with END, compute features, validate. */
 static inline gls_bundle *tb_finish(tb *t)
 {
-    gls_bundle *b = t->b;
-    for (uint32_t i = 0; i < b->nobjects; i++) {
-        t->cur = i;
-        tb_op0(t, GLS_OP_END);
-        b->objects[i].code = t->code[i].data;
-        b->objects[i].code_len = (uint32_t)t->code[i].len;
-        b->objects[i].ninsn = t->ninsn[i];
-    }
-    b->features = gls_bundle_features(b);
+    gls_bundle *b = tb_finish_unchecked(t);
     gls_error err;
     if (gls_bundle_validate(b, &err)) {
         printf("FAIL player_scene: built bundle does not validate: %s\n", err.msg);
         exit(1);
     }
-    t->b = NULL;
     return b;
 }
 
@@ -252,6 +256,28 @@ static inline gls_camera tb_camera(uint32_t w, uint32_t h, double fx, double fy,
     memcpy(c.T, T, sizeof c.T);
     c.near = n, c.far = f;
     return c;
+}
+
+/* The anti-aliasing tests' view (test_aa.c, test_aa_lattice.c): at the
+ * origin looking along +z (R = I, T = 0), f = 100 px, the principal point
+ * at the image's centre, near 0.5, far 100. */
+static inline gls_camera tb_front_camera(uint32_t w, uint32_t h)
+{
+    double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, T[3] = {0, 0, 0};
+    return tb_camera(w, h, 100, 100, (w - 1) / 2.0, (h - 1) / 2.0, 0, R, T, 0.5, 100);
+}
+
+/* A wall of one colour, (77, 154, 231) / 255, at depth 5 filling any view
+ * of tb_front_camera: every pixel, sample and filter must give exactly
+ * that colour. */
+static inline gls_bundle *tb_wall(void)
+{
+    tb t;
+    tb_init(&t);
+    tb_object(&t, "wall", 1);
+    tb_color(&t, 77 / 255.0, 154 / 255.0, 231 / 255.0, 1);
+    tb_rect_z(&t, -100, -100, 100, 100, 5);
+    return tb_finish(&t);
 }
 
 /* Write a camera file in the documented format. */

@@ -240,23 +240,12 @@ static void test_subpixel_rule(void)
 
 /* ---- rendering ------------------------------------------------------ */
 
-static gls_camera simple_camera(uint32_t w, uint32_t h)
-{
-    double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, T[3] = {0, 0, 0};
-    return tb_camera(w, h, 100, 100, (w - 1) / 2.0, (h - 1) / 2.0, 0, R, T, 0.5, 100);
-}
-
 /* A scene of one colour everywhere stays exactly that colour at every N,
  * filter and pattern, in every output. */
 static void test_constant_colour(void)
 {
-    tb t;
-    tb_init(&t);
-    tb_object(&t, "wall", 1);
-    tb_color(&t, 77 / 255.0, 154 / 255.0, 231 / 255.0, 1);
-    tb_rect_z(&t, -100, -100, 100, 100, 5);
-    gls_bundle *b = tb_finish(&t);
-    gls_camera c = simple_camera(24, 16);
+    gls_bundle *b = tb_wall();
+    gls_camera c = tb_front_camera(24, 16);
     size_t n = 24 * 16;
     float *f = malloc(n * 12);
     uint8_t *p8 = malloc(n * 4);
@@ -291,7 +280,7 @@ static void test_constant_colour(void)
  * counts 10 - du < 10.2 instead, a different number for this seed. */
 static void test_jitter_sign(void)
 {
-    gls_camera c = simple_camera(20, 4);
+    gls_camera c = tb_front_camera(20, 4);
     double z = 5, xe = (10.2 - c.cx) * z / c.fx;
     tb t;
     tb_init(&t);
@@ -524,12 +513,7 @@ static void test_mosaic_same_as_single(void)
 
 int main(void)
 {
-    char err[256];
-    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL test_aa: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(GLS_BACKEND_AUTO, "test_aa");
     RUN(test_accum_add_rows);
     RUN(test_accum_limit_box);
     RUN(test_accum_limit_gauss);

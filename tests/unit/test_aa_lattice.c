@@ -417,12 +417,6 @@ static int same_acc(const gls_accum *a, const gls_accum *b)
     return !a->mixed || !b->mixed || memcmp(a->mixed, b->mixed, n / 4) == 0;
 }
 
-static gls_camera simple_camera(uint32_t w, uint32_t h)
-{
-    double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, T[3] = {0, 0, 0};
-    return tb_camera(w, h, 100, 100, (w - 1) / 2.0, (h - 1) / 2.0, 0, R, T, 0.5, 100);
-}
-
 /* ---- gather ---------------------------------------------------------- */
 
 /* A constant colour stays exactly that colour through the fine path, for
@@ -430,15 +424,10 @@ static gls_camera simple_camera(uint32_t w, uint32_t h)
  * tiles (pixels straddling many tiles) and automatic ones. */
 static void test_gather_constant(void)
 {
-    tb t;
-    tb_init(&t);
-    tb_object(&t, "wall", 1);
-    tb_color(&t, 77 / 255.0, 154 / 255.0, 231 / 255.0, 1);
-    tb_rect_z(&t, -100, -100, 100, 100, 5);
-    gls_bundle *b = tb_finish(&t);
+    gls_bundle *b = tb_wall();
     rig g;
     CHECK(rig_open(&g, b) == 0);
-    gls_camera c = simple_camera(21, 13);
+    gls_camera c = tb_front_camera(21, 13);
     size_t n = 21 * 13;
     float *f = malloc(n * 12);
     uint16_t *p16 = malloc(n * 6);
@@ -477,7 +466,7 @@ static void test_gather_constant(void)
 }
 
 /* White half-plane n . p < d in the image (n at angle phi), drawn as a
- * quad reaching 64 px beyond the image at depth 5 through simple_camera
+ * quad reaching 64 px beyond the image at depth 5 through tb_front_camera
  * (not much further: float vertex coordinates far away would tilt the
  * edge by more than the clearance these tests keep). */
 static gls_bundle *halfplane(const gls_camera *c, double phi, double d)
@@ -552,7 +541,7 @@ static void test_gather_halfplane(void)
      * 1e-4 px here); at irrational slopes the clearance over a whole
      * image is only a few 1e-4 px */
     const double phis[] = {0, atan2(1, 2), atan2(3, 1), atan2(2, -1)};
-    gls_camera c = simple_camera(24, 18);
+    gls_camera c = tb_front_camera(24, 18);
     size_t n = 24 * 18;
     uint16_t *p16 = malloc(n * 6);
     char err[128];
@@ -733,7 +722,7 @@ static void test_kpass_split(void)
     }
     /* the image: a half-plane at 0.7 rad whose edge keeps clear of all
      * samples by more than the snapping */
-    gls_camera cam = simple_camera(20, 16);
+    gls_camera cam = tb_front_camera(20, 16);
     gls_aa_opts o = gls_aa_defaults();
     o.samples = 256;
     gls_aa_plan p;
@@ -890,12 +879,7 @@ static void test_snapping_fine(void)
 
 int main(void)
 {
-    char err[256];
-    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL test_aa_lattice: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(GLS_BACKEND_AUTO, "test_aa_lattice");
     RUN(test_lattice_points);
     RUN(test_lattice_criterion);
     RUN(test_lattice_centred);

@@ -490,12 +490,7 @@ static void test_near_valley(void)
 
 int main(void)
 {
-    char err[256];
-    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL test_gt_pass: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(GLS_BACKEND_AUTO, "test_gt_pass");
     RUN(test_two_boxes);
     RUN(test_alpha_holes);
     RUN(test_near_valley);

@@ -506,12 +506,7 @@ static void test_inherited_texmode(void)
 
 int main(void)
 {
-    char err[256];
-    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL test_instances: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(GLS_BACKEND_AUTO, "test_instances");
     RUN(test_motion_moves_named_instance);
     RUN(test_named_without_motion_identical);
     RUN(test_motion_files);

@@ -226,13 +226,8 @@ static void test_same_image(void)
 
 int main(void)
 {
-    char err[256];
     RUN(test_box_margin);
-    ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL occlusion: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(GLS_BACKEND_AUTO, "occlusion");
     RUN(test_same_image);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();

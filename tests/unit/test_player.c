@@ -827,7 +827,6 @@ static int write_scenes(const char *dir)
  * unless given (tests/e2e/backends.sh runs the tests through each). */
 int main(int argc, char **argv)
 {
-    char err[256];
     gls_backend backend = GLS_BACKEND_AUTO;
     if (argc >= 3 && strcmp(argv[1], "--backend") == 0) {
         if (gls_backend_parse(argv[2], &backend)) {
@@ -836,11 +835,7 @@ int main(int argc, char **argv)
         }
         argc -= 2, argv += 2;
     }
-    ctx = gls_glctx_create(backend, err, sizeof err);
-    if (!ctx) {
-        printf("FAIL test_player: no GL context: %s\n", err);
-        return 1;
-    }
+    ctx = tb_glctx(backend, "test_player");
     if (argc == 3 && strcmp(argv[1], "--write") == 0) {
         int r = write_scenes(argv[2]);
         gls_glctx_destroy(ctx);
