@@ -1,7 +1,8 @@
 /* Instanced replay: named instances moved per frame (--motion), motion
  * files, and a scene beyond the flattened form's 2^26-vertex limit.  The
  * projections are checked against an independent double-precision camera
- * model written here. */
+ * model written here.  A list of independent tests, one function each,
+ * over the scene builder of player_scene.h: long on purpose. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
