@@ -383,60 +383,102 @@ fail:
     return -1;
 }
 
-/* Calls form a DAG no deeper than GLS_MAX_CALL_DEPTH.  Iterative DFS with
- * memoised heights, so a hostile bundle cannot exhaust the C stack. */
+/* One iterative depth-first walk of the call graph from root, over the
+ * objects whose state is 0 (0 new, 1 on the walk's path, 2 finished):
+ * edge(u, from, to, state of to) for every call met (a callee in state 1
+ * closes a cycle), done(u, obj, parent) when an object is finished, all
+ * its callees first (postorder; parent GLS_NONE for root).  Iterative, so
+ * a hostile bundle cannot exhaust the C stack; stack and pc hold
+ * nobjects entries.  0, or the first non-zero a callback returns. */
+typedef struct {
+    int (*edge)(void *u, uint32_t from, uint32_t to, uint8_t to_state);
+    int (*done)(void *u, uint32_t obj, uint32_t parent);
+    void *u;
+} call_visitor;
+
+static int call_dfs(const gls_bundle *b, uint32_t root, uint8_t *state, uint32_t *stack, size_t *pc,
+                    const call_visitor *v)
+{
+    uint32_t sp = 0;
+    stack[sp] = root, pc[sp] = 0, sp++;
+    state[root] = 1;
+    while (sp) {
+        uint32_t cur = stack[sp - 1];
+        const gls_object *o = &b->objects[cur];
+        gls_insn in;
+        int descended = 0, rc;
+        while (pc[sp - 1] < o->code_len) {
+            gls_insn_decode(o->code, o->code_len, &pc[sp - 1], &in);
+            int arg = gls_op_find(in.op, GLS_KIND_OBJECT);
+            if (arg < 0)
+                continue;
+            uint32_t callee = in.u[arg];
+            if (v->edge && (rc = v->edge(v->u, cur, callee, state[callee])))
+                return rc;
+            if (state[callee])
+                continue;
+            state[callee] = 1;
+            stack[sp] = callee, pc[sp] = 0, sp++;
+            descended = 1;
+            break;
+        }
+        if (descended)
+            continue;
+        state[cur] = 2;
+        sp--;
+        if (v->done && (rc = v->done(v->u, cur, sp ? stack[sp - 1] : GLS_NONE)))
+            return rc;
+    }
+    return 0;
+}
+
+/* check_calls' walk: heights memoised over the DAG. */
+typedef struct {
+    const gls_bundle *b;
+    uint32_t *height;
+    gls_error *err;
+} depth_walk;
+
+static int depth_edge(void *u, uint32_t from, uint32_t to, uint8_t to_state)
+{
+    depth_walk *d = u;
+    if (to_state == 1) {
+        gls_fail(d->err, __LINE__, "call cycle through %s and %s", d->b->objects[from].name, d->b->objects[to].name);
+        return -1;
+    }
+    if (to_state == 2 && d->height[to] + 1 > d->height[from])
+        d->height[from] = d->height[to] + 1;
+    return 0;
+}
+
+static int depth_done(void *u, uint32_t obj, uint32_t parent)
+{
+    depth_walk *d = u;
+    if (d->height[obj] > GLS_MAX_CALL_DEPTH) {
+        gls_fail(d->err, __LINE__, "object %s: calls nest %u deep, more than %u", d->b->objects[obj].name,
+                 d->height[obj], GLS_MAX_CALL_DEPTH);
+        return -1;
+    }
+    if (parent != GLS_NONE && d->height[obj] + 1 > d->height[parent])
+        d->height[parent] = d->height[obj] + 1;
+    return 0;
+}
+
+/* Calls form a DAG no deeper than GLS_MAX_CALL_DEPTH. */
 static int check_calls(const gls_bundle *b, gls_error *err)
 {
     uint32_t n = b->nobjects;
-    uint8_t *state = calloc(n ? n : 1, 1);          /* 0 new, 1 open, 2 done */
+    uint8_t *state = calloc(n ? n : 1, 1);
     uint32_t *height = calloc(n ? n : 1, sizeof *height);
     uint32_t *stack = malloc((size_t)(n ? n : 1) * sizeof *stack);
     size_t *pc = malloc((size_t)(n ? n : 1) * sizeof *pc);
     if (!state || !height || !stack || !pc)
         FAIL("out of memory");
-    for (uint32_t root = 0; root < n; root++) {
-        if (state[root])
-            continue;
-        uint32_t sp = 0;
-        stack[sp] = root;
-        pc[sp] = 0;
-        state[root] = 1;
-        sp++;
-        while (sp) {
-            uint32_t cur = stack[sp - 1];
-            const gls_object *o = &b->objects[cur];
-            gls_insn in;
-            int descended = 0;
-            while (pc[sp - 1] < o->code_len) {
-                gls_insn_decode(o->code, o->code_len, &pc[sp - 1], &in);
-                int arg = gls_op_find(in.op, GLS_KIND_OBJECT);
-                if (arg < 0)
-                    continue;
-                uint32_t callee = in.u[arg];
-                if (state[callee] == 1)
-                    FAIL("call cycle through %s and %s", o->name, b->objects[callee].name);
-                if (state[callee] == 2) {
-                    if (height[callee] + 1 > height[cur])
-                        height[cur] = height[callee] + 1;
-                    continue;
-                }
-                state[callee] = 1;
-                stack[sp] = callee;
-                pc[sp] = 0;
-                sp++;
-                descended = 1;
-                break;
-            }
-            if (descended)
-                continue;
-            state[cur] = 2;
-            if (height[cur] > GLS_MAX_CALL_DEPTH)
-                FAIL("object %s: calls nest %u deep, more than %u", o->name, height[cur], GLS_MAX_CALL_DEPTH);
-            sp--;
-            if (sp && height[cur] + 1 > height[stack[sp - 1]])
-                height[stack[sp - 1]] = height[cur] + 1;
-        }
-    }
+    depth_walk d = {b, height, err};
+    call_visitor v = {depth_edge, depth_done, &d};
+    for (uint32_t root = 0; root < n; root++)
+        if (!state[root] && call_dfs(b, root, state, stack, pc, &v))
+            goto fail;
     free(state), free(height), free(stack), free(pc);
     return 0;
 fail:
@@ -527,34 +569,28 @@ fail:
     return -1;
 }
 
+/* topo_order's walk: objects appended as they are finished. */
+typedef struct {
+    uint32_t *order, n;
+} post_walk;
+
+static int post_done(void *u, uint32_t obj, uint32_t parent)
+{
+    post_walk *p = u;
+    (void)parent;
+    p->order[p->n++] = obj;
+    return 0;
+}
+
 /* Objects reachable from top in reverse postorder (callers before their
- * callees), appended to order[*n]; iterative, like check_calls. */
+ * callees), in order[0 .. *n). */
 static void topo_order(const gls_bundle *b, uint32_t top, uint8_t *seen, uint32_t *order, uint32_t *n,
                        uint32_t *stack, size_t *pc)
 {
-    uint32_t sp = 0, post = 0;
-    stack[sp] = top, pc[sp] = 0, sp++;
-    seen[top] = 1;
-    while (sp) {
-        uint32_t cur = stack[sp - 1];
-        const gls_object *o = &b->objects[cur];
-        gls_insn in;
-        int descended = 0;
-        while (pc[sp - 1] < o->code_len) {
-            gls_insn_decode(o->code, o->code_len, &pc[sp - 1], &in);
-            int arg = gls_op_find(in.op, GLS_KIND_OBJECT);
-            if (arg < 0 || seen[in.u[arg]])
-                continue;
-            seen[in.u[arg]] = 1;
-            stack[sp] = in.u[arg], pc[sp] = 0, sp++;
-            descended = 1;
-            break;
-        }
-        if (!descended) {
-            order[post++] = cur; /* postorder: callees first */
-            sp--;
-        }
-    }
+    post_walk p = {order, 0};
+    call_visitor v = {NULL, post_done, &p};
+    call_dfs(b, top, seen, stack, pc, &v);
+    uint32_t post = p.n;
     for (uint32_t i = 0; i < post / 2; i++) { /* reversed: callers first */
         uint32_t t = order[i];
         order[i] = order[post - 1 - i];
