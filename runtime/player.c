@@ -999,18 +999,20 @@ static void resume_note(FILE *errs, uint64_t complete, uint64_t total)
             (unsigned long long)(total - complete));
 }
 
+/* What scan_trajectory found, before anything was created or written. */
+typedef struct {
+    uint64_t inrange, mine, complete, last;
+} traj_scan;
+
 /* Every frame of the trajectory in [frame_first, frame_end), read one line
- * at a time (memory stays flat however long the sequence).  Each camera
- * file gives that camera's pose relative to the rig. */
-static int play_trajectory(session *s, const gls_camera *rel, const char *const *names)
+ * at a time (memory stays flat however long the sequence), as scanned
+ * (sc).  Each camera file gives that camera's pose relative to the rig. */
+static int play_trajectory(session *s, const gls_camera *rel, const char *const *names, const traj_scan *sc)
 {
     const gls_play_opts *o = s->o;
     FILE *errs = s->errs;
-    uint64_t inrange, mine, complete;
+    uint64_t inrange = sc->inrange, mine = sc->mine, complete = sc->complete, last = sc->last;
     int flow = (o->outputs & GLS_OUT_FLOW_ALL) != 0;
-    uint64_t last = flow ? trajectory_last_frame(o->trajectory) : UINT64_MAX;
-    if (scan_trajectory(o, s->ms, rel, names, s->inputs, last, errs, &inrange, &mine, &complete))
-        return 1;
     /* more shards than frames: this one has none, which is no error */
     if (mine == 0) {
         fprintf(errs, "glsplay: note: --shard %llu/%llu: none of the %llu frame%s in range is this shard's; "
@@ -1346,6 +1348,19 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         rc = 0;
         goto out;
     }
+    char inputs[17];
+    gls_frame_inputs(o, inputs);
+    /* The whole trajectory is read and checked (with --resume, the frames
+     * already complete counted) before anything is created: a bad row
+     * leaves no empty directory behind. */
+    traj_scan scan = {0, 0, 0, UINT64_MAX};
+    if (o->trajectory) {
+        if (o->outputs & GLS_OUT_FLOW_ALL)
+            scan.last = trajectory_last_frame(o->trajectory);
+        if (scan_trajectory(o, &ms, cams, (const char *const *)names, inputs, scan.last, errs, &scan.inrange,
+                            &scan.mine, &scan.complete))
+            goto out;
+    }
     /* All directories before any rendering: an unwritable output fails
      * before anything is written. */
     for (size_t i = 0; i < o->ncameras; i++) {
@@ -1381,8 +1396,6 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
-    char inputs[17];
-    gls_frame_inputs(o, inputs);
     json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
     json.cameras = o->ncameras;
     json.t0 = gls_now();
@@ -1409,7 +1422,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                     goto out;
         rc = 0;
     } else {
-        rc = play_trajectory(&ses, cams, (const char *const *)names);
+        rc = play_trajectory(&ses, cams, (const char *const *)names, &scan);
     }
     if (rc == 0 && gls_writer_finish(wr, err, sizeof err)) {
         fprintf(errs, "%s\n", err);

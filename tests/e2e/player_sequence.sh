@@ -148,6 +148,9 @@ then ok background_colour; else fail background_colour "corner or centre pixel w
 { echo "0 0 1 0 0 0 1 0 0 0 1 0 0 0"; echo "1 0.5 1 0 0 0 1 0 0 0 1 0 0"; } >"$tmp/bad.txt"
 "$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --trajectory "$tmp/bad.txt" -o "$tmp/badout" 2>"$tmp/err"; rc=$?
 if [ $rc -eq 1 ] && grep -q "bad.txt:2: error:" "$tmp/err"; then ok trajectory_error_located; else fail trajectory_error_located "rc=$rc $(cat "$tmp/err")"; fi
+# the trajectory is checked whole before anything is created: no empty
+# per-camera directory is left behind
+if [ ! -e "$tmp/badout" ]; then ok trajectory_error_creates_nothing; else fail trajectory_error_creates_nothing "$(find "$tmp/badout")"; fi
 "$BIN/glsplay" "$tmp/sq.glsb" --camera "$tmp/cam.cam" --frames 1:2 -o "$tmp/x" 2>/dev/null; rc=$?
 if [ $rc -eq 2 ]; then ok frames_needs_trajectory; else fail frames_needs_trajectory "rc=$rc"; fi
 
