@@ -341,6 +341,12 @@ void gls_accum_add(gls_accum *a, const uint8_t *rgba, size_t stride, uint64_t w)
 
 void gls_accum_add_rows(gls_accum *a, uint32_t y0, uint32_t rows, const uint8_t *rgba, size_t stride, uint64_t w)
 {
+    gls_accum_add_tiles_rows(a, y0, rows, &rgba, stride, 1, &w);
+}
+
+void gls_accum_add_tiles_rows(gls_accum *a, uint32_t y0, uint32_t rows, const uint8_t *const *tile, size_t stride,
+                              uint32_t n, const uint64_t *w)
+{
     /* the accumulator of those rows alone: the same sums, row buffer and
      * counts, seen from row y0 */
     size_t at = (size_t)a->width * y0;
@@ -354,8 +360,12 @@ void gls_accum_add_rows(gls_accum *a, uint32_t y0, uint32_t rows, const uint8_t 
         v.first += at;
     if (v.mixed)
         v.mixed += at;
-    const uint8_t *top = rgba + stride * y0;
-    gls_accum_add_tiles(&v, &top, stride, 1, &w);
+    const uint8_t *top[GLS_ACCUM_MAX_TILES];
+    if (n > GLS_ACCUM_MAX_TILES)
+        n = GLS_ACCUM_MAX_TILES;
+    for (uint32_t t = 0; t < n; t++)
+        top[t] = tile[t] + stride * y0;
+    gls_accum_add_tiles(&v, top, stride, n, w);
     a->samples = v.samples;
     a->wsum = v.wsum;
 }

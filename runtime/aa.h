@@ -131,6 +131,10 @@ void gls_accum_add(gls_accum *a, const uint8_t *rgba, size_t stride, uint64_t w)
  * (those rows at their place), the other rows' sums untouched; samples
  * and wsum counted as by gls_accum_add. */
 void gls_accum_add_rows(gls_accum *a, uint32_t y0, uint32_t rows, const uint8_t *rgba, size_t stride, uint64_t w);
+/* gls_accum_add_tiles for rows y0..y0+rows-1 only, likewise: tile[t] is
+ * sample t's whole image (its top-left pixel). */
+void gls_accum_add_tiles_rows(gls_accum *a, uint32_t y0, uint32_t rows, const uint8_t *const *tile, size_t stride,
+                              uint32_t n, const uint64_t *w);
 
 /* Results (call when wsum equals the plan's wsum).  Each rounds the
  * exact quotient sum / wsum once:

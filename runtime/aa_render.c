@@ -45,20 +45,33 @@ typedef struct {
     uint64_t *w;                /* their weights */
 } batch;
 
-static void accumulate(gls_accum *acc, const batch *b, uint32_t kx, uint32_t w, uint32_t h)
+/* Add batch b's rows v0..v1-1 to acc. */
+static void accumulate(gls_accum *acc, const batch *b, uint32_t kx, uint32_t w, uint32_t h, uint32_t v0, uint32_t v1)
 {
     size_t stride = (size_t)kx * w * 4;
     const uint8_t *tile[GLS_ACCUM_MAX_TILES];
     for (uint32_t t = 0; t < b->n; t++)
         tile[t] = b->buf + stride * h * (t / kx) + (size_t)w * 4 * (t % kx);
-    gls_accum_add_tiles(acc, tile, stride, b->n, b->w);
+    if (v0 == 0 && v1 == h)
+        gls_accum_add_tiles(acc, tile, stride, b->n, b->w);
+    else
+        gls_accum_add_tiles_rows(acc, v0, v1 - v0, tile, stride, b->n, b->w);
 }
-
 
 int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_run_opts *ro,
                   gls_accum *acc, gls_aa_stats *st, char *err, size_t errlen)
 {
+    return gls_aa_render_rows(r, c, p, ro, 0, c->height, acc, st, err, errlen);
+}
+
+int gls_aa_render_rows(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_run_opts *ro,
+                       uint32_t v0, uint32_t v1, gls_accum *acc, gls_aa_stats *st, char *err, size_t errlen)
+{
     uint32_t W = c->width, H = c->height, kx, ky;
+    if (v1 > H)
+        v1 = H;
+    if (v0 >= v1)
+        v0 = 0, v1 = H;
     gls_aa_stats s;
     memset(&s, 0, sizeof s);
     gls_aa_mosaic_shape(r, W, H, p->count, ro->tiles, &kx, &ky);
@@ -102,15 +115,15 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
         if (!nb->n)
             break;
         double ta = gls_now();
-        gls_render_tiles(r, c, nb->n, du, dv);
+        gls_render_tiles_rows(r, c, nb->n, du, dv, v0, v1 - v0);
         if (ro->serial) {
             gls_render_finish(r);
             double tb = gls_now();
             s.draw_s += tb - ta;
-            gls_render_read_mosaic(r, (nb->n + kx - 1) / kx, nb->buf);
+            gls_render_read_mosaic_rows(r, (nb->n + kx - 1) / kx, v0, v1 - v0, nb->buf);
             double tc = gls_now();
             s.read_s += tc - tb;
-            accumulate(acc, nb, kx, W, H);
+            accumulate(acc, nb, kx, W, H, v0, v1);
             s.accum_s += gls_now() - tc;
         } else {
             /* rasterise this batch on llvmpipe's threads while this thread
@@ -119,10 +132,10 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
             double tb = gls_now();
             s.draw_s += tb - ta;
             if (pending)
-                accumulate(acc, &b[cur ^ 1], kx, W, H);
+                accumulate(acc, &b[cur ^ 1], kx, W, H, v0, v1);
             double tc = gls_now();
             s.accum_s += tc - tb;
-            gls_render_read_mosaic(r, (nb->n + kx - 1) / kx, nb->buf);
+            gls_render_read_mosaic_rows(r, (nb->n + kx - 1) / kx, v0, v1 - v0, nb->buf);
             s.read_s += gls_now() - tc;
             pending = 1;
             cur ^= 1;
@@ -134,7 +147,7 @@ int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, co
     }
     if (pending) {
         double tc = gls_now();
-        accumulate(acc, &b[cur ^ 1], kx, W, H);
+        accumulate(acc, &b[cur ^ 1], kx, W, H, v0, v1);
         s.accum_s += gls_now() - tc;
     }
     s.samples = p->count;

@@ -41,5 +41,13 @@ void gls_aa_mosaic_shape(const gls_renderer *r, uint32_t width, uint32_t height,
  * -1 with a message on failure (framebuffer, memory). */
 int gls_aa_render(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_run_opts *ro,
                   gls_accum *acc, gls_aa_stats *st, char *err, size_t errlen);
+/* gls_aa_render of image rows v0..v1-1 only (0 <= v0 < v1 <= height):
+ * each pass draws (scissored, its whole viewport and projection) and reads
+ * back those rows, and only their sums change.  A sample of pixel (u, v)
+ * is drawn in row v of its pass whatever the filter (the jitter moves the
+ * projection, not the pixel), so those rows are the whole render's bit
+ * for bit.  For the bands of a rolling shutter (exposure.h). */
+int gls_aa_render_rows(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_run_opts *ro,
+                       uint32_t v0, uint32_t v1, gls_accum *acc, gls_aa_stats *st, char *err, size_t errlen);
 
 #endif

@@ -525,8 +525,8 @@ static int render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, 
             return -1;
         }
         /* only rows v0..v1-1 drawn (scissored: the whole pass's bits),
-         * read back and added; so do the lattice and grid below, the
-         * jittered passes draw every row */
+         * read back and added; so do the fine framebuffer's tiles and the
+         * jittered passes below */
         gls_render_pass_rows(r, c, v0, v1 - v0);
         gls_render_read_rgba_rows(r, v0, v1 - v0, rgba);
         gls_accum_add_rows(acc, v0, v1 - v0, rgba, (size_t)c->width * 4, 1);
@@ -547,9 +547,9 @@ static int render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, 
         }
     } else {
         /* stratified, grid Gaussian: one jittered pass per sample,
-         * several per GL pass (aa_render.h) */
+         * several per GL pass (aa_render.h), rows v0..v1-1 only */
         gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name, estimate_from_passes, s};
-        if (gls_aa_render(r, c, plan, &ro, acc, NULL, err, sizeof err)) {
+        if (gls_aa_render_rows(r, c, plan, &ro, v0, v1, acc, NULL, err, sizeof err)) {
             uint32_t kx, ky;
             gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);
             if (kx * ky > 1)

@@ -642,16 +642,8 @@ void gls_render_pass(gls_renderer *r, const gls_camera *c, double du, double dv)
 
 void gls_render_pass_rows(gls_renderer *r, const gls_camera *c, uint32_t y0, uint32_t rows)
 {
-    if (y0 == 0 && rows >= r->height) {
-        gls_render_pass(r, c, 0.0, 0.0);
-        return;
-    }
-    /* a plain framebuffer has the scissor off (gls_renderer_set_mosaic):
-       on for this pass only; clear and fragments both obey it */
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, (GLint)y0, (GLsizei)r->width, (GLsizei)rows);
-    gls_render_pass(r, c, 0.0, 0.0);
-    glDisable(GL_SCISSOR_TEST);
+    static const double zero = 0.0;
+    gls_render_tiles_rows(r, c, 1, &zero, &zero, y0, rows);
 }
 
 /* The shadow maps for camera c (centre C, nnear near items prepared),
@@ -680,26 +672,40 @@ void gls_render_depth_only(gls_renderer *r, const gls_camera *view, const double
 
 void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv)
 {
+    gls_render_tiles_rows(r, c, n, du, dv, 0, r->height);
+}
+
+void gls_render_tiles_rows(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv,
+                           uint32_t y0, uint32_t rows)
+{
     double C[3];
     gls_camera_centre(c, C);
-    if (r->kx * r->ky > 1) {
+    int mosaic = r->kx * r->ky > 1, part = y0 > 0 || rows < r->height;
+    if (mosaic) {
         /* one clear for the whole mosaic */
         glViewport(0, 0, (GLsizei)(r->width * r->kx), (GLsizei)(r->height * r->ky));
         glScissor(0, 0, (GLsizei)(r->width * r->kx), (GLsizei)(r->height * r->ky));
+    } else if (part) {
+        /* a plain framebuffer has the scissor off (gls_renderer_set_mosaic):
+           on for these rows only; the clear and the fragments obey it */
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, (GLint)y0, (GLsizei)r->width, (GLsizei)rows);
     }
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     uint32_t nnear = prepare_near(r, c, C);
     gls_scene_cull(r->scene, c, r->ivis, r->vis, &r->cull);
     draw_shadow_maps(r, c, C, nnear, r->vis);
     for (uint32_t t = 0; t < n && t < r->kx * r->ky; t++) {
-        if (r->kx * r->ky > 1) {
+        if (mosaic) {
             GLint x = (GLint)(r->width * (t % r->kx)), y = (GLint)(r->height * (t / r->kx));
             glViewport(x, y, (GLsizei)r->width, (GLsizei)r->height);
-            glScissor(x, y, (GLsizei)r->width, (GLsizei)r->height);
+            glScissor(x, y + (GLint)y0, (GLsizei)r->width, (GLsizei)rows);
         }
         load_projection(r, c, du[t], dv[t]);
         draw_all(r, c, C, nnear, occlusion_cull(r, c, C, nnear, r->vis));
     }
+    if (!mosaic && part)
+        glDisable(GL_SCISSOR_TEST);
 }
 
 void gls_render_hooked(gls_renderer *r, const gls_camera *c, gls_render_item_hook hook, void *ud)
@@ -802,6 +808,23 @@ void gls_render_read_mosaic(gls_renderer *r, uint32_t rows, uint8_t *rgba)
         rows = r->ky;
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, (GLsizei)(r->width * r->kx), (GLsizei)(r->height * rows), GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+}
+
+void gls_render_read_mosaic_rows(gls_renderer *r, uint32_t rows, uint32_t y0, uint32_t n, uint8_t *rgba)
+{
+    if (rows > r->ky)
+        rows = r->ky;
+    if (y0 == 0 && n >= r->height) {
+        gls_render_read_mosaic(r, rows, rgba); /* one read */
+        return;
+    }
+    size_t stride = (size_t)r->width * r->kx * 4;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    for (uint32_t j = 0; j < rows; j++) {
+        uint32_t y = j * r->height + y0;
+        glReadPixels(0, (GLint)y, (GLsizei)(r->width * r->kx), (GLsizei)n, GL_RGBA, GL_UNSIGNED_BYTE,
+                     rgba + stride * y);
+    }
 }
 
 void gls_render_read_rgba(gls_renderer *r, uint8_t *rgba)

@@ -67,6 +67,11 @@ void gls_render_pass_rows(gls_renderer *r, const gls_camera *c, uint32_t y0, uin
  * jitter (du[t], dv[t]); one clear for all.  gls_render_pass() is this
  * with n = 1. */
 void gls_render_tiles(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv);
+/* gls_render_tiles drawing only image rows y0..y0+rows-1 of each tile (a
+ * scissor, with each tile's whole viewport and projection: those rows are
+ * the whole tiles' bit for bit); rows 0..height: gls_render_tiles. */
+void gls_render_tiles_rows(gls_renderer *r, const gls_camera *c, uint32_t n, const double *du, const double *dv,
+                           uint32_t y0, uint32_t rows);
 
 /* The centre sample (no jitter) drawn into whatever framebuffer is bound,
  * in the current viewport, without clearing it: the same items, culling,
@@ -127,6 +132,9 @@ void gls_render_finish(gls_renderer *r);
 /* Read back the first `rows` rows of tiles of the mosaic: RGBA8, rows of
  * kx * width pixels, framebuffer row 0 first. */
 void gls_render_read_mosaic(gls_renderer *r, uint32_t rows, uint8_t *rgba);
+/* The same for image rows y0..y0+n-1 of each tile only, each at its place
+ * in rgba (the other rows untouched). */
+void gls_render_read_mosaic_rows(gls_renderer *r, uint32_t rows, uint32_t y0, uint32_t n, uint8_t *rgba);
 
 /* Read back the last pass (tile 0 of a mosaic): RGBA8 top row first (width*height*4 bytes);
  * depth as camera Zc (float, +inf where nothing was drawn), top row first.

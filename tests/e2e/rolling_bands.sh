@@ -4,7 +4,8 @@
 # through a lens the fine rows its pixels read (runtime/distort_exposure.c,
 # gls_distort_truth_bands), through a pinhole the band's own rows
 # (runtime/player.c centre_bands; the image's bands: one sample a pixel,
-# or a lattice plan's fine tiles, aa_onepass.c; gt_flow_rolling.c for the
+# or a lattice plan's fine tiles, aa_onepass.c, or the jittered passes,
+# aa_render.c; gt_flow_rolling.c for the
 # next frame's depth).  Every output must be the
 # same bytes as with each band drawing and reading the whole image
 # (GLS_BANDS_WHOLE=1, the switch that exists for this test).  The scene
@@ -66,3 +67,8 @@ same lens_bands_same_bytes 24 --camera "$t/brown.cam" --camera "$t/fish.cam" --o
 same pinhole_bands_same_bytes 26 --camera "$t/pin.cam" --camera "$t/combo.cam" --outputs $ALL,landmarks
 # anti-aliased (the lattice's fine tiles narrowed to each band's samples)
 same pinhole_bands_aa_same_bytes 26 --camera "$t/pin.cam" --camera "$t/combo.cam" --aa 2 --outputs $ALL,edges
+# jittered passes (stratified; the grid with the Gaussian, whose samples
+# reach past the pixel): each pass of the mosaic narrowed to the band's
+# rows
+same pinhole_bands_stratified_same_bytes 13 --camera "$t/pin.cam" --aa 2 --pattern stratified --outputs $ALL,edges
+same pinhole_bands_gauss_same_bytes 13 --camera "$t/pin.cam" --aa 2 --pattern grid --filter gauss --outputs $ALL,edges

@@ -57,7 +57,8 @@ out:
     return rc;
 }
 
-/* gls_accum_add_rows (a rolling shutter's band of one sample a pixel):
+/* gls_accum_add_rows (a rolling shutter's band of one sample a pixel) and
+ * gls_accum_add_tiles_rows (of jittered passes, several samples a call):
  * the rows asked for are exactly gls_accum_add's sums and mixed pixels,
  * unweighted and weighted, first sample and later; the other rows keep
  * what they held; samples and wsum counted alike. */
@@ -69,7 +70,8 @@ static void test_accum_add_rows(void)
         img[0][i] = (uint8_t)(i * 37 + 11);
         img[1][i] = (uint8_t)(i % 5 ? img[0][i] : i * 53 + 7); /* some pixels differ */
     }
-    for (int weighted = 0; weighted < 2; weighted++) {
+    for (int pass = 0; pass < 4; pass++) {
+        int weighted = pass & 1, tiles = pass >= 2; /* tiles: both samples in one call */
         gls_accum whole, rows;
         CHECK(gls_accum_init(&whole, W, H, weighted, 1) == 0);
         CHECK(gls_accum_init(&rows, W, H, weighted, 1) == 0);
@@ -82,10 +84,18 @@ static void test_accum_add_rows(void)
             else
                 rows.sum32[i] = (uint32_t)(1000 + i);
         }
+        uint64_t wk[2];
         for (int k = 0; k < 2; k++) {
-            uint64_t w = weighted ? 3 + 2 * (uint64_t)k : 1;
-            gls_accum_add(&whole, img[k], 4 * W, w);
-            gls_accum_add_rows(&rows, Y0, ROWS, img[k], 4 * W, w);
+            wk[k] = weighted ? 3 + 2 * (uint64_t)k : 1;
+            gls_accum_add(&whole, img[k], 4 * W, wk[k]);
+            if (!tiles) {
+                gls_accum_add_rows(&rows, Y0, ROWS, img[k], 4 * W, wk[k]);
+                CHECK(rows.samples == whole.samples && rows.wsum == whole.wsum);
+            }
+        }
+        if (tiles) {
+            const uint8_t *tile[2] = {img[0], img[1]};
+            gls_accum_add_tiles_rows(&rows, Y0, ROWS, tile, 4 * W, 2, wk);
             CHECK(rows.samples == whole.samples && rows.wsum == whole.wsum);
         }
         int same = 1, kept = 1;
