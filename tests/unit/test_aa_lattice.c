@@ -583,6 +583,39 @@ static void test_gather_halfplane(void)
     free(p16);
 }
 
+/* The scene of the tile tests below: squares whose edges pass
+ * arbitrarily close to samples, 48 x 36, its camera, bundle and rig. */
+typedef struct {
+    as_scene s;
+    gls_camera c;
+    gls_bundle *b;
+    rig g;
+} close_edges;
+
+static int close_edges_open(close_edges *t)
+{
+    as_layout(&t->s, 48, 36, 2, 1, 14);
+    t->c = as_camera(&t->s, 1, 100);
+    t->b = as_bundle(&t->s, &t->c);
+    return rig_open(&t->g, t->b);
+}
+
+static void close_edges_close(close_edges *t)
+{
+    rig_close(&t->g);
+    gls_bundle_free(t->b);
+}
+
+/* The two filters the tile tests run: 0 the box with M = 64, 1 the
+ * Gaussian with M = 9. */
+static gls_aa_opts close_edges_opts(int fl)
+{
+    gls_aa_opts o = gls_aa_defaults();
+    o.samples = fl ? 9 : 64;
+    o.filter = fl ? GLS_AA_GAUSS : GLS_AA_BOX;
+    return o;
+}
+
 /* Pixels straddling tiles on a scene whose edges pass arbitrarily close
  * to samples: tiles of 3, 7 and 64 fine pixels against automatic tiles,
  * box and Gaussian.  Each tile has its own projection (its origin moves
@@ -594,25 +627,21 @@ static void test_gather_halfplane(void)
  * Gaussian at M = 9). */
 static void test_tiles_straddle(void)
 {
-    as_scene s;
-    as_layout(&s, 48, 36, 2, 1, 14);
-    gls_camera c = as_camera(&s, 1, 100);
-    gls_bundle *b = as_bundle(&s, &c);
-    rig g;
-    CHECK(rig_open(&g, b) == 0);
-    size_t n = (size_t)s.w * s.h;
+    close_edges e;
+    CHECK(close_edges_open(&e) == 0);
+    rig *g = &e.g;
+    const gls_camera *c = &e.c;
+    size_t n = (size_t)e.s.w * e.s.h;
     for (int fl = 0; fl < 2; fl++) {
-        gls_aa_opts o = gls_aa_defaults();
-        o.samples = fl ? 9 : 64;
-        o.filter = fl ? GLS_AA_GAUSS : GLS_AA_BOX;
+        gls_aa_opts o = close_edges_opts(fl);
         gls_accum ref;
         gls_aa_fine_stats st;
-        CHECK(fine(&g, &c, &o, 0, 0, &ref, &st) == 0);
+        CHECK(fine(g, c, &o, 0, 0, &ref, &st) == 0);
         static const uint32_t sides[] = {3, 7, 64};
         for (int i = 0; i < 3; i++) {
             gls_accum a;
             gls_aa_fine_stats st2;
-            CHECK(fine(&g, &c, &o, sides[i], 0, &a, &st2) == 0);
+            CHECK(fine(g, c, &o, sides[i], 0, &a, &st2) == 0);
             CHECK(st2.tiles_drawn > st.tiles_drawn && a.wsum == ref.wsum);
             double worst = 0;
             long diff = 0;
@@ -631,8 +660,7 @@ static void test_tiles_straddle(void)
         }
         gls_accum_free(&ref);
     }
-    rig_close(&g);
-    gls_bundle_free(b);
+    close_edges_close(&e);
 }
 
 /* Some rows only (gls_aa_render_fine_rows, a rolling shutter's band):
@@ -641,26 +669,22 @@ static void test_tiles_straddle(void)
  * and at the bottom; a narrow band draws fewer tiles. */
 static void test_fine_rows(void)
 {
-    as_scene s;
-    as_layout(&s, 48, 36, 2, 1, 14);
-    gls_camera c = as_camera(&s, 1, 100);
-    gls_bundle *b = as_bundle(&s, &c);
-    rig g;
-    CHECK(rig_open(&g, b) == 0);
+    close_edges e;
+    CHECK(close_edges_open(&e) == 0);
+    rig *g = &e.g;
+    const gls_camera *c = &e.c;
     static const uint32_t band[3][2] = {{0, 5}, {17, 18}, {29, 36}}, sides[2] = {0, 7};
     for (int fl = 0; fl < 2; fl++)
         for (int t = 0; t < 2; t++) {
-            gls_aa_opts o = gls_aa_defaults();
-            o.samples = fl ? 9 : 64;
-            o.filter = fl ? GLS_AA_GAUSS : GLS_AA_BOX;
+            gls_aa_opts o = close_edges_opts(fl);
             gls_accum ref;
             gls_aa_fine_stats st;
-            CHECK(fine(&g, &c, &o, sides[t], 0, &ref, &st) == 0);
+            CHECK(fine(g, c, &o, sides[t], 0, &ref, &st) == 0);
             for (int i = 0; i < 3; i++) {
                 gls_accum a;
                 gls_aa_fine_stats st2;
-                CHECK(fine_rows(&g, &c, &o, sides[t], 0, band[i][0], band[i][1], &a, &st2) == 0);
-                size_t p0 = (size_t)s.w * band[i][0], p1 = (size_t)s.w * band[i][1];
+                CHECK(fine_rows(g, c, &o, sides[t], 0, band[i][0], band[i][1], &a, &st2) == 0);
+                size_t p0 = (size_t)e.s.w * band[i][0], p1 = (size_t)e.s.w * band[i][1];
                 int same = a.wsum == ref.wsum && memcmp(a.mixed + p0, ref.mixed + p0, p1 - p0) == 0 &&
                            (a.weighted ? memcmp(a.sum64 + 4 * p0, ref.sum64 + 4 * p0, 4 * (p1 - p0) * 8)
                                        : memcmp(a.sum32 + 4 * p0, ref.sum32 + 4 * p0, 4 * (p1 - p0) * 4)) == 0;
@@ -674,8 +698,7 @@ static void test_fine_rows(void)
             }
             gls_accum_free(&ref);
         }
-    rig_close(&g);
-    gls_bundle_free(b);
+    close_edges_close(&e);
 }
 
 /* ---- K passes ---------------------------------------------------------- */
