@@ -152,8 +152,10 @@ static int grow(gls_occlusion *o, uint32_t n)
         return 0;
     free(o->occluder), free(o->tested), free(o->order), free(o->key), free(o->items);
     free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
-    free(o->plo), free(o->phi);
+    free(o->plo), free(o->phi), free(o->box_first), free(o->box_n);
     o->occluder = malloc(n);
+    o->box_first = malloc(n * sizeof *o->box_first);
+    o->box_n = malloc(n * sizeof *o->box_n);
     o->tested = malloc(n * sizeof *o->tested);
     o->order = malloc(n * sizeof *o->order);
     o->key = malloc(n * sizeof *o->key);
@@ -167,11 +169,66 @@ static int grow(gls_occlusion *o, uint32_t n)
     o->phi = malloc(3 * n * sizeof *o->phi);
     o->cap = n;
     if (!o->occluder || !o->tested || !o->order || !o->key || !o->items || !o->unit_first || !o->unit_n ||
-        !o->unit_verts || !o->lo || !o->hi || !o->plo || !o->phi) {
+        !o->unit_verts || !o->lo || !o->hi || !o->plo || !o->phi || !o->box_first || !o->box_n) {
         o->cap = 0;
         return -1;
     }
     return 0;
+}
+
+int gls_occlusion_faces(const double corner[8][3], uint8_t front[6])
+{
+    double mid[3] = {0, 0, 0};
+    for (int k = 0; k < 8; k++)
+        for (int j = 0; j < 3; j++)
+            mid[j] += corner[k][j] / 8;
+    int n = 0;
+    for (int f = 0; f < 6; f++) {
+        const uint8_t *q = box_tris + 6 * f;
+        /* the face's centre (the mean of its two triangles' six corners:
+         * each diagonal of the parallelogram has its middle there) and a
+         * normal; the camera, at the origin, sees the face when it is on
+         * the face's outer side: (centre - origin) . outward normal < 0 */
+        double fc[3] = {0, 0, 0}, e1[3], e2[3], nrm[3];
+        for (int j = 0; j < 3; j++) {
+            for (int t = 0; t < 6; t++)
+                fc[j] += corner[q[t]][j] / 6;
+            e1[j] = corner[q[1]][j] - corner[q[0]][j], e2[j] = corner[q[2]][j] - corner[q[0]][j];
+        }
+        nrm[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        nrm[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        nrm[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        double out = 0, seen = 0;
+        for (int j = 0; j < 3; j++)
+            out += nrm[j] * (fc[j] - mid[j]), seen += nrm[j] * fc[j];
+        front[f] = (out < 0 ? -seen : seen) < 0;
+        n += front[f];
+    }
+    return n;
+}
+
+/* The faces of the box (corners relative to the camera centre) that face
+ * the camera, as triangles: vertices of s's layout written at v; how
+ * many. */
+static uint32_t front_faces(const double corner[8][3], uint8_t *v, const gls_scene *s)
+{
+    uint8_t front[6];
+    gls_occlusion_faces(corner, front);
+    uint32_t n = 0;
+    for (int f = 0; f < 6; f++) {
+        if (!front[f])
+            continue;
+        for (int t = 0; t < 6; t++, v += s->stride, n++) {
+            float p[3];
+            for (int j = 0; j < 3; j++)
+                p[j] = (float)corner[box_tris[6 * f + t]][j];
+            memset(v, 0, s->stride);
+            memcpy(v, p, sizeof p);
+            if (s->has_color)
+                memset(v + s->color_offset, 255, 4);
+        }
+    }
+    return n;
 }
 
 /* Mark unit u's items in m. */
@@ -214,31 +271,44 @@ int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scen
         occ += o->unit_verts[u];
     } while (k < n && (double)(occ + o->unit_verts[o->order[k]]) <=
                           GLS_OCCLUSION_OCCLUDER_SHARE * (double)total);
-    size_t need = (size_t)(n - k) * GLS_OCCLUSION_BOX_VERTS * s->stride;
+    size_t need = (size_t)(n - k) * GLS_PROTO_TEST_BOXES * GLS_OCCLUSION_FRONT_VERTS * s->stride;
     if (need > o->box_cap) {
         uint8_t *nb = realloc(o->boxes, need);
         if (!nb)
             return -1;
         o->boxes = nb, o->box_cap = need;
     }
+    uint32_t nv = 0;
     for (; k < n; k++) {
         uint32_t u = o->order[k];
-        double corner[8][3];
-        const double *W = s->inst[s->items[o->items[o->unit_first[u]]].inst].world;
-        if (gls_occlusion_box(c, C, W, o->plo + 3 * u, o->phi + 3 * u, o->lo + 3 * u, o->hi + 3 * u, corner)) {
+        const gls_instance *in = &s->inst[s->items[o->items[o->unit_first[u]]].inst];
+        const gls_proto *pr = &s->protos[in->proto];
+        double corner[GLS_PROTO_TEST_BOXES][8][3];
+        uint32_t nb = 0;
+        int near = 0;
+        for (uint32_t b = 0; b < pr->ntboxes && !near; b++) {
+            /* the proto's test box clipped to the box of the unit's
+             * chunks: each of the unit's triangles lies in both */
+            const gls_tbox *t = &s->tboxes[pr->first_tbox + b];
+            double lo[3], hi[3];
+            int empty = 0;
+            for (int j = 0; j < 3; j++) {
+                lo[j] = fmax(t->lo[j], o->plo[3 * u + j]), hi[j] = fmin(t->hi[j], o->phi[3 * u + j]);
+                empty |= !(lo[j] <= hi[j]);
+            }
+            if (empty)
+                continue;
+            near = gls_occlusion_box(c, C, in->world, lo, hi, o->lo + 3 * u, o->hi + 3 * u, corner[nb]) != 0;
+            nb++;
+        }
+        if (near || !nb) {
             mark_unit(o, u, o->occluder); /* reaches the near plane: untested, an occluder */
             continue;
         }
-        uint8_t *v = o->boxes + (size_t)o->ntested * GLS_OCCLUSION_BOX_VERTS * s->stride;
-        memset(v, 0, GLS_OCCLUSION_BOX_VERTS * s->stride);
-        for (uint32_t t = 0; t < GLS_OCCLUSION_BOX_VERTS; t++, v += s->stride) {
-            float p[3];
-            for (int j = 0; j < 3; j++)
-                p[j] = (float)corner[box_tris[t]][j];
-            memcpy(v, p, sizeof p);
-            if (s->has_color)
-                memset(v + s->color_offset, 255, 4);
-        }
+        o->box_first[o->ntested] = nv;
+        for (uint32_t b = 0; b < nb; b++)
+            nv += front_faces(corner[b], o->boxes + (size_t)nv * s->stride, s);
+        o->box_n[o->ntested] = nv - o->box_first[o->ntested];
         o->tested[o->ntested++] = u;
     }
     return o->ntested > 0;
@@ -257,6 +327,6 @@ void gls_occlusion_free(gls_occlusion *o)
 {
     free(o->occluder), free(o->tested), free(o->order), free(o->key), free(o->boxes), free(o->items);
     free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
-    free(o->plo), free(o->phi);
+    free(o->plo), free(o->phi), free(o->box_first), free(o->box_n);
     memset(o, 0, sizeof *o);
 }

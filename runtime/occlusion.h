@@ -54,6 +54,8 @@ typedef enum {
 #define GLS_OCCLUSION_MIN_OVERDRAW 4.0
 /* Vertices of one box: 12 triangles. */
 #define GLS_OCCLUSION_BOX_VERTS 36u
+/* Vertices of the faces of one box that face the camera: at most 3. */
+#define GLS_OCCLUSION_FRONT_VERTS 18u
 
 /* Items of one instance tested together, at most (make_units). */
 #define GLS_OCCLUSION_UNIT_ITEMS 8u
@@ -69,11 +71,13 @@ typedef struct {
     uint64_t *unit_verts;
     double *lo, *hi;    /* world box (for the distance and the overdraw) */
     double *plo, *phi;  /* box in the instance's frame (the one tested)  */
-    uint8_t *boxes;     /* ntested * 36 vertices of `stride` bytes: the
-                           padded box relative to the camera centre
+    uint8_t *boxes;     /* the tested units' boxes, vertices of
+                           `stride` bytes: each padded box's faces that
+                           face the camera, relative to the camera centre
                            (float x, y, z at offset 0), the rest white /
                            zero, so the scene's own attribute pointers
                            can read them                                */
+    uint32_t *box_first, *box_n; /* per tested unit: its vertices there */
     /* why: the plan's figures (gls_occlusion_plan fills them in even when
        it returns 0 because AUTO finds too little to gain) */
     double overdraw;
@@ -101,6 +105,16 @@ int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scen
  * corner is not in front of the near plane (or not finite): never tested. */
 int gls_occlusion_box(const gls_camera *c, const double C[3], const double W[16], const double plo[3],
                       const double phi[3], const double wlo[3], const double whi[3], double corner[8][3]);
+
+/* Which faces of the box by its corners (gls_occlusion_box's, relative to
+ * the camera centre) face the camera: front[f] = 1 for those, in the
+ * order z low, z high, y low, y high, x low, x high (of the corners' bit
+ * order); how many (at most 3).  Only those are drawn in a query: the
+ * camera is outside the box (every corner is in front of the near
+ * plane), so a ray meets a front face of the box before any back face,
+ * and wherever a back face would pass the depth test, the front face
+ * nearer on the same ray passes too. */
+int gls_occlusion_faces(const double corner[8][3], uint8_t front[6]);
 
 /* Set m[i] = value for the items of tested unit t (o->tested[t]); how
  * many items it has. */

@@ -569,10 +569,17 @@ static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const
     else
         memset(r->ovis, 1, s->nitems);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    /* without an alpha test, a fragment's colour cannot decide whether it
+     * is drawn: the depth-only draws fetch and interpolate no colour (a
+     * lit pass keeps its program, and with it its arrays) */
+    int slim = s->has_color && !(s->features & GLS_FEAT_ALPHA_TEST) && !r->light;
+    if (slim)
+        glDisableClientState(GL_COLOR_ARRAY);
     draw_all(r, c, C, nnear, o->occluder);
     memset(o->occluder, 0, s->nitems); /* from here: the round's items that showed */
     r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->occ_vbo);
-    r->gl.glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)o->ntested * GLS_OCCLUSION_BOX_VERTS * s->stride),
+    r->gl.glBufferData(GL_ARRAY_BUFFER,
+                       (GLsizeiptr)(((size_t)o->box_first[o->ntested - 1] + o->box_n[o->ntested - 1]) * s->stride),
                        o->boxes, GL_STREAM_DRAW);
     /* GLS_OCCLUSION_ROUNDS rounds (of at least 16 units): units tested in
      * one round do not hide each other, so fewer rounds hide less; each
@@ -596,7 +603,7 @@ static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const
         set_pointers(r, s);
         for (uint32_t k = k0; k < k1; k++) {
             r->gl.glBeginQuery(GL_ANY_SAMPLES_PASSED, r->occ_q[k]);
-            glDrawArrays(GL_TRIANGLES, (GLint)(k * GLS_OCCLUSION_BOX_VERTS), (GLsizei)GLS_OCCLUSION_BOX_VERTS);
+            glDrawArrays(GL_TRIANGLES, (GLint)o->box_first[k], (GLsizei)o->box_n[k]);
             r->gl.glEndQuery(GL_ANY_SAMPLES_PASSED);
         }
         uint32_t shown = 0;
@@ -625,6 +632,8 @@ static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const
         }
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (slim)
+        glEnableClientState(GL_COLOR_ARRAY);
     glClear(GL_DEPTH_BUFFER_BIT);
     return r->ovis;
 }

@@ -60,12 +60,21 @@ typedef struct {
     uint32_t first, count; /* vertex range in gls_scene.verts             */
 } gls_chunk;
 
+/* A box in a proto's frame (scene_boxes.c). */
+typedef struct {
+    double lo[3], hi[3];
+} gls_tbox;
+/* Test boxes a proto has at most (scene_boxes.c). */
+#define GLS_PROTO_TEST_BOXES 8
 /* Geometry of one object entered with one drawing state. */
 typedef struct {
     uint32_t object;       /* bundle object index                          */
     uint32_t first_chunk, nchunks; /* its chunks, sorted by key then cell */
     uint32_t ntris;
     double lo[3], hi[3];   /* bounding box in the proto's frame (double)   */
+    uint32_t first_tbox, ntboxes; /* its test boxes in gls_scene.tboxes:
+                              their union holds its triangles, more
+                              tightly than lo..hi (scene_boxes.c)         */
     /* build only: the drawing state it was entered with (texture and
      * mode as they were, not normalised: an object that selects a
      * texture itself draws it in the mode it inherits), next proto of
@@ -173,6 +182,8 @@ typedef struct {
     uint32_t nbatches;     /* distinct draw keys                          */
     gls_proto *protos;
     uint32_t nprotos;
+    gls_tbox *tboxes;      /* the protos' test boxes (occlusion culling)  */
+    uint32_t ntboxes;
     gls_instance *inst;
     uint32_t ninst;
     gls_item *items;       /* all instances' items, in drawing order:
@@ -217,6 +228,9 @@ void gls_scene_update(gls_scene *s);
  * world transform (motion included) applied, divided by w, in double. */
 void gls_scene_mark_world(const gls_scene *s, uint32_t k, double X[3]);
 
+/* The protos' test boxes (scene_boxes.c), once chunks are packed.  0,
+ * or -1 when out of memory. */
+int gls_scene_test_boxes(gls_scene *s);
 /* Memory: unique geometry (vertices, exact positions, chunks, protos) and
  * the instance table (instances, items, names). */
 void gls_scene_memory(const gls_scene *s, uint64_t *geometry, uint64_t *table);

@@ -842,6 +842,8 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     gls_pack_input in = {w.tris, w.ntri, w.wpos, w.wcol, w.wtc, w.wnrm, w.wspec};
     int made = gls_pack_chunks(&in, s);
     if (!made)
+        made = gls_scene_test_boxes(s);
+    if (!made)
         made = gls_pack_items(s);
     if (!made)
         made = gls_markwalk_finish(&w.marks, s);
@@ -905,6 +907,7 @@ void gls_scene_free(gls_scene *s)
     free(s->exact);
     free(s->chunks);
     free(s->protos);
+    free(s->tboxes);
     free(s->inst);
     free(s->items);
     memset(s, 0, sizeof *s);

@@ -118,7 +118,7 @@ void gls_scene_mark_world(const gls_scene *s, uint32_t k, double X[3])
 void gls_scene_memory(const gls_scene *s, uint64_t *geometry, uint64_t *table)
 {
     *geometry = (uint64_t)s->nverts * (s->stride + 3 * sizeof(double)) + (uint64_t)s->nchunks * sizeof(gls_chunk) +
-                (uint64_t)s->nprotos * sizeof(gls_proto);
+                (uint64_t)s->nprotos * sizeof(gls_proto) + (uint64_t)s->ntboxes * sizeof(gls_tbox);
     *table = (uint64_t)s->ninst * sizeof(gls_instance) + (uint64_t)s->nitems * sizeof(gls_item);
     for (uint32_t i = 0; i < s->ninst; i++)
         if (s->inst[i].name)

@@ -1,6 +1,10 @@
 /* Occlusion culling (runtime/occlusion.h): the padded box contains its
  * geometry with the documented margin, in the oriented and the world-box
- * form; boxes reaching the near plane are never tested; and a scene built
+ * form; boxes reaching the near plane are never tested; the faces drawn
+ * are exactly those the camera sees (against an independent rule in the
+ * box's own frame); each proto's test boxes (runtime/scene_boxes.c) hold
+ * every one of its triangles, fit a tree's trunk and crown apart and are
+ * deterministic; and a scene built
  * to hide most of its instances behind a wall with alpha-tested holes
  * renders byte-identical colour and depth with occlusion culling on and
  * off (plain pass and a mosaic of jittered passes), while the culling
@@ -104,6 +108,192 @@ static void test_box_margin(void)
     CHECK(gls_occlusion_box(&c, C, NULL, blo, bhi, blo, bhi, corner) == -1);
     double flo[3] = {-1, -1, 0.6}, fhi[3] = {1, 1, 3}; /* in front, within the margin of near? no: 0.6 - pad */
     CHECK(gls_occlusion_box(&c, C, NULL, flo, fhi, flo, fhi, corner) == 0);
+}
+
+/* gls_occlusion_faces against the rule in the box's own frame: with the
+ * camera centre there at P, the low face on axis j is seen when P[j] is
+ * below the box, the high face when above.  Boxes turned, scaled and
+ * sheared, all around a camera looking down +z. */
+static void test_front_faces(void)
+{
+    static const double I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    double T0[3] = {0, 0, 0}, C[3] = {0, 0, 0};
+    gls_camera c = tb_camera(320, 240, 200, 200, 159.5, 119.5, 0, I3, T0, 0.5, 1000);
+    uint64_t seed = 7;
+    int checked = 0, bad = 0, counts[4] = {0, 0, 0, 0};
+    for (int k = 0; k < 2000; k++) {
+        double r[12];
+        for (int i = 0; i < 12; i++) {
+            seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+            r[i] = (double)(seed >> 11) / 9007199254740992.0; /* [0, 1) */
+        }
+        double a = 6.283 * r[0], b = 6.283 * r[1];
+        /* linear part: a turn about y, then about x, scaled 0.5..2 per axis, a shear */
+        double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b);
+        double Ry[9] = {ca, 0, sa, 0, 1, 0, -sa, 0, ca}, Rx[9] = {1, 0, 0, 0, cb, -sb, 0, sb, cb}, L[9];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                L[3 * i + j] = 0;
+                for (int m = 0; m < 3; m++)
+                    L[3 * i + j] += Rx[3 * i + m] * Ry[3 * m + j];
+                L[3 * i + j] *= 0.5 + 1.5 * r[2 + j];
+            }
+        L[1] += 0.3 * r[5];
+        double t[3] = {40 * r[6] - 20, 40 * r[7] - 20, 12 + 30 * r[8]};
+        double W[16] = {L[0], L[1], L[2], t[0], L[3], L[4], L[5], t[1], L[6], L[7], L[8], t[2], 0, 0, 0, 1};
+        double plo[3] = {-1 - r[9], -1, -2 * r[10]}, phi[3] = {1, 1 + r[11], 1};
+        double wlo[3] = {t[0] - 10, t[1] - 10, t[2] - 10}, whi[3] = {t[0] + 10, t[1] + 10, t[2] + 10};
+        double corner[8][3];
+        if (gls_occlusion_box(&c, C, W, plo, phi, wlo, whi, corner))
+            continue; /* reaches the near plane: never drawn */
+        /* the camera centre in the box's frame: L^-1 (C - t) by Cramer */
+        double det = L[0] * (L[4] * L[8] - L[5] * L[7]) - L[1] * (L[3] * L[8] - L[5] * L[6]) +
+                     L[2] * (L[3] * L[7] - L[4] * L[6]);
+        double v[3] = {-t[0], -t[1], -t[2]}, P[3];
+        for (int j = 0; j < 3; j++) {
+            double M[9];
+            memcpy(M, L, sizeof M);
+            for (int i = 0; i < 3; i++)
+                M[3 * i + j] = v[i];
+            P[j] = (M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) +
+                    M[2] * (M[3] * M[7] - M[4] * M[6])) / det;
+        }
+        int near_plane = 0;
+        for (int j = 0; j < 3; j++)
+            near_plane |= fabs(P[j] - plo[j]) < 0.01 || fabs(P[j] - phi[j]) < 0.01; /* within the padding */
+        if (near_plane)
+            continue;
+        uint8_t front[6];
+        int n = gls_occlusion_faces(corner, front);
+        /* faces: z low, z high, y low, y high, x low, x high */
+        int want[6] = {P[2] < plo[2], P[2] > phi[2], P[1] < plo[1], P[1] > phi[1], P[0] < plo[0], P[0] > phi[0]};
+        int wn = 0;
+        for (int f = 0; f < 6; f++) {
+            bad += front[f] != want[f];
+            wn += want[f];
+        }
+        bad += n != wn;
+        counts[n < 4 ? n : 0]++;
+        checked++;
+    }
+    printf("  %d boxes: %d, %d, %d with 1, 2, 3 faces seen; %d wrong\n", checked, counts[1], counts[2], counts[3],
+           bad);
+    CHECK(checked > 1000 && counts[1] > 0 && counts[2] > 0 && counts[3] > 0);
+    CHECK(bad == 0);
+}
+
+/* A tree: a trunk (radius 0.3, 0 to 2 up) and an ellipsoid crown (radius
+ * 2.5, 2 to 9 up), quad strips of 20 quads. */
+static void tree(tb *t)
+{
+    gls_vec4 p[42];
+    for (int k = 0; k < 12; k++) {
+        for (int s = 0; s <= 20; s++)
+            for (int e = 0; e < 2; e++) {
+                int ring = k + e;
+                double y = ring == 0 ? 0 : 5.5 - 3.5 * cos(M_PI * (ring - 1) / 11);
+                double rad = ring <= 1 ? 0.3 : 2.5 * sin(M_PI * (ring - 1) / 11), a = 2 * M_PI * s / 20;
+                p[2 * s + e] = (gls_vec4){rad * cos(a), y, rad * sin(a), 1};
+            }
+        tb_prim4(t, GLS_PRIM_QSTRIP, 42, p, NULL, NULL);
+    }
+}
+
+/* Every triangle of proto p lies wholly in one of its test boxes; the
+ * boxes' summed volume (sides at least min_side). */
+static double check_boxes(const gls_scene *s, uint32_t p, int *outside)
+{
+    const gls_proto *pr = &s->protos[p];
+    *outside = 0;
+    for (uint32_t c = pr->first_chunk; c < pr->first_chunk + pr->nchunks; c++)
+        for (uint32_t v = s->chunks[c].first; v < s->chunks[c].first + s->chunks[c].count; v += 3) {
+            int in_one = 0;
+            for (uint32_t b = 0; b < pr->ntboxes && !in_one; b++) {
+                const gls_tbox *t = &s->tboxes[pr->first_tbox + b];
+                int in = 1;
+                for (int q = 0; q < 3; q++)
+                    for (int j = 0; j < 3; j++) {
+                        double x = s->exact[3 * ((size_t)v + q) + j];
+                        in &= x >= t->lo[j] && x <= t->hi[j];
+                    }
+                in_one = in;
+            }
+            *outside += !in_one;
+        }
+    double vol = 0;
+    for (uint32_t b = 0; b < pr->ntboxes; b++) {
+        const gls_tbox *t = &s->tboxes[pr->first_tbox + b];
+        vol += (t->hi[0] - t->lo[0]) * (t->hi[1] - t->lo[1]) * (t->hi[2] - t->lo[2]);
+    }
+    return vol;
+}
+
+static void test_test_boxes(void)
+{
+    char err[256];
+    for (int shape = 0; shape < 3; shape++) {
+        tb t;
+        tb_init(&t);
+        uint32_t obj = tb_object(&t, "thing", 0);
+        if (shape == 0) {
+            tree(&t);
+        } else if (shape == 1) { /* one triangle */
+            double q[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+            tb_poly(&t, 3, q);
+        } else { /* a flat L in the plane z = 0: a pole and a plate */
+            tb_rect_z(&t, -0.05, 0, 0.05, 3, 0);
+            tb_rect_z(&t, -1, 3, 1, 4, 0);
+        }
+        tb_object(&t, "top", 1);
+        for (int i = 0; i < 3; i++) {
+            tb_op0(&t, GLS_OP_PUSH);
+            tb_trans(&t, 10.0 * i, 0, 0);
+            tb_call(&t, obj);
+            tb_op0(&t, GLS_OP_POP);
+        }
+        gls_bundle *b = tb_finish(&t);
+        gls_scene s[2];
+        CHECK(gls_scene_load(b, &s[0], err, sizeof err) == 0 && gls_scene_load(b, &s[1], err, sizeof err) == 0);
+        uint32_t p = s[0].inst[1].proto;
+        const gls_proto *pr = &s[0].protos[p];
+        int outside;
+        double vol = check_boxes(&s[0], p, &outside);
+        double whole = (pr->hi[0] - pr->lo[0]) * (pr->hi[1] - pr->lo[1]) * (pr->hi[2] - pr->lo[2]);
+        printf("  %s: %u triangles, %u test boxes, %d triangles outside them, volume %.3f of the proto box's %.3f\n",
+               shape == 0 ? "tree" : shape == 1 ? "triangle" : "flat L", pr->ntris, pr->ntboxes, outside, vol, whole);
+        CHECK(outside == 0);
+        CHECK(pr->ntboxes >= 1 && pr->ntboxes <= GLS_PROTO_TEST_BOXES);
+        /* deterministic: a second load gives the same boxes */
+        CHECK(s[1].ntboxes == s[0].ntboxes &&
+              memcmp(s[0].tboxes, s[1].tboxes, s[0].ntboxes * sizeof *s[0].tboxes) == 0);
+        if (shape == 0) {
+            /* the trunk alone in one box; the crown in slabs: far less
+             * volume than the one box */
+            int trunk = 0;
+            for (uint32_t k = 0; k < pr->ntboxes; k++) {
+                const gls_tbox *x = &s[0].tboxes[pr->first_tbox + k];
+                trunk |= fabs(x->lo[1]) < 1e-12 && fabs(x->hi[1] - 2) < 1e-12 && fabs(x->hi[0] - 0.3) < 1e-12 &&
+                         fabs(x->lo[2] + 0.3) < 1e-3;
+            }
+            CHECK(trunk);
+            CHECK(pr->ntboxes >= 4 && vol < 0.75 * whole);
+        } else if (shape == 1) {
+            CHECK(pr->ntboxes == 1 && memcmp(s[0].tboxes[pr->first_tbox].lo, pr->lo, sizeof pr->lo) == 0 &&
+                  memcmp(s[0].tboxes[pr->first_tbox].hi, pr->hi, sizeof pr->hi) == 0);
+        } else {
+            /* flat: split by area, pole apart from plate */
+            CHECK(pr->ntboxes >= 2);
+            double area = 0;
+            for (uint32_t k = 0; k < pr->ntboxes; k++) {
+                const gls_tbox *x = &s[0].tboxes[pr->first_tbox + k];
+                area += (x->hi[0] - x->lo[0]) * (x->hi[1] - x->lo[1]);
+            }
+            printf("  flat L: boxes' area %.3f (the one box's 8, the L's own 2.3)\n", area);
+            CHECK(area < 2.5);
+        }
+        gls_scene_free(&s[0]), gls_scene_free(&s[1]);
+        gls_bundle_free(b);
+    }
 }
 
 /* A unit cube at the origin (x, z -0.5..0.5, y -1..0). */
@@ -227,6 +417,8 @@ static void test_same_image(void)
 int main(void)
 {
     RUN(test_box_margin);
+    RUN(test_front_faces);
+    RUN(test_test_boxes);
     ctx = tb_glctx(GLS_BACKEND_AUTO, "occlusion");
     RUN(test_same_image);
     gls_glctx_destroy(ctx);
