@@ -26,9 +26,11 @@
  *          first frame (bundle, scene and GL buffers), geometry and table
  *          gls_scene_memory's bytes, setup the seconds to build the
  *          bundle and the scene and draw the first frame; then "occluded
- *          O same S": items the first timed frame skipped as occluded, and
- *          S = 1 when that frame's colour and depth are byte-identical to
- *          the same frame drawn with occlusion culling off (0 otherwise). */
+ *          O same S showing V": items the first timed frame skipped as
+ *          occluded, S = 1 when that frame's colour and depth are
+ *          byte-identical to the same frame drawn with occlusion culling
+ *          off (0 otherwise), and V the instances that show at some pixel
+ *          centre of that frame (its ground-truth id pass). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,6 +39,7 @@
 #include <time.h>
 #include "player_scene.h"
 #include "random_order.h"
+#include "gt_pass.h"
 #include "scene_cull.h"
 
 #define FOREST_N 100         /* trees a side: 10,000 instances            */
@@ -278,7 +281,20 @@ int main(int argc, char **argv)
         gls_render_pass(r, &c0, 0, 0);
         gls_render_read_rgba(r, rgba2);
         gls_render_read_z(r, z2);
-        printf(" occluded %u same %d\n", occluded, memcmp(rgba, rgba2, np * 4) == 0 && memcmp(z, z2, np * 4) == 0);
+        /* the instances that show at some pixel centre (the ground-truth
+         * id pass): what a perfect occlusion test would keep */
+        uint32_t *ids = malloc(np * sizeof *ids), shown = 0;
+        uint8_t *seen = calloc((size_t)sc.ninst + 1, 1);
+        if (!ids || !seen || gls_gt_render(r, &c0, ids, NULL, NULL, err, sizeof err)) {
+            fprintf(stderr, "instances_bench: %s\n", ids && seen ? err : "out of memory");
+            return 1;
+        }
+        for (size_t i = 0; i < np; i++)
+            if (ids[i] && !seen[ids[i]])
+                seen[ids[i]] = 1, shown++;
+        free(ids), free(seen);
+        printf(" occluded %u same %d showing %u\n", occluded, memcmp(rgba, rgba2, np * 4) == 0 && memcmp(z, z2, np * 4) == 0,
+               shown);
         free(rgba2), free(z2);
         free(ivis), free(vis);
     } else {
