@@ -56,34 +56,34 @@ static void explain_backend(FILE *out, const gls_play_opts *o, const gls_glctx *
 
 /* What occlusion culling (occlusion.h) does with camera c's first frame:
  * the plan only; what the queries hide is known when GL has drawn. */
-static void explain_occlusion(FILE *out, gls_occlusion *po, const gls_scene *s, const gls_camera *c,
+static void explain_occlusion(FILE *out, gls_occlusion *occ, const gls_scene *s, const gls_camera *c,
                               const uint8_t *vis, const gls_play_opts *o)
 {
-    gls_occlusion occ = *po;
     double C[3];
     gls_camera_centre(c, C);
     if (o->occlusion == GLS_OCCLUSION_OFF) {
         fprintf(out, "    occlusion culling: off (--occlusion off)\n");
         return;
     }
-    int rc = gls_occlusion_plan(&occ, (gls_occlusion_mode)o->occlusion, s, c, C, vis);
+    int rc = gls_occlusion_plan(occ, (gls_occlusion_mode)o->occlusion, s, c, C, vis);
     if (rc > 0) {
-        uint32_t first = 0;
+        uint32_t first = 0, last = occ->ntested - 1;
         for (uint32_t i = 0; i < s->nitems; i++)
-            first += occ.occluder[i];
-        fprintf(out, "    occlusion culling: %u boxes tested in occlusion queries, nearest first, behind %u draw items "
-                     "drawn depth-only (boxes over the image %.1f times)\n", occ.ntested, first, occ.overdraw);
+            first += occ->occluder[i];
+        fprintf(out, "    occlusion culling: %u units tested in occlusion queries (%u triangles of their test boxes' "
+                     "front faces), nearest first, behind %u draw items drawn depth-only (boxes over the image %.1f "
+                     "times)\n",
+                occ->ntested, (occ->box_first[last] + occ->box_n[last]) / 3, first, occ->overdraw);
     } else if (rc == 0) {
         fprintf(out, "    occlusion culling: not used (%s%s; boxes over the image %.1f times, %u boxes, %llu vertices; "
                      "auto needs %.0f, %u and %u)\n",
                 o->occlusion == GLS_OCCLUSION_AUTO ? "auto" : "nothing to test",
-                o->occlusion == GLS_OCCLUSION_AUTO ? ", too little to gain" : "", occ.overdraw, occ.nunits,
-                (unsigned long long)occ.total_verts, GLS_OCCLUSION_MIN_OVERDRAW, GLS_OCCLUSION_MIN_UNITS,
+                o->occlusion == GLS_OCCLUSION_AUTO ? ", too little to gain" : "", occ->overdraw, occ->nunits,
+                (unsigned long long)occ->total_verts, GLS_OCCLUSION_MIN_OVERDRAW, GLS_OCCLUSION_MIN_UNITS,
                 GLS_OCCLUSION_MIN_VERTS);
     } else {
         fprintf(out, "    occlusion culling: out of memory, not used\n");
     }
-    *po = occ; /* its buffers, reused by the next camera */
 }
 
 /* Instances, their memory, and what each camera culls in its first
