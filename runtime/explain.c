@@ -67,13 +67,13 @@ static void explain_occlusion(FILE *out, gls_occlusion *occ, const gls_scene *s,
     }
     int rc = gls_occlusion_plan(occ, (gls_occlusion_mode)o->occlusion, s, c, C, vis);
     if (rc > 0) {
-        uint32_t first = 0, last = occ->ntested - 1;
+        uint32_t first = 0;
         for (uint32_t i = 0; i < s->nitems; i++)
             first += occ->occluder[i];
         fprintf(out, "    occlusion culling: %u units tested in occlusion queries (%u triangles of their test boxes' "
-                     "front faces), nearest first, behind %u draw items drawn depth-only (boxes over the image %.1f "
+                     "front faces), nearest first, after %u draw items drawn untested (boxes over the image %.1f "
                      "times)\n",
-                occ->ntested, (occ->box_first[last] + occ->box_n[last]) / 3, first, occ->overdraw);
+                occ->ntested, occ->box_verts / 3, first, occ->overdraw);
     } else if (rc == 0) {
         fprintf(out, "    occlusion culling: not used (%s%s; boxes over the image %.1f times, %u boxes, %llu vertices; "
                      "auto needs %.0f, %u and %u)\n",

@@ -94,20 +94,18 @@ static const uint8_t box_tris[GLS_OCCLUSION_BOX_VERTS] = {
     0, 4, 2, 2, 4, 6, /* x low  */ 1, 3, 5, 3, 7, 5, /* x high */
 };
 
-/* Units: runs of consecutive kept items of one instance (drawing order
- * keeps an instance's items of one draw key together), tested as one box
- * (their union): one query for a tree in four cells rather than four. */
-static int make_units(gls_occlusion *o, const gls_scene *s, const uint8_t *vis)
+/* Units: runs of consecutive items of one instance in the drawing order
+ * o->items[0 .. nitems_in) (an instance's items share its distance, so
+ * they follow each other), tested as one (the union of their boxes): one
+ * query for a tree in four cells rather than four. */
+static void make_units(gls_occlusion *o, const gls_scene *s)
 {
     o->nunits = 0;
-    for (uint32_t i = 0; i < s->nitems; i++) {
-        if (vis && !vis[i])
-            continue;
-        const gls_item *it = &s->items[i];
+    for (uint32_t k = 0; k < o->nitems_in; k++) {
+        const gls_item *it = &s->items[o->items[k]];
         const gls_chunk *ch = &s->chunks[it->chunk];
         uint32_t u = o->nunits;
-        if (u && s->items[o->items[o->unit_first[u - 1] + o->unit_n[u - 1] - 1]].inst == it->inst &&
-            o->unit_first[u - 1] + o->unit_n[u - 1] == o->nitems_in && o->unit_n[u - 1] < GLS_OCCLUSION_UNIT_ITEMS) {
+        if (u && s->items[o->items[k - 1]].inst == it->inst && o->unit_n[u - 1] < GLS_OCCLUSION_UNIT_ITEMS) {
             u--;
             o->unit_n[u]++;
             for (int j = 0; j < 3; j++) {
@@ -117,7 +115,7 @@ static int make_units(gls_occlusion *o, const gls_scene *s, const uint8_t *vis)
                 o->phi[3 * u + j] = fmax(o->phi[3 * u + j], ch->hi[j]);
             }
         } else {
-            o->unit_first[u] = o->nitems_in, o->unit_n[u] = 1, o->unit_verts[u] = 0;
+            o->unit_first[u] = k, o->unit_n[u] = 1, o->unit_verts[u] = 0;
             memcpy(o->lo + 3 * u, it->lo, sizeof it->lo);
             memcpy(o->hi + 3 * u, it->hi, sizeof it->hi);
             memcpy(o->plo + 3 * u, ch->lo, sizeof ch->lo);
@@ -125,9 +123,7 @@ static int make_units(gls_occlusion *o, const gls_scene *s, const uint8_t *vis)
             o->nunits++;
         }
         o->unit_verts[u] += ch->count;
-        o->items[o->nitems_in++] = i;
     }
-    return 0;
 }
 
 /* The units' boxes' projected areas (bounding rectangles within the
@@ -150,14 +146,14 @@ static int grow(gls_occlusion *o, uint32_t n)
 {
     if (o->cap >= n)
         return 0;
-    free(o->occluder), free(o->tested), free(o->order), free(o->key), free(o->items);
+    free(o->occluder), free(o->tested), free(o->key), free(o->items);
     free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
-    free(o->plo), free(o->phi), free(o->box_first), free(o->box_n);
+    free(o->plo), free(o->phi), free(o->box_first), free(o->box_n), free(o->utested);
     o->occluder = malloc(n);
+    o->utested = malloc(n);
     o->box_first = malloc(n * sizeof *o->box_first);
     o->box_n = malloc(n * sizeof *o->box_n);
     o->tested = malloc(n * sizeof *o->tested);
-    o->order = malloc(n * sizeof *o->order);
     o->key = malloc(n * sizeof *o->key);
     o->items = malloc(n * sizeof *o->items);
     o->unit_first = malloc(n * sizeof *o->unit_first);
@@ -168,8 +164,8 @@ static int grow(gls_occlusion *o, uint32_t n)
     o->plo = malloc(3 * n * sizeof *o->plo);
     o->phi = malloc(3 * n * sizeof *o->phi);
     o->cap = n;
-    if (!o->occluder || !o->tested || !o->order || !o->key || !o->items || !o->unit_first || !o->unit_n ||
-        !o->unit_verts || !o->lo || !o->hi || !o->plo || !o->phi || !o->box_first || !o->box_n) {
+    if (!o->occluder || !o->tested || !o->key || !o->items || !o->unit_first || !o->unit_n ||
+        !o->unit_verts || !o->lo || !o->hi || !o->plo || !o->phi || !o->box_first || !o->box_n || !o->utested) {
         o->cap = 0;
         return -1;
     }
@@ -242,35 +238,43 @@ int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scen
                        const double C[3], const uint8_t *vis)
 {
     o->ntested = 0, o->nunits = 0, o->nitems_in = 0, o->overdraw = 0, o->total_verts = 0;
-    if (mode == GLS_OCCLUSION_OFF || s->nitems < 2)
-        return 0;
-    if (grow(o, s->nitems))
+    if (grow(o, s->nitems ? s->nitems : 1))
         return -1;
+    /* the drawing order: the kept items by the distance from C to their
+     * instance's world box, then by index (scene.h: by key, instance and
+     * cell) */
+    for (uint32_t i = 0; i < s->nitems; i++) {
+        if (vis && !vis[i])
+            continue;
+        const gls_instance *in = &s->inst[s->items[i].inst];
+        o->key[i] = box_distance(C, in->lo, in->hi);
+        o->items[o->nitems_in++] = i;
+    }
+    sort_key = o->key;
+    if (o->nitems_in > 1)
+        qsort(o->items, o->nitems_in, sizeof *o->items, by_key);
+    make_units(o, s);
     memset(o->occluder, 0, s->nitems);
-    make_units(o, s, vis);
+    memset(o->utested, 0, o->nunits);
     uint64_t total = 0;
     uint32_t n = o->nunits;
-    for (uint32_t u = 0; u < n; u++) {
+    for (uint32_t u = 0; u < n; u++)
         total += o->unit_verts[u];
-        o->key[u] = box_distance(C, o->lo + 3 * u, o->hi + 3 * u);
-        o->order[u] = u;
-    }
     o->total_verts = total;
-    o->overdraw = overdraw(o, c);
-    if (n < 2 || (mode == GLS_OCCLUSION_AUTO && (total < GLS_OCCLUSION_MIN_VERTS || n < GLS_OCCLUSION_MIN_UNITS ||
-                                                 o->overdraw < GLS_OCCLUSION_MIN_OVERDRAW)))
+    if (mode == GLS_OCCLUSION_OFF || n < 2)
         return 0;
-    sort_key = o->key;
-    qsort(o->order, n, sizeof *o->order, by_key);
-    /* the nearest units, at least one, up to the share of the vertices */
+    o->overdraw = overdraw(o, c);
+    if (mode == GLS_OCCLUSION_AUTO &&
+        (total < GLS_OCCLUSION_MIN_VERTS || n < GLS_OCCLUSION_MIN_UNITS || o->overdraw < GLS_OCCLUSION_MIN_OVERDRAW))
+        return 0;
+    /* the nearest units, at least one, up to the share of the vertices:
+     * drawn untested, first */
     uint64_t occ = 0;
     uint32_t k = 0;
     do {
-        uint32_t u = o->order[k++];
-        mark_unit(o, u, o->occluder);
-        occ += o->unit_verts[u];
-    } while (k < n && (double)(occ + o->unit_verts[o->order[k]]) <=
-                          GLS_OCCLUSION_OCCLUDER_SHARE * (double)total);
+        mark_unit(o, k, o->occluder);
+        occ += o->unit_verts[k++];
+    } while (k < n && (double)(occ + o->unit_verts[k]) <= GLS_OCCLUSION_OCCLUDER_SHARE * (double)total);
     size_t need = (size_t)(n - k) * GLS_PROTO_TEST_BOXES * GLS_OCCLUSION_FRONT_VERTS * s->stride;
     if (need > o->box_cap) {
         uint8_t *nb = realloc(o->boxes, need);
@@ -279,8 +283,7 @@ int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scen
         o->boxes = nb, o->box_cap = need;
     }
     uint32_t nv = 0;
-    for (; k < n; k++) {
-        uint32_t u = o->order[k];
+    for (uint32_t u = k; u < n; u++) {
         const gls_instance *in = &s->inst[s->items[o->items[o->unit_first[u]]].inst];
         const gls_proto *pr = &s->protos[in->proto];
         double corner[GLS_PROTO_TEST_BOXES][8][3];
@@ -301,32 +304,23 @@ int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scen
             near = gls_occlusion_box(c, C, in->world, lo, hi, o->lo + 3 * u, o->hi + 3 * u, corner[nb]) != 0;
             nb++;
         }
-        if (near || !nb) {
-            mark_unit(o, u, o->occluder); /* reaches the near plane: untested, an occluder */
-            continue;
-        }
-        o->box_first[o->ntested] = nv;
+        if (near || !nb)
+            continue; /* reaches the near plane: drawn untested, in its turn */
+        o->box_first[u] = nv;
         for (uint32_t b = 0; b < nb; b++)
             nv += front_faces(corner[b], o->boxes + (size_t)nv * s->stride, s);
-        o->box_n[o->ntested] = nv - o->box_first[o->ntested];
+        o->box_n[u] = nv - o->box_first[u];
+        o->utested[u] = 1;
         o->tested[o->ntested++] = u;
     }
+    o->box_verts = nv;
     return o->ntested > 0;
 }
 
-void gls_occlusion_mark(const gls_occlusion *o, uint32_t t, uint8_t *m, uint8_t value)
-{
-    uint32_t u = o->tested[t];
-    for (uint32_t k = 0; k < o->unit_n[u]; k++)
-        m[o->items[o->unit_first[u] + k]] = value;
-}
-
-uint32_t gls_occlusion_items(const gls_occlusion *o, uint32_t t) { return o->unit_n[o->tested[t]]; }
-
 void gls_occlusion_free(gls_occlusion *o)
 {
-    free(o->occluder), free(o->tested), free(o->order), free(o->key), free(o->boxes), free(o->items);
+    free(o->occluder), free(o->tested), free(o->key), free(o->boxes), free(o->items);
     free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
-    free(o->plo), free(o->phi), free(o->box_first), free(o->box_n);
+    free(o->plo), free(o->phi), free(o->box_first), free(o->box_n), free(o->utested);
     memset(o, 0, sizeof *o);
 }

@@ -1,16 +1,18 @@
-/* Occlusion culling of draw items, the GL-free half: which items go into
- * the depth-only pre-pass (the occluders), which are tested, and the
- * padded boxes the test draws (render.c draws them in occlusion queries).
+/* The drawing order of a pass and occlusion culling of its draw items,
+ * the GL-free half: the order (nearest instances first), which units are
+ * drawn first untested (the occluders), which are tested, and the padded
+ * boxes the tests draw (render.c draws them in occlusion queries).
  *
- * Exactness (spec/bundle.md 9.3, "Occlusion culling"): an item is skipped only
- * when no sample of its padded box passes the depth test against the
- * occluders' depth.  Every fragment the item could draw lies behind the
- * box's front faces at that sample (the box contains it with a margin far
- * above float rounding), and the occluders are drawn again, in the
- * original order, in the real pass, so the skipped fragment could never
- * have been the nearest there, nor tied with it: the image is the same,
- * byte for byte, with and without occlusion culling.  Boxes that reach
- * the near plane are never tested (their clipped faces would leave holes).
+ * Exactness (spec/bundle.md 9.3, "Occlusion culling"): a unit is skipped
+ * only when no sample of its padded boxes passes the depth test against
+ * the depth the pass has drawn so far.  Every fragment the unit could draw
+ * lies behind the boxes' front faces at that sample (they contain it with
+ * a margin far above float rounding), and the pass draws every other unit
+ * in the same order as without culling, so the skipped fragment could
+ * never have been the nearest there, nor tied with it: the image is the
+ * same, byte for byte, with and without occlusion culling.  Boxes that
+ * reach the near plane are never tested (their clipped faces would leave
+ * holes).
  */
 #ifndef GLS_OCCLUSION_H
 #define GLS_OCCLUSION_H
@@ -27,16 +29,16 @@ typedef enum {
 } gls_occlusion_mode;
 
 /* AUTO tests only when the items the frustum keeps hold at least this many
- * vertices: below it the pre-pass and the queries cost more than they
+ * vertices: below it the queries and their waits cost more than they
  * save (bench/instances_bench measures both sides). */
 #define GLS_OCCLUSION_MIN_VERTS 200000u
-/* The occluders: the nearest items (by the distance from the camera centre
- * to their box) holding up to this fraction of the kept vertices. */
+/* The occluders: the first units of the drawing order holding up to this
+ * fraction of the kept vertices, drawn before anything is tested. */
 #define GLS_OCCLUSION_OCCLUDER_SHARE 0.03
-/* The tested units are tested in this many rounds, nearest first, each
- * against the occluders and the units of earlier rounds that showed
- * (measured on the bench's forest: 16 hide fewer, 64 and 128 cost the
- * same as 32). */
+/* The tested units are tested in this many rounds, in the drawing order,
+ * each against everything drawn before it (measured on the bench's forest
+ * with one box per unit and a depth-only pre-pass: 16 hide fewer, 64 and
+ * 128 cost the same as 32). */
 #define GLS_OCCLUSION_ROUNDS 32u
 /* Once 1/GLS_OCCLUSION_PROBE of the tested units are tested, testing
  * stops if fewer than 1 in GLS_OCCLUSION_STOP of them were hidden: the
@@ -61,16 +63,21 @@ typedef enum {
 #define GLS_OCCLUSION_UNIT_ITEMS 8u
 
 typedef struct {
-    uint8_t *occluder;  /* per item: 1 if drawn in the pre-pass         */
-    uint32_t *tested;   /* units whose box is drawn in a query, nearest
-                           first                                         */
-    uint32_t ntested;
-    /* units: runs of kept items of one instance (their indices in
-       items[unit_first .. + unit_n]), their vertices and union box */
+    /* the drawing order: the kept items (indices into the scene's items)
+       by the distance from the camera centre to their instance's world
+       box, then by index; and its units, runs of consecutive items of
+       one instance (items[unit_first .. + unit_n]), with their vertices
+       and union boxes */
     uint32_t *items, nitems_in, *unit_first, *unit_n, nunits;
     uint64_t *unit_verts;
-    double *lo, *hi;    /* world box (for the distance and the overdraw) */
-    double *plo, *phi;  /* box in the instance's frame (the one tested)  */
+    double *lo, *hi;    /* world box (for the overdraw and the padding)  */
+    double *plo, *phi;  /* box in the instance's frame (clips the tests) */
+    /* the plan, when gls_occlusion_plan returns 1 */
+    uint8_t *occluder;  /* per item: 1 if in the nearest units, drawn
+                           first, untested                              */
+    uint8_t *utested;   /* per unit: 1 if tested before it is drawn      */
+    uint32_t *tested;   /* the tested units, in the drawing order        */
+    uint32_t ntested;
     uint8_t *boxes;     /* the tested units' boxes, vertices of
                            `stride` bytes: each padded box's faces that
                            face the camera, relative to the camera centre
@@ -78,21 +85,23 @@ typedef struct {
                            zero, so the scene's own attribute pointers
                            can read them                                */
     uint32_t *box_first, *box_n; /* per tested unit: its vertices there */
+    uint32_t box_verts;          /* all of them                          */
     /* why: the plan's figures (gls_occlusion_plan fills them in even when
        it returns 0 because AUTO finds too little to gain) */
     double overdraw;
     uint64_t total_verts;
     /* scratch */
-    uint32_t *order;
     double *key;
     size_t cap, box_cap;
 } gls_occlusion;
 
-/* Plan a pass of camera c (centre C) over the items vis keeps: 1 when
- * there are occluders and items to test, 0 when the pass should draw as
- * it is (mode OFF, too little to gain, nothing to test), -1 when out of
- * memory (then draw as it is too).  stride and color_offset are the
- * scene's vertex layout (has_color: white there). */
+/* The drawing order of a colour pass of camera c (centre C) over the
+ * items vis keeps (NULL: all), and its occlusion plan: 1 when there are
+ * units to test, 0 when every unit is drawn untested (mode OFF, too
+ * little to gain, nothing to test), -1 when out of memory (then there
+ * is no order either).  The order depends only on C, the scene and
+ * which items are kept, so every pass of a camera (colour, ids, flow)
+ * resolves exact depth ties alike, with occlusion culling or without. */
 int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scene *s, const gls_camera *c,
                        const double C[3], const uint8_t *vis);
 
@@ -115,11 +124,6 @@ int gls_occlusion_box(const gls_camera *c, const double C[3], const double W[16]
  * and wherever a back face would pass the depth test, the front face
  * nearer on the same ray passes too. */
 int gls_occlusion_faces(const double corner[8][3], uint8_t front[6]);
-
-/* Set m[i] = value for the items of tested unit t (o->tested[t]); how
- * many items it has. */
-void gls_occlusion_mark(const gls_occlusion *o, uint32_t t, uint8_t *m, uint8_t value);
-uint32_t gls_occlusion_items(const gls_occlusion *o, uint32_t t);
 
 void gls_occlusion_free(gls_occlusion *o);
 

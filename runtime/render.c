@@ -69,7 +69,8 @@ struct gls_renderer {
     GLuint occ_vbo;            /* the tested boxes                      */
     GLuint *occ_q;             /* one query per tested box              */
     uint32_t occ_nq;
-    uint8_t *ovis;             /* the pass's items after occlusion      */
+    uint32_t *near_at;         /* per item: its first vertex in near_vbo,
+                                  UINT32_MAX if drawn from vbo          */
     uint32_t occluded;         /* items the last colour pass skipped    */
 };
 
@@ -248,9 +249,9 @@ gls_renderer *gls_renderer_create(gls_glctx *ctx, const gls_bundle *b, const gls
     r->near_list = malloc((scene->nitems ? scene->nitems : 1) * sizeof *r->near_list);
     r->ivis = malloc(scene->ninst ? scene->ninst : 1);
     r->vis = malloc(scene->nitems ? scene->nitems : 1);
-    r->ovis = malloc(scene->nitems ? scene->nitems : 1);
+    r->near_at = malloc((scene->nitems ? scene->nitems : 1) * sizeof *r->near_at);
     r->occ_mode = GLS_OCCLUSION_AUTO;
-    if (!r->near_list || !r->ivis || !r->vis || !r->ovis) {
+    if (!r->near_list || !r->ivis || !r->vis || !r->near_at) {
         snprintf(err, errlen, "out of memory");
         gls_renderer_destroy(r);
         return NULL;
@@ -467,17 +468,22 @@ static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double 
     const gls_scene *s = r->scene;
     uint32_t nnear = 0;
     size_t nv = 0;
-    for (uint32_t i = 0; i < s->nitems; i++)
+    for (uint32_t i = 0; i < s->nitems; i++) {
+        r->near_at[i] = UINT32_MAX;
         if (needs_reanchor(s, &s->items[i], C, c->near)) {
             r->near_list[nnear++] = i;
             nv += s->chunks[s->items[i].chunk].count;
         }
+    }
     if (!nnear)
         return 0;
     if (nv > r->near_cap) {
         uint8_t *nb = realloc(r->near_buf, nv * s->stride);
-        if (!nb)
-            return 0; /* out of memory: those items are not drawn */
+        if (!nb) {
+            for (uint32_t k = 0; k < nnear; k++)
+                r->near_at[r->near_list[k]] = UINT32_MAX;
+            return 0; /* out of memory: drawn from the static buffer */
+        }
         r->near_buf = nb;
         r->near_cap = nv;
     }
@@ -486,6 +492,7 @@ static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double 
         const gls_item *it = &s->items[r->near_list[k]];
         const gls_chunk *ch = &s->chunks[it->chunk];
         const double *W = s->inst[it->inst].world;
+        r->near_at[r->near_list[k]] = (uint32_t)at;
         memcpy(r->near_buf + at * s->stride, s->verts + (size_t)ch->first * s->stride, (size_t)ch->count * s->stride);
         for (uint32_t v = 0; v < ch->count; v++) {
             const double *q = s->exact + 3 * ((size_t)ch->first + v);
@@ -538,104 +545,143 @@ static void draw_all(gls_renderer *r, const gls_camera *c, const double C[3], ui
         gls_lighting_end(r->light);
 }
 
-/* Occlusion culling of a colour pass (occlusion.h), with the projection,
- * viewport and scissor of the pass set and its depth cleared.  With depth
- * writes on and colour writes off: the occluders drawn; then, nearest
- * first, a round of tested items at a time: their padded boxes drawn in
- * occlusion queries (depth writes off), and the items whose box showed
- * drawn, so that they hide the farther rounds.  Then the depth is cleared
- * again and the pass draws what is left in its own order, as if nothing
- * had happened.  Returns the items to draw: vis less those no sample of
- * whose box passed (vis itself when nothing is tested). */
-static const uint8_t *occlusion_cull(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear,
-                                     const uint8_t *vis)
+/* Draw unit u of the plan's drawing order: its items in turn, each from
+ * the static buffer or, re-anchored, the near one (*bound: which buffer
+ * the pointers read, -1 none). */
+static void draw_unit(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t u, int *bound,
+                      const gls_drawkey **prev)
+{
+    const gls_scene *s = r->scene;
+    const gls_occlusion *o = &r->occ;
+    for (uint32_t j = 0; j < o->unit_n[u]; j++) {
+        uint32_t i = o->items[o->unit_first[u] + j];
+        int near = r->near_at[i] != UINT32_MAX;
+        if (*bound != near) {
+            r->gl.glBindBuffer(GL_ARRAY_BUFFER, near ? r->near_vbo : r->vbo);
+            set_pointers(r, s);
+            *bound = near;
+        }
+        draw_item(r, c, &s->items[i], near, C, near ? r->near_at[i] : s->chunks[s->items[i].chunk].first, prev);
+    }
+}
+
+/* Test tested units t0 .. t1-1 of the plan (their boxes in occlusion
+ * queries against the depth drawn so far, depth and colour writes off)
+ * and mark those no sample of whose boxes passed hidden (utested 2);
+ * how many. */
+static uint32_t test_units(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t t0, uint32_t t1)
 {
     static const double I[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     const gls_scene *s = r->scene;
     gls_occlusion *o = &r->occ;
-    r->occluded = 0;
-    if (!r->ovis || gls_occlusion_plan(o, r->occ_mode, s, c, C, vis) <= 0)
-        return vis;
-    if (o->ntested > r->occ_nq) {
-        GLuint *q = realloc(r->occ_q, o->ntested * sizeof *q);
-        if (!q)
-            return vis;
-        r->occ_q = q;
-        r->gl.glGenQueries((GLsizei)(o->ntested - r->occ_nq), q + r->occ_nq);
-        r->occ_nq = o->ntested;
-    }
-    if (vis)
-        memcpy(r->ovis, vis, s->nitems);
-    else
-        memset(r->ovis, 1, s->nitems);
+    double MV[16];
+    float f[16];
+    item_modelview(c, I, C, MV); /* the boxes are relative to C */
+    gls_mat_to_gl(MV, f);
+    glLoadMatrixf(f);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    /* without an alpha test, a fragment's colour cannot decide whether it
-     * is drawn: the depth-only draws fetch and interpolate no colour (a
-     * lit pass keeps its program, and with it its arrays) */
-    int slim = s->has_color && !(s->features & GLS_FEAT_ALPHA_TEST) && !r->light;
-    if (slim)
-        glDisableClientState(GL_COLOR_ARRAY);
-    draw_all(r, c, C, nnear, o->occluder);
-    memset(o->occluder, 0, s->nitems); /* from here: the round's items that showed */
+    glDepthMask(GL_FALSE);
+    glDisable(GL_TEXTURE_2D);
+    if (!s->has_color)
+        glColor4ub(255, 255, 255, 255); /* alpha 1: the alpha test passes */
     r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->occ_vbo);
-    r->gl.glBufferData(GL_ARRAY_BUFFER,
-                       (GLsizeiptr)(((size_t)o->box_first[o->ntested - 1] + o->box_n[o->ntested - 1]) * s->stride),
-                       o->boxes, GL_STREAM_DRAW);
+    set_pointers(r, s);
+    for (uint32_t k = t0; k < t1; k++) {
+        uint32_t u = o->tested[k];
+        r->gl.glBeginQuery(GL_ANY_SAMPLES_PASSED, r->occ_q[k]);
+        glDrawArrays(GL_TRIANGLES, (GLint)o->box_first[u], (GLsizei)o->box_n[u]);
+        r->gl.glEndQuery(GL_ANY_SAMPLES_PASSED);
+    }
+    uint32_t hidden = 0;
+    for (uint32_t k = t0; k < t1; k++) {
+        GLuint any = 1;
+        r->gl.glGetQueryObjectuiv(r->occ_q[k], GL_QUERY_RESULT, &any);
+        if (!any) {
+            o->utested[o->tested[k]] = 2;
+            r->occluded += o->unit_n[o->tested[k]];
+            hidden++;
+        }
+    }
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    return hidden;
+}
+
+/* Draw the items vis keeps (NULL: all) in the drawing order of
+ * occlusion.h (nearest instances first), with the current projection,
+ * viewport and scissor.  occlude: a colour pass, which may test units
+ * before drawing them (spec/bundle.md 9.3): the nearest units are drawn
+ * first, untested; then, a round at a time, the next tested units' boxes
+ * are drawn in occlusion queries against the depth drawn so far, and the
+ * round's units are drawn in order, less those no sample of whose boxes
+ * passed.  Every unit that is drawn is drawn once, in the same order as
+ * without culling, so exact depth ties resolve alike with it and
+ * without. */
+static void draw_ordered(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear, const uint8_t *vis,
+                         int occlude)
+{
+    const gls_scene *s = r->scene;
+    gls_occlusion *o = &r->occ;
+    r->occluded = 0;
+    int plan = gls_occlusion_plan(o, occlude ? r->occ_mode : GLS_OCCLUSION_OFF, s, c, C, vis);
+    if (plan < 0) { /* out of memory: no order, the scene's own */
+        draw_all(r, c, C, nnear, vis);
+        return;
+    }
+    if (plan > 0 && o->ntested > r->occ_nq) {
+        GLuint *q = realloc(r->occ_q, o->ntested * sizeof *q);
+        if (!q) {
+            plan = 0;
+        } else {
+            r->occ_q = q;
+            r->gl.glGenQueries((GLsizei)(o->ntested - r->occ_nq), q + r->occ_nq);
+            r->occ_nq = o->ntested;
+        }
+    }
+    if (plan > 0) {
+        r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->occ_vbo);
+        r->gl.glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)o->box_verts * s->stride), o->boxes,
+                           GL_STREAM_DRAW);
+    }
+    /* a colour pass (the hooked one has its own program, a shadow map none) */
+    int lit = r->light && !r->hook && !r->depth_only, bound = -1;
+    if (lit)
+        gls_lighting_begin(r->light, s, c, r->shadows);
+    const gls_drawkey *prev = NULL;
     /* GLS_OCCLUSION_ROUNDS rounds (of at least 16 units): units tested in
      * one round do not hide each other, so fewer rounds hide less; each
      * round waits for its queries */
-    uint32_t round = o->ntested / GLS_OCCLUSION_ROUNDS + 1;
+    uint32_t round = plan > 0 ? o->ntested / GLS_OCCLUSION_ROUNDS + 1 : 0, t = 0, hidden = 0;
     if (round < 16)
         round = 16;
-    uint32_t hidden = 0;
-    for (uint32_t k0 = 0; k0 < o->ntested; k0 += round) {
-        uint32_t k1 = k0 + round < o->ntested ? k0 + round : o->ntested;
-        double MV[16];
-        float f[16];
-        item_modelview(c, I, C, MV); /* the boxes are relative to C */
-        gls_mat_to_gl(MV, f);
-        glLoadMatrixf(f);
-        glDepthMask(GL_FALSE);
-        glDisable(GL_TEXTURE_2D);
-        if (!s->has_color)
-            glColor4ub(255, 255, 255, 255); /* alpha 1: the alpha test passes */
-        r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->occ_vbo);
-        set_pointers(r, s);
-        for (uint32_t k = k0; k < k1; k++) {
-            r->gl.glBeginQuery(GL_ANY_SAMPLES_PASSED, r->occ_q[k]);
-            glDrawArrays(GL_TRIANGLES, (GLint)o->box_first[k], (GLsizei)o->box_n[k]);
-            r->gl.glEndQuery(GL_ANY_SAMPLES_PASSED);
+    int testing = plan > 0;
+    for (uint32_t u = 0; u < o->nunits;) {
+        if (!testing || !o->utested[u]) {
+            draw_unit(r, c, C, u++, &bound, &prev);
+            continue;
         }
-        uint32_t shown = 0;
-        for (uint32_t k = k0; k < k1; k++) {
-            GLuint any = 1;
-            r->gl.glGetQueryObjectuiv(r->occ_q[k], GL_QUERY_RESULT, &any);
-            if (any) {
-                gls_occlusion_mark(o, k, o->occluder, 1);
-                shown++;
-            } else {
-                gls_occlusion_mark(o, k, r->ovis, 0);
-                r->occluded += gls_occlusion_items(o, k);
-            }
-        }
-        glDepthMask(GL_TRUE);
-        hidden += k1 - k0 - shown;
-        /* an eighth tested and almost nothing hidden: the view overlaps
+        /* a round: the next tested units, and with them the untested
+         * ones (reaching the near plane) up to the next round's first */
+        uint32_t t1 = t + round < o->ntested ? t + round : o->ntested;
+        uint32_t v = t1 < o->ntested ? o->tested[t1] : o->nunits;
+        if (lit)
+            gls_lighting_end(r->light);
+        hidden += test_units(r, c, C, t, t1);
+        if (lit)
+            gls_lighting_begin(r->light, s, c, r->shadows);
+        bound = -1, prev = NULL; /* the tests changed the buffer, texture and colour */
+        for (; u < v; u++)
+            if (o->utested[u] != 2)
+                draw_unit(r, c, C, u, &bound, &prev);
+        t = t1;
+        /* a sixteenth tested and almost nothing hidden: the view overlaps
          * without hiding (sparse geometry in big boxes); the rest is drawn
-         * untested rather than pre-drawn and tested for nothing */
-        if (k1 >= o->ntested / GLS_OCCLUSION_PROBE && GLS_OCCLUSION_STOP * hidden < k1)
-            break;
-        if (shown && k1 < o->ntested) {
-            draw_all(r, c, C, nnear, o->occluder);
-            for (uint32_t k = k0; k < k1; k++)
-                gls_occlusion_mark(o, k, o->occluder, 0);
-        }
+         * untested rather than tested for nothing */
+        if (t >= o->ntested / GLS_OCCLUSION_PROBE && GLS_OCCLUSION_STOP * hidden < t)
+            testing = 0;
     }
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    if (slim)
-        glEnableClientState(GL_COLOR_ARRAY);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    return r->ovis;
+    if (lit)
+        gls_lighting_end(r->light);
 }
 
 void gls_renderer_set_background(gls_renderer *r, const float rgb[3])
@@ -711,7 +757,7 @@ void gls_render_tiles_rows(gls_renderer *r, const gls_camera *c, uint32_t n, con
             glScissor(x, y + (GLint)y0, (GLsizei)r->width, (GLsizei)rows);
         }
         load_projection(r, c, du[t], dv[t]);
-        draw_all(r, c, C, nnear, occlusion_cull(r, c, C, nnear, r->vis));
+        draw_ordered(r, c, C, nnear, r->vis, 1);
     }
     if (!mosaic && part)
         glDisable(GL_SCISSOR_TEST);
@@ -725,7 +771,7 @@ void gls_render_hooked(gls_renderer *r, const gls_camera *c, gls_render_item_hoo
     gls_scene_cull(r->scene, c, r->ivis, r->vis, &r->cull);
     load_projection(r, c, 0.0, 0.0);
     r->hook = hook, r->hook_ud = ud;
-    draw_all(r, c, C, nnear, r->vis);
+    draw_ordered(r, c, C, nnear, r->vis, 0);
     r->hook = NULL, r->hook_ud = NULL;
 }
 
@@ -786,7 +832,7 @@ void gls_render_mapped(gls_renderer *r, const gls_camera *c, const double m[6], 
     glMatrixMode(GL_PROJECTION);
     glLoadMatrixf(f);
     glMatrixMode(GL_MODELVIEW);
-    draw_all(r, c, C, r->nnear, occlusion_cull(r, c, C, r->nnear, vis));
+    draw_ordered(r, c, C, r->nnear, vis, 1);
 }
 
 void gls_render_read_rect(gls_renderer *r, uint32_t width, const uint32_t sc[4], uint8_t *rgba)
@@ -924,7 +970,7 @@ void gls_renderer_destroy(gls_renderer *r)
     if (r->occ_nq)
         r->gl.glDeleteQueries((GLsizei)r->occ_nq, r->occ_q);
     free(r->occ_q);
-    free(r->ovis);
+    free(r->near_at);
     gls_occlusion_free(&r->occ);
     free(r->near_buf);
     free(r->near_list);

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
+#include "gt_pass.h"
 #include "occlusion.h"
 #include "player.h"
 #include "player_scene.h"
@@ -414,6 +415,72 @@ static void test_same_image(void)
     gls_bundle_free(b);
 }
 
+/* Exact depth ties between instances resolve by the drawing order, the
+ * nearest instance first (occlusion.h), alike in the colour pass with
+ * occlusion culling on and off and in the id pass: two coplanar quads,
+ * the scene's first one farther from the camera centre, overlap; the
+ * overlap shows the nearer one's colour and id. */
+static void test_tie_order(void)
+{
+    tb t;
+    tb_init(&t);
+    uint32_t q = tb_object(&t, "quad", 0);
+    tb_rect_z(&t, -1, -1, 1, 1, 0);
+    tb_object(&t, "top", 1);
+    double x[2] = {-1.5, 0}; /* A: x -2.5..-0.5 (first, farther), B: x -1..1 */
+    for (int k = 0; k < 2; k++) {
+        tb_color(&t, k == 0, k == 1, 0, 1);
+        tb_op0(&t, GLS_OP_PUSH);
+        tb_trans(&t, x[k], 0, 5);
+        tb_call(&t, q);
+        tb_op0(&t, GLS_OP_POP);
+    }
+    gls_bundle *b = tb_finish(&t);
+    gls_scene s;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    gls_camera c = tb_front_camera(64, 48);
+    gls_renderer *r = gls_renderer_create(ctx, b, &s, err, sizeof err);
+    CHECK(r != NULL && gls_renderer_set_size(r, 64, 48, err, sizeof err) == 0);
+    if (!r)
+        return;
+    size_t n = (size_t)64 * 48;
+    uint8_t *rgba[2] = {malloc(4 * n), malloc(4 * n)};
+    uint32_t *ids = malloc(4 * n);
+    for (int on = 0; on < 2; on++) {
+        gls_renderer_set_occlusion(r, on ? GLS_OCCLUSION_ON : GLS_OCCLUSION_OFF);
+        gls_render_pass(r, &c, 0, 0);
+        gls_render_read_rgba(r, rgba[on]);
+    }
+    CHECK(gls_gt_render(r, &c, ids, NULL, NULL, err, sizeof err) == 0);
+    /* pixel columns: u = 31.5 + 100 x / 5; the overlap x -1..-0.5 is u
+     * 12..21, A alone u < 11, B alone u > 22; rows v 15..32 are inside */
+    int overlap_b = 0, overlap = 0, alone = 0, ids_agree = 0, px = 0;
+    for (uint32_t v = 16; v < 32; v++)
+        for (uint32_t u = 2; u < 40; u++) {
+            const uint8_t *p = rgba[0] + 4 * (v * 64 + u);
+            uint32_t id = ids[v * 64 + u];
+            int is_a = p[0] == 255 && p[1] == 0, is_b = p[0] == 0 && p[1] == 255;
+            if (u >= 13 && u <= 20)
+                overlap++, overlap_b += is_b;
+            if (u < 10)
+                alone += is_a;
+            if (u > 23)
+                alone += is_b;
+            px++;
+            ids_agree += (is_a && id == 2) || (is_b && id == 3);
+        }
+    printf("  coplanar overlap: %d of %d pixels show the nearer instance; ids agree with colours at %d of %d\n",
+           overlap_b, overlap, ids_agree, px);
+    CHECK(overlap > 100 && overlap_b == overlap && alone > 200);
+    CHECK(ids_agree == px);
+    CHECK(memcmp(rgba[0], rgba[1], 4 * n) == 0);
+    free(rgba[0]), free(rgba[1]), free(ids);
+    gls_renderer_destroy(r);
+    gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
 int main(void)
 {
     RUN(test_box_margin);
@@ -421,6 +488,7 @@ int main(void)
     RUN(test_test_boxes);
     ctx = tb_glctx(GLS_BACKEND_AUTO, "occlusion");
     RUN(test_same_image);
+    RUN(test_tie_order);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
 }
