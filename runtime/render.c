@@ -29,6 +29,7 @@
 #include "shadows.h"
 #include "scene_cull.h"
 #include "units.h"
+#include "vec.h"
 
 #ifndef GL_TEXTURE_MAX_ANISOTROPY
 #define GL_TEXTURE_MAX_ANISOTROPY 0x84FE
@@ -459,6 +460,31 @@ static void load_projection(gls_renderer *r, const gls_camera *c, double du, dou
     glMatrixMode(GL_MODELVIEW);
 }
 
+/* The normals of n vertices (float x 3 at v, stride bytes apart) from an
+ * instance's frame into the world by W's normal matrix, in double, each
+ * kept at its length: 1 for a given normal, 2 for a flat one (turned
+ * towards the camera by the shader), 0 for a degenerate triangle's. */
+static void normals_to_world(uint8_t *v, uint32_t n, size_t stride, const double W[16])
+{
+    double N[9];
+    m4_normal_matrix(W, N);
+    for (uint32_t k = 0; k < n; k++, v += stride) {
+        float f[3];
+        memcpy(f, v, sizeof f);
+        double len = sqrt((double)f[0] * f[0] + (double)f[1] * f[1] + (double)f[2] * f[2]), m[3], ml = 0;
+        for (int i = 0; i < 3; i++) {
+            m[i] = N[3 * i] * f[0] + N[3 * i + 1] * f[1] + N[3 * i + 2] * f[2];
+            ml += m[i] * m[i];
+        }
+        ml = sqrt(ml);
+        if (!(len > 0) || !(ml > 0))
+            continue;
+        for (int i = 0; i < 3; i++)
+            f[i] = (float)(m[i] * (len / ml));
+        memcpy(v, f, sizeof f);
+    }
+}
+
 /* Items near the camera: offsets from the camera centre, formed in
  * double in the world, so their float error is relative to their
  * distance.  Uploaded once per camera position; returns how many items
@@ -501,6 +527,8 @@ static uint32_t prepare_near(gls_renderer *r, const gls_camera *c, const double 
                 off[i] = (float)(W[4 * i] * q[0] + W[4 * i + 1] * q[1] + W[4 * i + 2] * q[2] + W[4 * i + 3] - C[i]);
             memcpy(r->near_buf + (at + v) * s->stride, off, sizeof off);
         }
+        if (s->lit) /* normals too, into the world, at their lengths (scene.h) */
+            normals_to_world(r->near_buf + at * s->stride + s->normal_offset, ch->count, s->stride, W);
         at += ch->count;
     }
     r->gl.glBindBuffer(GL_ARRAY_BUFFER, r->near_vbo);

@@ -103,6 +103,31 @@ else
     fail shadows_point_light "exit $rc, stderr: $(cat "$t/err"), explain: $(cat "$t/explain4")"
 fi
 
+# turned instances: one near the camera (re-anchored at the camera centre,
+# render.c, its normals carried into the world with it) and one far off,
+# each turned 60 degrees about y under a light along the view: each
+# shades to cos 60 = 0.5 of white, instanced as flattened
+mkdir -p "$t/turn"
+printf 'poly { vert(-1, -1, 0); vert(1, -1, 0); vert(1, 1, 0); vert(-1, 1, 0); }\n' >"$t/turn/Quad.scene"
+printf 'ambient(0, 0, 0);\nlight(directional, 0, 0, -1, 1, 1, 1);\npush; trans(-1.5, 0, 6); rot(60, 0, 1, 0); call("Quad"); pop;\npush; trans(6, 0, 24); rot(60, 0, 1, 0); scale(2); call("Quad"); pop;\n' >"$t/turn/Top.scene"
+printf 'width 160\nheight 120\nfx 100\nfy 100\ncx 79.5\ncy 59.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\n' >"$t/turn/c.cam"
+if "$BIN/glsc" -I "$t/turn" -o "$t/turn.glsb" "$t/turn/Top.scene" 2>"$t/err" &&
+    "$BIN/glsplay" "$t/turn.glsb" --camera "$t/turn/c.cam" -o "$t/turn_i" >/dev/null 2>>"$t/err" &&
+    "$BIN/glsplay" "$t/turn.glsb" --camera "$t/turn/c.cam" --flatten -o "$t/turn_f" >/dev/null 2>>"$t/err"; then
+    got=$("$PY" -c '
+import sys, cv2
+i = cv2.imread(sys.argv[1]); f = cv2.imread(sys.argv[2])
+print(" ".join("%d %d" % (i[60, u, 1], f[60, u, 1]) for u in (55, 104)))' \
+        "$t/turn_i/c/image_000000.png" "$t/turn_f/c/image_000000.png" 2>&1)
+    if echo "$got" | awk '{ for (k = 1; k <= 4; k++) if ($k < 126 || $k > 129) exit 1; if ($1 - $2 > 1 || $2 - $1 > 1 || $3 - $4 > 1 || $4 - $3 > 1) exit 1 }'; then
+        ok lighting_turned_instances
+    else
+        fail lighting_turned_instances "green near (instanced, flattened), far (instanced, flattened): $got; want 126..129 each"
+    fi
+else
+    fail lighting_turned_instances "$(cat "$t/err")"
+fi
+
 # the images against closed forms
 mkdir -p "$t/py"
 "$PY" tests/py/check_lighting.py "$BIN" "$t/py" 2>"$t/pyerr"
