@@ -471,16 +471,12 @@ static void normals_to_world(uint8_t *v, uint32_t n, size_t stride, const double
     for (uint32_t k = 0; k < n; k++, v += stride) {
         float f[3];
         memcpy(f, v, sizeof f);
-        double len = sqrt((double)f[0] * f[0] + (double)f[1] * f[1] + (double)f[2] * f[2]), m[3], ml = 0;
-        for (int i = 0; i < 3; i++) {
-            m[i] = N[3 * i] * f[0] + N[3 * i + 1] * f[1] + N[3 * i + 2] * f[2];
-            ml += m[i] * m[i];
-        }
-        ml = sqrt(ml);
+        rv3 a = rv(f[0], f[1], f[2]), m = rm_apply(N, a);
+        double len = rv_len(a), ml = rv_len(m);
         if (!(len > 0) || !(ml > 0))
             continue;
-        for (int i = 0; i < 3; i++)
-            f[i] = (float)(m[i] * (len / ml));
+        m = rv_mul(m, len / ml);
+        f[0] = (float)m.x, f[1] = (float)m.y, f[2] = (float)m.z;
         memcpy(v, f, sizeof f);
     }
 }
@@ -635,27 +631,16 @@ static uint32_t test_units(gls_renderer *r, const gls_camera *c, const double C[
     return hidden;
 }
 
-/* Draw the items vis keeps (NULL: all) in the drawing order of
- * occlusion.h (nearest instances first), with the current projection,
- * viewport and scissor.  occlude: a colour pass, which may test units
- * before drawing them (spec/bundle.md 9.3): the nearest units are drawn
- * first, untested; then, a round at a time, the next tested units' boxes
- * are drawn in occlusion queries against the depth drawn so far, and the
- * round's units are drawn in order, less those no sample of whose boxes
- * passed.  Every unit that is drawn is drawn once, in the same order as
- * without culling, so exact depth ties resolve alike with it and
- * without. */
-static void draw_ordered(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear, const uint8_t *vis,
-                         int occlude)
+/* The drawing order of camera c's passes over the items vis keeps, and
+ * with occlude (colour passes) the occlusion plan, its queries and its
+ * boxes uploaded: gls_occlusion_plan's result.  The plan depends on the
+ * camera centre and vis, not on a pass's jitter, so the tiles of a mosaic
+ * share it. */
+static int plan_passes(gls_renderer *r, const gls_camera *c, const double C[3], const uint8_t *vis, int occlude)
 {
     const gls_scene *s = r->scene;
     gls_occlusion *o = &r->occ;
-    r->occluded = 0;
     int plan = gls_occlusion_plan(o, occlude ? r->occ_mode : GLS_OCCLUSION_OFF, s, c, C, vis);
-    if (plan < 0) { /* out of memory: no order, the scene's own */
-        draw_all(r, c, C, nnear, vis);
-        return;
-    }
     if (plan > 0 && o->ntested > r->occ_nq) {
         GLuint *q = realloc(r->occ_q, o->ntested * sizeof *q);
         if (!q) {
@@ -671,6 +656,31 @@ static void draw_ordered(gls_renderer *r, const gls_camera *c, const double C[3]
         r->gl.glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)o->box_verts * s->stride), o->boxes,
                            GL_STREAM_DRAW);
     }
+    return plan;
+}
+
+/* Draw the items vis keeps (NULL: all) in the drawing order of
+ * occlusion.h (nearest instances first) as planned by plan_passes (its
+ * result: plan), with the current projection, viewport and scissor.  With
+ * a plan (a colour pass), units are tested before they are drawn
+ * (spec/bundle.md 9.3): the nearest units are drawn first, untested;
+ * then, a round at a time, the next tested units' boxes are drawn in
+ * occlusion queries against the depth drawn so far, and the round's units
+ * are drawn in order, less those no sample of whose boxes passed.  Every
+ * unit that is drawn is drawn once, in the same order as without culling,
+ * so exact depth ties resolve alike with it and without. */
+static void draw_planned(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear, const uint8_t *vis,
+                         int plan)
+{
+    const gls_scene *s = r->scene;
+    gls_occlusion *o = &r->occ;
+    r->occluded = 0;
+    if (plan < 0) { /* out of memory: no order, the scene's own */
+        draw_all(r, c, C, nnear, vis);
+        return;
+    }
+    for (uint32_t k = 0; plan > 0 && k < o->ntested; k++)
+        o->utested[o->tested[k]] = 1; /* an earlier tile's hidden units: tested afresh */
     /* a colour pass (the hooked one has its own program, a shadow map none) */
     int lit = r->light && !r->hook && !r->depth_only, bound = -1;
     if (lit)
@@ -710,6 +720,12 @@ static void draw_ordered(gls_renderer *r, const gls_camera *c, const double C[3]
     }
     if (lit)
         gls_lighting_end(r->light);
+}
+
+static void draw_ordered(gls_renderer *r, const gls_camera *c, const double C[3], uint32_t nnear, const uint8_t *vis,
+                         int occlude)
+{
+    draw_planned(r, c, C, nnear, vis, plan_passes(r, c, C, vis, occlude));
 }
 
 void gls_renderer_set_background(gls_renderer *r, const float rgb[3])
@@ -778,6 +794,7 @@ void gls_render_tiles_rows(gls_renderer *r, const gls_camera *c, uint32_t n, con
     uint32_t nnear = prepare_near(r, c, C);
     gls_scene_cull(r->scene, c, r->ivis, r->vis, &r->cull);
     draw_shadow_maps(r, c, C, nnear, r->vis);
+    int plan = plan_passes(r, c, C, r->vis, 1); /* one for every tile */
     for (uint32_t t = 0; t < n && t < r->kx * r->ky; t++) {
         if (mosaic) {
             GLint x = (GLint)(r->width * (t % r->kx)), y = (GLint)(r->height * (t / r->kx));
@@ -785,7 +802,7 @@ void gls_render_tiles_rows(gls_renderer *r, const gls_camera *c, uint32_t n, con
             glScissor(x, y + (GLint)y0, (GLsizei)r->width, (GLsizei)rows);
         }
         load_projection(r, c, du[t], dv[t]);
-        draw_ordered(r, c, C, nnear, r->vis, 1);
+        draw_planned(r, c, C, nnear, r->vis, plan);
     }
     if (!mosaic && part)
         glDisable(GL_SCISSOR_TEST);

@@ -36,24 +36,20 @@
  * longest side. */
 #define THICK (1.0 / 64)
 
-typedef struct {
-    double lo[3], hi[3];
-} box;
-
-static void box_empty(box *b)
+static void box_empty(gls_tbox *b)
 {
     for (int j = 0; j < 3; j++)
         b->lo[j] = INFINITY, b->hi[j] = -INFINITY;
 }
 
-static void box_union(box *b, const box *o)
+static void box_union(gls_tbox *b, const gls_tbox *o)
 {
     for (int j = 0; j < 3; j++)
         b->lo[j] = fmin(b->lo[j], o->lo[j]), b->hi[j] = fmax(b->hi[j], o->hi[j]);
 }
 
 /* The box's volume, each side at least thick (0 for an empty box). */
-static double box_cost(const box *b, double thick)
+static double box_cost(const gls_tbox *b, double thick)
 {
     if (!(b->lo[0] <= b->hi[0]))
         return 0;
@@ -63,7 +59,7 @@ static double box_cost(const box *b, double thick)
     return v;
 }
 
-static void tri_box(const double *e, box *b)
+static void tri_box(const double *e, gls_tbox *b)
 {
     for (int j = 0; j < 3; j++) {
         b->lo[j] = fmin(e[j], fmin(e[3 + j], e[6 + j]));
@@ -75,7 +71,7 @@ static void tri_box(const double *e, box *b)
  * centres, and its best split (gain <= 0: none). */
 typedef struct {
     uint32_t a, b;
-    box bx;
+    gls_tbox bx;
     double clo[3], chi[3];
     double gain;
     int axis, bin; /* triangles in bins 0..bin on axis go left */
@@ -91,13 +87,13 @@ static int bin_of(const leaf *l, int axis, double c)
 /* The leaf's box, centre range and best split. */
 static void leaf_scan(leaf *l, const uint32_t *perm, const double *exact, double thick)
 {
-    box bins[3][SPLIT_BINS];
+    gls_tbox bins[3][SPLIT_BINS];
     uint32_t cnt[3][SPLIT_BINS];
     box_empty(&l->bx);
     for (int j = 0; j < 3; j++)
         l->clo[j] = INFINITY, l->chi[j] = -INFINITY;
     for (uint32_t i = l->a; i < l->b; i++) {
-        box t;
+        gls_tbox t;
         tri_box(exact + 9 * (size_t)perm[i], &t);
         box_union(&l->bx, &t);
         for (int j = 0; j < 3; j++) {
@@ -112,7 +108,7 @@ static void leaf_scan(leaf *l, const uint32_t *perm, const double *exact, double
         for (int k = 0; k < SPLIT_BINS; k++)
             box_empty(&bins[j][k]), cnt[j][k] = 0;
     for (uint32_t i = l->a; i < l->b; i++) {
-        box t;
+        gls_tbox t;
         tri_box(exact + 9 * (size_t)perm[i], &t);
         for (int j = 0; j < 3; j++) {
             if (!(l->chi[j] > l->clo[j]))
@@ -125,7 +121,7 @@ static void leaf_scan(leaf *l, const uint32_t *perm, const double *exact, double
     for (int j = 0; j < 3; j++) {
         if (!(l->chi[j] > l->clo[j]))
             continue;
-        box right[SPLIT_BINS];
+        gls_tbox right[SPLIT_BINS];
         uint32_t rn[SPLIT_BINS];
         box_empty(&right[SPLIT_BINS - 1]), rn[SPLIT_BINS - 1] = 0;
         box_union(&right[SPLIT_BINS - 1], &bins[j][SPLIT_BINS - 1]), rn[SPLIT_BINS - 1] = cnt[j][SPLIT_BINS - 1];
@@ -133,7 +129,7 @@ static void leaf_scan(leaf *l, const uint32_t *perm, const double *exact, double
             right[k] = right[k + 1], rn[k] = rn[k + 1] + cnt[j][k];
             box_union(&right[k], &bins[j][k]);
         }
-        box left;
+        gls_tbox left;
         uint32_t ln = 0;
         box_empty(&left);
         for (int k = 0; k + 1 < SPLIT_BINS; k++) {
@@ -189,7 +185,7 @@ int gls_scene_test_boxes(gls_scene *s)
              * within a side does not matter to the boxes) */
             uint32_t i = l->a, j = l->b;
             while (i < j) {
-                box t;
+                gls_tbox t;
                 tri_box(exact + 9 * (size_t)perm[i], &t);
                 if (bin_of(l, l->axis, 0.5 * (t.lo[l->axis] + t.hi[l->axis])) <= l->bin) {
                     i++;
@@ -205,9 +201,7 @@ int gls_scene_test_boxes(gls_scene *s)
             leaf_scan(r, perm, exact, thick);
         }
         for (uint32_t k = 0; k < n; k++) {
-            gls_tbox *t = &s->tboxes[s->ntboxes++];
-            memcpy(t->lo, lv[k].bx.lo, sizeof t->lo);
-            memcpy(t->hi, lv[k].bx.hi, sizeof t->hi);
+            s->tboxes[s->ntboxes++] = lv[k].bx;
         }
         pr->ntboxes = n;
     }
