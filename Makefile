@@ -6,7 +6,7 @@ CSTD    := -std=c11 -D_XOPEN_SOURCE=700
 WARN    := -Wall -Wextra -Werror
 OPT     ?= -O2 -g
 CFLAGS  += $(CSTD) $(WARN) $(OPT)
-LDLIBS  := -lzstd -lz -lstb -lm
+LDLIBS  := -lzstd -lz -ljpeg -lstb -lm
 # Every compile writes its dependency file (X.d beside X, the object or
 # program), included at the end: a changed header rebuilds exactly what
 # includes it (tests/e2e/build_deps.sh).

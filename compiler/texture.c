@@ -1,69 +1,16 @@
-/* Texture decoding through stb_image.  Every format is converted to RGBA:
- * TGA, PNG, JPEG and BMP with 1 (grey), 2 (grey + alpha), 3 (RGB) or 4
- * channels; a missing alpha channel means opaque.  stb_image swaps TGA's
- * BGR(A) byte order to RGB(A) and honours its origin bit.
- * Alpha is made binary here (transparent below 0.5), once, at compile time,
- * so the bundle holds exactly what the player alpha-tests. */
+/* Texture decoding: every format is converted to RGBA8, row 0 at the
+ * top.  JPEG goes through libjpeg-turbo, PNG, TGA and BMP through
+ * stb_image (texture_codecs.h says why), with 1 (grey), 2 (grey + alpha),
+ * 3 (RGB) or 4 channels (JPEG: grey, YCbCr, RGB, CMYK); a missing alpha
+ * channel means opaque.  The size is checked from the header before
+ * anything is decoded.  Alpha is made binary here (transparent below 0.5),
+ * once, at compile time, so the bundle holds exactly what the player
+ * alpha-tests. */
 #include <stdlib.h>
 #include <string.h>
-#include <stb/stb_image.h>
 #include "compile.h"
 #include "fileio.h"
-
-/* Debian's stb_image (2022-09) writes past a 257-entry table when a JPEG
- * Huffman table (DHT segment) declares more than 256 codes; the texture
- * fuzzer found it.  Walk all of the JPEG's marker segments (DHT may also
- * come between the scans of a progressive JPEG) and refuse such a table,
- * or a segment that runs past the end of the file (stb_image would read
- * zeros there), before stb_image sees the file.  Returns 1 to refuse. */
-static int jpeg_bad_huffman(const unsigned char *d, size_t len)
-{
-    /* stb_image, like the JPEG standard, lets any number of 0xFF fill
-       bytes precede a marker code, the first (SOI) included */
-    size_t p = 0;
-    while (p < len && d[p] == 0xFF)
-        p++;
-    if (p == 0 || p >= len || d[p] != 0xD8)
-        return 0;
-    p++;
-    while (p + 2 <= len) {
-        if (d[p] != 0xFF) {
-            p++; /* entropy-coded data of a scan: skip to the next marker */
-            continue;
-        }
-        unsigned marker = d[p + 1];
-        if (marker == 0xFF) {
-            p++; /* fill byte */
-            continue;
-        }
-        if (marker == 0x00 || marker == 0xD8 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
-            p += 2; /* stuffed 0xFF in scan data, SOI, TEM, restart markers */
-            continue;
-        }
-        if (marker == 0xD9)
-            return 0; /* end of image */
-        if (p + 4 > len)
-            return 1;
-        size_t seglen = ((size_t)d[p + 2] << 8) | d[p + 3];
-        if (seglen < 2 || p + 2 + seglen > len)
-            return 1;
-        if (marker == 0xC4) {
-            size_t q = p + 4, end = p + 2 + seglen;
-            while (q < end) {
-                if (q + 17 > end)
-                    return 1;
-                size_t codes = 0;
-                for (int i = 0; i < 16; i++)
-                    codes += d[q + 1 + i];
-                if (codes > 256 || q + 17 + codes > end)
-                    return 1;
-                q += 17 + codes;
-            }
-        }
-        p += 2 + seglen;
-    }
-    return 0;
-}
+#include "texture_codecs.h"
 
 /* stb_image trusts a PNG chunk's declared length and grows its buffer to
  * it before reading (the texture fuzzer found a 100-byte PNG making it
@@ -89,18 +36,21 @@ static int png_chunk_overrun(const unsigned char *d, size_t len)
 int gls_texture_probe(const unsigned char *data, size_t len, const char *path, int *w, int *h, char *why,
                       size_t whylen)
 {
-    int comp;
-    if (jpeg_bad_huffman(data, len)) {
-        snprintf(why, whylen, "cannot decode %s: corrupt JPEG (a Huffman table has more than 256 codes)", path);
-        return -1;
-    }
-    if (png_chunk_overrun(data, len)) {
-        snprintf(why, whylen, "cannot decode %s: corrupt PNG (a chunk runs past the end of the file)", path);
-        return -1;
-    }
-    if (len > INT32_MAX || !stbi_info_from_memory(data, (int)len, w, h, &comp)) {
-        snprintf(why, whylen, "cannot decode %s: %s", path, stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
-        return -1;
+    char reason[256];
+    if (gls_jpeg_is(data, len)) {
+        if (gls_jpeg_info(data, len, w, h, reason, sizeof reason)) {
+            snprintf(why, whylen, "cannot decode %s: JPEG: %s", path, reason);
+            return -1;
+        }
+    } else {
+        if (png_chunk_overrun(data, len)) {
+            snprintf(why, whylen, "cannot decode %s: corrupt PNG (a chunk runs past the end of the file)", path);
+            return -1;
+        }
+        if (gls_stb_info(data, len, w, h, reason, sizeof reason)) {
+            snprintf(why, whylen, "cannot decode %s: %s", path, reason);
+            return -1;
+        }
     }
     /* check the size from the header before decoding anything: a 20-byte
        file can declare a gigabyte of texels (found by the texture fuzzer) */
@@ -120,23 +70,19 @@ int gls_texture_probe(const unsigned char *data, size_t len, const char *path, i
 int gls_texture_decode_memory(const unsigned char *data, size_t len, const char *path, gls_texture *out, char *why,
                               size_t whylen)
 {
-    int w, h, comp;
+    int w, h;
     if (gls_texture_probe(data, len, path, &w, &h, why, whylen))
         return -1;
-    unsigned char *px = stbi_load_from_memory(data, (int)len, &w, &h, &comp, 4);
+    char reason[256];
+    int jpeg = gls_jpeg_is(data, len);
+    unsigned char *px = jpeg ? gls_jpeg_load_rgba(data, len, &w, &h, reason, sizeof reason)
+                             : gls_stb_load_rgba(data, len, &w, &h, reason, sizeof reason);
     if (!px) {
-        snprintf(why, whylen, "cannot decode %s: %s", path, stbi_failure_reason() ? stbi_failure_reason() : "corrupt");
+        snprintf(why, whylen, "cannot decode %s: %s%s", path, jpeg ? "JPEG: " : "", reason);
         return -1;
     }
     size_t texels = (size_t)w * (size_t)h;
-    out->rgba = malloc(texels * 4);
-    if (!out->rgba) {
-        stbi_image_free(px);
-        snprintf(why, whylen, "out of memory decoding %s", path);
-        return -1;
-    }
-    memcpy(out->rgba, px, texels * 4);
-    stbi_image_free(px);
+    out->rgba = px;
     out->width = (uint32_t)w;
     out->height = (uint32_t)h;
     out->flags = 0;

@@ -1,19 +1,13 @@
-/* libFuzzer target: texture decoding (TGA, PNG, JPEG, BMP through
- * stb_image, with glscene's size checks and alpha binarisation).  The first
- * byte chooses whether the TGA channel rule applies. */
+/* libFuzzer target: texture decoding (JPEG through libjpeg-turbo; TGA,
+ * PNG, BMP through stb_image; glscene's size checks and alpha
+ * binarisation).  The first byte is skipped: it once chose a TGA rule
+ * that is gone, and the corpus and regressions keep it. */
 #include <stdlib.h>
 #include "compile.h"
-/* Compile stb_image into the target itself, instrumented, so the fuzzer
- * sees coverage inside the decoders (Debian's libstb.so is not
- * instrumented); these definitions take precedence over the library's. */
-#define STB_IMAGE_IMPLEMENTATION
-/* Two UBSan checks are off for stb_image's own functions: a PNG with an
- * empty IDAT chunk (legal) makes it compute NULL + 0 and memcpy(NULL, p, 0)
- * (found by this fuzzer), formally undefined but reading and writing
- * nothing.  Every other check, and ASan, stay on. */
-#pragma clang attribute push(__attribute__((no_sanitize("pointer-overflow", "nonnull-attribute"))), apply_to = function)
-#include <stb/stb_image.h>
-#pragma clang attribute pop
+/* stb_image is compiled into the compiler (compiler/texture_stb.c), so in
+ * the fuzz build it is instrumented like the rest, and the fuzzer sees
+ * coverage inside its decoders.  libjpeg-turbo is Debian's library, not
+ * instrumented: ASan sees its allocations and copies, not its reads. */
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -16,6 +16,11 @@ shift
 targets=${*:-"compile bundle texture camera road writers"}
 F=build-fuzz/fuzz
 jobs=${GLS_FUZZ_JOBS:-1}
+# ASan fills every allocation with 0xFF (default: 0xBE, first 4 KiB only),
+# so a read of memory never written gives the same wrong value on every
+# run, and an index taken from it goes out of bounds at once (README,
+# finding 10: stb_image's undefined JPEG tables)
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}malloc_fill_byte=255:max_malloc_fill_size=268435456"
 
 # fuzz_one T: replay and fuzz one target; prints its lines, returns 1 on failure
 fuzz_one() {

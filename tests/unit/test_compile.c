@@ -8,7 +8,11 @@
 #include "atomic_write.h"
 #include "check.h"
 #include "compile.h"
+#include "fileio.h"
 #include "mathfn.h"
+#include <stb/stb_image.h>
+#include <stdio.h>
+#include <jpeglib.h>
 
 static gls_bundle *compile(const char **roots, int nroots, const char *top)
 {
@@ -292,10 +296,199 @@ static void test_trig_degrees_exact(void)
     }
 }
 
+/* JPEG textures (tests/jpeg/, written once by make.py with Debian's OpenCV,
+ * libjpeg-turbo): each variant a user's files may come in decodes to the
+ * texels OpenCV gives, the right way up with its channels in order;
+ * corrupt files are refused with libjpeg's message. */
+static unsigned char *read_all(const char *path, size_t *len)
+{
+    char why[256];
+    unsigned char *d = (unsigned char *)gls_read_file(path, 1 << 20, len, why, sizeof why);
+    if (!d)
+        printf("  %s\n", why);
+    return d;
+}
+
+static void test_jpeg_variants_decode(void)
+{
+    const char *names[] = {"baseline", "grey", "progressive", "progressive_grey", "restart", "optimized"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
+        char path[128], ref[128], why[256] = "";
+        snprintf(path, sizeof path, "tests/jpeg/%s.jpg", names[k]);
+        snprintf(ref, sizeof ref, "tests/jpeg/%s.decoded.png", names[k]);
+        size_t len;
+        unsigned char *d = read_all(path, &len);
+        int rw, rh, rc;
+        unsigned char *want = stbi_load(ref, &rw, &rh, &rc, 4);
+        CHECK(d && want);
+        gls_texture t = {0};
+        int r = d ? gls_texture_decode_memory(d, len, path, &t, why, sizeof why) : -1;
+        if (r != 0)
+            printf("  %s: %s\n", names[k], why);
+        CHECK(r == 0);
+        if (r == 0 && want) {
+            CHECK(t.width == 24 && t.height == 16 && rw == 24 && rh == 16);
+            /* the same library with the same settings (exact integer
+               IDCT, smooth upsampling): the same texels as OpenCV */
+            int maxd = 0;
+            for (int i = 0; i < 24 * 16 * 4; i++)
+                maxd = abs((int)t.rgba[i] - (int)want[i]) > maxd ? abs((int)t.rgba[i] - (int)want[i]) : maxd;
+            if (maxd)
+                printf("  %s: glscene and OpenCV differ by up to %d levels\n", names[k], maxd);
+            CHECK(maxd == 0);
+            /* independent of the reference: the blue square at the top
+               left, the white bar at the bottom right, the red ramp rising
+               to the right (grey files: their luminance) */
+            const unsigned char *sq = t.rgba + (4 * 24 + 4) * 4, *bar = t.rgba + (13 * 24 + 18) * 4;
+            const unsigned char *left = t.rgba + (10 * 24 + 0) * 4, *right = t.rgba + (10 * 24 + 23) * 4;
+            if (strstr(names[k], "grey"))
+                CHECK(bar[0] > 240 && sq[0] < 60 && sq[0] == sq[2] && left[0] < right[0]);
+            else
+                CHECK(sq[2] > 200 && sq[0] < 60 && bar[0] > 230 && bar[1] > 230 && bar[2] > 200 &&
+                      right[0] > left[0] + 150);
+        }
+        free(t.rgba);
+        stbi_image_free(want);
+        free(d);
+    }
+}
+
+static void test_jpeg_refused(void)
+{
+    /* libjpeg-turbo's messages; a warning (corrupt data it would patch up)
+       is an error too */
+    const struct {
+        const char *name, *why;
+    } cases[] = {{"bad_undefined_huffman", "Corrupt JPEG data: 121 extraneous bytes before marker 0xd9"},
+                 {"bad_undefined_quant", "Quantization table 0x01 was not defined"},
+                 {"bad_truncated", "Premature end of JPEG file"},
+                 {"bad_huffman_overflow", "Bogus Huffman table definition"}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char path[128], why[256] = "", want[256];
+        snprintf(path, sizeof path, "tests/jpeg/%s.jpg", cases[k].name);
+        snprintf(want, sizeof want, "cannot decode %s: JPEG: %s", path, cases[k].why);
+        size_t len;
+        unsigned char *d = read_all(path, &len);
+        CHECK(d != NULL);
+        if (!d)
+            continue;
+        gls_texture t = {0};
+        int r = gls_texture_decode_memory(d, len, path, &t, why, sizeof why);
+        if (r != -1 || strcmp(why, want) != 0)
+            printf("  %s: %d '%s'\n", cases[k].name, r, why);
+        CHECK(r == -1 && strcmp(why, want) == 0 && t.rgba == NULL);
+        free(d);
+    }
+}
+
+/* A frame whose two chroma components are in no scan: libjpeg-turbo
+ * zeroes coefficients it never read, so the chroma is neutral and the
+ * file decodes, the same on every run, to its grey luminance (stb_image
+ * decoded memory it never wrote). */
+static void test_jpeg_component_in_no_scan(void)
+{
+    size_t len, glen;
+    unsigned char *d = read_all("tests/jpeg/component_in_no_scan.jpg", &len);
+    unsigned char *g = read_all("tests/jpeg/grey.jpg", &glen);
+    CHECK(d && g);
+    if (!d || !g) {
+        free(d);
+        free(g);
+        return;
+    }
+    gls_texture a = {0}, b = {0}, grey = {0};
+    char why[256] = "";
+    CHECK(gls_texture_decode_memory(d, len, "a.jpg", &a, why, sizeof why) == 0);
+    CHECK(gls_texture_decode_memory(d, len, "b.jpg", &b, why, sizeof why) == 0);
+    CHECK(gls_texture_decode_memory(g, glen, "grey.jpg", &grey, why, sizeof why) == 0);
+    if (a.rgba && b.rgba && grey.rgba) {
+        CHECK(memcmp(a.rgba, b.rgba, 24 * 16 * 4) == 0);
+        int maxd = 0;
+        for (int i = 0; i < 24 * 16 * 4; i++)
+            maxd = abs(a.rgba[i] - grey.rgba[i]) > maxd ? abs(a.rgba[i] - grey.rgba[i]) : maxd;
+        if (maxd > 1)
+            printf("  differs from the grey decoding by %d levels\n", maxd);
+        CHECK(maxd <= 1);
+    }
+    free(a.rgba);
+    free(b.rgba);
+    free(grey.rgba);
+    free(d);
+    free(g);
+}
+
+/* CMYK JPEGs (libjpeg-turbo encodes them here; OpenCV cannot): Adobe's
+ * APP14 marker means the values are stored inverted (255 = no ink), and
+ * without it they are ink amounts.  Each 8x8 block is one flat colour, so
+ * quality 100 keeps it within a level. */
+static unsigned char *encode_cmyk(int adobe, unsigned long *len)
+{
+    struct jpeg_compress_struct c;
+    struct jpeg_error_mgr err;
+    unsigned char *out = NULL;
+    c.err = jpeg_std_error(&err);
+    jpeg_create_compress(&c);
+    jpeg_mem_dest(&c, &out, len);
+    c.image_width = 16;
+    c.image_height = 8;
+    c.input_components = 4;
+    c.in_color_space = JCS_CMYK;
+    jpeg_set_defaults(&c);
+    jpeg_set_colorspace(&c, JCS_CMYK);
+    jpeg_set_quality(&c, 100, TRUE);
+    c.write_Adobe_marker = adobe ? TRUE : FALSE;
+    jpeg_start_compress(&c, TRUE);
+    unsigned char row[16 * 4];
+    for (int x = 0; x < 16; x++) {
+        static const unsigned char left[4] = {255, 0, 255, 255}, right[4] = {0, 255, 255, 128};
+        memcpy(row + x * 4, x < 8 ? left : right, 4);
+    }
+    JSAMPROW r = row;
+    for (int y = 0; y < 8; y++)
+        jpeg_write_scanlines(&c, &r, 1);
+    jpeg_finish_compress(&c);
+    jpeg_destroy_compress(&c);
+    return out;
+}
+
+static void test_jpeg_cmyk(void)
+{
+    /* RGB expected at the left and right halves: Adobe (inverted) C*K/255;
+       plain (255-C)*(255-K)/255 */
+    static const int want[2][2][3] = {{{0, 0, 0}, {127, 0, 0}}, {{255, 0, 255}, {0, 128, 128}}};
+    for (int adobe = 0; adobe <= 1; adobe++) {
+        unsigned long len = 0;
+        unsigned char *file = encode_cmyk(adobe, &len);
+        gls_texture t = {0};
+        char why[256] = "";
+        int r = gls_texture_decode_memory(file, len, "cmyk.jpg", &t, why, sizeof why);
+        if (r)
+            printf("  %s\n", why);
+        CHECK(r == 0 && t.width == 16 && t.height == 8);
+        for (int half = 0; r == 0 && half < 2; half++)
+            for (int y = 0; y < 8; y++)
+                for (int x = half * 8; x < half * 8 + 8; x++) {
+                    const unsigned char *p = t.rgba + (y * 16 + x) * 4;
+                    int ok = p[3] == 255;
+                    for (int ch = 0; ch < 3; ch++)
+                        ok = ok && abs(p[ch] - want[adobe][half][ch]) <= 1;
+                    if (!ok)
+                        printf("  adobe %d texel %d,%d: %d %d %d %d\n", adobe, x, y, p[0], p[1], p[2], p[3]);
+                    CHECK(ok);
+                }
+        free(t.rgba);
+        free(file);
+    }
+}
+
 int main(void)
 {
     RUN(test_texture_orientation_and_alpha);
     RUN(test_tga_rgb_and_grey);
+    RUN(test_jpeg_variants_decode);
+    RUN(test_jpeg_refused);
+    RUN(test_jpeg_component_in_no_scan);
+    RUN(test_jpeg_cmyk);
     RUN(test_far_coordinates_exact_through_bundle);
     RUN(test_earlier_root_overrides_library);
     RUN(test_trig_degrees_exact);
