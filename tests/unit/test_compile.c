@@ -481,10 +481,48 @@ static void test_jpeg_cmyk(void)
     }
 }
 
+/* PNG and BMP textures (tests/png_bmp/, written once by make.py with
+ * OpenCV; the expected texels computed there with numpy, no decoder):
+ * every channel layout and depth decodes to exactly those RGBA8 texels,
+ * 16-bit samples to their high byte, alpha made binary at 128. */
+static void test_png_bmp_variants_decode(void)
+{
+    const char *names[] = {"rgba8.png", "rgb8.png", "grey8.png", "rgba16.png",
+                           "rgb16.png", "grey16.png", "rgb24.bmp", "grey8.bmp"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
+        char path[128], ref[128], why[256] = "";
+        snprintf(path, sizeof path, "tests/png_bmp/%s", names[k]);
+        snprintf(ref, sizeof ref, "tests/png_bmp/%.*s.rgba", (int)(strchr(names[k], '.') - names[k]), names[k]);
+        size_t len, rlen;
+        unsigned char *d = read_all(path, &len), *want = read_all(ref, &rlen);
+        CHECK(d && want && rlen == 24 * 16 * 4);
+        gls_texture t = {0};
+        int r = d ? gls_texture_decode_memory(d, len, path, &t, why, sizeof why) : -1;
+        if (r != 0)
+            printf("  %s: %s\n", names[k], why);
+        CHECK(r == 0);
+        if (r == 0 && want && rlen == 24 * 16 * 4) {
+            CHECK(t.width == 24 && t.height == 16);
+            int differ = 0;
+            for (int i = 0; i < 24 * 16 * 4; i++)
+                differ += t.rgba[i] != want[i];
+            if (differ)
+                printf("  %s: %d of %d bytes differ from make.py's texels\n", names[k], differ, 24 * 16 * 4);
+            CHECK(differ == 0);
+            /* the transparent corner flags the texture (the RGBA files) */
+            CHECK(!!(t.flags & GLS_TEX_ALPHA_HOLES) == (strstr(names[k], "rgba") != NULL));
+        }
+        free(t.rgba);
+        free(want);
+        free(d);
+    }
+}
+
 int main(void)
 {
     RUN(test_texture_orientation_and_alpha);
     RUN(test_tga_rgb_and_grey);
+    RUN(test_png_bmp_variants_decode);
     RUN(test_jpeg_variants_decode);
     RUN(test_jpeg_refused);
     RUN(test_jpeg_component_in_no_scan);
