@@ -176,6 +176,86 @@ static void test_lattice_criterion(void)
     }
 }
 
+/* Worst per-row RMS edge error of lattice l at issue 13's listed angles,
+ * from its points (bench/aa_scene.h). */
+static double listed_measured(const gls_lattice *l)
+{
+    static const double listed[] = {0.5, 1, 3, 10, 22.5, 30, 45, 60, 80};
+    double *x = malloc(l->m * sizeof *x), *y = malloc(l->m * sizeof *y), *s = malloc(l->m * sizeof *s), w = 0;
+    for (uint64_t i = 0; i < l->m; i++) {
+        int64_t X, Y;
+        gls_lattice_point(l, i, &X, &Y);
+        x[i] = (double)X / (double)l->q, y[i] = (double)Y / (double)l->q;
+    }
+    for (size_t k = 0; k < sizeof listed / sizeof listed[0]; k++)
+        w = fmax(w, as_pattern_rms(x, y, (long)l->m, listed[k], s));
+    free(x), free(y), free(s);
+    return w;
+}
+
+/* What spec/antialiasing.md ("Accuracy") says of issue 13's 1/2048 px
+ * target at 4096 samples: the issue's own rule, the largest minimum
+ * distance, leaves exactly two generators, a = 70 and its mirror image
+ * a = 4026, and neither meets the target at the listed angles (0.0047 and
+ * 0.0024 px), while some other generators do (a = 2618: 0.00017 px), only
+ * because their bad directions fall between those angles. */
+static void test_issue_rule_at_4096(void)
+{
+    const uint64_t m = 4096;
+    int64_t bestd = 0;
+    for (uint64_t a = 1; a < m; a++) {
+        gls_lattice o;
+        CHECK(gls_lattice_make(m, a, &o) == 0);
+        bestd = o.len2 > bestd ? o.len2 : bestd;
+    }
+    uint64_t ties[4], nties = 0;
+    for (uint64_t a = 1; a < m; a++) {
+        gls_lattice o;
+        if (gls_lattice_make(m, a, &o) == 0 && o.len2 == bestd && nties < 4)
+            ties[nties++] = a;
+    }
+    CHECK_MSG(nties == 2 && ties[0] == 70 && ties[1] == 4026, "%llu generators with the largest distance",
+              (unsigned long long)nties);
+    static const struct {
+        uint64_t a;
+        double listed;
+    } want[] = {{70, 0.004693}, {4026, 0.002364}, {2618, 0.000172}};
+    for (size_t k = 0; k < sizeof want / sizeof want[0]; k++) {
+        gls_lattice o;
+        CHECK(gls_lattice_make(m, want[k].a, &o) == 0);
+        double e = listed_measured(&o);
+        CHECK_MSG(fabs(e - want[k].listed) < 1e-6, "a = %llu: %.6f px at the listed angles, spec %.6f",
+                  (unsigned long long)want[k].a, e, want[k].listed);
+        CHECK((e > 1.0 / 2048) == (k < 2));
+    }
+    /* Read with generators coprime to M (the usual Korobov form), the rule
+     * leaves a = 671, 1697, 2399 and 3425; each puts 32 samples a position
+     * across one diagonal, and 2399 meets the target at the listed angles
+     * only because its bad diagonal, 135 degrees, is not listed. */
+    int64_t bestc = 0;
+    for (uint64_t a = 1; a < m; a += 2) {
+        gls_lattice o;
+        CHECK(gls_lattice_make(m, a, &o) == 0);
+        bestc = o.len2 > bestc ? o.len2 : bestc;
+    }
+    static const uint64_t cop[] = {671, 1697, 2399, 3425};
+    size_t ncop = 0;
+    for (uint64_t a = 1; a < m; a += 2) {
+        gls_lattice o;
+        if (gls_lattice_make(m, a, &o) == 0 && o.len2 == bestc) {
+            CHECK_MSG(ncop < 4 && a == cop[ncop], "coprime generator %llu with the largest distance",
+                      (unsigned long long)a);
+            ncop++;
+            CHECK(o.axis_diag > 31.0 / (4096 * sqrt(12.0)) && o.axis_diag < 33.0 / (4096 * sqrt(12.0)));
+        }
+    }
+    CHECK(ncop == 4);
+    gls_lattice o;
+    CHECK(gls_lattice_make(m, 2399, &o) == 0);
+    CHECK(listed_measured(&o) < 1.0 / 2048);
+    CHECK_MSG(fabs(o.axis_diag - 0.002255) < 1e-6, "a = 2399: %.6f px at 0/45/90/135 degrees", o.axis_diag);
+}
+
 /* The mean per-row edge displacement over edge offsets, computed directly
  * (not from the points' mean): a row of pixels u = -3..3 crossed by an
  * edge x = c + y cot(theta) (steep; flat edges per column, x and y
@@ -905,6 +985,7 @@ int main(void)
     ctx = tb_glctx(GLS_BACKEND_AUTO, "test_aa_lattice");
     RUN(test_lattice_points);
     RUN(test_lattice_criterion);
+    RUN(test_issue_rule_at_4096);
     RUN(test_lattice_centred);
     RUN(test_basis_and_map);
     RUN(test_pass_split_choice);
