@@ -104,6 +104,14 @@ awk '$1 == "lattice" && $3 == "pfm" && ($2 == 256 || $2 == 4096) {
         ($5 <= t ? "met" : "NOT met"), $7, $8, ($7 <= t ? "met" : "NOT met")
     printf "         sweep worst %s px at %s deg: %s (bound 0.27 / sqrt(M) = %.4f px)\n", $9, $10,
         ($9 <= t ? "met" : "NOT met"), 0.2686 / sqrt($2) }' "$raw"
+echo
+echo "Every generator against the targets, from the sample positions (aa_bench generators M D): which generators"
+echo "the largest minimum distance allows (the issue's rule), glsplay's choice, and how many generators meet the"
+echo "target at exactly the listed angles (by placing their bad directions between them):"
+echo
+for md in "256 256" "4096 2048"; do
+    $B/bench/aa_bench generators $md | sed 's/^/    /' || exit 1
+done
 } >>"$out"
 
 # ---- 2. cost on the 100k-triangle scene --------------------------------

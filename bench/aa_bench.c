@@ -11,6 +11,11 @@
  *   aa_bench analytic PATTERN M           the same errors computed from the
  *        sample positions alone (no renderer): the listed and mirrored
  *        angles and a dense sweep of [0, 180) degrees in 0.05-degree steps
+ *   aa_bench generators M D               every lattice generator a of M
+ *        points against the target 1/D px at the listed angles, from the
+ *        sample positions: how many meet it there (and at the mirrored
+ *        angles too), the best, and the generators with the largest
+ *        minimum distance (spec/antialiasing.md, "Accuracy")
  *   aa_bench scene DIR                    write the 100k-triangle bench
  *        scene (bench/play_scene.h) as DIR/terrain.glsb and DIR/cam.cam,
  *        for timing whole glsplay runs
@@ -34,6 +39,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "aa_scene.h"
+#include "lattice.h"
 #include "play_bundle.h"
 
 static double now(void)
@@ -139,6 +145,71 @@ static int analytic(const char *pat, uint64_t m)
     for (size_t i = 0; i < NMIRRORED; i++)
         printf(" %.6f", em[i]);
     printf("\n");
+    free(x), free(y), free(s);
+    return 0;
+}
+
+/* Worst analytic error of generator a's points over n angles. */
+static worst lattice_worst(const gls_lattice *l, double *x, double *y, double *s, const double *ang, size_t n)
+{
+    for (uint64_t i = 0; i < l->m; i++) {
+        int64_t X, Y;
+        gls_lattice_point(l, i, &X, &Y);
+        x[i] = (double)X / (double)l->q, y[i] = (double)Y / (double)l->q;
+    }
+    worst w = {0, 0};
+    for (size_t k = 0; k < n; k++) {
+        double e = as_pattern_rms(x, y, (long)l->m, ang[k], s);
+        if (e > w.worst)
+            w.worst = e, w.at = ang[k];
+    }
+    return w;
+}
+
+static int generators(uint64_t m, double denom)
+{
+    gls_lattice chosen;
+    if (m < 2 || m > 65536 || denom <= 0 || gls_lattice_choose(m, &chosen)) {
+        fprintf(stderr, "aa_bench: generators: M in 2..65536 and D > 0\n");
+        return 2;
+    }
+    double target = 1 / denom, *x = malloc(m * sizeof *x), *y = malloc(m * sizeof *y), *s = malloc(m * sizeof *s);
+    int64_t best_len2 = 0;
+    for (uint64_t a = 1; a < m; a++) {
+        gls_lattice o;
+        if (gls_lattice_make(m, a, &o) == 0 && o.len2 > best_len2)
+            best_len2 = o.len2;
+    }
+    uint64_t n_listed = 0, n_both = 0, best_a = 0, best_both_a = 0;
+    double best = 1, best_both = 1;
+    printf("# generators of M = %llu against 1/%g = %.6f px (analytic per-row RMS, box filter)\n",
+           (unsigned long long)m, denom, target);
+    for (uint64_t a = 1; a < m; a++) {
+        gls_lattice o;
+        if (gls_lattice_make(m, a, &o))
+            continue;
+        worst w = lattice_worst(&o, x, y, s, listed, NLISTED);
+        if (o.len2 == best_len2 || a == chosen.a)
+            printf("a = %llu%s%s: closest samples %.5f px, worst at the listed angles %.6f px (%g deg)\n",
+                   (unsigned long long)a, o.len2 == best_len2 ? " (largest minimum distance)" : "",
+                   a == chosen.a ? " (glsplay's choice)" : "", o.mindist, w.worst, w.at);
+        if (w.worst < best)
+            best = w.worst, best_a = a;
+        if (w.worst > target)
+            continue;
+        n_listed++;
+        worst wm = lattice_worst(&o, x, y, s, mirrored, NMIRRORED);
+        if (wm.worst <= target)
+            n_both++;
+        if (fmax(w.worst, wm.worst) < best_both)
+            best_both = fmax(w.worst, wm.worst), best_both_a = a;
+    }
+    printf("meet the target at the listed angles: %llu of %llu generators; at the listed and mirrored angles: %llu\n",
+           (unsigned long long)n_listed, (unsigned long long)(m - 1), (unsigned long long)n_both);
+    printf("best at the listed angles: a = %llu, %.6f px\n", (unsigned long long)best_a, best);
+    if (n_both)
+        printf("best at the listed and mirrored angles: a = %llu, %.6f px\n", (unsigned long long)best_both_a,
+               best_both);
     free(x), free(y), free(s);
     return 0;
 }
@@ -434,6 +505,8 @@ int main(int argc, char **argv)
         rc = accuracy((uint32_t)atoi(argv[2]), (uint32_t)atoi(argv[3]), argv[4], strtoull(argv[5], NULL, 10));
     else if (argc == 4 && strcmp(argv[1], "analytic") == 0)
         rc = analytic(argv[2], strtoull(argv[3], NULL, 10));
+    else if (argc == 4 && strcmp(argv[1], "generators") == 0)
+        rc = generators(strtoull(argv[2], NULL, 10), atof(argv[3]));
     else if (argc == 3 && strcmp(argv[1], "scene") == 0)
         rc = scene(argv[2]);
     else if (argc == 5 && strcmp(argv[1], "texlod") == 0)
@@ -441,7 +514,7 @@ int main(int argc, char **argv)
     else if (argc == 2 && strcmp(argv[1], "snap") == 0)
         rc = snap();
     if (rc == 2)
-        fprintf(stderr, "usage: aa_bench accuracy W H PATTERN M | analytic PATTERN M | scene DIR | "
+        fprintf(stderr, "usage: aa_bench accuracy W H PATTERN M | analytic PATTERN M | generators M D | scene DIR | "
                         "texlod BUNDLE CAM M | snap\n");
     return rc;
 }
