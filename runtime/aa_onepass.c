@@ -188,7 +188,59 @@ typedef struct {
     int64_t *off;       /* byte offsets of the kernel in the tile buffer */
     gls_accum *acc;
     uint8_t *seen;      /* mask: the pixel's first sample is recorded     */
+    const int64_t *run_off; /* the kernel as runs of adjacent samples in  */
+    const uint32_t *run_len; /* a fine row: byte offset, length; n_runs    */
+    uint64_t n_runs;
 } gather_ctx;
+
+/* The kernel's entries (sorted by row, then column) as runs of samples
+ * next to each other in a fine row: about sqrt(L) runs where the entries
+ * are L, so the common case of the gather sums whole rows at a time.
+ * Returns the number of runs. */
+static uint64_t kernel_runs(const kernel *k, uint32_t tw, int64_t *run_off, uint32_t *run_len)
+{
+    uint64_t n = 0;
+    for (uint64_t e = 0; e < k->n; e++) {
+        int64_t o = (k->c[e][1] * (int64_t)tw + k->c[e][0]) * 4;
+        if (n && e && k->c[e][1] == k->c[e - 1][1] && k->c[e][0] == k->c[e - 1][0] + 1)
+            run_len[n - 1]++;
+        else
+            run_off[n] = o, run_len[n++] = 1;
+    }
+    return n;
+}
+
+/* Sum of the R, G and B bytes of len RGBA8 pixels at q into s.  Two
+ * pixels a 64-bit load: R and B in one word's 16-bit lanes, G (and A) in
+ * another's, at most 128 values of 255 a lane before the lanes are
+ * emptied (every 256 pixels); the same integers as adding byte by byte. */
+void gls_aa_sum_run(const uint8_t *q, uint32_t len, uint32_t s[3])
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    const uint64_t mask = 0x00FF00FF00FF00FFull;
+    while (len) {
+        uint32_t n = len < 256 ? len : 256, i = 0;
+        uint64_t rb = 0, ga = 0;
+        for (; i + 2 <= n; i += 2) {
+            uint64_t w;
+            memcpy(&w, q + 4 * i, 8);
+            rb += w & mask, ga += (w >> 8) & mask;
+        }
+        if (i < n) {
+            uint32_t w;
+            memcpy(&w, q + 4 * i, 4);
+            rb += w & 0x00FF00FFu, ga += (w >> 8) & 0x00FF00FFu;
+        }
+        s[0] += (uint32_t)(rb & 0xFFFF) + (uint32_t)(rb >> 32 & 0xFFFF);
+        s[1] += (uint32_t)(ga & 0xFFFF) + (uint32_t)(ga >> 32 & 0xFFFF);
+        s[2] += (uint32_t)(rb >> 16 & 0xFFFF) + (uint32_t)(rb >> 48);
+        q += 4 * (size_t)n, len -= n;
+    }
+#else
+    for (uint32_t i = 0; i < len; i++)
+        s[0] += q[4 * i], s[1] += q[4 * i + 1], s[2] += q[4 * i + 2];
+#endif
+}
 
 /* Add the samples of every pixel whose kernel meets the tile at fine
  * (X0, Y0), tw x th, from its read-back buf. */
@@ -214,15 +266,13 @@ static void gather(gather_ctx *g, const uint8_t *buf, int64_t X0, int64_t Y0, ui
             if (have)
                 first = acc->first[pix];
             if (full && !acc->weighted && !acc->mixed) {
-                /* the common case, kept free of branches: box, whole
-                 * kernel in this tile, no mask; at most 2^24 samples of
+                /* the common case: box, whole kernel in this tile, no
+                 * mask, summed a run at a time; at most 2^24 samples of
                  * 255 fit in 32 bits */
-                uint32_t r = 0, gr = 0, bl = 0;
-                for (uint64_t e = 0; e < k->n; e++) {
-                    const uint8_t *q = base + g->off[e];
-                    r += q[0], gr += q[1], bl += q[2];
-                }
-                s[0] = r, s[1] = gr, s[2] = bl;
+                uint32_t t[3] = {0, 0, 0};
+                for (uint64_t j = 0; j < g->n_runs; j++)
+                    gls_aa_sum_run(base + g->run_off[j], g->run_len[j], t);
+                s[0] = t[0], s[1] = t[1], s[2] = t[2];
             } else
                 for (uint64_t e = 0; e < k->n; e++) {
                     if (!full) {
@@ -363,7 +413,8 @@ int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_p
     uint8_t *seen = acc->mixed ? calloc((size_t)W * H, 1) : NULL;
     kernel k;
     memset(&k, 0, sizeof k);
-    int64_t *off = NULL;
+    int64_t *off = NULL, *run_off = NULL;
+    uint32_t *run_len = NULL;
     if (!cb || !vis || !buf[0] || !buf[1] || (acc->mixed && !seen)) {
         char need[32];
         gls_fmt_bytes(need, sizeof need, s.lay.bytes);
@@ -378,16 +429,18 @@ int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_p
     uint64_t total = s.lay.tiles * f->k, done = 0;
     for (uint64_t pass = 0; pass < f->k; pass++) {
         kernel_free(&k);
-        free(off);
-        off = NULL;
+        free(off), free(run_off), free(run_len);
+        off = run_off = NULL, run_len = NULL;
         int64_t shift[2];
-        if (kernel_make(f, pass, &k, shift) || !(off = malloc((k.n ? k.n : 1) * sizeof *off))) {
+        if (kernel_make(f, pass, &k, shift) || !(off = malloc((k.n ? k.n : 1) * sizeof *off)) ||
+            !(run_off = malloc((k.n ? k.n : 1) * sizeof *run_off)) ||
+            !(run_len = malloc((k.n ? k.n : 1) * sizeof *run_len))) {
             snprintf(err, errlen, "out of memory for the gather of %llu samples", (unsigned long long)f->l);
             goto out;
         }
         for (uint64_t e = 0; e < k.n; e++)
             off[e] = (k.c[e][1] * (int64_t)tw + k.c[e][0]) * 4;
-        gather_ctx g = {f, &k, off, acc, seen};
+        gather_ctx g = {f, &k, off, acc, seen, run_off, run_len, kernel_runs(&k, tw, run_off, run_len)};
         /* the tiles cover this pass's own fine bounding box (the layout's
          * is an estimate for --explain and the progress line) */
         int64_t x0, y0, x1, y1;
@@ -459,7 +512,7 @@ int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_p
     rc = gls_renderer_set_size(r, W, H, err, errlen);
 out:
     kernel_free(&k);
-    free(off);
+    free(off), free(run_off), free(run_len);
     free(cb);
     free(vis);
     free(buf[0]);

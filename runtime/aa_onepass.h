@@ -60,4 +60,8 @@ int gls_aa_render_fine(gls_renderer *r, const gls_camera *c, const gls_aa_plan *
 int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_fine_opts *fo,
                             uint32_t v0, uint32_t v1, gls_accum *acc, gls_aa_fine_stats *st, char *err, size_t errlen);
 
+/* Add the sums of the R, G and B bytes of len RGBA8 pixels at q to s[0..2]
+ * (the gather's inner loop; exposed for its unit test). */
+void gls_aa_sum_run(const uint8_t *q, uint32_t len, uint32_t s[3]);
+
 #endif

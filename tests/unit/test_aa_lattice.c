@@ -256,6 +256,40 @@ static void test_issue_rule_at_4096(void)
     CHECK_MSG(fabs(o.axis_diag - 0.002255) < 1e-6, "a = 2399: %.6f px at 0/45/90/135 degrees", o.axis_diag);
 }
 
+/* The gather's run sum against byte-by-byte addition: every length up to
+ * 1030 (odd and even, across the 256-pixel emptying of its 16-bit lanes),
+ * at every alignment of 4, on all-255 pixels (the largest lane sums) and
+ * on splitmix64 noise, added to nonzero starting sums. */
+static void test_sum_run(void)
+{
+    enum { N = 1030 };
+    uint8_t *buf = malloc(4 * (N + 4));
+    for (int fill = 0; fill < 2; fill++) {
+        uint64_t st = 12345;
+        for (size_t i = 0; i < 4 * (N + 4); i++) {
+            st += 0x9E3779B97F4A7C15ull;
+            uint64_t z = st;
+            z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+            z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+            buf[i] = fill ? (uint8_t)(z >> 56) : 255;
+        }
+        int bad = 0;
+        for (uint32_t len = 0; len <= N; len++)
+            for (uint32_t at = 0; at < 4; at++) {
+                uint32_t got[3] = {7, 8, 9}, want[3] = {7, 8, 9};
+                const uint8_t *q = buf + 4 * at;
+                gls_aa_sum_run(q, len, got);
+                for (uint32_t i = 0; i < len; i++)
+                    want[0] += q[4 * i], want[1] += q[4 * i + 1], want[2] += q[4 * i + 2];
+                if (memcmp(got, want, sizeof got) && !bad++)
+                    CHECK_MSG(0, "fill %d, length %u at %u: %u %u %u, want %u %u %u", fill, len, at, got[0], got[1],
+                              got[2], want[0], want[1], want[2]);
+            }
+        CHECK(bad == 0);
+    }
+    free(buf);
+}
+
 /* The mean per-row edge displacement over edge offsets, computed directly
  * (not from the points' mean): a row of pixels u = -3..3 crossed by an
  * edge x = c + y cot(theta) (steep; flat edges per column, x and y
@@ -986,6 +1020,7 @@ int main(void)
     RUN(test_lattice_points);
     RUN(test_lattice_criterion);
     RUN(test_issue_rule_at_4096);
+    RUN(test_sum_run);
     RUN(test_lattice_centred);
     RUN(test_basis_and_map);
     RUN(test_pass_split_choice);
