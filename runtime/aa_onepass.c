@@ -193,6 +193,10 @@ typedef struct {
     uint64_t n_runs;
 } gather_ctx;
 
+/* How many runs ahead the gather asks for cache lines (make bench-aa,
+ * 4096 samples: 4, 8 and 16 about equal, none: grid 25 % slower) */
+#define PREFETCH_RUNS 8
+
 /* The kernel's entries (sorted by row, then column) as runs of samples
  * next to each other in a fine row: about sqrt(L) runs where the entries
  * are L, so the common case of the gather sums whole rows at a time.
@@ -270,8 +274,17 @@ static void gather(gather_ctx *g, const uint8_t *buf, int64_t X0, int64_t Y0, ui
                  * mask, summed a run at a time; at most 2^24 samples of
                  * 255 fit in 32 bits */
                 uint32_t t[3] = {0, 0, 0};
-                for (uint64_t j = 0; j < g->n_runs; j++)
+                for (uint64_t j = 0; j < g->n_runs; j++) {
+                    /* request a later run's cache lines now: each run
+                     * ends in a mispredicted branch, which would otherwise
+                     * hold the next fine row's misses back until then */
+                    if (j + PREFETCH_RUNS < g->n_runs) {
+                        const uint8_t *nq = base + g->run_off[j + PREFETCH_RUNS];
+                        for (uint32_t o = 0; o < 4 * g->run_len[j + PREFETCH_RUNS]; o += 64)
+                            __builtin_prefetch(nq + o);
+                    }
                     gls_aa_sum_run(base + g->run_off[j], g->run_len[j], t);
+                }
                 s[0] = t[0], s[1] = t[1], s[2] = t[2];
             } else
                 for (uint64_t e = 0; e < k->n; e++) {
