@@ -188,17 +188,28 @@ $(COMPILER_OBJ): | $(B)/gen/grammar.h
 
 # Archives are written from scratch: `ar rcs` alone would keep the object
 # of a deleted or moved source inside, and links would pick it up.  An
-# archive also depends on its source directory, whose time changes when a
-# file is added, deleted or renamed in it, so that deleting a source
-# rebuilds the archive too (tests/e2e/build_archives.sh).
+# archive (and the shared library) also depends on the list of its
+# members, $(B)/members/NAME.list, which every make run rewrites while it
+# reads this file (the end of it), but only when the list changed: so
+# deleting, adding or moving a source rebuilds it, and `make -n` still
+# shows only what would run (tests/e2e/build_archives.sh,
+# readme_commands.sh).  Depending on the source directory's time instead
+# missed a deletion made within the same tick of the kernel's coarse file
+# clock as the archive (a few ms; seen on a fast machine).
 ARCHIVE = rm -f $@ && $(AR) rcs $@ $(filter %.o,$^)
-$(B)/libglsbase.a: $(BASE_OBJ) base
+$(B)/members/%.list:
+	@mkdir -p $(@D) && printf '%s\n' $(MEMBERS_$*) >$@
+MEMBERS_base := $(BASE_OBJ)
+MEMBERS_format := $(FORMAT_OBJ)
+MEMBERS_compiler := $(COMPILER_OBJ)
+MEMBERS_runtime := $(RUNTIME_OBJ)
+$(B)/libglsbase.a: $(BASE_OBJ) $(B)/members/base.list
 	$(ARCHIVE)
-$(B)/libglsformat.a: $(FORMAT_OBJ) format
+$(B)/libglsformat.a: $(FORMAT_OBJ) $(B)/members/format.list
 	$(ARCHIVE)
-$(B)/libglscompiler.a: $(COMPILER_OBJ) compiler
+$(B)/libglscompiler.a: $(COMPILER_OBJ) $(B)/members/compiler.list
 	$(ARCHIVE)
-$(B)/libglsruntime.a: $(RUNTIME_OBJ) runtime
+$(B)/libglsruntime.a: $(RUNTIME_OBJ) $(B)/members/runtime.list
 	$(ARCHIVE)
 
 $(B)/glsc: $(B)/compiler/glsc_main.o $(LIB_compiler)
@@ -223,12 +234,14 @@ GLSCENE_SONAME := libglscene.so.$(firstword $(subst ., ,$(GLSCENE_VERSION)))
 GLSCENE_OBJ := $(LIB_SRC:%.c=$(B)/%.o) $(filter-out $(B)/base/usage.o $(B)/base/stdout_check.o,$(BASE_OBJ)) \
                $(FORMAT_OBJ) $(COMPILER_OBJ) $(RUNTIME_OBJ)
 GLSCENE_PIC_OBJ := $(GLSCENE_OBJ:$(B)/%=$(B)/pic/%)
-$(B)/libglscene.a: $(GLSCENE_OBJ) lib base format compiler runtime
+MEMBERS_glscene := $(GLSCENE_OBJ)
+MEMBERS_glscene_pic := $(GLSCENE_PIC_OBJ)
+$(B)/libglscene.a: $(GLSCENE_OBJ) $(B)/members/glscene.list
 	$(ARCHIVE)
 # the undefined-symbol check, except under the sanitizers, whose runtime
 # the program that loads the library brings
 GLSCENE_NO_UNDEFINED := $(if $(filter 1,$(SANITIZE) $(FUZZ)),,-Wl,--no-undefined)
-$(B)/libglscene.so.$(GLSCENE_VERSION): $(GLSCENE_PIC_OBJ) lib/glscene.map
+$(B)/libglscene.so.$(GLSCENE_VERSION): $(GLSCENE_PIC_OBJ) lib/glscene.map $(B)/members/glscene_pic.list
 	$(CC) $(LDFLAGS) -shared -Wl,-soname,$(GLSCENE_SONAME) -Wl,--version-script=lib/glscene.map \
 	    $(GLSCENE_NO_UNDEFINED) $(GLSCENE_PIC_OBJ) -o $@ $(LDLIBS) $(GL_LIBS)
 $(B)/libglscene.so: $(B)/libglscene.so.$(GLSCENE_VERSION)
@@ -453,7 +466,8 @@ $(B)/runtime/aa.o: CFLAGS += -O3
 # ground truth.  Library libglsroad.a (tests link it) and the tool.
 ROAD_SRC := $(filter-out roads/glsroad_main.c,$(wildcard roads/*.c))
 ROAD_OBJ := $(ROAD_SRC:%.c=$(B)/%.o)
-$(B)/libglsroad.a: $(ROAD_OBJ) roads
+MEMBERS_roads := $(ROAD_OBJ)
+$(B)/libglsroad.a: $(ROAD_OBJ) $(B)/members/roads.list
 	$(ARCHIVE)
 $(B)/glsroad: $(B)/roads/glsroad_main.o $(LIB_roads) $(LIB_runtime)
 	$(CC) $(LDFLAGS) $< $(LIB_roads) $(LIB_runtime) -o $@ $(LDLIBS)
@@ -480,3 +494,12 @@ demo-road:
 # disparity, made by tools/gt_gallery.py (cv2, numpy).
 gallery-truth: demo-road out/stereo/.stamp
 	/usr/bin/python3 tools/gt_gallery.py out/road/clip 200 out/stereo docs
+
+# The archives' member lists (see ARCHIVE above), brought up to date while
+# make reads this file, after every MEMBERS_ list is defined.
+MEMBER_LISTS := base format compiler runtime glscene glscene_pic roads
+# (each run writes its own temporary, .new.PID, so that runs at once agree)
+members_sync = mkdir -p $(B)/members && $(foreach m,$(MEMBER_LISTS),printf '%s\n' $(MEMBERS_$(m)) >$(B)/members/$(m).list.new.$$$$ && \
+    { cmp -s $(B)/members/$(m).list.new.$$$$ $(B)/members/$(m).list && rm -f $(B)/members/$(m).list.new.$$$$ || \
+      mv -f $(B)/members/$(m).list.new.$$$$ $(B)/members/$(m).list; } &&) true
+$(if $(filter clean,$(MAKECMDGOALS)),,$(shell $(members_sync)))
