@@ -197,20 +197,18 @@ typedef struct {
  * 4096 samples: 4, 8 and 16 about equal, none: grid 25 % slower) */
 #define PREFETCH_RUNS 8
 
-/* The kernel's entries (sorted by row, then column) as runs of samples
- * next to each other in a fine row: about sqrt(L) runs where the entries
- * are L, so the common case of the gather sums whole rows at a time.
- * Returns the number of runs. */
-static uint64_t kernel_runs(const kernel *k, uint32_t tw, int64_t *run_off, uint32_t *run_len)
+/* The kernel's entries (sorted by row, then column; byte offsets off) as
+ * runs of samples next to each other in a fine row: about sqrt(L) runs
+ * where the entries are L, so the common case of the gather sums whole
+ * rows at a time.  Returns the number of runs. */
+static uint64_t kernel_runs(const kernel *k, const int64_t *off, int64_t *run_off, uint32_t *run_len)
 {
     uint64_t n = 0;
-    for (uint64_t e = 0; e < k->n; e++) {
-        int64_t o = (k->c[e][1] * (int64_t)tw + k->c[e][0]) * 4;
-        if (n && e && k->c[e][1] == k->c[e - 1][1] && k->c[e][0] == k->c[e - 1][0] + 1)
+    for (uint64_t e = 0; e < k->n; e++)
+        if (n && k->c[e][1] == k->c[e - 1][1] && k->c[e][0] == k->c[e - 1][0] + 1)
             run_len[n - 1]++;
         else
-            run_off[n] = o, run_len[n++] = 1;
-    }
+            run_off[n] = off[e], run_len[n++] = 1;
     return n;
 }
 
@@ -453,7 +451,7 @@ int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_p
         }
         for (uint64_t e = 0; e < k.n; e++)
             off[e] = (k.c[e][1] * (int64_t)tw + k.c[e][0]) * 4;
-        gather_ctx g = {f, &k, off, acc, seen, run_off, run_len, kernel_runs(&k, tw, run_off, run_len)};
+        gather_ctx g = {f, &k, off, acc, seen, run_off, run_len, kernel_runs(&k, off, run_off, run_len)};
         /* the tiles cover this pass's own fine bounding box (the layout's
          * is an estimate for --explain and the progress line) */
         int64_t x0, y0, x1, y1;

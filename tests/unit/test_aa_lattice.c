@@ -115,10 +115,9 @@ static void test_lattice_points(void)
     CHECK(x1 >= 0 && x1 < (int64_t)big.q && y1 >= 0 && y1 < (int64_t)big.q && x1 != x0);
 }
 
-/* Worst per-row RMS edge error at 0, 45, 90 and 135 degrees of lattice l,
- * computed from its points by bench/aa_scene.h (independently of the
- * gcd formula the criterion uses). */
-static double axis_diag_measured(const gls_lattice *l)
+/* Worst per-row RMS edge error of lattice l over n directions (degrees),
+ * computed from its points by bench/aa_scene.h. */
+static double worst_measured(const gls_lattice *l, const double *deg, size_t n)
 {
     double *x = malloc(l->m * sizeof *x), *y = malloc(l->m * sizeof *y), *s = malloc(l->m * sizeof *s), w = 0;
     for (uint64_t i = 0; i < l->m; i++) {
@@ -126,10 +125,18 @@ static double axis_diag_measured(const gls_lattice *l)
         gls_lattice_point(l, i, &X, &Y);
         x[i] = (double)X / (double)l->q, y[i] = (double)Y / (double)l->q;
     }
-    for (int d = 0; d < 4; d++)
-        w = fmax(w, as_pattern_rms(x, y, (long)l->m, 45.0 * d, s));
+    for (size_t k = 0; k < n; k++)
+        w = fmax(w, as_pattern_rms(x, y, (long)l->m, deg[k], s));
     free(x), free(y), free(s);
     return w;
+}
+
+/* ... at 0, 45, 90 and 135 degrees (independently of the gcd formula the
+ * criterion uses). */
+static double axis_diag_measured(const gls_lattice *l)
+{
+    static const double deg[] = {0, 45, 90, 135};
+    return worst_measured(l, deg, 4);
 }
 
 /* The criterion, checked by brute force over every a in 1..M-1 (not only
@@ -176,21 +183,11 @@ static void test_lattice_criterion(void)
     }
 }
 
-/* Worst per-row RMS edge error of lattice l at issue 13's listed angles,
- * from its points (bench/aa_scene.h). */
+/* ... at issue 13's listed angles. */
 static double listed_measured(const gls_lattice *l)
 {
     static const double listed[] = {0.5, 1, 3, 10, 22.5, 30, 45, 60, 80};
-    double *x = malloc(l->m * sizeof *x), *y = malloc(l->m * sizeof *y), *s = malloc(l->m * sizeof *s), w = 0;
-    for (uint64_t i = 0; i < l->m; i++) {
-        int64_t X, Y;
-        gls_lattice_point(l, i, &X, &Y);
-        x[i] = (double)X / (double)l->q, y[i] = (double)Y / (double)l->q;
-    }
-    for (size_t k = 0; k < sizeof listed / sizeof listed[0]; k++)
-        w = fmax(w, as_pattern_rms(x, y, (long)l->m, listed[k], s));
-    free(x), free(y), free(s);
-    return w;
+    return worst_measured(l, listed, sizeof listed / sizeof listed[0]);
 }
 
 /* What spec/antialiasing.md ("Accuracy") says of issue 13's 1/2048 px
