@@ -1,7 +1,7 @@
 /* glsplay's whole job as library calls (include/glscene.h, "The player's
  * full options"): a run takes glsplay's command-line arguments one at a
  * time, checks them against each other, and renders and writes what they
- * ask for through the runtime's player (runtime/player.c).  glsplay's
+ * ask for through the runtime's player (runtime/play/player.c).  glsplay's
  * main is these calls and its help text, nothing else, so that the tool
  * and a program driving the library share one parser and one set of
  * messages (tests/e2e/glsplay_public_api.sh checks that glsplay_main.o

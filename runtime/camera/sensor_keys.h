@@ -7,7 +7,7 @@
 #define GLS_SENSOR_KEYS_H
 
 #include <stddef.h>
-#include "sensor.h"
+#include "sensor_params.h"
 
 #define GLS_SENSOR_NKEYS 6
 /* The key names, in the order of the "keys:" list of messages. */

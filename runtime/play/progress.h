@@ -9,9 +9,7 @@
 
 #include <stdint.h>
 #include <stdio.h>
-
-/* Monotonic clock, seconds. */
-double gls_now(void);
+#include "progress_line.h"
 
 /* Renders projected to take longer than this get the estimate line. */
 #define GLS_ESTIMATE_THRESHOLD_S 60.0
@@ -20,13 +18,6 @@ double gls_now(void);
  * after `done` of `total` frames in `elapsed` seconds; with final set,
  * "\rglsplay: 500 frames in 2 min 41 s, 3.10 frames/s" and a newline. */
 void gls_progress_frames(FILE *f, uint64_t done, uint64_t total, double elapsed, int final);
-
-/* An anti-aliased camera frame's progress line, at most every 0.5 s
- * (*last: when it was last printed; final: always, with a newline):
- * "\rglsplay: NAME: 12/256 samples (5%), 3 s left   " (units "samples",
- * or "tiles" for the one-pass renderer).  Nothing if f is NULL. */
-void gls_progress_steps(FILE *f, const char *label, const char *units, uint64_t done, uint64_t total, double t0,
-                        double *last, int final);
 
 /* The projected time of a whole render from a measurement: `elapsed`
  * seconds for the first `done` units (anti-aliasing passes, or whole

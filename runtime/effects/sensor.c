@@ -9,14 +9,6 @@
 #include "sensor.h"
 #include "sensor_rng.h"
 
-gls_sensor gls_sensor_none(void)
-{
-    gls_sensor s;
-    memset(&s, 0, sizeof s);
-    s.gain = 1;
-    return s;
-}
-
 double gls_sensor_vignetting(const gls_sensor *s, double u, double v, double cx, double cy, double fx, double x,
                              double y)
 {

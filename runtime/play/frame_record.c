@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "sensor.h"
 #include "aa_onepass.h"
 #include "digest.h"
 #include "distort.h"

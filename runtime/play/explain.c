@@ -2,6 +2,8 @@
  * feature bits (which the reader has checked against the content). */
 #include <stdlib.h>
 #include <string.h>
+#include "numfmt.h"
+#include "sensor.h"
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "distort.h"
@@ -115,6 +117,25 @@ static void explain_instances(FILE *out, const gls_scene *s, const gls_camera *c
     free(ivis);
     free(vis);
     gls_occlusion_free(&occ);
+}
+
+/* One line for disparity, disparity16 and depth16 when asked (what they
+ * are made of and that they cost no extra pass); aa: the image is
+ * anti-aliased (the depth then comes from the centre pass). */
+static void explain_depth_outputs(FILE *out, const gls_play_opts *o, int aa)
+{
+    unsigned u = o->outputs;
+    if (!(u & (GLS_OUT_DISPARITIES | GLS_OUT_DEPTH16)))
+        return;
+    char scale[32];
+    gls_fmt_double(scale, sizeof scale, o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI);
+    fprintf(out, "  writes:%s%s%s%s%s from the %s's depth: no extra pass\n",
+            u & GLS_OUT_DISPARITY ? (o->float_format == GLS_FLOAT_NPY ? " disparity (NPY, fx B / Zc)"
+                                                                      : " disparity (PFM, fx B / Zc)")
+                                  : "",
+            u & GLS_OUT_DISPARITY16 ? " disparity16 (KITTI 16-bit PNG, d * 256)" : "",
+            u & GLS_OUT_DEPTH16 ? " depth16 (16-bit PNG, Zc * " : "", u & GLS_OUT_DEPTH16 ? scale : "",
+            u & GLS_OUT_DEPTH16 ? ")" : "", aa ? "unjittered centre pass" : "pass");
 }
 
 void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
@@ -275,7 +296,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         if (outputs & GLS_OUT_EDGE_MAPS)
             fprintf(out, "  writes: %s (8-bit PNG, 255 where the samples of a pixel differ)\n",
                     outputs & GLS_OUT_EDGES ? "edges" : "mask");
-        gls_explain_depth_outputs(out, o, aa);
+        explain_depth_outputs(out, o, aa);
         gls_sensor_explain(out, &c->sensor, (uint64_t)c->width * c->height, (outputs & GLS_OUT_IMAGE) != 0);
         if (outputs & GLS_OUT_LANDMARKS)
             fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,

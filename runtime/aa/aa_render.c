@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "aa_render.h"
-#include "progress.h"
+#include "progress_line.h"
 #include "units.h"
 
 /* Mosaic budget in pixels.  Larger mosaics amortise the clear, the

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "aa_onepass.h"
-#include "progress.h"
+#include "progress_line.h"
 #include "units.h"
 
 /* Tile size cap for speed: llvmpipe bins a framebuffer in 64x64 blocks;

@@ -8,7 +8,7 @@
 #include <stdint.h>
 #include "aa.h"
 #include "camera.h"
-#include "player.h"
+#include "output_table.h"
 
 /* acc: the accumulated samples, or NULL for a single pass whose colours
  * are rgba (RGBA8).  Returns a malloc'd image in fmt's layout (RGBA8,

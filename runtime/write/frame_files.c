@@ -13,7 +13,7 @@
 #include "out_npy.h"
 #include "out_png16.h"
 #include "outputs.h"
-#include "progress.h"
+#include "progress_line.h"
 #include "units.h"
 
 void gls_frame_oom_message(char *buf, size_t len, const char *name, uint32_t w, uint32_t h, uint64_t bytes)

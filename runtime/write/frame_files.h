@@ -12,7 +12,7 @@
 #include "frame_writer.h"
 #include "gt_table.h"
 #include "out_boxes.h"
-#include "player.h"
+#include "output_table.h"
 #include "progress_json.h"
 
 #define GLS_FRAME_PATH 4096

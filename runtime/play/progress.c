@@ -1,14 +1,6 @@
 /* Frame progress and the render-time estimate (progress.h). */
-#include <time.h>
 #include "progress.h"
 #include "units.h"
-
-double gls_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 void gls_progress_frames(FILE *f, uint64_t done, uint64_t total, double elapsed, int final)
 {
@@ -31,24 +23,6 @@ double gls_estimate_total(double elapsed, uint64_t done, uint64_t per_view, uint
     if (!done)
         return 0;
     return elapsed / (double)done * (double)per_view * (double)views;
-}
-
-void gls_progress_steps(FILE *f, const char *label, const char *units, uint64_t done, uint64_t total, double t0,
-                        double *last, int final)
-{
-    if (!f)
-        return;
-    double t = gls_now();
-    if (!final && t - *last < 0.5)
-        return;
-    *last = t;
-    double el = t - t0, left = done ? el * (double)(total - done) / (double)done : 0;
-    fprintf(f, "\rglsplay: %s: %llu/%llu %s (%.0f%%), %.0f s %s   ", label ? label : "", (unsigned long long)done,
-            (unsigned long long)total, units, 100.0 * (double)done / (double)total, final ? el : left,
-            final ? "taken" : "left");
-    if (final)
-        fputc('\n', f);
-    fflush(f);
 }
 
 int gls_estimate_report(FILE *f, double elapsed, uint64_t done, uint64_t per_view, uint64_t views)

@@ -11,7 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
-#include "sensor.h"
+#include "sensor_params.h"
 
 #define GLS_CAMERA_MAX_DIM 16384u
 /* Camera files are a few hundred bytes; the cap keeps a wrong path (a
@@ -68,7 +68,7 @@ typedef struct {
  * declaring the other frame is an error at its 'pose' line.  On error
  * returns -1 and writes "fname:line:col: error: message", the source line
  * and a caret to err.  Notes about an accepted file go to notes, one line
- * each (R re-orthonormalised, runtime/rotation.h; a rig use of a file
+ * each (R re-orthonormalised, runtime/camera/rotation.h; a rig use of a file
  * that does not declare its frame); NULL drops them. */
 int gls_camera_parse(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes, gls_camera *cam,
                      char *err, size_t errlen);

@@ -154,3 +154,11 @@ int gls_sensor_key_parse(gls_sensor_keys *k, int key, char *const *tok, int nt, 
         }
     }
 }
+
+gls_sensor gls_sensor_none(void)
+{
+    gls_sensor s;
+    memset(&s, 0, sizeof s);
+    s.gain = 1;
+    return s;
+}

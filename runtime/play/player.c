@@ -44,6 +44,7 @@
 #include "progress_json.h"
 #include "shard.h"
 #include "exposure.h"
+#include "exposure_landmarks.h"
 #include "subframe.h"
 #include "suggest.h"
 #include "trajectory.h"

@@ -25,7 +25,6 @@
 #include <stdio.h>
 #include "aa.h"
 #include "camera.h"
-#include "gt_landmarks.h"
 #include "render.h"
 
 /* Most pixels the image may move within one band of rows. */
@@ -100,13 +99,6 @@ typedef int (*gls_render_band_fn)(void *ud, const gls_camera *at, double lx, dou
 int gls_exposure_render_bands(const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
                               gls_pose_at_fn pose_at, void *pose_ud, gls_render_band_fn render_band, void *band_ud,
                               gls_accum *acc, uint32_t band, char *msg, size_t msglen);
-
-/* Rolling shutter: landmark k of l (taken at the frame time) replaced by
- * where it is at the time of the band of `band` rows it projects into,
- * with that time's camera pose (l->pose); the scene left at s = 0.  0,
- * or -1 when out of memory. */
-int gls_exposure_landmarks(const gls_scene *s, const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud,
-                           gls_landmarks *l);
 
 /* Rolling shutter: each row's camera pose (R row-major, then T), that of
  * its band of `band` rows (the middle row's time), the pose its depth was

@@ -1,6 +1,7 @@
 /* A camera's image through its sensor (sensor_image.h). */
 #include <stdlib.h>
 #include <string.h>
+#include "sensor.h"
 #include "sensor_image.h"
 
 /* The camera-frame ray (x, y, 1) of pixel (u, v): the camera model's

@@ -65,19 +65,3 @@ void gls_disparity_from_z(const float *z, size_t n, double fxB, float *d)
     for (size_t i = 0; i < n; i++)
         d[i] = isfinite(z[i]) ? (float)(fxB / z[i]) : INFINITY;
 }
-
-void gls_explain_depth_outputs(FILE *out, const gls_play_opts *o, int aa)
-{
-    unsigned u = o->outputs;
-    if (!(u & (GLS_OUT_DISPARITIES | GLS_OUT_DEPTH16)))
-        return;
-    char scale[32];
-    gls_fmt_double(scale, sizeof scale, o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI);
-    fprintf(out, "  writes:%s%s%s%s%s from the %s's depth: no extra pass\n",
-            u & GLS_OUT_DISPARITY ? (o->float_format == GLS_FLOAT_NPY ? " disparity (NPY, fx B / Zc)"
-                                                                      : " disparity (PFM, fx B / Zc)")
-                                  : "",
-            u & GLS_OUT_DISPARITY16 ? " disparity16 (KITTI 16-bit PNG, d * 256)" : "",
-            u & GLS_OUT_DEPTH16 ? " depth16 (16-bit PNG, Zc * " : "", u & GLS_OUT_DEPTH16 ? scale : "",
-            u & GLS_OUT_DEPTH16 ? ")" : "", aa ? "unjittered centre pass" : "pass");
-}

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "distort.h"
-#include "exposure.h"
+#include "exposure_landmarks.h"
 
 int gls_exposure_landmarks(const gls_scene *s, const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud,
                            gls_landmarks *l)

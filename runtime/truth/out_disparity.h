@@ -6,7 +6,6 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "camera.h"
-#include "player.h"
 
 /* Is (l, r) a rectified pair, l the left camera: the same size, the same
  * fx, fy, cx, cy, skew (within 1e-9 of the larger value, or of fx), the
@@ -21,10 +20,5 @@ int gls_rectified_pair(const gls_camera *l, const gls_camera *r, const char *lna
 /* d[i] = fxB / z[i] (fx B of the camera), +inf where z[i] is not finite
  * (no surface), as float. */
 void gls_disparity_from_z(const float *z, size_t n, double fxB, float *d);
-
-/* --explain: one line for disparity, disparity16 and depth16 when asked
- * (what they are made of and that they cost no extra pass); aa: the
- * image is anti-aliased (the depth then comes from the centre pass). */
-void gls_explain_depth_outputs(FILE *out, const gls_play_opts *o, int aa);
 
 #endif
