@@ -262,6 +262,19 @@ int gls_accum_init(gls_accum *a, uint32_t width, uint32_t height, int weighted, 
     return 0;
 }
 
+uint64_t gls_accum_sums_bytes(const gls_accum *a)
+{
+    uint64_t n = (uint64_t)a->width * a->height;
+    return a->weighted ? (n * 4 + (uint64_t)a->width * 4) * sizeof(uint64_t)
+                       : n * 4 * sizeof(uint32_t) + (uint64_t)a->width * 4 * sizeof(uint16_t);
+}
+
+uint64_t gls_accum_mask_bytes(const gls_accum *a)
+{
+    uint64_t n = (uint64_t)a->width * a->height;
+    return a->mixed ? n * (sizeof *a->first + 1) : 0;
+}
+
 void gls_accum_free(gls_accum *a)
 {
     free(a->sum32);

@@ -118,6 +118,10 @@ typedef struct {
 /* weighted: 1 for plans whose weights are not all 1 (gls_aa_weighted). */
 int gls_accum_init(gls_accum *a, uint32_t width, uint32_t height, int weighted, int track_mixed);
 void gls_accum_free(gls_accum *a);
+/* The bytes a's sums (and its row of partial sums) take, and those of its
+ * mixed-pixel mask (0 when it tracks none): what gls_accum_init took. */
+uint64_t gls_accum_sums_bytes(const gls_accum *a);
+uint64_t gls_accum_mask_bytes(const gls_accum *a);
 int gls_aa_weighted(const gls_aa_plan *p);
 /* Add n <= GLS_ACCUM_MAX_TILES samples: tile[t] is the top-left pixel of
  * sample t's RGBA8 image, stride the bytes between its rows (4 * width

@@ -254,7 +254,7 @@ int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure
     return gls_exposure_render_bands(c, e, p, pose_at, ud, render_plan_band, &pb, acc, band, msg, msglen);
 }
 
-void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p)
+void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p, int image)
 {
     gls_exposure e = gls_exposure_of(c, moving);
     unsigned long long per = p->count, K = e.samples;
@@ -266,6 +266,12 @@ void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_
                      "--motion)\n", c->line_delay);
     if (!gls_exposure_on(&e))
         return;
+    if (!image) {
+        fprintf(out, "  exposure effects: asked for, but no output is drawn with them (image, edges): depth and "
+                     "ground truth from the unblurred centre pass%s\n",
+                e.rolling ? ", row by row at each row's time" : " at the frame time, lens centre");
+        return;
+    }
     if (e.blur)
         fprintf(out, "  motion blur: on (key shutter %g): exposure [-%g, %g] frame intervals around the frame time, "
                      "%llu sub-frame poses (midpoints of equal sub-intervals)\n",

@@ -106,7 +106,8 @@ int gls_exposure_render_bands(const gls_camera *c, const gls_exposure *e, const 
  * when out of memory. */
 double (*gls_exposure_row_poses(const gls_camera *c, uint32_t band, gls_pose_at_fn pose_at, void *ud))[12];
 
-/* --explain: what the effects of camera c cost. */
-void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p);
+/* --explain: what the effects of camera c cost; image: an output is
+ * drawn with them (the frame plan's decision, frame_plan.h). */
+void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p, int image);
 
 #endif

@@ -20,6 +20,7 @@
 #include "scene_cull.h"
 #include "frame_writer.h"
 #include "outputs.h"
+#include "frame_plan.h"
 
 /* The GL effect each feature switches on, by feature bit; the asserts keep
  * the indices in step with bundle.h. */
@@ -150,6 +151,9 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     char err[128];
     if (gls_aa_plan_init(&p, &ao, err, sizeof err))
         p.count = 1, p.o = ao, p.o.n = 1;
+    /* the anti-aliasing pattern, when --aa asks for one and an output is
+     * drawn with it; whether a camera's frame uses an accumulator is its
+     * frame plan's (below: exposure effects need one even at --aa 1) */
     int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
     int centre = !aa || (outputs & GLS_OUT_FROM_Z);
     int npy = o->float_format == GLS_FLOAT_NPY;
@@ -194,9 +198,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                              "on llvmpipe)\n", "");
         }
     }
-    if (!aa) {
-        fprintf(out, "passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0); no accumulator\n");
-    } else {
+    if (aa) {
         if (p.o.n)
             fprintf(out, "anti-aliasing: %ux%u = %llu samples per pixel, %s filter", p.o.n, p.o.n,
                     (unsigned long long)p.m, p.o.filter == GLS_AA_BOX ? "box" : "Gaussian");
@@ -239,8 +241,15 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         fprintf(out, "cameras: none given\n");
         return;
     }
+    int moving = o->trajectory || o->nmotions;
+    gls_plan_inputs pin = {outputs, o->image_format, &p, moving};
     for (size_t i = 0; i < n; i++) {
         const gls_camera *c = &cams[i];
+        /* the first frame's plan, the one the player runs (frame_plan.h);
+         * with a trajectory, taken to have a next row (flow) */
+        gls_frame_plan fp;
+        gls_frame_plan_make(&fp, &pin, c, o->trajectory != NULL);
+        int aa = fp.aa, centre = (fp.passes & GLS_PASS_CENTRE) != 0;
         fprintf(out, "camera %s: %ux%u fx %g fy %g cx %g cy %g skew %g near %g far %g\n", names[i], c->width,
                 c->height, c->fx, c->fy, c->cx, c->cy, c->skew, c->near, c->far);
         /* the frame R and T are in: declared by the file, or implied by
@@ -253,8 +262,10 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  pose: world (%s): R and T map the world into the camera\n",
                     c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
         gls_distort_explain(out, c, &p);
-        gls_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
-        gls_distort_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
+        gls_exposure_explain(out, c, moving, &p, fp.effects);
+        if (fp.effects)
+            gls_distort_exposure_explain(out, c, moving, &p);
+        gls_frame_plan_explain(out, &fp, &p);
         gls_aa_fine_layout lay;
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
         if (aa && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
@@ -281,11 +292,8 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  reads back: colour (RGBA8) per anti-aliasing pass\n");
         }
         if (centre)
-            fprintf(out, "  reads back%s: %s%s%s\n", aa ? " (unjittered centre pass)" : "",
-                    (!aa && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (outputs & GLS_OUT_POINTS)
-                        ? "colour (RGBA8) " : "",
-                    outputs & GLS_OUT_FROM_Z ? "depth (float32) " : "",
-                    outputs ? "" : "nothing");
+            fprintf(out, "  reads back%s: %s%s\n", aa ? " (unjittered centre pass)" : "",
+                    fp.rgba ? "colour (RGBA8) " : "", fp.z ? "depth (float32) " : "");
         fprintf(out, "  writes:%s%s%s%s%s\n", outputs & GLS_OUT_IMAGE ? " image (" : "",
                 outputs & GLS_OUT_IMAGE ? (npy && o->image_format == GLS_IMG_PFM ? "float32 NPY (H, W, 3)"
                                                                                  : fmt_name[o->image_format])

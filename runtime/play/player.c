@@ -23,6 +23,7 @@
 #include "distort_exposure.h"
 #include "distort_render.h"
 #include "frame_files.h"
+#include "frame_plan.h"
 #include "frame_record.h"
 #include "frame_writer.h"
 #include "glctx.h"
@@ -271,6 +272,8 @@ typedef struct {
     int moving;
     const char *name_now;       /* the camera being rendered            */
     const char *inputs;         /* the frame records' inputs digest     */
+    gls_frame_counts *counts;   /* what the last camera frame did, counted
+                                   (NULL: not counted; o->counts)      */
 } session;
 
 /* The time estimate (spec/road.md "Progress and time estimate").  Made
@@ -314,49 +317,6 @@ static void view_done(session *s)
     }
 }
 
-/* Roughly what play_camera allocates for an n-pixel image besides the
- * framebuffer: read-backs, the accumulator and mask, the converted image
- * and the largest encoded file.  For the message when it fails. */
-static uint64_t camera_buffer_bytes(const gls_play_opts *o, int aa, int weighted, int sensor, uint64_t n)
-{
-    unsigned out = o->outputs;
-    uint64_t b = 0, enc = 0;
-    if (out & GLS_OUT_FROM_Z)
-        b += 4 * n, enc = 4 * n;
-    if (out & GLS_OUT_DISPARITIES) /* made by the writer */
-        b += 4 * n;
-    if (out & (GLS_OUT_DISPARITY16 | GLS_OUT_DEPTH16)) /* the 16-bit codes */
-        b += 2 * n;
-    if ((!aa && (out & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (out & GLS_OUT_POINTS))
-        b += 4 * n;
-    if (aa)
-        b += (weighted ? 32 : 16) * n + ((out & GLS_OUT_EDGE_MAPS) ? 5 * n : 0);
-    if (out & GLS_OUT_IMAGE) {
-        uint64_t img = o->image_format == GLS_IMG_PFM ? 12 : o->image_format == GLS_IMG_PNG16 ? 6 : aa ? 4 : 0;
-        b += img * n;
-        if (img * n > enc)
-            enc = img * n;
-    }
-    if (out & GLS_OUT_EDGE_MAPS)
-        b += n;
-    if (out & GLS_OUT_POINTS)
-        enc = 27 * n; /* x y z double, r g b */
-    if (out & (GLS_OUT_IDS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) /* ids per pixel; 16-bit image or COCO runs */
-        b += 4 * n, enc = enc > 16 * n ? enc : 16 * n;
-    if (out & GLS_OUT_NORMALS)
-        b += 12 * n, enc = enc > 12 * n ? enc : 12 * n;
-    if (out & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL))
-        b += 4 * n; /* the ground-truth pass's depth (the boxes' passes: depth) */
-    if (out & GLS_OUT_FLOW_ALL) {
-        b += 13 * n; /* next frame's depth, u v, mask */
-        if (8 * n > enc)
-            enc = 8 * n; /* the .flo */
-    }
-    if (sensor && (out & GLS_OUT_IMAGE)) /* the linear intensities (sensor_image.h) */
-        b += 12 * n;
-    return b + enc;
-}
-
 /* Say why a camera frame failed.  An earlier frame's files may still be
  * in the writer: if one of them failed, a run without the writer thread
  * would have stopped there, so that message is said instead of this one
@@ -365,13 +325,6 @@ static void say_failure(session *s, const char *msg)
 {
     char earlier[1024];
     fprintf(s->errs, "%s\n", gls_writer_finish(s->w, earlier, sizeof earlier) ? earlier : msg);
-}
-
-/* Is output k written for this camera frame?  Flow only when the
- * trajectory has a next row. */
-static int output_on(const session *s, size_t k)
-{
-    return (s->o->outputs & outs[k].bit) && (s->next || !(outs[k].bit & GLS_OUT_FLOW_ALL));
 }
 
 static int pose_at(void *ud, double t, gls_camera *cam);
@@ -396,6 +349,9 @@ static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *
     *mask = malloc(n ? n : 1);
     if (!z1 || !*uv || !*mask)
         goto out;
+    if (s->counts)
+        s->counts->bytes[GLS_BUF_FLOW] += n * sizeof *z1 + 2 * n * sizeof **uv + n,
+            s->counts->passes[GLS_PASS_I_FLOW_NEXT]++;
     if (band < c->height) {
         /* rolling shutter: both frames' rows at their own times (a lens,
          * df: their points projected by its model) */
@@ -634,6 +590,26 @@ out:
     return rc;
 }
 
+/* malloc for buffer k of the frame plan, its bytes counted when the run
+ * is counted (gls_frame_counts: tests compare them with the plan). */
+static void *frame_alloc(gls_frame_counts *cnt, int k, size_t bytes)
+{
+    void *p = malloc(bytes ? bytes : 1);
+    if (p && cnt)
+        cnt->bytes[k] += bytes;
+    return p;
+}
+
+/* The centre and ground-truth passes just drawn, counted. */
+static void count_passes(gls_frame_counts *cnt, int centre, int truth, int bands)
+{
+    if (!cnt)
+        return;
+    cnt->passes[GLS_PASS_I_CENTRE] += centre != 0;
+    cnt->passes[GLS_PASS_I_TRUTH] += truth != 0;
+    cnt->passes[GLS_PASS_I_BANDS] += bands && (centre || truth);
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -653,11 +629,15 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     gls_renderer *r = s->r;
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
-    /* motion blur, rolling shutter, depth of field (exposure.h) */
-    gls_exposure ex = gls_exposure_of(c, s->moving);
-    int fx = gls_exposure_on(&ex) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
-    int aa = (plan->count > 1 || fx) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
-    int centre = !aa || (o->outputs & GLS_OUT_FROM_Z);
+    /* everything this frame needs, decided once (frame_plan.h) */
+    gls_frame_plan fp;
+    gls_plan_inputs pin = {o->outputs, o->image_format, plan, s->moving};
+    gls_frame_plan_make(&fp, &pin, c, s->next != NULL);
+    gls_exposure ex = fp.ex;
+    int fx = fp.effects, aa = fp.aa, lens = fp.lens;
+    gls_frame_counts *cnt = s->counts;
+    if (cnt)
+        memset(cnt, 0, sizeof *cnt), cnt->frames = 1;
     uint8_t *rgba = NULL, *mask = NULL, *flowmask = NULL;
     float *z = NULL, *normal = NULL, *flow = NULL, *gt_z = NULL;
     uint32_t *gt_ids = NULL; /* the ground-truth pass (gt_pass.h): ids for instance, class, coco, flow, boxes */
@@ -671,7 +651,6 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     /* a lens: one undistorted fine image, read through the inverse model
        (distort_render.h); with the exposure's effects, one at each
        sub-frame time, lens point and band (distort_exposure.h) */
-    int lens = gls_distort_on(c);
     gls_distort_frame df;
     memset(&df, 0, sizeof df);
     s->name_now = name;
@@ -679,25 +658,20 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
-    if (lens && gls_distort_frame_render(&df, r, c, plan,
-                                         (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) ||
-                                             (o->outputs & GLS_OUT_POINTS),
-                                         (o->outputs & GLS_OUT_FROM_Z) != 0, aa && !fx, o->aa_memory, err,
-                                         sizeof err)) {
+    if (lens && gls_distort_frame_render(&df, r, c, plan, fp.rgba, fp.z, aa && !fx, o->aa_memory, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
+    if (lens && cnt)
+        cnt->passes[GLS_PASS_I_LENS]++;
     /* rolling shutter: the ground truth of each band of rows at its
      * time (exposure.h); one band, the whole image, otherwise */
     uint32_t band = ex.rolling ? gls_exposure_band_rows(r, c, &ex, pose_at, s) : c->height;
-    int want_rgba = (!aa && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS))) || (o->outputs & GLS_OUT_POINTS);
-    int want_flow = s->next && (o->outputs & GLS_OUT_FLOW_ALL), want_boxes = (o->outputs & GLS_OUT_BOXES_ALL) != 0;
-    int want_ids = (o->outputs & GLS_OUT_IDS) || want_flow || want_boxes;
-    if ((centre && want_rgba && !(rgba = malloc(n * 4))) ||
-        (centre && (o->outputs & GLS_OUT_FROM_Z) && !(z = malloc(n * sizeof *z))) ||
-        (want_ids && !(gt_ids = malloc(n * sizeof *gt_ids))) ||
-        ((o->outputs & GLS_OUT_NORMALS) && !(normal = malloc(n * 3 * sizeof *normal))) ||
-        (want_flow && !(gt_z = malloc(n * sizeof *gt_z))))
+    if ((fp.rgba && !(rgba = frame_alloc(cnt, GLS_BUF_RGBA, n * 4))) ||
+        (fp.z && !(z = frame_alloc(cnt, GLS_BUF_DEPTH, n * sizeof *z))) ||
+        (fp.ids && !(gt_ids = frame_alloc(cnt, GLS_BUF_IDS, n * sizeof *gt_ids))) ||
+        (fp.normals && !(normal = frame_alloc(cnt, GLS_BUF_NORMALS, n * 3 * sizeof *normal))) ||
+        (fp.truth_z && !(gt_z = frame_alloc(cnt, GLS_BUF_TRUTH_DEPTH, n * sizeof *gt_z))))
         goto oom;
     if (band < c->height && lens) {
         /* flow starts from each band's ground-truth depth at the nearest
@@ -706,11 +680,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
+        count_passes(cnt, rgba || z, gt_ids || normal || gt_z, 1);
     } else if (band < c->height) {
         /* flow starts from each band's ground-truth depth; boxes take
          * their 2D boxes from this instance image */
         if (centre_bands(s, c, band, rgba, z, gt_ids, normal, gt_z, msg, sizeof msg))
             goto out;
+        count_passes(cnt, rgba || z, gt_ids || normal || gt_z, 1);
     } else if (lens) {
         if (rgba || z)
             gls_distort_frame_centre(&df, c, rgba, z);
@@ -720,8 +696,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
+        count_passes(cnt, rgba || z, gt_ids || normal, 0);
     } else {
-        if (centre) {
+        /* the centre pass only when something reads it back */
+        if (rgba || z) {
             gls_render_pass(r, c, 0.0, 0.0);
             if (rgba)
                 gls_render_read_rgba(r, rgba);
@@ -735,10 +713,16 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
+        count_passes(cnt, rgba || z, gt_ids || normal, 0);
     }
     if (aa) {
-        if (gls_accum_init(&acc, c->width, c->height, gls_aa_weighted(plan), (o->outputs & GLS_OUT_EDGE_MAPS) != 0))
+        if (gls_accum_init(&acc, c->width, c->height, fp.weighted, (fp.outputs & GLS_OUT_EDGE_MAPS) != 0))
             goto oom;
+        if (cnt) {
+            cnt->bytes[GLS_BUF_ACCUM] += gls_accum_sums_bytes(&acc);
+            cnt->bytes[GLS_BUF_MIXED] += gls_accum_mask_bytes(&acc);
+            cnt->passes[fx ? GLS_PASS_I_EXPOSURE : GLS_PASS_I_SAMPLES]++;
+        }
         if (fx && lens) {
             if (gls_distort_exposure_render(r, c, &ex, plan, &df, pose_at, s, band, o->aa_memory, name, &acc, msg,
                                             sizeof msg))
@@ -754,16 +738,20 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         } else if (render_plan(s, c, 0, c->height, &acc, msg, sizeof msg)) {
             goto out;
         }
+        if (cnt)
+            cnt->accum_samples = acc.samples;
     }
-    if ((o->outputs & GLS_OUT_IMAGE) && c->sensor.on) {
+    if (fp.image == GLS_IMAGE_SENSOR) {
         /* sensor effects, asked for by the camera file (sensor.h): on the
          * linear intensities before quantisation; never on ground truth */
         img = gls_sensor_image(c, name, frame, aa ? &acc : NULL, rgba, o->image_format);
         if (!img)
             goto oom;
-    } else if (o->outputs & GLS_OUT_IMAGE) {
+        if (cnt) /* the linear intensities, then the image in its format (sensor_image.h) */
+            cnt->bytes[GLS_BUF_LINEAR] += 12 * (uint64_t)n, cnt->bytes[GLS_BUF_IMAGE] += fp.bytes[GLS_BUF_IMAGE];
+    } else if (fp.image == GLS_IMAGE_CONVERTED) {
         if (o->image_format == GLS_IMG_PNG16) {
-            img = malloc(n * 3 * sizeof(uint16_t));
+            img = frame_alloc(cnt, GLS_BUF_IMAGE, n * 3 * sizeof(uint16_t));
             if (!img)
                 goto oom;
             if (aa)
@@ -771,37 +759,41 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             else
                 gls_rgba8_to_rgb16(rgba, n, img);
         } else if (o->image_format == GLS_IMG_PFM) {
-            img = malloc(n * 3 * sizeof(float));
+            img = frame_alloc(cnt, GLS_BUF_IMAGE, n * 3 * sizeof(float));
             if (!img)
                 goto oom;
             if (aa)
                 gls_accum_rgbf(&acc, img);
             else
                 gls_rgba8_to_rgbf(rgba, n, img);
-        } else if (aa) {
-            img = malloc(n * 4);
+        } else {
+            img = frame_alloc(cnt, GLS_BUF_IMAGE, n * 4);
             if (!img)
                 goto oom;
             gls_accum_rgba8(&acc, img);
         }
     }
-    if (o->outputs & GLS_OUT_EDGE_MAPS) {
+    if (fp.outputs & GLS_OUT_EDGE_MAPS) {
         /* one sample per pixel cannot straddle anything: all zero */
         mask = calloc(n ? n : 1, 1);
         if (!mask)
             goto oom;
+        if (cnt)
+            cnt->bytes[GLS_BUF_EDGES] += n;
         for (size_t i = 0; aa && i < n; i++)
             mask[i] = acc.mixed[i] ? 255 : 0;
     }
-    if (want_boxes && lens) {
+    if (fp.boxes && cnt)
+        cnt->passes[GLS_PASS_I_BOXES_ALONE]++;
+    if (fp.boxes && lens) {
         if (gls_boxes_compute_lens(r, s->ms->scene, c, &df, gt_ids, &boxes, &nboxes, err, sizeof err)) {
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
-    } else if (want_boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
+    } else if (fp.boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
         goto oom;
-    if (want_flow && flow_frame(s, c, lens ? &df : NULL, name, frame, band, gt_ids, gt_z, &flow, &flowmask, msg,
-                                sizeof msg)) {
+    if (fp.flow && flow_frame(s, c, lens ? &df : NULL, name, frame, band, gt_ids, gt_z, &flow, &flowmask, msg,
+                              sizeof msg)) {
         if (msg[0])
             goto out;
         goto oom;
@@ -820,12 +812,12 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     f->float_format = o->float_format;
     f->fxB = c->fx * s->baseline;
     f->depth_scale = o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI;
-    f->buffer_bytes = camera_buffer_bytes(o, aa, gls_aa_weighted(plan), c->sensor.on != 0, n);
+    f->buffer_bytes = fp.total;
     f->json = s->json;
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
     for (size_t k = 0; k < NOUTS && !too_long; k++)
-        if (output_on(s, k)) {
+        if (fp.outputs & outs[k].bit) {
             f->files[f->nfiles].bit = outs[k].bit;
             too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
         }
@@ -861,8 +853,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     rc = 0;
     goto out;
 oom:
-    gls_frame_oom_message(msg, sizeof msg, name, c->width, c->height,
-                          camera_buffer_bytes(o, aa, gls_aa_weighted(plan), c->sensor.on != 0, n));
+    gls_frame_oom_message(msg, sizeof msg, name, c->width, c->height, fp.total);
 out:
     if (rc && msg[0])
         say_failure(s, msg);
@@ -1402,7 +1393,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     json.t0 = gls_now();
     session ses = {o,        &ms,      &scene,    &plan, r,          wr,   &json,  errs,   o->ncameras,
                    0,        json.t0,  0,         baseline, &gt,     NULL, NULL,   &moves, &box_names,
-                   o->frame, NULL,     ms.moving, NULL, inputs};
+                   o->frame, NULL,     ms.moving, NULL, inputs, o->counts};
     started = 1;
     if (!o->trajectory) {
         /* a single frame is shard 0's (shard.h) */

@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "aa.h"
+#include "frame_plan.h"
 #include "output_table.h"
 #include "bundle.h"
 #include "camera.h"
@@ -58,6 +59,11 @@ typedef struct {
                                     the next renders (glsplay's default);
                                     0: on the rendering thread.  Same
                                     files either way (frame_writer.h)   */
+    gls_frame_counts *counts;    /* NULL; or where the passes, buffers and
+                                    samples of the last camera frame are
+                                    counted as they run (frame_plan.h),
+                                    for the tests that hold the run to
+                                    its plan                            */
 } gls_play_opts;
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,
