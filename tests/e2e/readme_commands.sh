@@ -64,6 +64,23 @@ st=$(cd "$repo" && git status --porcelain)
 [ -z "$st" ] && ok readme_commands_leave_checkout_clean ||
     fail readme_commands_leave_checkout_clean "untracked or changed: $(echo "$st" | tr '\n' ' ')"
 
+# ---- the user's make targets write nothing tracked ----------------------------------
+# make demo and make demo-road (README) write only under out/ and build/:
+# what make -n shows them run names no docs/ path (the committed images
+# are the maintainer's gallery-* targets'; demo-road rewrote
+# docs/road_strip.png)
+for tgt in demo demo-road; do
+    name=make_$(echo $tgt | tr - _)_writes_no_docs
+    (cd "$repo" && make -n $tgt) >"$t/n" 2>&1
+    if grep -Eq '(^|[ ="/])docs(/|$| )' "$t/n"; then
+        fail "$name" "$(grep -E '(^|[ ="/])docs(/|$| )' "$t/n" | head -3 | tr '\n' ' ')"
+    elif grep -q 'render\.sh' "$t/n" || [ $tgt = demo ]; then
+        ok "$name"
+    else
+        fail "$name" "make -n $tgt shows no render: $(head -5 "$t/n" | tr '\n' ' ')"
+    fi
+done
+
 # ---- make demo is incremental ------------------------------------------------------
 RENDERS='glsplay|render\.sh|/glsc |depth2png|pnghalf'
 (cd "$repo" && make -n demo) >"$t/n" 2>&1
