@@ -430,9 +430,15 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
             FAIL("section %u: offset %llu / size %llu outside the file or not contiguous", id,
                  (unsigned long long)off, (unsigned long long)stored);
         expect_off = off + stored;
-        if (rl > GLS_MAX_SECTION_RAW || total_raw + rl > GLS_MAX_SECTION_RAW)
+        if (rl > GLS_MAX_SECTION_RAW)
             FAIL("section %u declares %llu decoded bytes, over the limit of %llu", id,
                  (unsigned long long)rl, (unsigned long long)GLS_MAX_SECTION_RAW);
+        /* the sum too: what the reader allocates in all (spec/bundle.md 5) */
+        if (total_raw + rl > GLS_MAX_SECTION_RAW)
+            FAIL("section %u declares %llu decoded bytes, %llu with the sections before it, over the limit of %llu "
+                 "for all sections",
+                 id, (unsigned long long)rl, (unsigned long long)(total_raw + rl),
+                 (unsigned long long)GLS_MAX_SECTION_RAW);
         total_raw += rl;
         if (codec == GLS_CODEC_RAW) {
             if (rl != stored)

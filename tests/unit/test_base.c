@@ -3,11 +3,14 @@
  * mkdir -p and atomic writes.  Each is used by several layers; the tools'
  * tests check them through their messages, these check the helpers
  * themselves, including the cases no tool's input reaches easily. */
+#include <dirent.h>
 #include <errno.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "atomic_write.h"
@@ -217,6 +220,112 @@ static void test_files(void)
     CHECK_STR(gls_write_error("/dev/null", EEXIST), "it is a character device, not a regular file");
 }
 
+/* The file at path, as a string ("" when empty, NULL when absent). */
+static char *slurp(const char *path)
+{
+    size_t len;
+    gls_read_error e;
+    return gls_file_read(path, 1 << 20, GLS_READ_REGULAR, &len, &e);
+}
+
+/* The names in directory d other than . and .., space-separated (for
+ * messages: what a writer left behind). */
+static void list_dir(const char *d, char *out, size_t cap)
+{
+    out[0] = 0;
+    DIR *dp = opendir(d);
+    if (!dp)
+        return;
+    for (struct dirent *e; (e = readdir(dp));)
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strlen(out) + strlen(e->d_name) + 2 < cap)
+            strcat(strcat(out, out[0] ? " " : ""), e->d_name);
+    closedir(dp);
+}
+
+/* Write to a temporary, then rename (base/atomic_write.c): until the
+ * commit the target keeps its old content (or does not exist), and the
+ * temporary is a file beside it, in its directory; after the commit the
+ * target has the new content and the temporary is gone; an abort leaves
+ * the directory as it was.  A writer that wrote in place fails the first
+ * check, one that wrote its temporary elsewhere (another file system: the
+ * rename would fail, or copy) the second. */
+static void test_atomic_steps(void)
+{
+    char d[160], p[200], left[512];
+    snprintf(d, sizeof d, "%s/atomic", dir);
+    CHECK(gls_mkdir_p(d) == 0);
+    snprintf(p, sizeof p, "%s/out.txt", d);
+    write_file(p, "old", 3);
+
+    gls_atomic_file f;
+    CHECK(gls_atomic_begin(&f, p) == 0);
+    char *t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "old") == 0, "after begin the target holds '%s'", t ? t : "(none)");
+    free(t);
+    CHECK(write(f.fd, "new!", 4) == 4);
+    t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "old") == 0, "before the commit the target holds '%s'", t ? t : "(none)");
+    free(t);
+    /* the temporary: another name, in the target's directory */
+    const char *slash = f.tmp ? strrchr(f.tmp, '/') : NULL;
+    CHECK_MSG(f.tmp && strcmp(f.tmp, p) != 0 && slash && (size_t)(slash - f.tmp) == strlen(d) &&
+                  strncmp(f.tmp, d, strlen(d)) == 0,
+              "temporary '%s' for '%s'", f.tmp ? f.tmp : "(none)", p);
+    struct stat st;
+    CHECK(f.tmp && stat(f.tmp, &st) == 0 && S_ISREG(st.st_mode) && st.st_size == 4);
+    CHECK(gls_atomic_commit(&f) == 0);
+    t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "new!") == 0, "after the commit the target holds '%s'", t ? t : "(none)");
+    free(t);
+    list_dir(d, left, sizeof left);
+    CHECK_STR(left, "out.txt");
+
+    /* abort: an existing target unchanged, a new one never appears */
+    CHECK(gls_atomic_begin(&f, p) == 0);
+    CHECK(write(f.fd, "abandoned", 9) == 9);
+    gls_atomic_abort(&f);
+    t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "new!") == 0, "after an abort the target holds '%s'", t ? t : "(none)");
+    free(t);
+    snprintf(p, sizeof p, "%s/new.txt", d);
+    CHECK(gls_atomic_begin(&f, p) == 0);
+    CHECK(access(p, F_OK) != 0); /* not there until the commit */
+    CHECK(write(f.fd, "x", 1) == 1);
+    gls_atomic_abort(&f);
+    CHECK(access(p, F_OK) != 0);
+    list_dir(d, left, sizeof left);
+    CHECK_STR(left, "out.txt");
+}
+
+/* gls_write_file_atomic whose write fails half-way (a file size limit:
+ * the temporary gets 4096 of the 65536 bytes): the target keeps its old
+ * content and nothing else is left in the directory. */
+static void test_atomic_failed_write(void)
+{
+    char d[160], p[200], left[512];
+    snprintf(d, sizeof d, "%s/atomic_fail", dir);
+    CHECK(gls_mkdir_p(d) == 0);
+    snprintf(p, sizeof p, "%s/out.bin", d);
+    write_file(p, "old", 3);
+    static char big[65536];
+    memset(big, 'n', sizeof big);
+    struct rlimit old, lim;
+    CHECK(getrlimit(RLIMIT_FSIZE, &old) == 0);
+    lim = old;
+    lim.rlim_cur = 4096;
+    void (*was)(int) = signal(SIGXFSZ, SIG_IGN); /* EFBIG rather than the signal */
+    CHECK(setrlimit(RLIMIT_FSIZE, &lim) == 0);
+    int r = gls_write_file_atomic(p, big, sizeof big), e = errno;
+    setrlimit(RLIMIT_FSIZE, &old);
+    signal(SIGXFSZ, was);
+    CHECK_MSG(r == -1 && e == EFBIG, "returned %d, errno %d", r, e);
+    char *t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "old") == 0, "the target holds %zu bytes", t ? strlen(t) : 0);
+    free(t);
+    list_dir(d, left, sizeof left);
+    CHECK_STR(left, "out.bin");
+}
+
 int main(void)
 {
     if (!mkdtemp(dir)) {
@@ -230,6 +339,8 @@ int main(void)
     RUN(test_numbers);
     RUN(test_vec);
     RUN(test_files);
+    RUN(test_atomic_steps);
+    RUN(test_atomic_failed_write);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)
