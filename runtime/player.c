@@ -83,39 +83,14 @@ static char *camera_name(const char *path)
     return s;
 }
 
-/* The output kinds, in the order they are written; ext NULL: a float
- * output, .pfm or .npy by --float-format. */
-static const struct {
-    unsigned bit;
-    const char *kind, *ext;
-} outs[] = {{GLS_OUT_IMAGE, "image", "png"},
-            {GLS_OUT_DEPTH, "depth", NULL},
-            {GLS_OUT_POINTS, "points", "ply"},
-            {GLS_OUT_EDGES, "edges", "png"},
-            {GLS_OUT_EDGES_AS_MASK, "mask", "png"},
-            {GLS_OUT_DISPARITY, "disparity", NULL},
-            {GLS_OUT_DISPARITY16, "disparity16", "png"},
-            {GLS_OUT_DEPTH16, "depth16", "png"},
-            {GLS_OUT_LANDMARKS, "landmarks", "csv"},
-            {GLS_OUT_INSTANCE, "instance", "png"},
-            {GLS_OUT_CLASS, "class", "png"},
-            {GLS_OUT_INSTANCE | GLS_OUT_CLASS, "instances", "json"}, /* the JSON table, with either */
-            {GLS_OUT_COCO, "coco", "json"},
-            {GLS_OUT_NORMALS, "normals", NULL},
-            {GLS_OUT_FLOW, "flow", "png"},
-            {GLS_OUT_FLOW_FLO, "flow", "flo"},
-            {GLS_OUT_FLOW_MASK, "flowmask", "png"},
-            {GLS_OUT_BOXES, "boxes", "txt"},
-            {GLS_OUT_BOXES_JSON, "boxes", "json"}};
-#define NOUTS (sizeof outs / sizeof outs[0])
 
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
 static int output_file(char *path, size_t len, const gls_play_opts *o, const char *name, size_t k, uint32_t frame)
 {
-    const char *ext = outs[k].ext;
-    if (!ext || (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM))
+    const char *ext = gls_frame_kinds[k].ext;
+    if (!ext || (gls_frame_kinds[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM))
         ext = o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm";
-    return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
+    return gls_output_path(path, len, o->outdir, name, gls_frame_kinds[k].kind, frame, ext);
 }
 
 /* --motion: the named instances and their motion files. */
@@ -370,7 +345,7 @@ static void say_failure(session *s, const char *msg)
  * trajectory has a next row. */
 static int output_on(const session *s, size_t k)
 {
-    return (s->o->outputs & outs[k].bit) && (s->next || !(outs[k].bit & GLS_OUT_FLOW_ALL));
+    return (s->o->outputs & gls_frame_kinds[k].bit) && (s->next || !(gls_frame_kinds[k].bit & GLS_OUT_FLOW_ALL));
 }
 
 static int pose_at(void *ud, double t, gls_camera *cam);
@@ -823,9 +798,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     f->json = s->json;
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
-    for (size_t k = 0; k < NOUTS && !too_long; k++)
+    /* one file a kind at most: files[] has room for every kind */
+    for (size_t k = 0; k < GLS_FRAME_KINDS && !too_long; k++)
         if (output_on(s, k)) {
-            f->files[f->nfiles].bit = outs[k].bit;
+            f->files[f->nfiles].bit = gls_frame_kinds[k].bit;
             too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
         }
     if (too_long) {
@@ -896,8 +872,8 @@ static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char
             gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame, inputs) ||
             !gls_frame_record_matches(path, text))
             return 0;
-        for (size_t k = 0; k < NOUTS; k++) {
-            if (!(o->outputs & outs[k].bit) || (!has_next && (outs[k].bit & GLS_OUT_FLOW_ALL)))
+        for (size_t k = 0; k < GLS_FRAME_KINDS; k++) {
+            if (!(o->outputs & gls_frame_kinds[k].bit) || (!has_next && (gls_frame_kinds[k].bit & GLS_OUT_FLOW_ALL)))
                 continue;
             struct stat st;
             if (output_file(path, sizeof path, o, names[i], k, frame) ||

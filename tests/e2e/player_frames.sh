@@ -1,0 +1,41 @@
+#!/bin/sh
+# glsplay over trajectories, the user's trial of issue 26: the trajectory
+# read once (a pipe works as a file), checked whole whatever --frames
+# asks for, frames asked for with no row named, no empty directory left
+# by a run that fails or renders nothing, and every output at once.
+# Prints ok/FAIL lines.
+. tests/e2e/lib.sh
+need_players player_frames
+
+# A red square 10 units ahead of the world origin.
+mkdir -p "$t/s"
+cat >"$t/s/Sq.scene" <<'SCENE'
+color(1, 0, 0);
+poly { vert(-1, -1, 10); vert(1, -1, 10); vert(1, 1, 10); vert(-1, 1, 10); }
+SCENE
+"$BIN/glsc" -I "$t/s" -o "$t/sq.glsb" Sq || { fail player_frames_setup "scene does not compile"; exit 0; }
+rig_cam "$t/cam.cam"
+# the rig moves 0.1 unit forward a frame
+row() { echo "$1 $1 1 0 0 0 1 0 0 0 1 0 0 -0.$1"; }
+{ echo "# five frames"; for f in 0 1 2 3 4; do row $f; done; } >"$t/traj.txt"
+PLAY="$BIN/glsplay $t/sq.glsb --camera $t/cam.cam --size 16x12"
+
+# every output at once (19 files a camera frame, with edges' old name
+# mask beside it): a rectified pair over a trajectory, each frame's files
+# complete and recorded (frame 4, the last, writes no flow: 16 files)
+mkdir -p "$t/pair"
+cp "$t/cam.cam" "$t/pair/left.cam"
+sed 's/^T 0 0 0$/T -0.5 0 0/' "$t/cam.cam" >"$t/pair/right.cam"
+ALL=image,depth,points,edges,mask,disparity,disparity16,depth16,landmarks,instance,class,coco,normals,flow,boxes
+"$BIN/glsplay" "$t/sq.glsb" --camera "$t/pair/left.cam" --camera "$t/pair/right.cam" --size 16x12 --aa 2 \
+    --depth-scale 100 --outputs $ALL --trajectory "$t/traj.txt" -o "$t/all" 2>"$t/err"
+rc=$?
+n0=$(ls "$t/all/left" | grep -c '_000000\.')
+n4=$(ls "$t/all/right" | grep -c '_000004\.')
+if [ $rc -eq 0 ] && [ "$n0" -eq 19 ] && [ "$n4" -eq 16 ] && [ "$(ls "$t/all/left" | wc -l)" -eq 92 ] &&
+    [ "$(ls "$t/all/right" | wc -l)" -eq 92 ] && [ -f "$t/all/left/.frame_000000.done" ] &&
+    [ -f "$t/all/right/.frame_000004.done" ]; then
+    ok every_output_at_once
+else
+    fail every_output_at_once "rc $rc, $n0 files of left's frame 0, $n4 of right's frame 4: $(cat "$t/err")"
+fi
