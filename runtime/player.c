@@ -102,6 +102,8 @@ typedef struct {
     int moving;      /* a trajectory or a motion: shutter and line_delay act */
     gls_motion rig;  /* the trajectory read whole for sub-frame poses (rig.n
                         = 0: not needed, subframe.h) */
+    gls_traj_text traj; /* --trajectory's bytes, read once: every reader
+                           parses them (data NULL: no trajectory) */
 } motion_set;
 
 /* Every camera whose exposure spans more than the frame time (shutter,
@@ -210,6 +212,7 @@ static void motion_free(motion_set *ms)
     for (size_t i = 0; ms->m && i < ms->n; i++)
         gls_motion_free(&ms->m[i]);
     gls_motion_free(&ms->rig);
+    gls_traj_text_free(&ms->traj);
     free(ms->m);
     free(ms->inst);
 }
@@ -884,23 +887,23 @@ static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char
     return 1;
 }
 
-/* notes: where the reader's notes go (a re-orthonormalised rotation);
- * the trajectory is opened twice (scan, then render), notes only once. */
-static gls_traj *open_trajectory(const char *path, FILE *notes, FILE *errs)
+/* A reader of the trajectory's text, read once (ms->traj).  notes: where
+ * the reader's notes go (a re-orthonormalised rotation); the text is
+ * parsed several times (scan, then render), notes only once. */
+static gls_traj *open_trajectory(const motion_set *ms, FILE *notes, FILE *errs)
 {
-    char err[1024];
-    gls_traj *t = gls_traj_open(path, notes, err, sizeof err);
+    gls_traj *t = gls_traj_open_text(&ms->traj, notes);
     if (!t)
-        fprintf(errs, "%s\n", err);
+        fprintf(errs, "glsplay: error: out of memory\n");
     return t;
 }
 
 /* The frame of the trajectory's last row (the one frame with no flow
  * from it), or UINT64_MAX if it cannot be read (the scan says why). */
-static uint64_t trajectory_last_frame(const char *path)
+static uint64_t trajectory_last_frame(const motion_set *ms)
 {
     char err[1024];
-    gls_traj *t = gls_traj_open(path, NULL, err, sizeof err);
+    gls_traj *t = gls_traj_open_text(&ms->traj, NULL);
     if (!t)
         return UINT64_MAX;
     gls_traj_pose p;
@@ -924,7 +927,7 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
                            uint64_t *inrange, uint64_t *mine, uint64_t *complete)
 {
     char err[1024];
-    gls_traj *t = open_trajectory(o->trajectory, errs, errs);
+    gls_traj *t = open_trajectory(ms, errs, errs);
     if (!t)
         return 1;
     gls_traj_pose p;
@@ -980,9 +983,9 @@ typedef struct {
     uint64_t inrange, mine, complete, last;
 } traj_scan;
 
-/* Every frame of the trajectory in [frame_first, frame_end), read one line
- * at a time (memory stays flat however long the sequence), as scanned
- * (sc).  Each camera file gives that camera's pose relative to the rig. */
+/* Every frame of the trajectory in [frame_first, frame_end), parsed one
+ * line at a time from its text (read once: memory stays flat beyond its
+ * bytes however long the sequence), as scanned (sc).  Each camera file gives that camera's pose relative to the rig. */
 static int play_trajectory(session *s, const gls_camera *rel, const char *const *names, const traj_scan *sc)
 {
     const gls_play_opts *o = s->o;
@@ -1003,11 +1006,11 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     s->json->total = s->views;
     s->json->skipped = complete;
     char err[1024];
-    gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
+    gls_traj *t = open_trajectory(s->ms, NULL, errs);
     if (!t)
         return 1;
     /* flow: a second reader one row ahead gives each frame's next row */
-    gls_traj *ahead = flow ? open_trajectory(o->trajectory, NULL, errs) : NULL;
+    gls_traj *ahead = flow ? open_trajectory(s->ms, NULL, errs) : NULL;
     if (flow && !ahead) {
         gls_traj_close(t);
         return 1;
@@ -1026,7 +1029,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
             continue;
         while (have == 1 && pn.frame <= p.frame)
             have = gls_traj_next(ahead, &pn, err, sizeof err);
-        if (have < 0) { /* read by the scan: only if the file changed since */
+        if (have < 0) { /* the scan read the same rows: never */
             got = have;
             break;
         }
@@ -1084,7 +1087,7 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
         return 0;
     }
     char err[1024];
-    gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
+    gls_traj *t = open_trajectory(ms, NULL, errs);
     if (!t)
         return 1;
     gls_traj_pose p, first;
@@ -1192,7 +1195,7 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
         need_rig |= e.blur || e.rolling;
     }
     char err[1024];
-    if (need_rig && o->trajectory && gls_traj_read_all(o->trajectory, NULL, &ms->rig, err, sizeof err)) {
+    if (need_rig && o->trajectory && gls_traj_read_all(&ms->traj, NULL, &ms->rig, err, sizeof err)) {
         fprintf(errs, "%s\n", err);
         return 1;
     }
@@ -1282,6 +1285,13 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if (motion_load(o, &ms, errs) || (!o->trajectory && motion_check(&ms, o->frame, errs)))
         goto out;
+    /* the trajectory read once, whole: a pipe gives its bytes only once,
+     * and the scan, the render, the digest and the calibration must all
+     * see the same rows */
+    if (o->trajectory && gls_traj_load(o->trajectory, &ms.traj, err, sizeof err)) {
+        fprintf(errs, "%s\n", err);
+        goto out;
+    }
     if (exposure_setup(o, &ms, cams, (const char *const *)names, &plan, errs) ||
         (!o->trajectory && exposure_check(&ms, cams, (const char *const *)names, o->ncameras, o->frame, errs)))
         goto out;
@@ -1325,14 +1335,14 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     char inputs[17];
-    gls_frame_inputs(o, inputs);
+    gls_frame_inputs(o, o->trajectory ? &ms.traj : NULL, inputs);
     /* The whole trajectory is read and checked (with --resume, the frames
      * already complete counted) before anything is created: a bad row
      * leaves no empty directory behind. */
     traj_scan scan = {0, 0, 0, UINT64_MAX};
     if (o->trajectory) {
         if (o->outputs & GLS_OUT_FLOW_ALL)
-            scan.last = trajectory_last_frame(o->trajectory);
+            scan.last = trajectory_last_frame(&ms);
         if (scan_trajectory(o, &ms, cams, (const char *const *)names, inputs, scan.last, errs, &scan.inrange,
                             &scan.mine, &scan.complete))
             goto out;
@@ -1407,7 +1417,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     /* after the render and its files: every frame in the range was read
      * and checked */
     if (rc == 0 && o->write_calib)
-        rc = gls_calib_write(o, cams, (const char *const *)names, errs);
+        rc = gls_calib_write(o, o->trajectory ? &ms.traj : NULL, cams, (const char *const *)names, errs);
 out:
     /* first: it waits for the files in flight, whose jobs name the
      * cameras */

@@ -13,9 +13,14 @@
  * P_cam = R_cam * P_rig + T_cam.  So in each frame
  *     R_cam_world = R_cam * R,   T_cam_world = R_cam * T + T_cam.
  *
- * Typical use (memory stays flat: one line at a time):
+ * A file is read once, whole (gls_traj_load), and parsed from memory as
+ * often as needed (gls_traj_open_text): a pipe (--trajectory <(...),
+ * /dev/stdin) works like a file, and every reader of a run sees the same
+ * bytes.  The parse holds one line at a time.  Typical use:
  *
- *     gls_traj *t = gls_traj_open(path, stderr, err, sizeof err);
+ *     gls_traj_text tx;
+ *     if (gls_traj_load(path, &tx, err, sizeof err)) { ...say err... }
+ *     gls_traj *t = gls_traj_open_text(&tx, stderr);   // NULL: out of memory
  *     gls_traj_pose p;
  *     int r;
  *     while ((r = gls_traj_next(t, &p, err, sizeof err)) == 1) {
@@ -25,6 +30,7 @@
  *         ... render frame p.frame with R, T ...
  *     }
  *     gls_traj_close(t);
+ *     gls_traj_text_free(&tx);
  *     if (r < 0) { fprintf(stderr, "%s\n", err); exit 1; }
  */
 #ifndef GLS_TRAJECTORY_H
@@ -43,9 +49,31 @@ typedef struct {
 
 typedef struct gls_traj gls_traj;
 
-/* Open a trajectory file.  NULL on error, with "path: error: why" in err.
- * Notes (an R re-orthonormalised, once per file) go to notes; NULL drops
- * them. */
+/* The most bytes a trajectory file may hold (about 900,000 rows of
+ * glsroad's, at full precision). */
+#define GLS_TRAJ_MAX_FILE ((size_t)256 << 20)
+
+/* A trajectory file's bytes, read once. */
+typedef struct {
+    char *path;  /* as given: the messages' file name */
+    char *data;  /* len bytes and a NUL                */
+    size_t len;
+} gls_traj_text;
+
+/* Read the file at path whole (a regular file, a pipe or a device): 0,
+ * or -1 with "path: error: why" in err (cannot open, a directory, over
+ * GLS_TRAJ_MAX_FILE) or "path:line: error: line longer than 4095 bytes",
+ * said as soon as the line passes the limit. */
+int gls_traj_load(const char *path, gls_traj_text *tx, char *err, size_t errlen);
+void gls_traj_text_free(gls_traj_text *tx);
+
+/* A reader of tx from its start (tx outlives it); NULL: out of memory.
+ * Notes (an R re-orthonormalised, once per reader) go to notes; NULL
+ * drops them. */
+gls_traj *gls_traj_open_text(const gls_traj_text *tx, FILE *notes);
+
+/* gls_traj_load and gls_traj_open_text in one, the reader owning the
+ * text: NULL on error, with the message in err. */
 gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen);
 
 /* The next frame: 1 (pose filled), 0 (end of file; an empty file -- no
