@@ -23,6 +23,7 @@
 #include "distort_exposure.h"
 #include "distort_render.h"
 #include "frame_files.h"
+#include "frame_passes.h"
 #include "frame_record.h"
 #include "frame_writer.h"
 #include "glctx.h"
@@ -630,11 +631,11 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     gls_renderer *r = s->r;
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
-    /* motion blur, rolling shutter, depth of field (exposure.h) */
-    gls_exposure ex = gls_exposure_of(c, s->moving);
-    int fx = gls_exposure_on(&ex) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
-    int aa = (plan->count > 1 || fx) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
-    int centre = !aa || (o->outputs & GLS_OUT_FROM_Z);
+    /* motion blur, rolling shutter, depth of field (exposure.h), the
+     * accumulator and the centre pass: decided as --explain says */
+    gls_frame_passes fp = gls_frame_passes_of(c, s->moving, plan, o->outputs);
+    gls_exposure ex = fp.ex;
+    int fx = fp.fx, aa = fp.aa, centre = fp.centre;
     uint8_t *rgba = NULL, *mask = NULL, *flowmask = NULL;
     float *z = NULL, *normal = NULL, *flow = NULL, *gt_z = NULL;
     uint32_t *gt_ids = NULL; /* the ground-truth pass (gt_pass.h): ids for instance, class, coco, flow, boxes */

@@ -56,3 +56,23 @@ if [ $rc -eq 0 ] && [ "$n0" -eq 19 ] && [ "$n4" -eq 16 ] && [ "$(ls "$t/all/left
 else
     fail every_output_at_once "rc $rc, $n0 files of left's frame 0, $n4 of right's frame 4: $(cat "$t/err")"
 fi
+
+# --explain draws the plan the player draws (frame_passes.h): a camera
+# with a shutter over a trajectory accumulates its sub-frame renders even
+# at --aa 1, so no line may say "no accumulator" for it; the still
+# cameras beside it (cam, right) draw 1 pass without one
+$PLAY --camera "$t/blur.cam" --camera "$t/pair/right.cam" --aa 1 --trajectory "$t/traj.txt" --frames 1:4 \
+    --explain >"$t/plan" 2>"$t/err"
+rc=$?
+blur=$(sed -n '/^camera blur:/,/^camera right:/p' "$t/plan")
+still=$(sed -n '/^camera right:/,$p' "$t/plan")
+if [ $rc -eq 0 ] && ! grep -q "^passes: 1 per camera and frame (no anti-aliasing)" "$t/plan" &&
+    echo "$blur" | grep -q "the image from an accumulator of 16 samples per pixel" &&
+    echo "$blur" | grep -q "passes: 1 per sub-frame render (no anti-aliasing), into the accumulator" &&
+    ! echo "$blur" | grep -q "no accumulator" && echo "$still" | grep -q "passes: 1 (.*); no accumulator" &&
+    echo "$blur" | grep -q "reads back (unjittered centre pass): colour (RGBA8) depth" &&
+    echo "$still" | grep -q "reads back: colour (RGBA8) depth"; then
+    ok explain_shutter_at_aa1_accumulates
+else
+    fail explain_shutter_at_aa1_accumulates "rc $rc: $(grep -n 'passes\|accumulator\|reads back' "$t/plan" | tr '\n' ' ') $(cat "$t/err")"
+fi
