@@ -916,8 +916,9 @@ static uint64_t trajectory_last_frame(const motion_set *ms)
     return got < 0 ? UINT64_MAX : last;
 }
 
-/* The trajectory read once before anything is rendered: every line up
- * to the end of the range is checked, the frames in the range counted,
+/* The trajectory parsed once before anything is rendered: every line of
+ * the file is checked, whatever --frames asks for, the frames asked for
+ * with no row said in a warning, the frames in the range counted,
  * those of this --shard (mine; all without one) and, with --resume, the
  * complete ones among them (last: the frame of the trajectory's last row,
  * which writes no flow).  With flow, the row after the range is read too,
@@ -932,16 +933,25 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
     if (!t)
         return 1;
     gls_traj_pose p;
-    int got, rc = 0;
+    int got, rc = 0, past = 0;
+    gls_traj_gaps gaps;
+    gls_traj_gaps_init(&gaps, o->frame_first);
     *inrange = *mine = *complete = 0;
+    /* every row to the end of the file, whatever the range: a row out of
+     * order after the range is as wrong as one in it (past: the rows
+     * after the range, which gls_traj_next still checks) */
     while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
-        if (p.frame < o->frame_first)
+        if (p.frame < o->frame_first || past)
             continue;
         if (p.frame >= o->frame_end) {
-            if ((o->outputs & GLS_OUT_FLOW_ALL) && motion_check(ms, p.frame, errs))
+            past = 1; /* the row after the range: the last frame's flow goes to it */
+            if ((o->outputs & GLS_OUT_FLOW_ALL) && motion_check(ms, p.frame, errs)) {
                 rc = 1;
-            break;
+                break;
+            }
+            continue;
         }
+        gls_traj_gaps_row(&gaps, p.frame);
         if (p.frame > UINT32_MAX) {
             fprintf(errs, "%s:%u: error: frame %llu: frame numbers above %u are not supported\n", o->trajectory,
                     p.line, (unsigned long long)p.frame, UINT32_MAX);
@@ -968,6 +978,12 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
         fprintf(errs, "glsplay: error: %s: no frame in the range given by --frames\n", o->trajectory);
         rc = 1;
     }
+    /* frames --frames asks for (it was given: not 0 to the end) with no row */
+    char msg[512];
+    gls_traj_gaps_end(&gaps, o->frame_end);
+    if (rc == 0 && (o->frame_first || o->frame_end != UINT64_MAX) &&
+        gls_traj_gaps_message(&gaps, o->trajectory, msg, sizeof msg))
+        fprintf(errs, "glsplay: warning: %s\n", msg);
     return rc;
 }
 

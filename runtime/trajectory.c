@@ -320,3 +320,53 @@ bad:
     snprintf(err, errlen, "--frames: '%s' is not a frame range (A:B for frames A to B-1, A:, :B, or A)", s);
     return -1;
 }
+
+void gls_traj_gaps_init(gls_traj_gaps *g, uint64_t first)
+{
+    memset(g, 0, sizeof *g);
+    g->next = first;
+}
+
+/* frames next..upto-1 are missing */
+static void gap_to(gls_traj_gaps *g, uint64_t upto)
+{
+    if (upto <= g->next)
+        return;
+    if (g->runs < GLS_TRAJ_GAPS_SHOWN)
+        g->a[g->runs] = g->next, g->b[g->runs] = upto - 1;
+    g->runs++;
+    g->frames += upto - g->next;
+}
+
+void gls_traj_gaps_row(gls_traj_gaps *g, uint64_t frame)
+{
+    gap_to(g, frame);
+    g->next = frame + 1;
+}
+
+void gls_traj_gaps_end(gls_traj_gaps *g, uint64_t end)
+{
+    if (end != UINT64_MAX)
+        gap_to(g, end);
+}
+
+int gls_traj_gaps_message(const gls_traj_gaps *g, const char *path, char *buf, size_t len)
+{
+    if (!g->frames)
+        return 0;
+    char list[256] = "";
+    size_t k = 0, shown = g->runs < GLS_TRAJ_GAPS_SHOWN ? (size_t)g->runs : GLS_TRAJ_GAPS_SHOWN;
+    for (size_t i = 0; i < shown && k < sizeof list; i++) {
+        const char *sep = i == 0 ? "" : i + 1 == shown && shown == g->runs ? " and " : ", ";
+        int n = g->a[i] == g->b[i] ? snprintf(list + k, sizeof list - k, "%s%llu", sep, (unsigned long long)g->a[i])
+                                   : snprintf(list + k, sizeof list - k, "%s%llu-%llu", sep,
+                                              (unsigned long long)g->a[i], (unsigned long long)g->b[i]);
+        k += n > 0 ? (size_t)n : 0;
+    }
+    if (g->runs > shown && k < sizeof list)
+        snprintf(list + k, sizeof list - k, ", ... (%llu frames in %llu runs)", (unsigned long long)g->frames,
+                 (unsigned long long)g->runs);
+    snprintf(buf, len, "frame%s %s asked for by --frames %s no row in the trajectory %s", g->frames == 1 ? "" : "s",
+             list, g->frames == 1 ? "has" : "have", path);
+    return 1;
+}

@@ -97,4 +97,27 @@ void gls_traj_compose(const double Rc[9], const double Tc[3], const double Rr[9]
  * ("--frames: ...") in err. */
 int gls_traj_range(const char *s, uint64_t *first, uint64_t *end, char *err, size_t errlen);
 
+/* The frames of a --frames range that have no row in the trajectory,
+ * gathered as the rows are read in order, for one warning line: the
+ * first GLS_TRAJ_GAPS_SHOWN runs of missing frames are named, the rest
+ * counted. */
+#define GLS_TRAJ_GAPS_SHOWN 4
+typedef struct {
+    uint64_t next;    /* the first frame asked for and not yet passed */
+    uint64_t frames;  /* frames missing so far                        */
+    uint64_t runs;    /* runs of them                                 */
+    uint64_t a[GLS_TRAJ_GAPS_SHOWN], b[GLS_TRAJ_GAPS_SHOWN]; /* runs a..b */
+} gls_traj_gaps;
+
+/* Start at the range's first frame. */
+void gls_traj_gaps_init(gls_traj_gaps *g, uint64_t first);
+/* A row of the range (frames increasing). */
+void gls_traj_gaps_row(gls_traj_gaps *g, uint64_t frame);
+/* The range ends before end (UINT64_MAX: with the file, nothing after
+ * its last row is missing). */
+void gls_traj_gaps_end(gls_traj_gaps *g, uint64_t end);
+/* "frames 3-4 asked for by --frames have no row in the trajectory PATH"
+ * (without "glsplay: warning: "): 1, or 0 when none is missing. */
+int gls_traj_gaps_message(const gls_traj_gaps *g, const char *path, char *buf, size_t len);
+
 #endif

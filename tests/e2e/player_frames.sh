@@ -76,3 +76,38 @@ if [ $rc -eq 0 ] && ! grep -q "^passes: 1 per camera and frame (no anti-aliasing
 else
     fail explain_shutter_at_aa1_accumulates "rc $rc: $(grep -n 'passes\|accumulator\|reads back' "$t/plan" | tr '\n' ' ') $(cat "$t/err")"
 fi
+
+# the whole file is checked whatever --frames asks for: rows 0, 7, 2 are
+# refused under --frames 0:5 as without it, before anything is created
+{ row 0; row 7; row 2; row 3; } >"$t/order.txt"
+$PLAY --trajectory "$t/order.txt" --frames 0:5 -o "$t/order" 2>"$t/err"
+rc=$?
+if [ $rc -eq 1 ] && [ "$(cat "$t/err")" = "$t/order.txt:3: error: frame 2 does not follow frame 7: frames must increase" ] &&
+    [ ! -e "$t/order" ]; then
+    ok frames_range_checks_whole_file
+else
+    fail frames_range_checks_whole_file "rc $rc: $(cat "$t/err"); $(find "$t/order" 2>/dev/null | tr '\n' ' ')"
+fi
+
+# frames asked for by --frames with no row: one warning naming them, and
+# the frames that have one rendered (exit 0)
+{ row 0; row 1; row 2; } >"$t/three.txt"
+EXACT_LINES=1
+exact frames_without_rows_warned 0 "glsplay: warning: frames 3-4 asked for by --frames have no row in the trajectory $t/three.txt" -- \
+    $PLAY --trajectory "$t/three.txt" --frames 0:5 -o "$t/three"
+[ -f "$t/three/cam/image_000002.png" ] && [ "$(ls "$t/three/cam" | wc -l)" -eq 9 ] ||
+    fail frames_without_rows_rendered "$(ls "$t/three/cam" | tr '\n' ' ')"
+# rows with gaps, and a range past them: every run of missing frames named
+# up to four, then counted; a single frame said as one
+{ row 0; row 2; row 6; row 8; row 10; } >"$t/gaps.txt"
+exact frames_without_rows_gaps 0 "glsplay: warning: frames 1, 3-5 and 7 asked for by --frames have no row in the trajectory $t/gaps.txt" -- \
+    $PLAY --trajectory "$t/gaps.txt" --frames 0:9 -o "$t/gaps"
+exact frames_without_rows_one 0 "glsplay: warning: frame 7 asked for by --frames has no row in the trajectory $t/gaps.txt" -- \
+    $PLAY --trajectory "$t/gaps.txt" --frames 6:9 -o "$t/gaps"
+exact frames_without_rows_many 0 "glsplay: warning: frames 1, 3-5, 7, 9, ... (16 frames in 5 runs) asked for by --frames have no row in the trajectory $t/gaps.txt" -- \
+    $PLAY --trajectory "$t/gaps.txt" --frames 1:21 -o "$t/gaps"
+# none of them has a row: an error (exit 1), no warning beside it
+exact frames_without_any_row 1 "glsplay: error: $t/three.txt: no frame in the range given by --frames" -- \
+    $PLAY --trajectory "$t/three.txt" --frames 3:5 -o "$t/none"
+# --frames A: asks for nothing past the file's last row
+exact frames_open_end_no_warning 0 "" -- $PLAY --trajectory "$t/three.txt" --frames 1: -o "$t/three"
