@@ -1236,6 +1236,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_glctx *ctx = NULL;
     gls_renderer *r = NULL;
     gls_writer *wr = NULL;
+    size_t *made = NULL; /* per camera: what gls_mkdir_p_made made of its directory */
     gls_camera *cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *cams);
     char **names = calloc(o->ncameras ? o->ncameras : 1, sizeof *names);
     gls_bundle *b = NULL;
@@ -1365,11 +1366,18 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
             goto out;
     }
     /* All directories before any rendering: an unwritable output fails
-     * before anything is written. */
+     * before anything is written.  Those this run makes are removed at
+     * the end if they are still empty (made[]): a run that fails or has
+     * nothing to render leaves no empty directory behind. */
+    made = calloc(o->ncameras ? o->ncameras : 1, sizeof *made);
+    if (!made) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        goto out;
+    }
     for (size_t i = 0; i < o->ncameras; i++) {
         char dir[MAXPATH];
         int k = snprintf(dir, sizeof dir, "%s/%s", o->outdir, names[i]);
-        if (k < 0 || (size_t)k >= sizeof dir || gls_mkdir_p(dir)) {
+        if (k < 0 || (size_t)k >= sizeof dir || gls_mkdir_p_made(dir, &made[i])) {
             fprintf(errs, "glsplay: error: cannot create output directory %s: %s\n", dir,
                     k < 0 || (size_t)k >= sizeof dir ? "path too long" : strerror(errno));
             goto out;
@@ -1444,6 +1452,14 @@ out:
         gls_progress_json_end(&json, rc == 0, gls_now());
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);
+    /* after the writer's last file: the directories made, last camera
+     * first (the first camera's may hold the others') */
+    for (size_t i = o->ncameras; made && i-- > 0;) {
+        char dir[MAXPATH];
+        snprintf(dir, sizeof dir, "%s/%s", o->outdir, names[i]);
+        gls_rmdir_made(dir, made[i]);
+    }
+    free(made);
     motion_free(&ms);
     gls_gt_table_free(&gt);
     gls_flow_moves_free(&moves);

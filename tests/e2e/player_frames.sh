@@ -111,3 +111,30 @@ exact frames_without_any_row 1 "glsplay: error: $t/three.txt: no frame in the ra
     $PLAY --trajectory "$t/three.txt" --frames 3:5 -o "$t/none"
 # --frames A: asks for nothing past the file's last row
 exact frames_open_end_no_warning 0 "" -- $PLAY --trajectory "$t/three.txt" --frames 1: -o "$t/three"
+
+# a run that fails or renders nothing leaves no directory it made (-o
+# d16/new made both), and leaves alone those that were there: depth16 refused by the writer (10
+# units at --depth-scale 10000 is over 65535), --shard 5/8 of 5 frames
+PAIR="$BIN/glsplay $t/sq.glsb --camera $t/pair/left.cam --camera $t/pair/right.cam"
+$PAIR --outputs depth16 --depth-scale 10000 --trajectory "$t/traj.txt" -o "$t/d16/new" 2>"$t/err"
+rc=$?
+if [ $rc -eq 1 ] && grep -q "depth16: camera .* is over" "$t/err" && [ ! -e "$t/d16" ]; then
+    ok failed_run_leaves_no_directory
+else
+    fail failed_run_leaves_no_directory "rc $rc: $(cat "$t/err"); $(find "$t/d16" | tr '\n' ' ')"
+fi
+mkdir -p "$t/keep/left"
+$PAIR --outputs depth16 --depth-scale 10000 --trajectory "$t/traj.txt" -o "$t/keep" 2>"$t/err"
+rc=$?
+if [ $rc -eq 1 ] && [ -d "$t/keep/left" ] && [ ! -e "$t/keep/right" ] && [ -z "$(ls "$t/keep/left")" ]; then
+    ok failed_run_keeps_directories_there_before
+else
+    fail failed_run_keeps_directories_there_before "rc $rc: $(find "$t/keep" | tr '\n' ' ')"
+fi
+$PAIR --trajectory "$t/traj.txt" --shard 5/8 -o "$t/shard" 2>"$t/err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q "nothing to render" "$t/err" && [ ! -e "$t/shard" ]; then
+    ok empty_shard_leaves_no_directory
+else
+    fail empty_shard_leaves_no_directory "rc $rc: $(cat "$t/err"); $(find "$t/shard" 2>/dev/null | tr '\n' ' ')"
+fi
