@@ -9,6 +9,7 @@
 #include "lens_truth.h"
 #include "distort_exposure.h"
 #include "exposure.h"
+#include "frame_passes.h"
 #include "lighting.h"
 #include "shadows.h"
 #include "out_disparity.h"
@@ -129,8 +130,12 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     char err[128];
     if (gls_aa_plan_init(&p, &ao, err, sizeof err))
         p.count = 1, p.o = ao, p.o.n = 1;
-    int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
-    int centre = !aa || (outputs & GLS_OUT_FROM_Z);
+    /* what each camera draws, as the player decides it (frame_passes.h):
+     * an exposure effect accumulates even at --aa 1 */
+    int moving = o->trajectory || o->nmotions, any_acc = 0;
+    for (size_t i = 0; i < n; i++)
+        any_acc |= gls_frame_passes_of(&cams[i], moving, &p, outputs).aa;
+    int centre = !any_acc || (outputs & GLS_OUT_FROM_Z);
     int npy = o->float_format == GLS_FLOAT_NPY;
     static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
@@ -173,8 +178,12 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                              "on llvmpipe)\n", "");
         }
     }
-    if (!aa) {
+    if (!any_acc) {
         fprintf(out, "passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0); no accumulator\n");
+    } else if (p.count == 1) {
+        fprintf(out, "passes: no anti-aliasing (1 sample per pixel, jitter (0, 0)); a camera with motion blur, "
+                     "rolling shutter or depth of field accumulates its sub-frame renders (uint32 per channel, unit "
+                     "weights), each 1 pass (see the camera below)\n");
     } else {
         if (p.o.n)
             fprintf(out, "anti-aliasing: %ux%u = %llu samples per pixel, %s filter", p.o.n, p.o.n,
@@ -231,12 +240,18 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         else
             fprintf(out, "  pose: world (%s): R and T map the world into the camera\n",
                     c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
+        gls_frame_passes fp = gls_frame_passes_of(c, moving, &p, outputs);
+        int aa = fp.aa;
+        centre = fp.centre;
         gls_distort_explain(out, c, &p);
-        gls_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
-        gls_distort_exposure_explain(out, c, o->trajectory || o->nmotions, &p);
+        gls_exposure_explain(out, c, moving, &p);
+        gls_distort_exposure_explain(out, c, moving, &p);
+        if (any_acc && p.count == 1)
+            fprintf(out, aa ? "  passes: 1 per sub-frame render (no anti-aliasing), into the accumulator\n"
+                            : "  passes: 1 (no anti-aliasing), jitter (0, 0); no accumulator\n");
         gls_aa_fine_layout lay;
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
-        if (aa && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
+        if (aa && p.count > 1 && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
             char mem[32], budget[32];
             gls_fmt_bytes(mem, sizeof mem, lay.bytes);
             gls_fmt_bytes(budget, sizeof budget, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
@@ -251,7 +266,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                          "framebuffer and read-backs (--aa-memory %s); %llu gather entries per pixel and pass\n",
                     (unsigned long long)lay.tiles, lay.tw, lay.th, mem, budget, (unsigned long long)lay.kernel);
             fprintf(out, "  reads back: colour (RGBA8) per tile\n");
-        } else if (aa) {
+        } else if (aa && p.count > 1) {
             uint32_t kx, ky;
             gls_aa_mosaic_shape(NULL, c->width, c->height, p.count, o->aa_tiles, &kx, &ky);
             fprintf(out, "  anti-aliasing: %llu samples in %llu passes of %ux%u tiles (%ux%u framebuffer)\n",
@@ -300,7 +315,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  lens: boxes: each instance drawn alone by the fine camera and read at each pixel "
                          "centre's ray; truncated from %d points an edge through the %s model\n",
                     GLS_LENS_BOX_EDGE_STEPS + 1, gls_distort_model_name(&c->dist));
-        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_exposure_of(c, o->trajectory || o->nmotions).rolling)
+        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && fp.ex.rolling)
             fprintf(out, "  rolling shutter: %s%s%s\n",
                     outputs & GLS_OUT_FLOW_ALL ? "flow from each row's time to the row of frame t+1 whose time sees "
                                                  "the point (a fixed point, the poses of every row of frame t+1), the "
@@ -311,7 +326,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                                                   "and occlusion passes at the frame time"
                                                 : "");
         if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_distort_on(c) &&
-            gls_exposure_of(c, o->trajectory || o->nmotions).rolling)
+            fp.ex.rolling)
             fprintf(out, "  lens with the rolling shutter: %s%s%s\n",
                     outputs & GLS_OUT_FLOW_ALL ? "flow: each pixel's point on its centre's ray at its band's depth, "
                                                  "the row of frame t+1 whose time sees it through the model at every "

@@ -324,6 +324,29 @@ static void test_atomic_failed_write(void)
     free(t);
     list_dir(d, left, sizeof left);
     CHECK_STR(left, "out.bin");
+/* gls_mkdir_p_made says what it made, and gls_rmdir_made takes back only
+   that, only while empty: the directory there before stays, and so does
+   one that holds a file (with its parents). */
+static void test_mkdir_made(void)
+{
+    char p[160], q[160];
+    size_t made, before = strlen(dir);
+    snprintf(p, sizeof p, "%s/m", dir);
+    CHECK(gls_mkdir_p(p) == 0);
+    snprintf(p, sizeof p, "%s/m/x//y/z", dir);
+    CHECK(gls_mkdir_p_made(p, &made) == 0 && made == before + 4); /* ".../m/x" */
+    gls_rmdir_made(p, made);
+    snprintf(q, sizeof q, "%s/m", dir);
+    CHECK(gls_is_dir(q));
+    snprintf(q, sizeof q, "%s/m/x", dir);
+    CHECK(!gls_is_dir(q));
+    CHECK(gls_mkdir_p_made(p, &made) == 0 && made == before + 4);
+    size_t again;
+    CHECK(gls_mkdir_p_made(p, &again) == 0 && again == 0); /* all there: nothing made */
+    snprintf(q, sizeof q, "%s/m/x//y/f", dir);
+    CHECK(gls_write_file_atomic(q, "f", 1) == 0);
+    gls_rmdir_made(p, made); /* z goes; y holds f, so y and x stay */
+    CHECK(!gls_is_dir(p) && gls_is_file(q));
 }
 
 int main(void)
@@ -341,6 +364,7 @@ int main(void)
     RUN(test_files);
     RUN(test_atomic_steps);
     RUN(test_atomic_failed_write);
+    RUN(test_mkdir_made);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)
