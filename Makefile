@@ -231,6 +231,9 @@ $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglscene.a $(LIB_base)
 # libglscene.so.MAJOR of include/glscene.h's GLSCENE_VERSION.
 GLSCENE_VERSION := $(shell sed -n 's/^\#define GLSCENE_VERSION "\(.*\)"$$/\1/p' include/glscene.h)
 GLSCENE_SONAME := libglscene.so.$(firstword $(subst ., ,$(GLSCENE_VERSION)))
+# every tool's --version prints it (base/usage.c, tests/e2e/version.sh)
+$(B)/base/usage.o: CFLAGS += -DGLS_VERSION='"$(GLSCENE_VERSION)"'
+$(B)/base/usage.o: include/glscene.h
 GLSCENE_OBJ := $(LIB_SRC:%.c=$(B)/%.o) $(filter-out $(B)/base/usage.o $(B)/base/stdout_check.o,$(BASE_OBJ)) \
                $(FORMAT_OBJ) $(COMPILER_OBJ) $(RUNTIME_OBJ)
 GLSCENE_PIC_OBJ := $(GLSCENE_OBJ:$(B)/%=$(B)/pic/%)

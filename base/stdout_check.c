@@ -10,6 +10,14 @@
 #include "stdout_check.h"
 
 static const char *tool_name;
+static int first_err; /* errno of the first failed gls_stdout_text */
+
+void gls_stdout_text(const char *text)
+{
+    errno = 0;
+    if (fputs(text, stdout) == EOF && !first_err)
+        first_err = errno;
+}
 
 static void close_stdout(void)
 {
@@ -25,7 +33,7 @@ static void close_stdout(void)
     /* an earlier failed write leaves its errno long gone; closing usually
        retries the unwritten buffer and fails the same way */
     fprintf(stderr, "%s: error: cannot write standard output: %s\n", tool_name,
-            close_failed && err ? strerror(err) : "a write failed");
+            first_err ? strerror(first_err) : close_failed && err ? strerror(err) : "a write failed");
     _exit(1); /* exit() may not be called from an exit handler */
 }
 

@@ -9,4 +9,11 @@
  * output: REASON" goes to standard error and the exit status becomes 1.
  * tool must stay valid until exit (a string literal). */
 void gls_check_stdout_at_exit(const char *tool);
+
+/* Write text to standard output (a help text, a version line), keeping
+ * the reason of a failure for the exit check: a text longer than the
+ * stream's buffer is written past the buffer, so nothing is left to fail
+ * again at exit and the reason would otherwise be lost ("a write failed"
+ * for glsplay --help >/dev/full). */
+void gls_stdout_text(const char *text);
 #endif

@@ -24,6 +24,7 @@
     "  -o FILE     output bundle (default: the top object's last name + .glsb)\n" \
     "  --lib DIR   compile a library bundle\n" \
     "  --help      this text\n" \
+    "  --version   print \"glsc VERSION\" and exit\n" \
     "\n" \
     "Exit status: 0 success, 1 compile error, 2 usage error.\n"
 
@@ -64,9 +65,12 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            fputs(USAGE, stdout);
+            gls_stdout_text(USAGE);
             free(roots);
             return 0;
+        } else if (strcmp(a, "--version") == 0) {
+            free(roots);
+            return gls_version("glsc");
         } else if (strcmp(a, "-I") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--lib") == 0) {
             if (i + 1 >= argc) {
                 free(roots);
