@@ -15,7 +15,7 @@ int gls_digest_file(uint64_t *h, const char *path)
 {
     struct stat st;
     gls_read_error e;
-    int fd = gls_file_open(path, GLS_READ_REGULAR | GLS_READ_NONBLOCK, &st, &e);
+    int fd = gls_file_open(path, &st, &e);
     if (fd < 0)
         return -1;
     /* the length first, so that two files' bytes cannot run together */

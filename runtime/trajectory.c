@@ -48,16 +48,9 @@ gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen)
         return NULL;
     }
     t->notes = notes;
-    struct stat st;
-    gls_read_error e;
-    int fd = gls_file_open(path, 0, &st, &e);
-    if (fd < 0 || !(t->f = fdopen(fd, "r"))) {
-        if (fd < 0 && e.status == GLS_READ_DIR)
-            snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
-        else
-            snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(fd < 0 ? e.err : errno));
-        if (fd >= 0)
-            close(fd);
+    char why[300];
+    if (!(t->f = gls_text_open(path, "trajectory file", why, sizeof why))) {
+        snprintf(err, errlen, "%s: error: %s", path, why);
         gls_traj_close(t);
         return NULL;
     }
