@@ -12,11 +12,16 @@
 static const char *tool_name;
 static int first_err; /* errno of the first failed gls_stdout_text */
 
-void gls_stdout_text(const char *text)
+void gls_stdout_write(const void *p, size_t n)
 {
     errno = 0;
-    if (fputs(text, stdout) == EOF && !first_err)
+    if (fwrite(p, 1, n, stdout) != n && !first_err)
         first_err = errno;
+}
+
+void gls_stdout_text(const char *text)
+{
+    gls_stdout_write(text, strlen(text));
 }
 
 static void close_stdout(void)
