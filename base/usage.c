@@ -3,10 +3,9 @@
 #include <stdio.h>
 #include "stdout_check.h"
 #include "usage.h"
-
-#ifndef GLS_VERSION
-#error "GLS_VERSION: the Makefile defines it from include/glscene.h's GLSCENE_VERSION"
-#endif
+/* GLS_VERSION, written by the Makefile from include/glscene.h, the one
+   place the version is */
+#include "gls_version.h"
 
 int gls_usage_error(const char *tool, const char *after, const char *fmt, ...)
 {

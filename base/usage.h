@@ -10,7 +10,8 @@ int gls_usage_error(const char *tool, const char *after, const char *fmt, ...) _
 
 /* --version: "TOOL VERSION" on standard output (through the exit check of
  * stdout_check.h), VERSION being include/glscene.h's GLSCENE_VERSION, the
- * one place it is written (the Makefile passes it to usage.c).  Returns
+ * one place it is written (the Makefile writes it into gls_version.h for
+ * usage.c).  Returns
  * 0, the exit status. */
 int gls_version(const char *tool);
 #endif
