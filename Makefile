@@ -242,6 +242,14 @@ $(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglscene.a $(LIB_base)
 # libglscene.so.MAJOR of include/glscene.h's GLSCENE_VERSION.
 GLSCENE_VERSION := $(shell sed -n 's/^\#define GLSCENE_VERSION "\(.*\)"$$/\1/p' include/glscene.h)
 GLSCENE_SONAME := libglscene.so.$(firstword $(subst ., ,$(GLSCENE_VERSION)))
+# Every tool's --version prints it (base/usage.c, tests/e2e/version.sh),
+# from a header written when the Makefile is read, and only when the
+# version changed: so editing glscene.h otherwise recompiles only what
+# includes it (tests/e2e/build_deps.sh), as glctx_backends.h above.
+GLS_VERSION_H := $(B)/gen/base/gls_version.h
+GLS_VERSION_TEXT := /* written by the Makefile: include/glscene.h'"'"'s GLSCENE_VERSION */\n\#define GLS_VERSION "$(GLSCENE_VERSION)"\n
+$(shell mkdir -p $(B)/gen/base && { printf '$(GLS_VERSION_TEXT)' | cmp -s - $(GLS_VERSION_H) || printf '$(GLS_VERSION_TEXT)' >$(GLS_VERSION_H); })
+$(B)/base/usage.o: LAYER_INC = $(INC_base) -I$(B)/gen/base
 GLSCENE_OBJ := $(LIB_SRC:%.c=$(B)/%.o) $(filter-out $(B)/base/usage.o $(B)/base/stdout_check.o,$(BASE_OBJ)) \
                $(FORMAT_OBJ) $(COMPILER_OBJ) $(RUNTIME_OBJ)
 GLSCENE_PIC_OBJ := $(GLSCENE_OBJ:$(B)/%=$(B)/pic/%)

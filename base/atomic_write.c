@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "atomic_write.h"
+#include "readfile.h"
 
 /* Write everything to fd; 0 or -1 with errno set. */
 static int write_all(int fd, const void *data, size_t len)
@@ -34,19 +35,7 @@ static int write_all(int fd, const void *data, size_t len)
 static const char *special_kind(const char *path)
 {
     struct stat st;
-    if (stat(path, &st) != 0 || S_ISREG(st.st_mode))
-        return NULL;
-    if (S_ISDIR(st.st_mode))
-        return "it is a directory";
-    if (S_ISFIFO(st.st_mode))
-        return "it is a FIFO (named pipe), not a regular file";
-    if (S_ISCHR(st.st_mode))
-        return "it is a character device, not a regular file";
-    if (S_ISBLK(st.st_mode))
-        return "it is a block device, not a regular file";
-    if (S_ISSOCK(st.st_mode))
-        return "it is a socket, not a regular file";
-    return "it is not a regular file";
+    return stat(path, &st) != 0 ? NULL : gls_file_kind(st.st_mode);
 }
 
 const char *gls_write_error(const char *path, int err)

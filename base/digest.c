@@ -29,7 +29,7 @@ int gls_digest_file(uint64_t *h, const char *path)
 {
     struct stat st;
     gls_read_error e;
-    int fd = gls_file_open(path, GLS_READ_REGULAR | GLS_READ_NONBLOCK, &st, &e);
+    int fd = gls_file_open(path, &st, &e);
     if (fd < 0)
         return -1;
     uint64_t size = (uint64_t)st.st_size;

@@ -145,7 +145,7 @@ int gls_frame_record_matches(const char *path, const char *text)
 {
     size_t n = strlen(text), len;
     gls_read_error e;
-    char *got = gls_file_read(path, n, GLS_READ_REGULAR, &len, &e);
+    char *got = gls_file_read(path, n, &len, &e);
     int same = got && len == n && memcmp(got, text, n) == 0;
     free(got);
     return same;

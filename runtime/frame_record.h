@@ -31,11 +31,11 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
 
 /* The digest of what the frames are made from, as the record's "inputs"
  * line shows it (16 hex digits): the bundle file, every camera file, the
- * trajectory (traj: its text as read once, NULL without one; digested
- * as its file would be, so a pipe's too) and the motion files (name and
- * file), and --flatten; "-" when one of the files is not a regular file
- * (a pipe cannot be read again, so a record made from one is never
- * taken by --resume). */
+ * trajectory (traj: its text as read once, NULL without one) and the
+ * motion files (name and file), and --flatten; "-" when one of them
+ * cannot be read again (every input is a regular file, readfile.h, but
+ * one removed or replaced during the run has no digest, so a record made
+ * then is never taken by --resume). */
 void gls_frame_inputs(const gls_play_opts *o, const gls_traj_text *traj, char out[17]);
 
 /* 1 if the file at path holds exactly text (and is a regular file). */

@@ -199,8 +199,13 @@ static int motion_load(const gls_play_opts *o, motion_set *ms, FILE *errs)
                 return 1;
             }
         ms->inst[i] = k;
-        if (gls_motion_read(eq + 1, errs, &ms->m[i], err, sizeof err)) {
-            fprintf(errs, "%s\n", err);
+        int got = gls_motion_read(eq + 1, errs, &ms->m[i], err, sizeof err);
+        if (got) {
+            /* the file itself (missing, a FIFO...): say which option named it */
+            if (got == -2)
+                fprintf(errs, "glsplay: error: --motion %s: %s\n", arg, err);
+            else
+                fprintf(errs, "%s\n", err);
             return 1;
         }
         ms->n = i + 1;

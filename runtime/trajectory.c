@@ -91,19 +91,17 @@ int gls_traj_load(const char *path, gls_traj_text *tx, char *err, size_t errlen)
         snprintf(err, errlen, "%s: error: out of memory", path);
         return -1;
     }
-    struct stat st;
-    gls_read_error e;
-    int fd = gls_file_open(path, 0, &st, &e);
-    if (fd < 0) {
-        if (e.status == GLS_READ_DIR)
-            snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
-        else
-            snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(e.err));
+    /* every input is a regular file (readfile.h): a FIFO or a device is
+     * refused before anything is read, so none blocks the run */
+    char why[300];
+    FILE *f = gls_text_open(path, "trajectory file", why, sizeof why);
+    if (!f) {
+        snprintf(err, errlen, "%s: error: %s", path, why);
         gls_traj_text_free(tx);
         return -1;
     }
-    int rc = read_text(fd, tx, err, errlen);
-    close(fd);
+    int rc = read_text(fileno(f), tx, err, errlen);
+    fclose(f);
     if (rc)
         gls_traj_text_free(tx);
     return rc;

@@ -20,21 +20,19 @@ row() { echo "$1 $1 1 0 0 0 1 0 0 0 1 0 0 -0.$1"; }
 { echo "# five frames"; for f in 0 1 2 3 4; do row $f; done; } >"$t/traj.txt"
 PLAY="$BIN/glsplay $t/sq.glsb --camera $t/cam.cam --size 16x12"
 
-# a trajectory from a pipe is read once: the same files and frame
-# records (their inputs' digest too) as from the file, though the scan,
-# the render, the flow's row ahead and the shutter's sub-frame poses each
-# read its rows
 sed 's/^pose rig$/pose rig\nshutter 0.5/' "$t/cam.cam" >"$t/blur.cam"
-$PLAY --camera "$t/blur.cam" --outputs image,flow --trajectory "$t/traj.txt" --frames 1:4 -o "$t/file" 2>"$t/err_file"
-rc_file=$?
-cat "$t/traj.txt" | $PLAY --camera "$t/blur.cam" --outputs image,flow --trajectory /dev/stdin --frames 1:4 -o "$t/pipe" 2>"$t/err_pipe"
+
+# a trajectory from a pipe is refused before anything is made, saying
+# what it is (every input is a regular file: spec/camera.md); it used to
+# be read twice, giving "no frames in the trajectory" and an empty
+# directory
+cat "$t/traj.txt" | $PLAY --outputs image --trajectory /dev/stdin -o "$t/pipe" 2>"$t/err_pipe"
 rc_pipe=$?
-sed "s|$t/traj.txt|/dev/stdin|g" "$t/err_file" >"$t/err_file_as_pipe"
-if [ $rc_file -eq 0 ] && [ $rc_pipe -eq 0 ] && [ -f "$t/pipe/cam/flow_000003.png" ] &&
-    diff -r "$t/file" "$t/pipe" >/dev/null && cmp -s "$t/err_file_as_pipe" "$t/err_pipe"; then
+if [ $rc_pipe -eq 1 ] && grep -q "/dev/stdin: error: cannot read: it is a FIFO (named pipe), not a regular file" "$t/err_pipe" &&
+    [ "$(wc -l <"$t/err_pipe")" -eq 1 ] && [ ! -e "$t/pipe" ]; then
     ok trajectory_from_pipe
 else
-    fail trajectory_from_pipe "rc $rc_file/$rc_pipe: $(cat "$t/err_pipe"); $(ls "$t/pipe/cam" 2>/dev/null | tr '\n' ' ')"
+    fail trajectory_from_pipe "rc $rc_pipe: $(cat "$t/err_pipe"); $(ls -R "$t/pipe" 2>/dev/null | tr '\n' ' ')"
 fi
 
 # every output at once (19 files a camera frame, with edges' old name

@@ -73,34 +73,37 @@ static void test_readfile(void)
     gls_read_error e;
     snprintf(path, sizeof path, "%s/f.txt", dir);
     write_file(path, "hello\nworld", 11);
-    char *t = gls_file_read(path, 100, 0, &len, &e);
+    char *t = gls_file_read(path, 100, &len, &e);
     CHECK(t && len == 11 && memcmp(t, "hello\nworld", 12) == 0); /* and the NUL */
     free(t);
-    t = gls_file_read(path, 100, GLS_READ_REGULAR, &len, &e);
-    CHECK(t && len == 11 && t[11] == 0);
-    free(t);
-    /* a regular file over the limit is refused before reading, with its size */
-    CHECK(!gls_file_read(path, 10, 0, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 11);
-    CHECK(!gls_file_read(path, 10, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_TOO_LARGE);
-    t = gls_file_read(path, 11, 0, &len, &e); /* exactly the limit */
+    /* a file over the limit is refused before reading, with its size */
+    CHECK(!gls_file_read(path, 10, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 11);
+    t = gls_file_read(path, 11, &len, &e); /* exactly the limit */
     CHECK(t && len == 11);
     free(t);
     snprintf(sub, sizeof sub, "%s/empty", dir);
     write_file(sub, "", 0);
-    t = gls_file_read(sub, 10, GLS_READ_REGULAR, &len, &e);
+    t = gls_file_read(sub, 10, &len, &e);
     CHECK(t && len == 0 && t[0] == 0);
     free(t);
-    CHECK(!gls_file_read(dir, 100, 0, &len, &e) && e.status == GLS_READ_DIR);
-    CHECK(!gls_file_read(dir, 100, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_DIR);
+    CHECK(!gls_file_read(dir, 100, &len, &e) && e.status == GLS_READ_DIR);
     snprintf(sub, sizeof sub, "%s/missing", dir);
-    CHECK(!gls_file_read(sub, 100, 0, &len, &e) && e.status == GLS_READ_OPEN && e.err == ENOENT);
-    /* a device is read as a stream, up to limit + 1 bytes */
-    CHECK(!gls_file_read("/dev/zero", 1000, 0, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 0);
-    CHECK(!gls_file_read("/dev/zero", 1000, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_NOT_REGULAR &&
-          S_ISCHR(e.mode));
-    t = gls_file_read("/dev/null", 1000, 0, &len, &e);
-    CHECK(t && len == 0);
-    free(t);
+    CHECK(!gls_file_read(sub, 100, &len, &e) && e.status == GLS_READ_OPEN && e.err == ENOENT);
+    /* only regular files: a device, and a FIFO with no writer (opening it
+       must not wait: alarm ends a regression with SIGALRM instead of a hang) */
+    CHECK(!gls_file_read("/dev/zero", 1000, &len, &e) && e.status == GLS_READ_NOT_REGULAR && S_ISCHR(e.mode));
+    CHECK(!gls_file_read("/dev/null", 1000, &len, &e) && e.status == GLS_READ_NOT_REGULAR);
+    char fifo[128];
+    snprintf(fifo, sizeof fifo, "%s/fifo", dir);
+    CHECK(mkfifo(fifo, 0600) == 0);
+    struct stat st;
+    alarm(10);
+    CHECK(gls_file_open(fifo, &st, &e) == -1 && e.status == GLS_READ_NOT_REGULAR && S_ISFIFO(e.mode));
+    CHECK_STR(gls_file_kind(e.mode), "it is a FIFO (named pipe), not a regular file");
+    CHECK(gls_file_kind(S_IFREG) == NULL);
+    CHECK(gls_is_file(fifo)); /* there, so not "no such file": reading says what it is */
+    alarm(0);
+    unlink(fifo);
     CHECK(gls_is_dir(dir) && !gls_is_file(dir) && gls_is_file(path) && !gls_is_dir(path) && !gls_is_file(sub));
 }
 
@@ -209,7 +212,7 @@ static void test_files(void)
     CHECK(gls_write_file_atomic(p, "xyz", 3) == 0);
     size_t len;
     gls_read_error e;
-    char *t = gls_file_read(p, 10, GLS_READ_REGULAR, &len, &e);
+    char *t = gls_file_read(p, 10, &len, &e);
     CHECK(t && len == 3 && memcmp(t, "xyz", 3) == 0);
     free(t);
     snprintf(p, sizeof p, "%s/a/b/c/out.bin/d", dir);
@@ -225,7 +228,7 @@ static char *slurp(const char *path)
 {
     size_t len;
     gls_read_error e;
-    return gls_file_read(path, 1 << 20, GLS_READ_REGULAR, &len, &e);
+    return gls_file_read(path, 1 << 20, &len, &e);
 }
 
 /* The names in directory d other than . and .., space-separated (for
@@ -324,6 +327,8 @@ static void test_atomic_failed_write(void)
     free(t);
     list_dir(d, left, sizeof left);
     CHECK_STR(left, "out.bin");
+}
+
 /* gls_mkdir_p_made says what it made, and gls_rmdir_made takes back only
    that, only while empty: the directory there before stays, and so does
    one that holds a file (with its parents). */
