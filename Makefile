@@ -130,7 +130,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed $(B)/distort_project
 
-.PHONY: gallery-truth gallery-effects gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
+.PHONY: gallery-truth gallery-effects gallery-road gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
 all: $(TOOLS) $(SCENELIB) $(GLSCENE_LIBS)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -182,7 +182,18 @@ SEES_test_glscene := lib
 sees_inc = $(foreach l,$(1),$(INC_$(l)))
 sees_lib = $(foreach l,$(1),$(LIB_$(l)))
 $(UNIT_BIN): $(B)/tests/%: $(B)/tests/unit/%.o $$(call sees_lib,$$(SEES_$$*))
-	$(CC) $(LDFLAGS) $< -o $@ $(call sees_lib,$(SEES_$*)) $(LDLIBS) $(GL_LIBS)
+	$(CC) $(LDFLAGS) $(filter %.o,$^) -o $@ $(call sees_lib,$(SEES_$*)) $(LDLIBS) $(GL_LIBS)
+# test_bundle_limit: the bundle reader with GLS_MAX_SECTION_RAW lowered (as
+# the fuzz build lowers the unroll limits), so that sections can add up
+# past it in a test.  Its own copy of format/bundle_read.c is linked
+# before libglsformat.a, whose reader is then not pulled in.
+SEES_test_bundle_limit := format
+TEST_SECTION_RAW := -DGLS_MAX_SECTION_RAW='(1ull << 16)'
+$(B)/tests/test_bundle_limit: $(B)/tests/limit/bundle_read.o
+$(B)/tests/unit/test_bundle_limit.o: CFLAGS += $(TEST_SECTION_RAW)
+$(B)/tests/limit/bundle_read.o: format/bundle_read.c
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(TEST_SECTION_RAW) $(INC_format) $(DEPFLAGS) -c $< -o $@
 $(UNIT_BIN:$(B)/tests/%=$(B)/tests/unit/%.o): LAYER_INC = $(call sees_inc,$(SEES_$(notdir $*))) -Itests -Itests/unit
 
 deps:
@@ -257,6 +268,14 @@ $(B)/glsplay: $(B)/apps/glsplay_main.o $(B)/libglscene.a $(LIB_base)
 # libglscene.so.MAJOR of include/glscene.h's GLSCENE_VERSION.
 GLSCENE_VERSION := $(shell sed -n 's/^\#define GLSCENE_VERSION "\(.*\)"$$/\1/p' include/glscene.h)
 GLSCENE_SONAME := libglscene.so.$(firstword $(subst ., ,$(GLSCENE_VERSION)))
+# Every tool's --version prints it (base/usage.c, tests/e2e/version.sh),
+# from a header written when the Makefile is read, and only when the
+# version changed: so editing glscene.h otherwise recompiles only what
+# includes it (tests/e2e/build_deps.sh), as glctx_backends.h above.
+GLS_VERSION_H := $(B)/gen/base/gls_version.h
+GLS_VERSION_TEXT := /* written by the Makefile: include/glscene.h'"'"'s GLSCENE_VERSION */\n\#define GLS_VERSION "$(GLSCENE_VERSION)"\n
+$(shell mkdir -p $(B)/gen/base && { printf '$(GLS_VERSION_TEXT)' | cmp -s - $(GLS_VERSION_H) || printf '$(GLS_VERSION_TEXT)' >$(GLS_VERSION_H); })
+$(B)/base/usage.o: LAYER_INC = $(INC_base) -I$(B)/gen/base
 GLSCENE_OBJ := $(LIB_SRC:%.c=$(B)/%.o) $(filter-out $(B)/base/usage.o $(B)/base/stdout_check.o,$(BASE_OBJ)) \
                $(FORMAT_OBJ) $(COMPILER_OBJ) $(RUNTIME_OBJ)
 GLSCENE_PIC_OBJ := $(GLSCENE_OBJ:$(B)/%=$(B)/pic/%)
@@ -506,14 +525,21 @@ $(B)/road_montage: $(B)/examples/road/montage.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
 # demo-road: the example road (examples/road/demo.road) rendered as a short
-# stereo sequence into out/road/, and a strip of frames, docs/road_strip.png.
-# examples/road/render.sh: glsroad, glsc, then one glsplay --trajectory
-# --motion over the selected frames (where glsplay lacks --motion, a scene
-# per frame; see examples/road/README.md).
+# stereo sequence into out/road/, and a strip of frames,
+# out/road/road_strip.png.  examples/road/render.sh: glsroad, glsc, then
+# one glsplay --trajectory --motion over the selected frames (where glsplay
+# lacks --motion, a scene per frame; see examples/road/README.md).  Like
+# every command the README gives a user, it writes only under out/ and
+# $(B)/; the targets that rewrite committed files (gallery, gallery-*,
+# bench-*, spec-road-keys) are the maintainer's (tests/e2e/readme_commands.sh
+# checks that make -n demo and demo-road name no docs/ path).
 demo-road:
 	@sh tools/deps.sh
 	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/road_montage
-	sh examples/road/render.sh $(B) out/road docs/road_strip.png
+	sh examples/road/render.sh $(B) out/road out/road/road_strip.png
+# The README's strip, docs/road_strip.png, from demo-road's.
+gallery-road: demo-road
+	cp out/road/road_strip.png docs/road_strip.png
 
 # The README's ground-truth gallery row (docs/gt_*.png): colour views of
 # the road clip's answer-key files (frame 200) and the stereo example's

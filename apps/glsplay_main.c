@@ -117,6 +117,7 @@ static const char usage_text[] =
     "  a render projected to take over a minute (timed on its first passes or frames)\n"
     "  prints the estimate on stderr first: \"glsplay: note: estimated render time ...\"\n"
     "  --help                 this text\n"
+    "  --version              print \"glsplay VERSION\" and exit\n"
     "exit status: 0 success, 1 input error, 2 usage error\n";
 
 #define usage_error(...) gls_usage_error("glsplay", " (try glsplay --help)\n", __VA_ARGS__)
@@ -134,9 +135,13 @@ int main(int argc, char **argv)
         glscene_play_arg(r, "--progress", NULL, &e);
     for (int i = 1; i < argc && !rc;) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(usage_text, stdout);
+            gls_stdout_text(usage_text);
             glscene_play_free(r);
             return 0;
+        }
+        if (strcmp(argv[i], "--version") == 0) {
+            glscene_play_free(r);
+            return gls_version("glsplay");
         }
         int k = glscene_play_arg(r, argv[i], i + 1 < argc ? argv[i + 1] : NULL, &e);
         if (k == -1)

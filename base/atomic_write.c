@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "atomic_write.h"
+#include "readfile.h"
 
 /* Write everything to fd; 0 or -1 with errno set. */
 static int write_all(int fd, const void *data, size_t len)
@@ -34,19 +35,7 @@ static int write_all(int fd, const void *data, size_t len)
 static const char *special_kind(const char *path)
 {
     struct stat st;
-    if (stat(path, &st) != 0 || S_ISREG(st.st_mode))
-        return NULL;
-    if (S_ISDIR(st.st_mode))
-        return "it is a directory";
-    if (S_ISFIFO(st.st_mode))
-        return "it is a FIFO (named pipe), not a regular file";
-    if (S_ISCHR(st.st_mode))
-        return "it is a character device, not a regular file";
-    if (S_ISBLK(st.st_mode))
-        return "it is a block device, not a regular file";
-    if (S_ISSOCK(st.st_mode))
-        return "it is a socket, not a regular file";
-    return "it is not a regular file";
+    return stat(path, &st) != 0 ? NULL : gls_file_kind(st.st_mode);
 }
 
 const char *gls_write_error(const char *path, int err)
@@ -55,12 +44,15 @@ const char *gls_write_error(const char *path, int err)
     return kind ? kind : strerror(err);
 }
 
-int gls_write_file_atomic(const char *path, const void *data, size_t len)
+int gls_atomic_begin(gls_atomic_file *f, const char *path)
 {
     /* An existing target that is not a regular file is refused without
        being opened: renaming over it would replace a FIFO or a device node
        with a plain file, and writing into it could block for ever (a FIFO
        nobody reads) or send the bytes nowhere. */
+    f->fd = -1;
+    f->tmp = NULL;
+    f->path = path;
     if (special_kind(path)) {
         errno = EEXIST;
         return -1;
@@ -77,25 +69,48 @@ int gls_write_file_atomic(const char *path, const void *data, size_t len)
         errno = e;
         return -1;
     }
-    if (write_all(fd, data, len))
-        goto fail;
-    if (fsync(fd) != 0 && errno != EINVAL)
-        goto fail;
-    if (close(fd) != 0) {
-        fd = -1;
-        goto fail;
-    }
-    fd = -1;
-    if (rename(tmp, path) != 0)
-        goto fail;
-    free(tmp);
+    f->fd = fd;
+    f->tmp = tmp;
     return 0;
-fail:;
+}
+
+void gls_atomic_abort(gls_atomic_file *f)
+{
     int e = errno;
-    if (fd >= 0)
-        close(fd);
-    unlink(tmp);
-    free(tmp);
+    if (f->fd >= 0)
+        close(f->fd);
+    if (f->tmp)
+        unlink(f->tmp);
+    free(f->tmp);
+    f->fd = -1;
+    f->tmp = NULL;
     errno = e;
+}
+
+int gls_atomic_commit(gls_atomic_file *f)
+{
+    if (fsync(f->fd) != 0 && errno != EINVAL)
+        goto fail;
+    int fd = f->fd;
+    f->fd = -1;
+    if (close(fd) != 0 || rename(f->tmp, f->path) != 0)
+        goto fail;
+    free(f->tmp);
+    f->tmp = NULL;
+    return 0;
+fail:
+    gls_atomic_abort(f);
     return -1;
+}
+
+int gls_write_file_atomic(const char *path, const void *data, size_t len)
+{
+    gls_atomic_file f;
+    if (gls_atomic_begin(&f, path))
+        return -1;
+    if (write_all(f.fd, data, len)) {
+        gls_atomic_abort(&f);
+        return -1;
+    }
+    return gls_atomic_commit(&f);
 }

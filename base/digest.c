@@ -11,19 +11,29 @@ uint64_t gls_digest_bytes(uint64_t h, const void *p, size_t n)
     return h;
 }
 
+/* the length first, so that two inputs' bytes cannot run together */
+static uint64_t digest_length(uint64_t h, uint64_t size)
+{
+    unsigned char le[8]; /* little-endian: the same digest on every machine of a cluster */
+    for (int i = 0; i < 8; i++)
+        le[i] = (unsigned char)(size >> (8 * i));
+    return gls_digest_bytes(h, le, sizeof le);
+}
+
+uint64_t gls_digest_sized(uint64_t h, const void *p, size_t n)
+{
+    return gls_digest_bytes(digest_length(h, (uint64_t)n), p, n);
+}
+
 int gls_digest_file(uint64_t *h, const char *path)
 {
     struct stat st;
     gls_read_error e;
-    int fd = gls_file_open(path, GLS_READ_REGULAR | GLS_READ_NONBLOCK, &st, &e);
+    int fd = gls_file_open(path, &st, &e);
     if (fd < 0)
         return -1;
-    /* the length first, so that two files' bytes cannot run together */
     uint64_t size = (uint64_t)st.st_size;
-    unsigned char le[8]; /* little-endian: the same digest on every machine of a cluster */
-    for (int i = 0; i < 8; i++)
-        le[i] = (unsigned char)(size >> (8 * i));
-    uint64_t d = gls_digest_bytes(*h, le, sizeof le);
+    uint64_t d = digest_length(*h, size);
     unsigned char block[65536];
     uint64_t left = size;
     while (left) {

@@ -11,6 +11,11 @@
 /* h extended by n bytes at p. */
 uint64_t gls_digest_bytes(uint64_t h, const void *p, size_t n);
 
+/* h extended by the length n (8 bytes, little-endian) and the n bytes at
+ * p: what gls_digest_file gives for a file of those bytes, for an input
+ * read into memory once (a trajectory, which may be a pipe). */
+uint64_t gls_digest_sized(uint64_t h, const void *p, size_t n);
+
 /* *h extended by the length and the bytes of the regular file at path
  * (read in blocks, any size).  0, or -1 (and *h unchanged) when path is
  * not a regular file or cannot be read whole: a pipe or a device cannot

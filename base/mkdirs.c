@@ -3,13 +3,15 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "mkdirs.h"
 
-/* mkdir path[0..n), tolerating one that exists as a directory. */
+/* mkdir path, tolerating one that exists as a directory: 1 made, 0
+ * there, -1 with errno. */
 static int make_one(char *path)
 {
     if (mkdir(path, 0777) == 0)
-        return 0;
+        return 1;
     int e = errno;
     struct stat st;
     if (stat(path, &st) == 0) {
@@ -24,6 +26,13 @@ static int make_one(char *path)
 
 int gls_mkdir_p(const char *path)
 {
+    size_t made;
+    return gls_mkdir_p_made(path, &made);
+}
+
+int gls_mkdir_p_made(const char *path, size_t *made)
+{
+    *made = 0;
     size_t n = strlen(path);
     if (n == 0) {
         errno = ENOENT;
@@ -44,11 +53,34 @@ int gls_mkdir_p(const char *path)
         tmp[i] = 0;
         rc = make_one(tmp);
         tmp[i] = save;
+        if (rc == 1 && !*made)
+            *made = i;
+        rc = rc < 0 ? -1 : 0;
     }
     int e = errno;
     free(tmp);
     errno = e;
     return rc;
+}
+
+void gls_rmdir_made(const char *path, size_t made)
+{
+    size_t n = strlen(path);
+    char *tmp = made ? malloc(n + 1) : NULL;
+    if (!tmp)
+        return; /* nothing made, or no memory: the directories stay */
+    memcpy(tmp, path, n + 1);
+    /* path, then each parent whose prefix is at least made long */
+    for (size_t i = n; i >= made; i--) {
+        if (i < n && tmp[i] != '/')
+            continue;
+        if (i < n && tmp[i - 1] == '/')
+            continue; /* "a//b" */
+        tmp[i] = 0;
+        if (rmdir(tmp) != 0)
+            break; /* not empty (or gone): its parents are not either */
+    }
+    free(tmp);
 }
 
 int gls_mkdir_parents(const char *path)

@@ -10,6 +10,19 @@
 #include "stdout_check.h"
 
 static const char *tool_name;
+static int first_err; /* errno of the first failed gls_stdout_text */
+
+void gls_stdout_write(const void *p, size_t n)
+{
+    errno = 0;
+    if (fwrite(p, 1, n, stdout) != n && !first_err)
+        first_err = errno;
+}
+
+void gls_stdout_text(const char *text)
+{
+    gls_stdout_write(text, strlen(text));
+}
 
 static void close_stdout(void)
 {
@@ -25,7 +38,7 @@ static void close_stdout(void)
     /* an earlier failed write leaves its errno long gone; closing usually
        retries the unwritten buffer and fails the same way */
     fprintf(stderr, "%s: error: cannot write standard output: %s\n", tool_name,
-            close_failed && err ? strerror(err) : "a write failed");
+            first_err ? strerror(first_err) : close_failed && err ? strerror(err) : "a write failed");
     _exit(1); /* exit() may not be called from an exit handler */
 }
 

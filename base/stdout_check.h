@@ -3,10 +3,19 @@
  * a closed pipe, >/dev/full) must not exit 0. */
 #ifndef GLS_STDOUT_CHECK_H
 #define GLS_STDOUT_CHECK_H
+#include <stddef.h>
 
 /* Call first thing in main.  At exit, standard output is flushed and
  * closed; if any write to it failed, "TOOL: error: cannot write standard
  * output: REASON" goes to standard error and the exit status becomes 1.
  * tool must stay valid until exit (a string literal). */
 void gls_check_stdout_at_exit(const char *tool);
+
+/* Write n bytes (a bundle: glsc -o -) or a text (a help text, a version
+ * line) to standard output, keeping the reason of a failure for the exit
+ * check: what is longer than the stream's buffer is written past the
+ * buffer, so nothing is left to fail again at exit and the reason would
+ * otherwise be lost ("a write failed" for glsplay --help >/dev/full). */
+void gls_stdout_write(const void *p, size_t n);
+void gls_stdout_text(const char *text);
 #endif

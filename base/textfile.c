@@ -1,5 +1,7 @@
 /* Bounded reading of text inputs (textfile.h). */
+#include <errno.h>
 #include <string.h>
+#include <unistd.h>
 #include "readfile.h"
 #include "textfile.h"
 
@@ -12,27 +14,51 @@ static void fmt_size(char *buf, size_t n, size_t bytes)
         snprintf(buf, n, "%zu bytes", bytes);
 }
 
+/* Why a text input could not be opened or read, without its path: the
+ * one wording of every text input's file errors. */
+static void why_not(const gls_read_error *e, const char *what, size_t limit, char *why, size_t n)
+{
+    char lim[32];
+    fmt_size(lim, sizeof lim, limit);
+    switch (e->status) {
+    case GLS_READ_OPEN: snprintf(why, n, "cannot open: %s", strerror(e->err)); break;
+    case GLS_READ_DIR: snprintf(why, n, "is a directory, not a %s", what); break;
+    case GLS_READ_NOT_REGULAR: snprintf(why, n, "cannot read: %s", gls_file_kind(e->mode)); break;
+    case GLS_READ_TOO_LARGE: snprintf(why, n, "%s larger than %s (%llu bytes)", what, lim, e->size); break;
+    case GLS_READ_STAT:
+    case GLS_READ_IO: snprintf(why, n, "cannot read: %s", strerror(e->err)); break;
+    case GLS_READ_SHORT: snprintf(why, n, "cannot read: the file shrank while it was read"); break;
+    default: snprintf(why, n, "out of memory"); break;
+    }
+}
+
 char *gls_text_read(const char *path, size_t limit, const char *what, size_t *len, char *err, size_t errlen)
 {
     gls_read_error e;
-    char *buf = gls_file_read(path, limit, 0, len, &e);
+    char *buf = gls_file_read(path, limit, len, &e);
     if (buf)
         return buf;
-    char lim[32];
-    fmt_size(lim, sizeof lim, limit);
-    switch (e.status) {
-    case GLS_READ_OPEN: snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(e.err)); break;
-    case GLS_READ_DIR: snprintf(err, errlen, "%s: error: is a directory, not a %s", path, what); break;
-    case GLS_READ_TOO_LARGE:
-        if (e.size)
-            snprintf(err, errlen, "%s: error: %s larger than %s (%llu bytes)", path, what, lim, e.size);
-        else
-            snprintf(err, errlen, "%s: error: %s larger than %s", path, what, lim);
-        break;
-    case GLS_READ_IO: snprintf(err, errlen, "%s: error: cannot read: %s", path, strerror(e.err)); break;
-    default: snprintf(err, errlen, "%s: error: out of memory", path); break;
-    }
+    char why[300];
+    why_not(&e, what, limit, why, sizeof why);
+    snprintf(err, errlen, "%s: error: %s", path, why);
     return NULL;
+}
+
+FILE *gls_text_open(const char *path, const char *what, char *why, size_t whylen)
+{
+    struct stat st;
+    gls_read_error e;
+    int fd = gls_file_open(path, &st, &e);
+    if (fd < 0) {
+        why_not(&e, what, 0, why, whylen);
+        return NULL;
+    }
+    FILE *f = fdopen(fd, "r");
+    if (!f) {
+        snprintf(why, whylen, "cannot open: %s", strerror(errno));
+        close(fd);
+    }
+    return f;
 }
 
 int gls_text_next_line(gls_text_lines *it, char buf[GLS_TEXT_MAX_LINE + 1], size_t *n)

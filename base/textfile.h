@@ -13,11 +13,18 @@
 #define GLS_TEXT_MAX_LINE 4095u
 
 /* Read the text file at path whole: at most limit bytes, from a regular
- * file, a pipe or a device (a directory is refused).  Returns a malloc'd
- * buffer with a NUL after its *len bytes, or NULL with one line
+ * file (readfile.h: anything else is refused with what it is).  Returns a
+ * malloc'd buffer with a NUL after its *len bytes, or NULL with one line
  * "path: error: why" in err; what names the input ("camera file") in the
- * size message. */
+ * size and directory messages. */
 char *gls_text_read(const char *path, size_t limit, const char *what, size_t *len, char *err, size_t errlen);
+
+/* Open the text file at path to read it a line at a time (trajectories
+ * and motion files, which may be long): a stream, or NULL with the reason
+ * in why, without the path ("cannot open: No such file or directory",
+ * "cannot read: it is a FIFO (named pipe), not a regular file", "is a
+ * directory, not a WHAT"), for the caller to place. */
+FILE *gls_text_open(const char *path, const char *what, char *why, size_t whylen);
 
 /* Lines of a text held in memory.  Start with {text, len} and line = 0. */
 typedef struct {

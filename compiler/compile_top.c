@@ -54,6 +54,7 @@ int gls_compile_top(gls_compiler *c, const char *top, gls_bundle **out)
             free(name);
             return -1;
         }
+        /* a FIFO or a device is not "no such file": reading says what it is */
         if (!gls_is_file(top)) {
             gls_error_at(&c->diag, GLS_NOLOC, "%s: no such file", top);
             free(name);

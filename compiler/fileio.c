@@ -11,14 +11,14 @@
 char *gls_read_file(const char *path, size_t limit, size_t *len, char *why, size_t whylen)
 {
     gls_read_error e;
-    char *buf = gls_file_read(path, limit, GLS_READ_REGULAR, len, &e);
+    char *buf = gls_file_read(path, limit, len, &e);
     if (buf)
         return buf;
     switch (e.status) {
     case GLS_READ_OPEN: snprintf(why, whylen, "cannot open %s: %s", path, strerror(e.err)); break;
-    case GLS_READ_STAT:
+    case GLS_READ_STAT: snprintf(why, whylen, "cannot read %s: %s", path, strerror(e.err)); break;
     case GLS_READ_DIR:
-    case GLS_READ_NOT_REGULAR: snprintf(why, whylen, "%s is not a regular file", path); break;
+    case GLS_READ_NOT_REGULAR: snprintf(why, whylen, "cannot read %s: %s", path, gls_file_kind(e.mode)); break;
     case GLS_READ_TOO_LARGE:
         snprintf(why, whylen, "%s is %llu bytes, more than the limit of %zu", path, e.size, limit);
         break;
@@ -36,7 +36,7 @@ char *gls_load_source(const char *path, size_t limit, size_t *len, size_t *mappe
     *mapped = 0;
     struct stat st;
     gls_read_error e;
-    int fd = gls_file_open(path, GLS_READ_REGULAR, &st, &e);
+    int fd = gls_file_open(path, &st, &e);
     if (fd >= 0 && st.st_size > 0 && (unsigned long long)st.st_size <= limit) {
         long page = sysconf(_SC_PAGESIZE);
         size_t n = (size_t)st.st_size;

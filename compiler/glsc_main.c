@@ -21,9 +21,11 @@
     "\n" \
     "  -I ROOT     search root: a directory or a library bundle (repeatable,\n" \
     "              searched in order, then the roots in $GLSCENE_PATH)\n" \
-    "  -o FILE     output bundle (default: the top object's last name + .glsb)\n" \
+    "  -o FILE     output bundle (default: the top object's last name + .glsb;\n" \
+    "              - : standard output)\n" \
     "  --lib DIR   compile a library bundle\n" \
     "  --help      this text\n" \
+    "  --version   print \"glsc VERSION\" and exit\n" \
     "\n" \
     "Exit status: 0 success, 1 compile error, 2 usage error.\n"
 
@@ -64,9 +66,12 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            fputs(USAGE, stdout);
+            gls_stdout_text(USAGE);
             free(roots);
             return 0;
+        } else if (strcmp(a, "--version") == 0) {
+            free(roots);
+            return gls_version("glsc");
         } else if (strcmp(a, "-I") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--lib") == 0) {
             if (i + 1 >= argc) {
                 free(roots);
@@ -134,6 +139,12 @@ int main(int argc, char **argv)
         if (gls_bundle_write(b, &bytes, &len, &err)) {
             fprintf(stderr, "glsc: error: %s\n", err.msg);
             rc = -1;
+        } else if (strcmp(out, "-") == 0) {
+            /* the whole bundle is built and validated before its first
+               byte goes out, so a failed compile writes none of it; a
+               failed write is reported at exit (stdout_check.h) */
+            gls_stdout_write(bytes, len);
+            free(bytes);
         } else if (gls_mkdir_parents(out)) {
             /* like glsplay -o, glsc -o creates the directories it needs */
             fprintf(stderr, "glsc: error: cannot create the directory of %s: %s\n", out, strerror(errno));

@@ -7,6 +7,7 @@
 
 #define USAGE \
     "usage: glsdis [--source] BUNDLE.glsb\n" \
+    "       glsdis --help | --version\n" \
     "\n" \
     "Print the bundle as text: header and features, textures (size and content\n" \
     "hash), then each object's instructions and vertices.  --source appends the\n" \
@@ -23,8 +24,10 @@ int main(int argc, char **argv)
         if (strcmp(argv[i], "--source") == 0)
             with_source = 1;
         else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(USAGE, stdout);
+            gls_stdout_text(USAGE);
             return 0;
+        } else if (strcmp(argv[i], "--version") == 0) {
+            return gls_version("glsdis");
         } else if (argv[i][0] == '-' && argv[i][1]) {
             return usage_error("unknown option %s", argv[i]);
         } else if (path) {

@@ -6,6 +6,7 @@
  * anything is decoded.  Alpha is made binary here (transparent below 0.5),
  * once, at compile time, so the bundle holds exactly what the player
  * alpha-tests. */
+#include <inttypes.h>
 #include <stdlib.h>
 #include <string.h>
 #include "compile.h"
@@ -33,6 +34,37 @@ static int png_chunk_overrun(const unsigned char *d, size_t len)
     return 0;
 }
 
+/* A PNG's size from its IHDR chunk (the first, at byte 8), read here
+ * rather than by stb_image: stb_image refuses a side over 2^24 with no
+ * PNG-specific reason and then tries the other formats, so a PNG declaring
+ * 2^31 - 1 texels a side was reported as "unknown image type" instead of
+ * as too large.  1 with *w and *h set, 0 when data is no PNG with an IHDR. */
+static int png_header_size(const unsigned char *d, size_t len, uint32_t *w, uint32_t *h)
+{
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (len < 24 || memcmp(d, sig, 8) != 0 || memcmp(d + 12, "IHDR", 4) != 0)
+        return 0;
+    *w = (uint32_t)d[16] << 24 | (uint32_t)d[17] << 16 | (uint32_t)d[18] << 8 | d[19];
+    *h = (uint32_t)d[20] << 24 | (uint32_t)d[21] << 16 | (uint32_t)d[22] << 8 | d[23];
+    return 1;
+}
+
+/* The size rule of spec/language.md 2.2: 0, or -1 with the message. */
+static int size_refused(uint32_t w, uint32_t h, const char *path, char *why, size_t whylen)
+{
+    if (w == 0 || h == 0 || w > GLS_MAX_TEXTURE_DIM || h > GLS_MAX_TEXTURE_DIM) {
+        snprintf(why, whylen, "%s is %" PRIu32 "x%" PRIu32 ", larger than the GL limit of %ux%u", path, w, h,
+                 GLS_MAX_TEXTURE_DIM, GLS_MAX_TEXTURE_DIM);
+        return -1;
+    }
+    if ((uint64_t)w * h > GLS_MAX_TEXELS) {
+        snprintf(why, whylen, "%s is %" PRIu32 "x%" PRIu32 " = %llu texels, more than the limit of %llu "
+                 "(256 MiB of RGBA)", path, w, h, (unsigned long long)w * h, (unsigned long long)GLS_MAX_TEXELS);
+        return -1;
+    }
+    return 0;
+}
+
 int gls_texture_probe(const unsigned char *data, size_t len, const char *path, int *w, int *h, char *why,
                       size_t whylen)
 {
@@ -43,6 +75,9 @@ int gls_texture_probe(const unsigned char *data, size_t len, const char *path, i
             return -1;
         }
     } else {
+        uint32_t pw, ph;
+        if (png_header_size(data, len, &pw, &ph) && size_refused(pw, ph, path, why, whylen))
+            return -1;
         if (png_chunk_overrun(data, len)) {
             snprintf(why, whylen, "cannot decode %s: corrupt PNG (a chunk runs past the end of the file)", path);
             return -1;
@@ -54,17 +89,7 @@ int gls_texture_probe(const unsigned char *data, size_t len, const char *path, i
     }
     /* check the size from the header before decoding anything: a 20-byte
        file can declare a gigabyte of texels (found by the texture fuzzer) */
-    if (*w <= 0 || *h <= 0 || (unsigned)*w > GLS_MAX_TEXTURE_DIM || (unsigned)*h > GLS_MAX_TEXTURE_DIM) {
-        snprintf(why, whylen, "%s is %dx%d, larger than the GL limit of %ux%u", path, *w, *h, GLS_MAX_TEXTURE_DIM,
-                 GLS_MAX_TEXTURE_DIM);
-        return -1;
-    }
-    if ((uint64_t)*w * (uint64_t)*h > GLS_MAX_TEXELS) {
-        snprintf(why, whylen, "%s is %dx%d = %llu texels, more than the limit of %llu (256 MiB of RGBA)", path, *w, *h,
-                 (unsigned long long)*w * (unsigned long long)*h, (unsigned long long)GLS_MAX_TEXELS);
-        return -1;
-    }
-    return 0;
+    return size_refused(*w < 0 ? 0 : (uint32_t)*w, *h < 0 ? 0 : (uint32_t)*h, path, why, whylen);
 }
 
 int gls_texture_decode_memory(const unsigned char *data, size_t len, const char *path, gls_texture *out, char *why,

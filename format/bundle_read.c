@@ -430,9 +430,15 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
             FAIL("section %u: offset %llu / size %llu outside the file or not contiguous", id,
                  (unsigned long long)off, (unsigned long long)stored);
         expect_off = off + stored;
-        if (rl > GLS_MAX_SECTION_RAW || total_raw + rl > GLS_MAX_SECTION_RAW)
+        if (rl > GLS_MAX_SECTION_RAW)
             FAIL("section %u declares %llu decoded bytes, over the limit of %llu", id,
                  (unsigned long long)rl, (unsigned long long)GLS_MAX_SECTION_RAW);
+        /* the sum too: what the reader allocates in all (spec/bundle.md 5) */
+        if (total_raw + rl > GLS_MAX_SECTION_RAW)
+            FAIL("section %u declares %llu decoded bytes, %llu with the sections before it, over the limit of %llu "
+                 "for all sections",
+                 id, (unsigned long long)rl, (unsigned long long)(total_raw + rl),
+                 (unsigned long long)GLS_MAX_SECTION_RAW);
         total_raw += rl;
         if (codec == GLS_CODEC_RAW) {
             if (rl != stored)
@@ -492,19 +498,12 @@ fail:
     return NULL;
 }
 
-static const char *file_kind(mode_t m)
-{
-    return S_ISFIFO(m) ? "a FIFO" : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
-         : S_ISSOCK(m) ? "a socket" : "not a plain file";
-}
-
 gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
 {
-    /* O_NONBLOCK: opening a FIFO must not wait for a writer; only regular
-     * files are read, and for those the flag changes nothing. */
+    /* only a regular file, opened without waiting (readfile.h) */
     struct stat st;
     gls_read_error e;
-    int fd = gls_file_open(path, GLS_READ_REGULAR | GLS_READ_NONBLOCK, &st, &e);
+    int fd = gls_file_open(path, &st, &e);
     uint8_t *data = NULL;
     if (fd < 0) {
         if (e.status == GLS_READ_OPEN)
@@ -514,8 +513,7 @@ gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
         else if (e.status == GLS_READ_DIR)
             gls_fail(err, __LINE__, "%s: is a directory, not a bundle", path);
         else
-            gls_fail(err, __LINE__, "%s: is %s, not a regular file: a bundle is read from a file", path,
-                     file_kind(e.mode));
+            gls_fail(err, __LINE__, "%s: cannot read: %s", path, gls_file_kind(e.mode));
         goto fail;
     }
     /* The header first: magic, version and declared size against the

@@ -23,6 +23,7 @@
     "usage: glsroad ROAD.road -o DIR\n"                                                \
     "       glsroad --camera-at FRAME TRAJECTORY CAMERA\n"                             \
     "       glsroad --list-keys\n"                                                     \
+    "       glsroad --help | --version\n"                                              \
     "The first form writes DIR/road.scene, DIR/roadobj/*.scene, DIR/trajectory.txt,\n" \
     "DIR/poses_kitti.txt, DIR/poses_tum.txt, DIR/lanes.txt, DIR/vehicles.txt and\n"    \
     "DIR/motion/NAME.txt per vehicle, replacing a previous output in DIR as a whole.\n" \
@@ -208,8 +209,10 @@ int main(int argc, char **argv)
     }
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
-            fputs(USAGE, stdout);
+            gls_stdout_text(USAGE);
             return 0;
+        } else if (!strcmp(argv[i], "--version")) {
+            return gls_version("glsroad");
         } else if (!strcmp(argv[i], "-o")) {
             if (i + 1 >= argc)
                 return usage_error("%s needs a directory", "-o");

@@ -26,11 +26,9 @@ static int fail(char *err, size_t errlen, const char *path, unsigned line, const
 int gls_motion_read(const char *path, FILE *notes, gls_motion *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(errno));
-        return -1;
-    }
+    FILE *f = gls_text_open(path, "motion file", err, errlen);
+    if (!f)
+        return -2;
     m->path = malloc(strlen(path) + 1);
     if (m->path)
         strcpy(m->path, path);

@@ -23,8 +23,12 @@ typedef struct {
     double (*RT)[12];  /* R row-major, then T */
 } gls_motion;
 
-/* Read path.  0, or -1 with "path:line: error: ..." (or "path: error:
- * ...") in err.  Notes (an R re-orthonormalised, once) go to notes. */
+/* Read path.  0; -1 with "path:line: error: ..." in err (or "path:
+ * error: out of memory"); or -2 when the file cannot be opened or read
+ * (readfile.h's rule: a regular file), with only the reason in err
+ * ("cannot open: No such file or directory"), for the caller to say which
+ * option named the file.  Notes (an R re-orthonormalised, once) go to
+ * notes. */
 int gls_motion_read(const char *path, FILE *notes, gls_motion *m, char *err, size_t errlen);
 /* The pose of frame k: 0, or -1 when the file has no row for it. */
 int gls_motion_pose(const gls_motion *m, uint64_t k, double R[9], double T[3]);

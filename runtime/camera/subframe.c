@@ -99,12 +99,15 @@ int gls_motion_pose_at(const gls_motion *m, double x, int centre, double R[9], d
     return 0;
 }
 
-int gls_traj_read_all(const char *path, FILE *notes, gls_motion *m, char *err, size_t errlen)
+int gls_traj_read_all(const gls_traj_text *tx, FILE *notes, gls_motion *m, char *err, size_t errlen)
 {
+    const char *path = tx->path;
     memset(m, 0, sizeof *m);
-    gls_traj *t = gls_traj_open(path, notes, err, errlen);
-    if (!t)
+    gls_traj *t = gls_traj_open_text(tx, notes);
+    if (!t) {
+        snprintf(err, errlen, "%s: error: out of memory", path);
         return -1;
+    }
     size_t cap = 0, fcap = 0;
     gls_traj_pose p;
     int got;

@@ -17,6 +17,7 @@
 #define GLS_SUBFRAME_H
 #include <stdio.h>
 #include "motion.h"
+#include "trajectory.h"
 
 /* Interpolate rotation R0 -> R1 (slerp) and translation T0 -> T1 (lerp)
  * at u in [0, 1]; u = 0 and u = 1 give the ends exactly.  centre: T is a
@@ -28,9 +29,9 @@ void gls_pose_interp(const double R0[9], const double T0[3], const double R1[9],
  * before m's first row or after its last.  centre as above. */
 int gls_motion_pose_at(const gls_motion *m, double x, int centre, double R[9], double T[3]);
 
-/* Read a trajectory file whole into m (frame numbers and world-to-rig
+/* A trajectory's text parsed whole into m (frame numbers and world-to-rig
  * poses, gls_traj_next's checks), for sub-frame poses.  0, or -1 with
  * "path:line: error: ..." in err.  Notes go to notes. */
-int gls_traj_read_all(const char *path, FILE *notes, gls_motion *m, char *err, size_t errlen);
+int gls_traj_read_all(const gls_traj_text *tx, FILE *notes, gls_motion *m, char *err, size_t errlen);
 
 #endif

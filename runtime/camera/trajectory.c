@@ -1,4 +1,4 @@
-/* Streaming reader of trajectory files (spec/road.md), used by glsplay
+/* Reader of trajectory files (spec/road.md), used by glsplay
  * --trajectory and by glsroad --camera-at; see trajectory.h. */
 #include <errno.h>
 #include <math.h>
@@ -15,9 +15,9 @@
 #include "vec.h"
 
 struct gls_traj {
-    FILE *f;
-    char *path;
-    unsigned line;
+    gls_traj_text own;        /* gls_traj_open's text (data NULL otherwise) */
+    const gls_traj_text *tx;  /* the text read, own or the caller's         */
+    gls_text_lines it;
     FILE *notes;
     int noted; /* the note on a re-orthonormalised R was given */
     int fmt;        /* values a line: 14 glsroad, 12 KITTI, 8 TUM; 0 before the first */
@@ -25,7 +25,7 @@ struct gls_traj {
     int have_prev;
     uint64_t prev_frame;
     double prev_time;
-    char buf[GLS_TEXT_MAX_LINE + 1]; /* one line: memory stays bounded */
+    char buf[GLS_TEXT_MAX_LINE + 1]; /* one line at a time */
 };
 
 static int fail(const gls_traj *t, char *err, size_t errlen, const char *fmt, ...)
@@ -35,32 +35,113 @@ static int fail(const gls_traj *t, char *err, size_t errlen, const char *fmt, ..
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(err, errlen, "%s:%u: error: %s", t->path, t->line, msg);
+    snprintf(err, errlen, "%s:%u: error: %s", t->tx->path, t->it.line, msg);
     return -1;
+}
+
+/* The bytes of fd, up to GLS_TRAJ_MAX_FILE, stopping at the first line
+ * longer than GLS_TEXT_MAX_LINE (an endless line, /dev/zero, costs a
+ * line's memory, not the limit's).  0, or -1 with the message in err. */
+static int read_text(int fd, gls_traj_text *tx, char *err, size_t errlen)
+{
+    size_t cap = 0, run = 0; /* run: bytes since the last newline */
+    unsigned line = 1;
+    for (;;) {
+        if (tx->len + 65536 + 1 > cap) {
+            size_t ncap = cap ? 2 * cap : 65536 + 1;
+            char *p = realloc(tx->data, ncap);
+            if (!p) {
+                snprintf(err, errlen, "%s: error: out of memory", tx->path);
+                return -1;
+            }
+            tx->data = p, cap = ncap;
+        }
+        ssize_t r = read(fd, tx->data + tx->len, 65536);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r < 0) {
+            snprintf(err, errlen, "%s: error: cannot read: %s", tx->path, strerror(errno));
+            return -1;
+        }
+        if (r == 0)
+            break;
+        for (size_t i = tx->len; i < tx->len + (size_t)r; i++) {
+            if (tx->data[i] == '\n') {
+                run = 0, line++;
+            } else if (++run > GLS_TEXT_MAX_LINE) {
+                snprintf(err, errlen, "%s:%u: error: line longer than %u bytes", tx->path, line, GLS_TEXT_MAX_LINE);
+                return -1;
+            }
+        }
+        tx->len += (size_t)r;
+        if (tx->len > GLS_TRAJ_MAX_FILE) {
+            snprintf(err, errlen, "%s: error: trajectory file larger than %u MiB", tx->path,
+                     (unsigned)(GLS_TRAJ_MAX_FILE >> 20));
+            return -1;
+        }
+    }
+    tx->data[tx->len] = 0;
+    return 0;
+}
+
+int gls_traj_load(const char *path, gls_traj_text *tx, char *err, size_t errlen)
+{
+    memset(tx, 0, sizeof *tx);
+    if (!(tx->path = strdup(path))) {
+        snprintf(err, errlen, "%s: error: out of memory", path);
+        return -1;
+    }
+    /* every input is a regular file (readfile.h): a FIFO or a device is
+     * refused before anything is read, so none blocks the run */
+    char why[300];
+    FILE *f = gls_text_open(path, "trajectory file", why, sizeof why);
+    if (!f) {
+        snprintf(err, errlen, "%s: error: %s", path, why);
+        gls_traj_text_free(tx);
+        return -1;
+    }
+    int rc = read_text(fileno(f), tx, err, errlen);
+    fclose(f);
+    if (rc)
+        gls_traj_text_free(tx);
+    return rc;
+}
+
+void gls_traj_text_free(gls_traj_text *tx)
+{
+    free(tx->path);
+    free(tx->data);
+    memset(tx, 0, sizeof *tx);
+}
+
+gls_traj *gls_traj_open_text(const gls_traj_text *tx, FILE *notes)
+{
+    gls_traj *t = calloc(1, sizeof *t);
+    if (!t)
+        return NULL;
+    t->tx = tx;
+    t->it.text = tx->data;
+    t->it.len = tx->len;
+    t->notes = notes;
+    return t;
 }
 
 gls_traj *gls_traj_open(const char *path, FILE *notes, char *err, size_t errlen)
 {
+    gls_traj_text tx;
+    if (gls_traj_load(path, &tx, err, errlen))
+        return NULL;
     gls_traj *t = calloc(1, sizeof *t);
-    if (!t || !(t->path = strdup(path))) {
-        free(t);
+    if (!t) {
         snprintf(err, errlen, "%s: error: out of memory", path);
+        gls_traj_text_free(&tx);
         return NULL;
     }
+    t->own = tx;
+    t->tx = &t->own;
+    t->it.text = t->own.data;
+    t->it.len = t->own.len;
     t->notes = notes;
-    struct stat st;
-    gls_read_error e;
-    int fd = gls_file_open(path, 0, &st, &e);
-    if (fd < 0 || !(t->f = fdopen(fd, "r"))) {
-        if (fd < 0 && e.status == GLS_READ_DIR)
-            snprintf(err, errlen, "%s: error: is a directory, not a trajectory file", path);
-        else
-            snprintf(err, errlen, "%s: error: cannot open: %s", path, strerror(fd < 0 ? e.err : errno));
-        if (fd >= 0)
-            close(fd);
-        gls_traj_close(t);
-        return NULL;
-    }
     return t;
 }
 
@@ -68,9 +149,7 @@ void gls_traj_close(gls_traj *t)
 {
     if (!t)
         return;
-    if (t->f)
-        fclose(t->f);
-    free(t->path);
+    gls_traj_text_free(&t->own);
     free(t);
 }
 
@@ -103,8 +182,8 @@ static int check_rotation(gls_traj *t, double R[9], char *err, size_t errlen)
     /* one note per file: a trajectory printed with few decimals would
        repeat it on every line */
     if (rot > 0 && t->notes && !t->noted++)
-        fprintf(t->notes, "%s:%u: note: %s (and on every later line where needed, without a note)\n", t->path,
-                t->line, why);
+        fprintf(t->notes, "%s:%u: note: %s (and on every later line where needed, without a note)\n", t->tx->path,
+                t->it.line, why);
     return 0;
 }
 
@@ -112,21 +191,15 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
 {
     for (;;) {
         size_t n;
-        int got = gls_text_getline(t->f, t->buf, &n);
-        if (got == -2) {
-            int e = errno ? errno : EIO;
-            t->line++;
-            return fail(t, err, errlen, "read error: %s", strerror(e));
-        }
+        int got = gls_text_next_line(&t->it, t->buf, &n);
         if (got == 0) {
             if (!t->have_prev) {
-                t->line = t->line ? t->line : 1;
+                t->it.line = t->it.line ? t->it.line : 1;
                 return fail(t, err, errlen, "no frames in the trajectory");
             }
             return 0;
         }
-        t->line++;
-        if (got < 0)
+        if (got < 0) /* refused by gls_traj_load already; a caller's text may hold one */
             return fail(t, err, errlen, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
         if (memchr(t->buf, 0, n))
             return fail(t, err, errlen, "NUL byte in the line");
@@ -187,7 +260,7 @@ int gls_traj_next(gls_traj *t, gls_traj_pose *p, char *err, size_t errlen)
             p->T[0] = -T.x, p->T[1] = -T.y, p->T[2] = -T.z;
         }
         t->rows++;
-        p->line = t->line;
+        p->line = t->it.line;
         if (t->have_prev && !(p->frame > t->prev_frame))
             return fail(t, err, errlen, "frame %llu does not follow frame %llu: frames must increase",
                         (unsigned long long)p->frame, (unsigned long long)t->prev_frame);
@@ -244,4 +317,54 @@ int gls_traj_range(const char *s, uint64_t *first, uint64_t *end, char *err, siz
 bad:
     snprintf(err, errlen, "--frames: '%s' is not a frame range (A:B for frames A to B-1, A:, :B, or A)", s);
     return -1;
+}
+
+void gls_traj_gaps_init(gls_traj_gaps *g, uint64_t first)
+{
+    memset(g, 0, sizeof *g);
+    g->next = first;
+}
+
+/* frames next..upto-1 are missing */
+static void gap_to(gls_traj_gaps *g, uint64_t upto)
+{
+    if (upto <= g->next)
+        return;
+    if (g->runs < GLS_TRAJ_GAPS_SHOWN)
+        g->a[g->runs] = g->next, g->b[g->runs] = upto - 1;
+    g->runs++;
+    g->frames += upto - g->next;
+}
+
+void gls_traj_gaps_row(gls_traj_gaps *g, uint64_t frame)
+{
+    gap_to(g, frame);
+    g->next = frame + 1;
+}
+
+void gls_traj_gaps_end(gls_traj_gaps *g, uint64_t end)
+{
+    if (end != UINT64_MAX)
+        gap_to(g, end);
+}
+
+int gls_traj_gaps_message(const gls_traj_gaps *g, const char *path, char *buf, size_t len)
+{
+    if (!g->frames)
+        return 0;
+    char list[256] = "";
+    size_t k = 0, shown = g->runs < GLS_TRAJ_GAPS_SHOWN ? (size_t)g->runs : GLS_TRAJ_GAPS_SHOWN;
+    for (size_t i = 0; i < shown && k < sizeof list; i++) {
+        const char *sep = i == 0 ? "" : i + 1 == shown && shown == g->runs ? " and " : ", ";
+        int n = g->a[i] == g->b[i] ? snprintf(list + k, sizeof list - k, "%s%llu", sep, (unsigned long long)g->a[i])
+                                   : snprintf(list + k, sizeof list - k, "%s%llu-%llu", sep,
+                                              (unsigned long long)g->a[i], (unsigned long long)g->b[i]);
+        k += n > 0 ? (size_t)n : 0;
+    }
+    if (g->runs > shown && k < sizeof list)
+        snprintf(list + k, sizeof list - k, ", ... (%llu frames in %llu runs)", (unsigned long long)g->frames,
+                 (unsigned long long)g->runs);
+    snprintf(buf, len, "frame%s %s asked for by --frames %s no row in the trajectory %s", g->frames == 1 ? "" : "s",
+             list, g->frames == 1 ? "has" : "have", path);
+    return 1;
 }

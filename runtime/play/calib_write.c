@@ -304,7 +304,8 @@ static int write_frame(const gls_play_opts *o, const gls_camera *world, const gl
     return write_out(errs, o->outdir, NULL, file, b, calib_json(b, frame, time, world, rig, names, o->ncameras));
 }
 
-int gls_calib_write(const gls_play_opts *o, const gls_camera *cams, const char *const *names, FILE *errs)
+int gls_calib_write(const gls_play_opts *o, const gls_traj_text *traj, const gls_camera *cams,
+                    const char *const *names, FILE *errs)
 {
     gls_buf b = {0};
     int rc = 1;
@@ -327,7 +328,7 @@ int gls_calib_write(const gls_play_opts *o, const gls_camera *cams, const char *
     }
     /* the files of each frame follow --shard (shard.h); the rig's, above,
        are the same bytes from every shard */
-    if (!o->trajectory) {
+    if (!traj) {
         rc = gls_shard_has(&o->shard, o->frame, o->frame) ? write_frame(o, cams, NULL, names, o->frame, NULL, &b, errs)
                                                           : 0;
         goto out;
@@ -336,9 +337,9 @@ int gls_calib_write(const gls_play_opts *o, const gls_camera *cams, const char *
        trajectory was checked before the first was rendered) */
     char err[1024];
     world = malloc(o->ncameras * sizeof *world);
-    t = gls_traj_open(o->trajectory, NULL, err, sizeof err);
+    t = gls_traj_open_text(traj, NULL);
     if (!world || !t) {
-        fprintf(errs, "%s\n", world ? err : "glsplay: error: out of memory");
+        fprintf(errs, "glsplay: error: out of memory\n");
         goto out;
     }
     gls_traj_pose p;

@@ -9,14 +9,17 @@
 #include "buf.h"
 #include "camera.h"
 #include "player.h"
+#include "trajectory.h"
 
 /* Write the calibration files of a run whose frames were rendered: for
- * the single render (frame o->frame) or for every frame of o->trajectory
- * in [o->frame_first, o->frame_end).  cams are the cameras as loaded (with
- * a trajectory: relative to the rig), names their output names, in the
- * order of --camera (camera 0 is the first).  0, or 1 after a
- * "glsplay: error: ..." line on errs. */
-int gls_calib_write(const gls_play_opts *o, const gls_camera *cams, const char *const *names, FILE *errs);
+ * the single render (frame o->frame) or for every frame of the
+ * trajectory traj (o->trajectory's text as the run read it once; NULL
+ * without one) in [o->frame_first, o->frame_end).  cams are the cameras
+ * as loaded (with a trajectory: relative to the rig), names their output
+ * names, in the order of --camera (camera 0 is the first).  0, or 1 after
+ * a "glsplay: error: ..." line on errs. */
+int gls_calib_write(const gls_play_opts *o, const gls_traj_text *traj, const gls_camera *cams,
+                    const char *const *names, FILE *errs);
 
 /* The pose of camera i relative to camera 0, x0 -> xi: R = Ri R0^T,
  * t = Ti - R T0 (R = I and t = Ti - T0 exactly when Ri == R0). */

@@ -268,7 +268,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
         gls_frame_plan_explain(out, &fp, &p);
         gls_aa_fine_layout lay;
         gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
-        if (aa && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
+        if (aa && p.count > 1 && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
             char mem[32], budget[32];
             gls_fmt_bytes(mem, sizeof mem, lay.bytes);
             gls_fmt_bytes(budget, sizeof budget, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
@@ -283,7 +283,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                          "framebuffer and read-backs (--aa-memory %s); %llu gather entries per pixel and pass\n",
                     (unsigned long long)lay.tiles, lay.tw, lay.th, mem, budget, (unsigned long long)lay.kernel);
             fprintf(out, "  reads back: colour (RGBA8) per tile\n");
-        } else if (aa) {
+        } else if (aa && p.count > 1) {
             uint32_t kx, ky;
             gls_aa_mosaic_shape(NULL, c->width, c->height, p.count, o->aa_tiles, &kx, &ky);
             fprintf(out, "  anti-aliasing: %llu samples in %llu passes of %ux%u tiles (%ux%u framebuffer)\n",
@@ -329,7 +329,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
             fprintf(out, "  lens: boxes: each instance drawn alone by the fine camera and read at each pixel "
                          "centre's ray; truncated from %d points an edge through the %s model\n",
                     GLS_LENS_BOX_EDGE_STEPS + 1, gls_distort_model_name(&c->dist));
-        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_exposure_of(c, o->trajectory || o->nmotions).rolling)
+        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && fp.ex.rolling)
             fprintf(out, "  rolling shutter: %s%s%s\n",
                     outputs & GLS_OUT_FLOW_ALL ? "flow from each row's time to the row of frame t+1 whose time sees "
                                                  "the point (a fixed point, the poses of every row of frame t+1), the "
@@ -340,7 +340,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                                                   "and occlusion passes at the frame time"
                                                 : "");
         if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_distort_on(c) &&
-            gls_exposure_of(c, o->trajectory || o->nmotions).rolling)
+            fp.ex.rolling)
             fprintf(out, "  lens with the rolling shutter: %s%s%s\n",
                     outputs & GLS_OUT_FLOW_ALL ? "flow: each pixel's point on its centre's ray at its band's depth, "
                                                  "the row of frame t+1 whose time sees it through the model at every "

@@ -146,20 +146,20 @@ int gls_frame_record_matches(const char *path, const char *text)
 {
     size_t n = strlen(text), len;
     gls_read_error e;
-    char *got = gls_file_read(path, n, GLS_READ_REGULAR, &len, &e);
+    char *got = gls_file_read(path, n, &len, &e);
     int same = got && len == n && memcmp(got, text, n) == 0;
     free(got);
     return same;
 }
 
-void gls_frame_inputs(const gls_play_opts *o, char out[17])
+void gls_frame_inputs(const gls_play_opts *o, const gls_traj_text *traj, char out[17])
 {
     uint64_t h = GLS_DIGEST_INIT;
     int ok = gls_digest_file(&h, o->bundle) == 0;
     for (size_t i = 0; ok && i < o->ncameras; i++)
         ok = gls_digest_file(&h, o->cameras[i]) == 0;
-    if (ok && o->trajectory)
-        ok = gls_digest_file(&h, o->trajectory) == 0;
+    if (ok && traj) /* the bytes read once (a pipe too), as a file's */
+        h = gls_digest_sized(h, traj->data, traj->len);
     for (size_t i = 0; ok && i < o->nmotions; i++) {
         const char *eq = strchr(o->motions[i], '=');
         size_t n = eq ? (size_t)(eq - o->motions[i]) : strlen(o->motions[i]);

@@ -15,6 +15,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "player.h"
+#include "trajectory.h"
 
 /* OUTDIR/NAME/.frame_F.done (hidden: it is bookkeeping, not an output).
  * 0, or -1 if it does not fit. */
@@ -30,10 +31,12 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
 
 /* The digest of what the frames are made from, as the record's "inputs"
  * line shows it (16 hex digits): the bundle file, every camera file, the
- * trajectory and the motion files (name and file), and --flatten; "-"
- * when one of them is not a regular file (a pipe cannot be read again,
- * so a record made from one is never taken by --resume). */
-void gls_frame_inputs(const gls_play_opts *o, char out[17]);
+ * trajectory (traj: its text as read once, NULL without one) and the
+ * motion files (name and file), and --flatten; "-" when one of them
+ * cannot be read again (every input is a regular file, readfile.h, but
+ * one removed or replaced during the run has no digest, so a record made
+ * then is never taken by --resume). */
+void gls_frame_inputs(const gls_play_opts *o, const gls_traj_text *traj, char out[17]);
 
 /* 1 if the file at path holds exactly text (and is a regular file). */
 int gls_frame_record_matches(const char *path, const char *text);

@@ -85,39 +85,14 @@ static char *camera_name(const char *path)
     return s;
 }
 
-/* The output kinds, in the order they are written; ext NULL: a float
- * output, .pfm or .npy by --float-format. */
-static const struct {
-    unsigned bit;
-    const char *kind, *ext;
-} outs[] = {{GLS_OUT_IMAGE, "image", "png"},
-            {GLS_OUT_DEPTH, "depth", NULL},
-            {GLS_OUT_POINTS, "points", "ply"},
-            {GLS_OUT_EDGES, "edges", "png"},
-            {GLS_OUT_EDGES_AS_MASK, "mask", "png"},
-            {GLS_OUT_DISPARITY, "disparity", NULL},
-            {GLS_OUT_DISPARITY16, "disparity16", "png"},
-            {GLS_OUT_DEPTH16, "depth16", "png"},
-            {GLS_OUT_LANDMARKS, "landmarks", "csv"},
-            {GLS_OUT_INSTANCE, "instance", "png"},
-            {GLS_OUT_CLASS, "class", "png"},
-            {GLS_OUT_INSTANCE | GLS_OUT_CLASS, "instances", "json"}, /* the JSON table, with either */
-            {GLS_OUT_COCO, "coco", "json"},
-            {GLS_OUT_NORMALS, "normals", NULL},
-            {GLS_OUT_FLOW, "flow", "png"},
-            {GLS_OUT_FLOW_FLO, "flow", "flo"},
-            {GLS_OUT_FLOW_MASK, "flowmask", "png"},
-            {GLS_OUT_BOXES, "boxes", "txt"},
-            {GLS_OUT_BOXES_JSON, "boxes", "json"}};
-#define NOUTS (sizeof outs / sizeof outs[0])
 
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
 static int output_file(char *path, size_t len, const gls_play_opts *o, const char *name, size_t k, uint32_t frame)
 {
-    const char *ext = outs[k].ext;
-    if (!ext || (outs[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM))
+    const char *ext = gls_frame_kinds[k].ext;
+    if (!ext || (gls_frame_kinds[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM))
         ext = o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm";
-    return gls_output_path(path, len, o->outdir, name, outs[k].kind, frame, ext);
+    return gls_output_path(path, len, o->outdir, name, gls_frame_kinds[k].kind, frame, ext);
 }
 
 /* --motion: the named instances and their motion files. */
@@ -129,6 +104,8 @@ typedef struct {
     int moving;      /* a trajectory or a motion: shutter and line_delay act */
     gls_motion rig;  /* the trajectory read whole for sub-frame poses (rig.n
                         = 0: not needed, subframe.h) */
+    gls_traj_text traj; /* --trajectory's bytes, read once: every reader
+                           parses them (data NULL: no trajectory) */
 } motion_set;
 
 /* Every camera whose exposure spans more than the frame time (shutter,
@@ -223,8 +200,13 @@ static int motion_load(const gls_play_opts *o, motion_set *ms, FILE *errs)
                 return 1;
             }
         ms->inst[i] = k;
-        if (gls_motion_read(eq + 1, errs, &ms->m[i], err, sizeof err)) {
-            fprintf(errs, "%s\n", err);
+        int got = gls_motion_read(eq + 1, errs, &ms->m[i], err, sizeof err);
+        if (got) {
+            /* the file itself (missing, a FIFO...): say which option named it */
+            if (got == -2)
+                fprintf(errs, "glsplay: error: --motion %s: %s\n", arg, err);
+            else
+                fprintf(errs, "%s\n", err);
             return 1;
         }
         ms->n = i + 1;
@@ -237,6 +219,7 @@ static void motion_free(motion_set *ms)
     for (size_t i = 0; ms->m && i < ms->n; i++)
         gls_motion_free(&ms->m[i]);
     gls_motion_free(&ms->rig);
+    gls_traj_text_free(&ms->traj);
     free(ms->m);
     free(ms->inst);
 }
@@ -816,9 +799,10 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     f->json = s->json;
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
-    for (size_t k = 0; k < NOUTS && !too_long; k++)
-        if (fp.outputs & outs[k].bit) {
-            f->files[f->nfiles].bit = outs[k].bit;
+    /* one file a kind at most: files[] has room for every kind */
+    for (size_t k = 0; k < GLS_FRAME_KINDS && !too_long; k++)
+        if (fp.outputs & gls_frame_kinds[k].bit) {
+            f->files[f->nfiles].bit = gls_frame_kinds[k].bit;
             too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
         }
     if (too_long) {
@@ -888,8 +872,8 @@ static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char
             gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame, inputs) ||
             !gls_frame_record_matches(path, text))
             return 0;
-        for (size_t k = 0; k < NOUTS; k++) {
-            if (!(o->outputs & outs[k].bit) || (!has_next && (outs[k].bit & GLS_OUT_FLOW_ALL)))
+        for (size_t k = 0; k < GLS_FRAME_KINDS; k++) {
+            if (!(o->outputs & gls_frame_kinds[k].bit) || (!has_next && (gls_frame_kinds[k].bit & GLS_OUT_FLOW_ALL)))
                 continue;
             struct stat st;
             if (output_file(path, sizeof path, o, names[i], k, frame) ||
@@ -900,23 +884,23 @@ static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char
     return 1;
 }
 
-/* notes: where the reader's notes go (a re-orthonormalised rotation);
- * the trajectory is opened twice (scan, then render), notes only once. */
-static gls_traj *open_trajectory(const char *path, FILE *notes, FILE *errs)
+/* A reader of the trajectory's text, read once (ms->traj).  notes: where
+ * the reader's notes go (a re-orthonormalised rotation); the text is
+ * parsed several times (scan, then render), notes only once. */
+static gls_traj *open_trajectory(const motion_set *ms, FILE *notes, FILE *errs)
 {
-    char err[1024];
-    gls_traj *t = gls_traj_open(path, notes, err, sizeof err);
+    gls_traj *t = gls_traj_open_text(&ms->traj, notes);
     if (!t)
-        fprintf(errs, "%s\n", err);
+        fprintf(errs, "glsplay: error: out of memory\n");
     return t;
 }
 
 /* The frame of the trajectory's last row (the one frame with no flow
  * from it), or UINT64_MAX if it cannot be read (the scan says why). */
-static uint64_t trajectory_last_frame(const char *path)
+static uint64_t trajectory_last_frame(const motion_set *ms)
 {
     char err[1024];
-    gls_traj *t = gls_traj_open(path, NULL, err, sizeof err);
+    gls_traj *t = gls_traj_open_text(&ms->traj, NULL);
     if (!t)
         return UINT64_MAX;
     gls_traj_pose p;
@@ -928,8 +912,9 @@ static uint64_t trajectory_last_frame(const char *path)
     return got < 0 ? UINT64_MAX : last;
 }
 
-/* The trajectory read once before anything is rendered: every line up
- * to the end of the range is checked, the frames in the range counted,
+/* The trajectory parsed once before anything is rendered: every line of
+ * the file is checked, whatever --frames asks for, the frames asked for
+ * with no row said in a warning, the frames in the range counted,
  * those of this --shard (mine; all without one) and, with --resume, the
  * complete ones among them (last: the frame of the trajectory's last row,
  * which writes no flow).  With flow, the row after the range is read too,
@@ -940,20 +925,29 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
                            uint64_t *inrange, uint64_t *mine, uint64_t *complete)
 {
     char err[1024];
-    gls_traj *t = open_trajectory(o->trajectory, errs, errs);
+    gls_traj *t = open_trajectory(ms, errs, errs);
     if (!t)
         return 1;
     gls_traj_pose p;
-    int got, rc = 0;
+    int got, rc = 0, past = 0;
+    gls_traj_gaps gaps;
+    gls_traj_gaps_init(&gaps, o->frame_first);
     *inrange = *mine = *complete = 0;
+    /* every row to the end of the file, whatever the range: a row out of
+     * order after the range is as wrong as one in it (past: the rows
+     * after the range, which gls_traj_next still checks) */
     while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
-        if (p.frame < o->frame_first)
+        if (p.frame < o->frame_first || past)
             continue;
         if (p.frame >= o->frame_end) {
-            if ((o->outputs & GLS_OUT_FLOW_ALL) && motion_check(ms, p.frame, errs))
+            past = 1; /* the row after the range: the last frame's flow goes to it */
+            if ((o->outputs & GLS_OUT_FLOW_ALL) && motion_check(ms, p.frame, errs)) {
                 rc = 1;
-            break;
+                break;
+            }
+            continue;
         }
+        gls_traj_gaps_row(&gaps, p.frame);
         if (p.frame > UINT32_MAX) {
             fprintf(errs, "%s:%u: error: frame %llu: frame numbers above %u are not supported\n", o->trajectory,
                     p.line, (unsigned long long)p.frame, UINT32_MAX);
@@ -980,6 +974,12 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
         fprintf(errs, "glsplay: error: %s: no frame in the range given by --frames\n", o->trajectory);
         rc = 1;
     }
+    /* frames --frames asks for (it was given: not 0 to the end) with no row */
+    char msg[512];
+    gls_traj_gaps_end(&gaps, o->frame_end);
+    if (rc == 0 && (o->frame_first || o->frame_end != UINT64_MAX) &&
+        gls_traj_gaps_message(&gaps, o->trajectory, msg, sizeof msg))
+        fprintf(errs, "glsplay: warning: %s\n", msg);
     return rc;
 }
 
@@ -996,9 +996,9 @@ typedef struct {
     uint64_t inrange, mine, complete, last;
 } traj_scan;
 
-/* Every frame of the trajectory in [frame_first, frame_end), read one line
- * at a time (memory stays flat however long the sequence), as scanned
- * (sc).  Each camera file gives that camera's pose relative to the rig. */
+/* Every frame of the trajectory in [frame_first, frame_end), parsed one
+ * line at a time from its text (read once: memory stays flat beyond its
+ * bytes however long the sequence), as scanned (sc).  Each camera file gives that camera's pose relative to the rig. */
 static int play_trajectory(session *s, const gls_camera *rel, const char *const *names, const traj_scan *sc)
 {
     const gls_play_opts *o = s->o;
@@ -1019,11 +1019,11 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     s->json->total = s->views;
     s->json->skipped = complete;
     char err[1024];
-    gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
+    gls_traj *t = open_trajectory(s->ms, NULL, errs);
     if (!t)
         return 1;
     /* flow: a second reader one row ahead gives each frame's next row */
-    gls_traj *ahead = flow ? open_trajectory(o->trajectory, NULL, errs) : NULL;
+    gls_traj *ahead = flow ? open_trajectory(s->ms, NULL, errs) : NULL;
     if (flow && !ahead) {
         gls_traj_close(t);
         return 1;
@@ -1042,7 +1042,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
             continue;
         while (have == 1 && pn.frame <= p.frame)
             have = gls_traj_next(ahead, &pn, err, sizeof err);
-        if (have < 0) { /* read by the scan: only if the file changed since */
+        if (have < 0) { /* the scan read the same rows: never */
             got = have;
             break;
         }
@@ -1100,7 +1100,7 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
         return 0;
     }
     char err[1024];
-    gls_traj *t = open_trajectory(o->trajectory, NULL, errs);
+    gls_traj *t = open_trajectory(ms, NULL, errs);
     if (!t)
         return 1;
     gls_traj_pose p, first;
@@ -1208,7 +1208,7 @@ static int exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_came
         need_rig |= e.blur || e.rolling;
     }
     char err[1024];
-    if (need_rig && o->trajectory && gls_traj_read_all(o->trajectory, NULL, &ms->rig, err, sizeof err)) {
+    if (need_rig && o->trajectory && gls_traj_read_all(&ms->traj, NULL, &ms->rig, err, sizeof err)) {
         fprintf(errs, "%s\n", err);
         return 1;
     }
@@ -1232,6 +1232,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     gls_glctx *ctx = NULL;
     gls_renderer *r = NULL;
     gls_writer *wr = NULL;
+    size_t *made = NULL; /* per camera: what gls_mkdir_p_made made of its directory */
     gls_camera *cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *cams);
     char **names = calloc(o->ncameras ? o->ncameras : 1, sizeof *names);
     gls_bundle *b = NULL;
@@ -1298,6 +1299,13 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if (motion_load(o, &ms, errs) || (!o->trajectory && motion_check(&ms, o->frame, errs)))
         goto out;
+    /* the trajectory read once, whole: a pipe gives its bytes only once,
+     * and the scan, the render, the digest and the calibration must all
+     * see the same rows */
+    if (o->trajectory && gls_traj_load(o->trajectory, &ms.traj, err, sizeof err)) {
+        fprintf(errs, "%s\n", err);
+        goto out;
+    }
     if (exposure_setup(o, &ms, cams, (const char *const *)names, &plan, errs) ||
         (!o->trajectory && exposure_check(&ms, cams, (const char *const *)names, o->ncameras, o->frame, errs)))
         goto out;
@@ -1341,24 +1349,31 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         goto out;
     }
     char inputs[17];
-    gls_frame_inputs(o, inputs);
+    gls_frame_inputs(o, o->trajectory ? &ms.traj : NULL, inputs);
     /* The whole trajectory is read and checked (with --resume, the frames
      * already complete counted) before anything is created: a bad row
      * leaves no empty directory behind. */
     traj_scan scan = {0, 0, 0, UINT64_MAX};
     if (o->trajectory) {
         if (o->outputs & GLS_OUT_FLOW_ALL)
-            scan.last = trajectory_last_frame(o->trajectory);
+            scan.last = trajectory_last_frame(&ms);
         if (scan_trajectory(o, &ms, cams, (const char *const *)names, inputs, scan.last, errs, &scan.inrange,
                             &scan.mine, &scan.complete))
             goto out;
     }
     /* All directories before any rendering: an unwritable output fails
-     * before anything is written. */
+     * before anything is written.  Those this run makes are removed at
+     * the end if they are still empty (made[]): a run that fails or has
+     * nothing to render leaves no empty directory behind. */
+    made = calloc(o->ncameras ? o->ncameras : 1, sizeof *made);
+    if (!made) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        goto out;
+    }
     for (size_t i = 0; i < o->ncameras; i++) {
         char dir[MAXPATH];
         int k = snprintf(dir, sizeof dir, "%s/%s", o->outdir, names[i]);
-        if (k < 0 || (size_t)k >= sizeof dir || gls_mkdir_p(dir)) {
+        if (k < 0 || (size_t)k >= sizeof dir || gls_mkdir_p_made(dir, &made[i])) {
             fprintf(errs, "glsplay: error: cannot create output directory %s: %s\n", dir,
                     k < 0 || (size_t)k >= sizeof dir ? "path too long" : strerror(errno));
             goto out;
@@ -1423,7 +1438,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     /* after the render and its files: every frame in the range was read
      * and checked */
     if (rc == 0 && o->write_calib)
-        rc = gls_calib_write(o, cams, (const char *const *)names, errs);
+        rc = gls_calib_write(o, o->trajectory ? &ms.traj : NULL, cams, (const char *const *)names, errs);
 out:
     /* first: it waits for the files in flight, whose jobs name the
      * cameras */
@@ -1433,6 +1448,14 @@ out:
         gls_progress_json_end(&json, rc == 0, gls_now());
     gls_renderer_destroy(r);
     gls_glctx_destroy(ctx);
+    /* after the writer's last file: the directories made, last camera
+     * first (the first camera's may hold the others') */
+    for (size_t i = o->ncameras; made && i-- > 0;) {
+        char dir[MAXPATH];
+        snprintf(dir, sizeof dir, "%s/%s", o->outdir, names[i]);
+        gls_rmdir_made(dir, made[i]);
+    }
+    free(made);
     motion_free(&ms);
     gls_gt_table_free(&gt);
     gls_flow_moves_free(&moves);

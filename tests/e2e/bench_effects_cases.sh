@@ -4,7 +4,8 @@
 # its own scene (the plan's top object)
 # through bench/effects.sh's own functions (--check: no timing asserted).
 # A broken case (a missing keys file, keys glsplay refuses, a line of three
-# fields, a scene file that does not compile) fails with its reason.  Not
+# fields, a scene file that does not compile) fails with its reason.  A
+# keys file's recipe line (fisheye.keys') runs as written.  Not
 # under the sanitizers (CI's second pass builds no bench/play_bench; the
 # normal pass checks the same script).  Prints "ok NAME" / "FAIL NAME: why".
 . tests/e2e/lib.sh
@@ -53,3 +54,45 @@ broken "lit | road:$t/Bad.scene | - | -" "bench-effects: case lit: glsc failed o
     bench_effects_cases_scene
 broken "odd | moon | - | -" "$t/broken.cases:1: unknown scene 'moon' (road, terrain or road:FILE)" \
     bench_effects_cases_unknown_scene
+
+# The recipe a keys file gives in its comment ("#     sh
+# bench/effects/with_keys.sh CAMERA KEYS >OUT.cam", fisheye.keys') runs as
+# written, its output in the test's directory: the camera has the keys
+# file's values in place of its own, each key once, and glsplay takes it.
+# Appending the file instead is refused, as the comment says.
+mkdir "$t/recipe"
+printf 'color(0.5, 0.5, 0.5);\npoly { vert(-1, -1, 10); vert(1, -1, 10); vert(0, 1, 10); }\n' >"$t/recipe/Tri.scene"
+"$BIN/glsc" -o "$t/recipe/tri.glsb" "$t/recipe/Tri.scene" 2>"$t/err" || fail bench_effects_keys_recipe "glsc: $(cat "$t/err")"
+grep -l '^#     sh bench/effects/with_keys.sh ' bench/effects/*.keys >"$t/recipes"
+grep -qx bench/effects/fisheye.keys "$t/recipes" || fail bench_effects_keys_recipe "fisheye.keys gives no recipe line"
+while read -r k; do
+    cmd=$(sed -n 's/^#     \(sh bench\/effects\/with_keys\.sh .*\)$/\1/p' "$k")
+    out=${cmd##*>}
+    cmd="${cmd%>*}>\"$t/recipe/$out\""
+    cam=$(echo "$cmd" | cut -d' ' -f3)
+    if ! sh -c "$cmd" 2>"$t/err"; then
+        fail bench_effects_keys_recipe "$k: '$cmd' failed: $(cat "$t/err")"
+        continue
+    fi
+    # every key of the keys file once, with the file's values
+    bad=$(grep -v '^#' "$k" | while read -r key vals; do
+        [ -n "$key" ] || continue
+        [ "$(grep -c "^$key " "$t/recipe/$out")" -eq 1 ] && grep -qxF "$key $vals" "$t/recipe/$out" || echo "$key"
+    done)
+    if [ -n "$bad" ]; then
+        fail bench_effects_keys_recipe "$k: not once with the file's values: $bad"
+    elif ! "$BIN/glsplay" "$t/recipe/tri.glsb" --camera "$t/recipe/$out" --explain >/dev/null 2>"$t/err"; then
+        fail bench_effects_keys_recipe "$k: glsplay refuses the camera: $(cat "$t/err")"
+    else
+        ok "bench_effects_keys_recipe_$(basename "$k" .keys)"
+    fi
+    # appended instead: refused on a key the camera has (fisheye: fx)
+    cat "$cam" "$k" >"$t/recipe/appended.cam"
+    dup=$(grep -v '^#' "$k" | cut -d' ' -f1 | while read -r key; do grep -q "^$key " "$cam" && echo "$key" && break; done)
+    if [ -n "$dup" ]; then
+        "$BIN/glsplay" "$t/recipe/tri.glsb" --camera "$t/recipe/appended.cam" --explain >/dev/null 2>"$t/err" &&
+            fail bench_effects_keys_appended "$k appended to $cam is accepted" ||
+            { grep -qF "key '$dup' given twice" "$t/err" && ok "bench_effects_keys_appended_$(basename "$k" .keys)" ||
+                fail bench_effects_keys_appended "$k appended: $(cat "$t/err")"; }
+    fi
+done <"$t/recipes"

@@ -177,6 +177,34 @@ else
     fail output_directory_refused "rc=$rc $(head -1 "$tmp/err")"
 fi
 
+# -o - writes the bundle to standard output, and no file named "-": the
+# same bytes as -o FILE; a failed compile writes no byte of it; a failed
+# write says why (the bundle is written past stdout's buffer)
+mkdir "$tmp/cwd"
+here=$(pwd)
+# (the same directory and root: a bundle records its source paths)
+(cd "$tmp/cwd" && "$BIN/glsc" -I "$here/tests/compiler/paper" -o "$tmp/curve.glsb" road.tex.roads.Curve400m)
+(cd "$tmp/cwd" && "$BIN/glsc" -I "$here/tests/compiler/paper" -o - road.tex.roads.Curve400m) \
+    >"$tmp/stdout.glsb" 2>"$tmp/err"; rc=$?
+if [ $rc -eq 0 ] && [ -s "$tmp/curve.glsb" ] && cmp -s "$tmp/curve.glsb" "$tmp/stdout.glsb" &&
+    [ -z "$(ls -A "$tmp/cwd")" ] && [ ! -s "$tmp/err" ]; then
+    ok output_stdout
+else
+    fail output_stdout "rc=$rc $(head -1 "$tmp/err"); in the directory: $(ls -A "$tmp/cwd")"
+fi
+(cd "$tmp/cwd" && "$BIN/glsc" -I "$here/tests/compiler/paper" -o - road.tex.roads.NoSuch) >"$tmp/stdout.glsb" \
+    2>"$tmp/err"; rc=$?
+[ $rc -eq 1 ] && [ ! -s "$tmp/stdout.glsb" ] && [ -z "$(ls -A "$tmp/cwd")" ] && ok output_stdout_nothing_on_error ||
+    fail output_stdout_nothing_on_error "rc=$rc, $(wc -c <"$tmp/stdout.glsb") bytes on stdout"
+(cd "$tmp/cwd" && "$BIN/glsc" --lib "$here/tests/compiler/paper" -o -) >"$tmp/lib.glsb" 2>"$tmp/err" &&
+    "$BIN/glsdis" "$tmp/lib.glsb" >/dev/null && [ -z "$(ls -A "$tmp/cwd")" ] && ok output_stdout_lib || fail output_stdout_lib "$(head -1 "$tmp/err")"
+if [ -c /dev/full ]; then
+    (cd "$tmp/cwd" && "$BIN/glsc" -I "$here/tests/compiler/paper" -o - road.tex.roads.Curve400m) >/dev/full \
+        2>"$tmp/err"; rc=$?
+    [ $rc -eq 1 ] && [ "$(cat "$tmp/err")" = "glsc: error: cannot write standard output: No space left on device" ] &&
+        ok output_stdout_full || fail output_stdout_full "rc=$rc $(cat "$tmp/err")"
+fi
+
 # Call depth: 256 nested calls compile; 257 do not, also when the long
 # chain runs through an object that an earlier, shorter chain already reached.
 mkdir -p "$tmp/deep"

@@ -2,7 +2,8 @@
 # Inputs that never end or are not what they claim: every reader stops
 # after a bounded amount of time and memory with a message that names the
 # real problem (text lines longer than 4095 bytes, text files over their
-# size limit, bundles whose header is wrong or that are not regular files).
+# size limit, bundles whose header is wrong, inputs that are not regular
+# files).
 # Prints "ok NAME" / "FAIL NAME: why".
 . tests/e2e/lib.sh
 "$BIN/glsc" -I tests/compiler/lang -o "$t/leaf.glsb" pkg.Leaf || { fail input_bounds_setup "glsc"; exit 0; }
@@ -23,15 +24,23 @@ expect() {
     else ok "$name"; fi
 }
 
-# text inputs: an endless line, an endless file
-expect trajectory_endless_line 1 "/dev/zero:1: error: line longer than 4095 bytes" 200000 -- \
-    "$BIN/glsplay" "$t/leaf.glsb" --camera examples/road/rig/left.cam --trajectory /dev/zero -o "$t/o1"
-expect camera_endless_file 1 "/dev/zero: error: camera file larger than 1 MiB" 200000 -- \
+# text inputs: an endless line, an endless file (1 GiB of zeros in a
+# sparse file: inputs are regular files, so /dev/zero itself is refused
+# before anything is read, below)
+truncate -s 1G "$t/zeros"
+expect trajectory_endless_line 1 "$t/zeros:1: error: line longer than 4095 bytes" 200000 -- \
+    "$BIN/glsplay" "$t/leaf.glsb" --camera examples/road/rig/left.cam --trajectory "$t/zeros" -o "$t/o1"
+expect camera_endless_file 1 "$t/zeros: error: camera file larger than 1 MiB (1073741824 bytes)" 200000 -- \
+    "$BIN/glsplay" "$t/leaf.glsb" --camera "$t/zeros" -o "$t/o2"
+expect road_endless_file 1 "$t/zeros: error: road description larger than 16 MiB (1073741824 bytes)" 200000 -- \
+    "$BIN/glsroad" "$t/zeros" -o "$t/o3"
+expect road_camera_at_endless_trajectory 1 "$t/zeros:1: error: line longer than 4095 bytes" 200000 -- \
+    "$BIN/glsroad" --camera-at 0 "$t/zeros" examples/road/rig/left.cam
+rm -f "$t/zeros"
+expect camera_device 1 "/dev/zero: error: cannot read: it is a character device, not a regular file" 200000 -- \
     "$BIN/glsplay" "$t/leaf.glsb" --camera /dev/zero -o "$t/o2"
-expect road_endless_file 1 "/dev/zero: error: road description larger than 16 MiB" 200000 -- \
+expect road_device 1 "/dev/zero: error: cannot read: it is a character device, not a regular file" 200000 -- \
     "$BIN/glsroad" /dev/zero -o "$t/o3"
-expect road_camera_at_endless_trajectory 1 "/dev/zero:1: error: line longer than 4095 bytes" 200000 -- \
-    "$BIN/glsroad" --camera-at 0 /dev/zero examples/road/rig/left.cam
 mkdir "$t/dir"
 expect camera_directory 1 "$t/dir: error: is a directory, not a camera file" 200000 -- \
     "$BIN/glsplay" "$t/leaf.glsb" --camera "$t/dir" -o "$t/o4"
@@ -45,17 +54,18 @@ expect road_long_line 1 "$t/long.road:2:4096: error: line longer than 4095 bytes
     ok road_long_line_excerpt || fail road_long_line_excerpt "$(cat "$t/stderr")"
 
 # bundles: the header is checked against the file's size before the rest
-# is read, and only regular files are read (a FIFO must not block)
+# is read, and only regular files are read (a FIFO must not block; every
+# input's FIFO: input_files.sh)
 mkfifo "$t/fifo"
-expect bundle_fifo 1 "glsplay: error: $t/fifo: is a FIFO, not a regular file: a bundle is read from a file" 200000 -- \
+expect bundle_fifo 1 "glsplay: error: $t/fifo: cannot read: it is a FIFO (named pipe), not a regular file" 200000 -- \
     "$BIN/glsplay" "$t/fifo" --camera "$CAM" --explain
-expect bundle_fifo_glsdis 1 "glsdis: error: $t/fifo: is a FIFO, not a regular file: a bundle is read from a file" 200000 -- \
+expect bundle_fifo_glsdis 1 "glsdis: error: $t/fifo: cannot read: it is a FIFO (named pipe), not a regular file" 200000 -- \
     "$BIN/glsdis" "$t/fifo"
-expect bundle_fifo_search_root 1 "glsc: error: search root $t/fifo: is a FIFO, not a regular file: a bundle is read from a file" 200000 -- \
+expect bundle_fifo_search_root 1 "glsc: error: search root $t/fifo: cannot read: it is a FIFO (named pipe), not a regular file" 200000 -- \
     "$BIN/glsc" -I "$t/fifo" -I tests/compiler/lang -o "$t/out.glsb" pkg.Leaf
 expect bundle_directory 1 "glsplay: error: $t/dir: is a directory, not a bundle" 200000 -- \
     "$BIN/glsplay" "$t/dir" --camera "$CAM" --explain
-expect bundle_device 1 "glsplay: error: /dev/zero: is a character device, not a regular file: a bundle is read from a file" 200000 -- \
+expect bundle_device 1 "glsplay: error: /dev/zero: cannot read: it is a character device, not a regular file" 200000 -- \
     "$BIN/glsplay" /dev/zero --camera "$CAM" --explain
 # 5 GiB of zeros (a sparse file): refused on its first 48 bytes
 truncate -s 5G "$t/zeros.glsb"

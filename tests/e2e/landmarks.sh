@@ -46,6 +46,20 @@ if grep -q '^outputs image depth landmarks$' "$t/o1/c/.frame_000000.done"; then
 else
     fail landmarks_frame_record "$(cat "$t/o1/c/.frame_000000.done")"
 fi
+# far from the camera (the tolerance is relative to the depth, 1e-4 Zc,
+# runtime/gt_landmarks.c): a wall 100 units away, a mark 0.005 behind it
+# visible (within 0.01), one 0.02 behind hidden; an absolute 1e-4 would hide both
+mkdir "$t/far"
+printf 'mark("just.behind", 0, 0, 100.005);\nmark("well.behind", 0, 0, 100.02);\ncolor(0.5, 0.5, 0.5);\npoly { vert(-50, -50, 100); vert(50, -50, 100); vert(50, 50, 100); vert(-50, 50, 100); }\n' >"$t/far/Wall.scene"
+printf 'width 160\nheight 120\nfx 150\nfy 150\ncx 79.5\ncy 59.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 200\n' >"$t/cams/far.cam"
+"$BIN/glsc" -o "$t/far.glsb" "$t/far/Wall.scene" 2>"$t/err" &&
+    "$BIN/glsplay" "$t/far.glsb" --camera "$t/cams/far.cam" --outputs landmarks -o "$t/o4" 2>>"$t/err"
+vis=$(cut -d, -f1,10 "$t/o4/far/landmarks_000000.csv" 2>/dev/null | tr '\n' ' ')
+if [ "$vis" = "name,visible just.behind,1 well.behind,0 " ]; then
+    ok landmarks_far_tolerance
+else
+    fail landmarks_far_tolerance "name,visible: '$vis' (want just.behind 1, well.behind 0): $(cat "$t/err")"
+fi
 # --explain: what it costs
 "$BIN/glsplay" "$t/top.glsb" --camera "$t/cams/c.cam" --outputs image,landmarks --aa 4 --explain >"$t/plan" 2>&1
 if grep -qx '  writes: landmarks (CSV, 7 per frame): the centre pass'"'"'s depth, one extra unjittered pass (--aa)' "$t/plan"; then

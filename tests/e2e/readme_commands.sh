@@ -3,7 +3,9 @@
 # repository after `make demo`, and leaves that checkout clean: outputs go
 # only under out/ and build/, which git ignores.  Also `make demo` is
 # incremental: a second run renders nothing, and touching one camera file
-# renders again only the scene that camera belongs to.
+# renders again only the scene that camera belongs to.  Samples of output
+# marked <!-- sample: COMMAND --> in README.md, docs/ and spec/ are what
+# their commands print in that copy (tools/md_samples.sh --check).
 # Prints "ok NAME" / "FAIL NAME: why".
 #
 # The commands: the lines of README.md's indented code blocks whose first
@@ -60,9 +62,45 @@ while IFS= read -r cmd; do
         fail "readme_command_$i" "'$cmd' failed: $(tail -3 "$t/out" | tr '\n' ' ')"
     fi
 done <"$t/commands"
+# ---- samples of output: each block marked <!-- sample: COMMAND --> in the
+# README, docs/ and spec/ is what COMMAND prints now (tools/md_samples.sh);
+# the README's --explain sample is one, and a stale sample is caught
+if (cd "$repo" && sh tools/md_samples.sh --check README.md docs/*.md spec/*.md) >"$t/samples" 2>&1; then
+    ok docs_samples_match_their_commands
+else
+    fail docs_samples_match_their_commands "$(head -12 "$t/samples")"
+fi
+(cd "$repo" && sh tools/md_samples.sh --list README.md) | grep -q -- ' --explain ' && ok docs_samples_explain_marked ||
+    fail docs_samples_explain_marked "README.md has no sample of --explain"
+sed 's/unique geometry [0-9.]* KiB/unique geometry 0.1 KiB/' "$repo/README.md" >"$t/stale.md"
+cmp -s "$repo/README.md" "$t/stale.md" && fail docs_samples_stale_caught "the sed changed nothing"
+(cd "$repo" && sh tools/md_samples.sh --check "$t/stale.md") >"$t/samples" 2>&1
+if [ $? -eq 1 ] && grep -q "^$t/stale.md:[0-9]*: the sample differs" "$t/samples" && grep -q '^-.*unique geometry 0.1 KiB' "$t/samples" &&
+    (cd "$repo" && sh tools/md_samples.sh --write "$t/stale.md") && cmp -s "$repo/README.md" "$t/stale.md"; then
+    ok docs_samples_stale_caught
+else
+    fail docs_samples_stale_caught "--check passed a stale sample, or --write did not restore it: $(head -5 "$t/samples")"
+fi
 st=$(cd "$repo" && git status --porcelain)
 [ -z "$st" ] && ok readme_commands_leave_checkout_clean ||
     fail readme_commands_leave_checkout_clean "untracked or changed: $(echo "$st" | tr '\n' ' ')"
+
+# ---- the user's make targets write nothing tracked ----------------------------------
+# make demo and make demo-road (README) write only under out/ and build/:
+# what make -n shows them run names no docs/ path (the committed images
+# are the maintainer's gallery-* targets'; demo-road rewrote
+# docs/road_strip.png)
+for tgt in demo demo-road; do
+    name=make_$(echo $tgt | tr - _)_writes_no_docs
+    (cd "$repo" && make -n $tgt) >"$t/n" 2>&1
+    if grep -Eq '(^|[ ="/])docs(/|$| )' "$t/n"; then
+        fail "$name" "$(grep -E '(^|[ ="/])docs(/|$| )' "$t/n" | head -3 | tr '\n' ' ')"
+    elif grep -q 'render\.sh' "$t/n" || [ $tgt = demo ]; then
+        ok "$name"
+    else
+        fail "$name" "make -n $tgt shows no render: $(head -5 "$t/n" | tr '\n' ' ')"
+    fi
+done
 
 # ---- make demo is incremental ------------------------------------------------------
 RENDERS='glsplay|render\.sh|/glsc |depth2png|pnghalf'

@@ -3,11 +3,14 @@
  * mkdir -p and atomic writes.  Each is used by several layers; the tools'
  * tests check them through their messages, these check the helpers
  * themselves, including the cases no tool's input reaches easily. */
+#include <dirent.h>
 #include <errno.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "atomic_write.h"
@@ -70,34 +73,37 @@ static void test_readfile(void)
     gls_read_error e;
     snprintf(path, sizeof path, "%s/f.txt", dir);
     write_file(path, "hello\nworld", 11);
-    char *t = gls_file_read(path, 100, 0, &len, &e);
+    char *t = gls_file_read(path, 100, &len, &e);
     CHECK(t && len == 11 && memcmp(t, "hello\nworld", 12) == 0); /* and the NUL */
     free(t);
-    t = gls_file_read(path, 100, GLS_READ_REGULAR, &len, &e);
-    CHECK(t && len == 11 && t[11] == 0);
-    free(t);
-    /* a regular file over the limit is refused before reading, with its size */
-    CHECK(!gls_file_read(path, 10, 0, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 11);
-    CHECK(!gls_file_read(path, 10, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_TOO_LARGE);
-    t = gls_file_read(path, 11, 0, &len, &e); /* exactly the limit */
+    /* a file over the limit is refused before reading, with its size */
+    CHECK(!gls_file_read(path, 10, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 11);
+    t = gls_file_read(path, 11, &len, &e); /* exactly the limit */
     CHECK(t && len == 11);
     free(t);
     snprintf(sub, sizeof sub, "%s/empty", dir);
     write_file(sub, "", 0);
-    t = gls_file_read(sub, 10, GLS_READ_REGULAR, &len, &e);
+    t = gls_file_read(sub, 10, &len, &e);
     CHECK(t && len == 0 && t[0] == 0);
     free(t);
-    CHECK(!gls_file_read(dir, 100, 0, &len, &e) && e.status == GLS_READ_DIR);
-    CHECK(!gls_file_read(dir, 100, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_DIR);
+    CHECK(!gls_file_read(dir, 100, &len, &e) && e.status == GLS_READ_DIR);
     snprintf(sub, sizeof sub, "%s/missing", dir);
-    CHECK(!gls_file_read(sub, 100, 0, &len, &e) && e.status == GLS_READ_OPEN && e.err == ENOENT);
-    /* a device is read as a stream, up to limit + 1 bytes */
-    CHECK(!gls_file_read("/dev/zero", 1000, 0, &len, &e) && e.status == GLS_READ_TOO_LARGE && e.size == 0);
-    CHECK(!gls_file_read("/dev/zero", 1000, GLS_READ_REGULAR, &len, &e) && e.status == GLS_READ_NOT_REGULAR &&
-          S_ISCHR(e.mode));
-    t = gls_file_read("/dev/null", 1000, 0, &len, &e);
-    CHECK(t && len == 0);
-    free(t);
+    CHECK(!gls_file_read(sub, 100, &len, &e) && e.status == GLS_READ_OPEN && e.err == ENOENT);
+    /* only regular files: a device, and a FIFO with no writer (opening it
+       must not wait: alarm ends a regression with SIGALRM instead of a hang) */
+    CHECK(!gls_file_read("/dev/zero", 1000, &len, &e) && e.status == GLS_READ_NOT_REGULAR && S_ISCHR(e.mode));
+    CHECK(!gls_file_read("/dev/null", 1000, &len, &e) && e.status == GLS_READ_NOT_REGULAR);
+    char fifo[128];
+    snprintf(fifo, sizeof fifo, "%s/fifo", dir);
+    CHECK(mkfifo(fifo, 0600) == 0);
+    struct stat st;
+    alarm(10);
+    CHECK(gls_file_open(fifo, &st, &e) == -1 && e.status == GLS_READ_NOT_REGULAR && S_ISFIFO(e.mode));
+    CHECK_STR(gls_file_kind(e.mode), "it is a FIFO (named pipe), not a regular file");
+    CHECK(gls_file_kind(S_IFREG) == NULL);
+    CHECK(gls_is_file(fifo)); /* there, so not "no such file": reading says what it is */
+    alarm(0);
+    unlink(fifo);
     CHECK(gls_is_dir(dir) && !gls_is_file(dir) && gls_is_file(path) && !gls_is_dir(path) && !gls_is_file(sub));
 }
 
@@ -206,7 +212,7 @@ static void test_files(void)
     CHECK(gls_write_file_atomic(p, "xyz", 3) == 0);
     size_t len;
     gls_read_error e;
-    char *t = gls_file_read(p, 10, GLS_READ_REGULAR, &len, &e);
+    char *t = gls_file_read(p, 10, &len, &e);
     CHECK(t && len == 3 && memcmp(t, "xyz", 3) == 0);
     free(t);
     snprintf(p, sizeof p, "%s/a/b/c/out.bin/d", dir);
@@ -215,6 +221,137 @@ static void test_files(void)
     CHECK(gls_write_file_atomic(p, "x", 1) == -1 && errno == EEXIST);
     CHECK_STR(gls_write_error(p, EEXIST), "it is a directory");
     CHECK_STR(gls_write_error("/dev/null", EEXIST), "it is a character device, not a regular file");
+}
+
+/* The file at path, as a string ("" when empty, NULL when absent). */
+static char *slurp(const char *path)
+{
+    size_t len;
+    gls_read_error e;
+    return gls_file_read(path, 1 << 20, &len, &e);
+}
+
+/* The names in directory d other than . and .., space-separated (for
+ * messages: what a writer left behind). */
+static void list_dir(const char *d, char *out, size_t cap)
+{
+    out[0] = 0;
+    DIR *dp = opendir(d);
+    if (!dp)
+        return;
+    for (struct dirent *e; (e = readdir(dp));)
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strlen(out) + strlen(e->d_name) + 2 < cap)
+            strcat(strcat(out, out[0] ? " " : ""), e->d_name);
+    closedir(dp);
+}
+
+/* Write to a temporary, then rename (base/atomic_write.c): until the
+ * commit the target keeps its old content (or does not exist), and the
+ * temporary is a file beside it, in its directory; after the commit the
+ * target has the new content and the temporary is gone; an abort leaves
+ * the directory as it was.  A writer that wrote in place fails the first
+ * check, one that wrote its temporary elsewhere (another file system: the
+ * rename would fail, or copy) the second. */
+static void test_atomic_steps(void)
+{
+    char d[160], p[200], left[512];
+    snprintf(d, sizeof d, "%s/atomic", dir);
+    CHECK(gls_mkdir_p(d) == 0);
+    snprintf(p, sizeof p, "%s/out.txt", d);
+    write_file(p, "old", 3);
+
+    gls_atomic_file f;
+    CHECK(gls_atomic_begin(&f, p) == 0);
+    char *t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "old") == 0, "after begin the target holds '%s'", t ? t : "(none)");
+    free(t);
+    CHECK(write(f.fd, "new!", 4) == 4);
+    t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "old") == 0, "before the commit the target holds '%s'", t ? t : "(none)");
+    free(t);
+    /* the temporary: another name, in the target's directory */
+    const char *slash = f.tmp ? strrchr(f.tmp, '/') : NULL;
+    CHECK_MSG(f.tmp && strcmp(f.tmp, p) != 0 && slash && (size_t)(slash - f.tmp) == strlen(d) &&
+                  strncmp(f.tmp, d, strlen(d)) == 0,
+              "temporary '%s' for '%s'", f.tmp ? f.tmp : "(none)", p);
+    struct stat st;
+    CHECK(f.tmp && stat(f.tmp, &st) == 0 && S_ISREG(st.st_mode) && st.st_size == 4);
+    CHECK(gls_atomic_commit(&f) == 0);
+    t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "new!") == 0, "after the commit the target holds '%s'", t ? t : "(none)");
+    free(t);
+    list_dir(d, left, sizeof left);
+    CHECK_STR(left, "out.txt");
+
+    /* abort: an existing target unchanged, a new one never appears */
+    CHECK(gls_atomic_begin(&f, p) == 0);
+    CHECK(write(f.fd, "abandoned", 9) == 9);
+    gls_atomic_abort(&f);
+    t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "new!") == 0, "after an abort the target holds '%s'", t ? t : "(none)");
+    free(t);
+    snprintf(p, sizeof p, "%s/new.txt", d);
+    CHECK(gls_atomic_begin(&f, p) == 0);
+    CHECK(access(p, F_OK) != 0); /* not there until the commit */
+    CHECK(write(f.fd, "x", 1) == 1);
+    gls_atomic_abort(&f);
+    CHECK(access(p, F_OK) != 0);
+    list_dir(d, left, sizeof left);
+    CHECK_STR(left, "out.txt");
+}
+
+/* gls_write_file_atomic whose write fails half-way (a file size limit:
+ * the temporary gets 4096 of the 65536 bytes): the target keeps its old
+ * content and nothing else is left in the directory. */
+static void test_atomic_failed_write(void)
+{
+    char d[160], p[200], left[512];
+    snprintf(d, sizeof d, "%s/atomic_fail", dir);
+    CHECK(gls_mkdir_p(d) == 0);
+    snprintf(p, sizeof p, "%s/out.bin", d);
+    write_file(p, "old", 3);
+    static char big[65536];
+    memset(big, 'n', sizeof big);
+    struct rlimit old, lim;
+    CHECK(getrlimit(RLIMIT_FSIZE, &old) == 0);
+    lim = old;
+    lim.rlim_cur = 4096;
+    void (*was)(int) = signal(SIGXFSZ, SIG_IGN); /* EFBIG rather than the signal */
+    CHECK(setrlimit(RLIMIT_FSIZE, &lim) == 0);
+    int r = gls_write_file_atomic(p, big, sizeof big), e = errno;
+    setrlimit(RLIMIT_FSIZE, &old);
+    signal(SIGXFSZ, was);
+    CHECK_MSG(r == -1 && e == EFBIG, "returned %d, errno %d", r, e);
+    char *t = slurp(p);
+    CHECK_MSG(t && strcmp(t, "old") == 0, "the target holds %zu bytes", t ? strlen(t) : 0);
+    free(t);
+    list_dir(d, left, sizeof left);
+    CHECK_STR(left, "out.bin");
+}
+
+/* gls_mkdir_p_made says what it made, and gls_rmdir_made takes back only
+   that, only while empty: the directory there before stays, and so does
+   one that holds a file (with its parents). */
+static void test_mkdir_made(void)
+{
+    char p[160], q[160];
+    size_t made, before = strlen(dir);
+    snprintf(p, sizeof p, "%s/m", dir);
+    CHECK(gls_mkdir_p(p) == 0);
+    snprintf(p, sizeof p, "%s/m/x//y/z", dir);
+    CHECK(gls_mkdir_p_made(p, &made) == 0 && made == before + 4); /* ".../m/x" */
+    gls_rmdir_made(p, made);
+    snprintf(q, sizeof q, "%s/m", dir);
+    CHECK(gls_is_dir(q));
+    snprintf(q, sizeof q, "%s/m/x", dir);
+    CHECK(!gls_is_dir(q));
+    CHECK(gls_mkdir_p_made(p, &made) == 0 && made == before + 4);
+    size_t again;
+    CHECK(gls_mkdir_p_made(p, &again) == 0 && again == 0); /* all there: nothing made */
+    snprintf(q, sizeof q, "%s/m/x//y/f", dir);
+    CHECK(gls_write_file_atomic(q, "f", 1) == 0);
+    gls_rmdir_made(p, made); /* z goes; y holds f, so y and x stay */
+    CHECK(!gls_is_dir(p) && gls_is_file(q));
 }
 
 int main(void)
@@ -230,6 +367,9 @@ int main(void)
     RUN(test_numbers);
     RUN(test_vec);
     RUN(test_files);
+    RUN(test_atomic_steps);
+    RUN(test_atomic_failed_write);
+    RUN(test_mkdir_made);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)

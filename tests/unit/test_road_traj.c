@@ -257,7 +257,7 @@ static void test_range(void)
 }
 
 /* A line is read only up to GLS_TEXT_MAX_LINE bytes: a longer one is an
-   error at its line, and an endless one (/dev/zero) costs no memory. */
+   error at its line, and one that never ends costs no memory. */
 static void test_line_bound(void)
 {
     const char *I = "1 0 0 0 1 0 0 0 1";
@@ -275,17 +275,24 @@ static void test_line_bound(void)
     memset(t + k, 'c', 2 * GLS_TEXT_MAX_LINE);
     strcpy(t + 2 * GLS_TEXT_MAX_LINE, "\n");
     expect_error("long.txt", t, "long.txt:2: error: line longer than 4095 bytes");
-    /* no newline at all */
+    /* no newline at all: 1 GiB of zeros (a sparse file; inputs are regular
+       files, so /dev/zero is refused before any of it is read) */
+    p = write_file("zeros.txt", "");
+    CHECK(truncate(p, 1 << 30) == 0);
+    char want[300];
+    snprintf(want, sizeof want, "%s:1: error: line longer than 4095 bytes", p);
     struct rusage r0, r1;
     getrusage(RUSAGE_SELF, &r0);
-    CHECK(read_all("/dev/zero", &q, err, sizeof err) == -1);
+    CHECK(read_all(p, &q, err, sizeof err) == -1);
     getrusage(RUSAGE_SELF, &r1);
-    CHECK_STR(err, "/dev/zero:1: error: line longer than 4095 bytes");
+    CHECK_STR(err, want);
+    unlink(p);
     CHECK_MSG(r1.ru_maxrss - r0.ru_maxrss < 1024, "peak RSS grew by %ld kB", r1.ru_maxrss - r0.ru_maxrss);
 }
 
-/* 20000 frames streamed: the reader holds one line, so the peak resident
-   size does not grow with the file (the file itself is ~3 MB). */
+/* 20000 frames (a file of ~3 MB): read once, whole (its bytes are the
+   memory it takes), then parsed from memory by a reader that holds one
+   line, so parsing it, as often as a run does, adds nothing. */
 static void test_streaming(void)
 {
     char path[128];
@@ -296,15 +303,46 @@ static void test_streaming(void)
         fprintf(f, "%ld %.17g %.17g %.17g 0 %.17g %.17g 0 0 0 1 %.17g 1.5 %.17g\n", k, k / 25.0, cos(a), -sin(a),
                 sin(a), cos(a), k * 0.1, k * 0.8);
     }
+    long size = ftell(f);
     fclose(f);
+    gls_traj_text tx;
+    char err[256];
+    CHECK(gls_traj_load(path, &tx, err, sizeof err) == 0);
+    CHECK(tx.len == (size_t)size && tx.data[tx.len] == 0);
     struct rusage r0, r1;
     getrusage(RUSAGE_SELF, &r0);
-    gls_traj_pose q;
-    char err[256];
-    long n = read_all(path, &q, err, sizeof err);
+    for (int pass = 0; pass < 3; pass++) {
+        gls_traj *t = gls_traj_open_text(&tx, NULL);
+        gls_traj_pose q;
+        long n = 0;
+        int r;
+        while ((r = gls_traj_next(t, &q, err, sizeof err)) == 1)
+            n++;
+        gls_traj_close(t);
+        CHECK(r == 0 && n == 20000 && q.frame == 19999);
+    }
     getrusage(RUSAGE_SELF, &r1);
-    CHECK(n == 20000 && q.frame == 19999);
     CHECK_MSG(r1.ru_maxrss - r0.ru_maxrss < 1024, "peak RSS grew by %ld kB", r1.ru_maxrss - r0.ru_maxrss);
+    gls_traj_text_free(&tx);
+}
+
+/* A pipe is refused before anything is read (every input is a regular
+   file, readfile.h): with no writer it would block the run, and what it
+   says names what it is.  The file is read once into memory (so no
+   reader reads it twice): test_streaming. */
+static void test_pipe(void)
+{
+    int fd[2];
+    CHECK(pipe(fd) == 0);
+    const char *rows = "0 0 1 0 0 0 1 0 0 0 1 0 0 0\n";
+    CHECK(write(fd[1], rows, strlen(rows)) == (ssize_t)strlen(rows));
+    char path[64], err[256] = "";
+    snprintf(path, sizeof path, "/dev/fd/%d", fd[0]);
+    gls_traj_text tx;
+    CHECK(gls_traj_load(path, &tx, err, sizeof err) == -1);
+    CHECK_MSG(strstr(err, "it is a FIFO (named pipe), not a regular file") != NULL, "%s", err);
+    close(fd[0]);
+    close(fd[1]);
 }
 
 int main(void)
@@ -319,6 +357,7 @@ int main(void)
     RUN(test_compose);
     RUN(test_range);
     RUN(test_streaming);
+    RUN(test_pipe);
     RUN(test_line_bound);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
