@@ -88,7 +88,7 @@ if "$PLAY" "$t/wall.glsb" -c "$t/r1/left.cam" -c "$t/r1/right.cam" -o "$t/pfm" -
 else
     fail npy_renders "$(cat "$t/err")"
 fi
-exact float_format_usage 2 "glsplay: error: --float-format needs pfm or npy, got 'tiff' (try glsplay --help)" -- \
+exact float_format_usage 2 "glsplay: error: --float-format takes one of: pfm, npy (not 'tiff') (try glsplay --help)" -- \
     "$PLAY" "$t/wall.glsb" -c "$t/r1/left.cam" -o "$t/x" --float-format tiff
 exact depth_scale_usage 2 \
     "glsplay: error: --depth-scale needs a positive number, kitti (256) or tum (5000), got '0' (try glsplay --help)" -- \
