@@ -486,6 +486,11 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
         return play_fail(r, e, -1, "--write-calib writes into the output directory: give -o OUTDIR");
     if (o->outdir && o->ncameras == 0)
         return play_fail(r, e, -1, "no camera given (--camera CAM)");
+    /* what the runtime refuses from the options alone (two cameras for
+       disparity, their output names, ...): usage errors too */
+    char msg[2048];
+    if (gls_play_check_options(o, msg, sizeof msg))
+        return play_fail(r, e, -1, "%s", msg);
     r->checked = 1;
     return 0;
 }

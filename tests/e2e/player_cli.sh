@@ -179,6 +179,33 @@ progress_ok player_progress_json_equals json "$B1" --progress=json
 progress_ok player_progress_bar_before bar --progress bar "$B1"
 progress_ok player_progress_bar_equals bar "$B1" --progress=bar
 progress_ok player_progress_alone_before_bundle bar --progress "$B1"
+# exit status (spec/exit_status.md): what the command line alone shows is a
+# usage error, 2, found before any file is read; what a file shows, 1
+mkdir -p "$t/sub"
+cp "$t/proj.cam" "$t/sub/proj.cam"
+exact player_status_cameras_same_name 2 \
+    "glsplay: error: cameras $t/proj.cam and $t/sub/proj.cam would both write to $t/s1/proj/$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" --camera "$t/sub/proj.cam" -o "$t/s1"
+exact player_status_camera_no_name 2 "glsplay: error: $t/sub/: cannot name an output directory after this camera file$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/sub/" -o "$t/s1"
+exact player_status_disparity_one_camera 2 \
+    "glsplay: error: --outputs disparity needs a rectified pair: exactly two cameras, the left one first; 1 given$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --outputs disparity
+exact player_status_flow_without_trajectory 2 \
+    "glsplay: error: --outputs flow needs a --trajectory: the flow goes from each frame to the next$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --outputs flow
+exact player_status_gauss_sigma 2 "glsplay: error: Gaussian sigma 100 is outside 0.01..16 pixels$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --aa 2 --filter gauss:100
+exact player_status_motion_twice 2 "glsplay: error: --motion car=b.txt: instance car is moved twice$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --motion car=a.txt --motion car=b.txt
+# both kinds: the usage error, and no file is read (the camera is missing)
+exact player_status_usage_first 2 \
+    "glsplay: error: --outputs disparity needs a rectified pair: exactly two cameras, the left one first; 1 given$H" -- \
+    $PLAY "$t/nope.glsb" --camera "$t/nope.cam" -o "$t/s1" --outputs disparity
+[ ! -e "$t/s1" ] && ok player_status_usage_writes_nothing || fail player_status_usage_writes_nothing "$(find "$t/s1")"
+# a --motion NAME the bundle lacks: only the bundle says so, exit 1
+expect player_status_motion_unknown_instance 1 "has no instance named 'car'" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s2" --motion car=a.txt
 # an image too large for memory: which framebuffer, how much memory, and
 # the option that lowers it (memory capped at 1.5 GB with ulimit -v; not
 # under ASan, which reserves far more address space than that)
