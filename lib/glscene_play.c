@@ -410,7 +410,7 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
             return play_fail(r, e, -1, "%s", msg);
         return 2;
     } else if (strcmp(a, "--trajectory") == 0) {
-        if (!has_val)
+        if (!has_val || !next[0])
             return play_fail(r, e, -1, "--trajectory needs a trajectory file");
         return (o->trajectory = keep(r, e, next)) ? 2 : -2;
     } else if (strcmp(a, "--frames") == 0) {
@@ -434,7 +434,10 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
         memcpy(o->background, c, sizeof c);
         return 2;
     } else if (a[0] == '-' && a[1])
-        return play_fail(r, e, -1, "unknown option '%s'", a); else if (!o->bundle) {
+        return play_fail(r, e, -1, "unknown option '%s'", a);
+    else if (!a[0]) /* names no file (spec/exit_status.md) */
+        return play_fail(r, e, -1, "an empty bundle name");
+    else if (!o->bundle) {
         return (o->bundle = keep(r, e, a)) ? 1 : -2;
     } else 
         return play_fail(r, e, -1, "more than one bundle given ('%s')", a);

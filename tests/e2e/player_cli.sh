@@ -198,6 +198,9 @@ exact player_status_gauss_sigma 2 "glsplay: error: Gaussian sigma 100 is outside
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --aa 2 --filter gauss:100
 exact player_status_motion_twice 2 "glsplay: error: --motion car=b.txt: instance car is moved twice$H" -- \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --motion car=a.txt --motion car=b.txt
+exact player_status_empty_bundle 2 "glsplay: error: an empty bundle name$H" -- $PLAY "" --camera "$t/proj.cam" -o "$t/s1"
+exact player_status_empty_trajectory 2 "glsplay: error: --trajectory needs a trajectory file$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --trajectory ""
 # both kinds: the usage error, and no file is read (the camera is missing)
 exact player_status_usage_first 2 \
     "glsplay: error: --outputs disparity needs a rectified pair: exactly two cameras, the left one first; 1 given$H" -- \
