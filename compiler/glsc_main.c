@@ -78,6 +78,10 @@ int main(int argc, char **argv)
                 return usage_error("missing argument after ", a);
             }
             const char *v = argv[++i];
+            if (!v[0]) { /* names no file: a usage error (spec/exit_status.md) */
+                free(roots);
+                return usage_error("empty argument after ", a);
+            }
             if (a[1] == 'I')
                 roots[nroots++] = v;
             else if (a[1] == 'o')
@@ -92,6 +96,9 @@ int main(int argc, char **argv)
         } else if (top) {
             free(roots);
             return usage_error("more than one top-level object: ", a);
+        } else if (!a[0]) {
+            free(roots);
+            return usage_error("an empty top-level object name", NULL);
         } else {
             top = a;
         }

@@ -32,6 +32,8 @@ int main(int argc, char **argv)
             return usage_error("unknown option %s", argv[i]);
         } else if (path) {
             return usage_error("%s", "more than one bundle given");
+        } else if (!argv[i][0]) { /* names no file (spec/exit_status.md) */
+            return usage_error("%s", "an empty bundle name");
         } else
             path = argv[i];
     }

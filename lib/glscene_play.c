@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "buf.h"
+#include "choice.h"
 #include "glscene_internal.h"
 #include "occlusion.h"
 #include "player.h"
@@ -107,48 +108,63 @@ const char *glscene_play_message(const glscene_play *r)
     return r && r->msg ? r->msg : "";
 }
 
-static int parse_outputs(const char *s, unsigned *bits)
+/* The words of --outputs, in the order --help lists them; "mask" last,
+ * taken but not listed (edges' old name, for one release). */
+static const char *const output_words[] = {"image",    "depth", "points", "edges", "disparity", "disparity16",
+                                           "depth16",  "landmarks", "instance", "class", "coco", "normals",
+                                           "flow",     "boxes", "mask"};
+static const unsigned output_bits[] = {GLS_OUT_IMAGE,     GLS_OUT_DEPTH,     GLS_OUT_POINTS,       GLS_OUT_EDGES,
+                                       GLS_OUT_DISPARITY, GLS_OUT_DISPARITY16, GLS_OUT_DEPTH16,    GLS_OUT_LANDMARKS,
+                                       GLS_OUT_INSTANCE,  GLS_OUT_CLASS,     GLS_OUT_COCO,         GLS_OUT_NORMALS,
+                                       GLS_OUT_FLOW_ALL,  GLS_OUT_BOXES_ALL, GLS_OUT_EDGES_AS_MASK};
+#define N_OUTPUT_WORDS (sizeof output_words / sizeof output_words[0])
+#define N_OUTPUTS_LISTED (N_OUTPUT_WORDS - 1)
+
+/* The message of an option with a fixed set of words (choice.h); bad NULL:
+ * no value given.  Returns -1. */
+static int choice_fail(glscene_play *r, glscene_error *e, const char *a, int list, const char *bad, size_t badlen,
+                       const char *const *words, size_t n)
+{
+    char m[2048];
+    gls_choice_message(m, sizeof m, a, list, bad, badlen, words, n);
+    return play_fail(r, e, -1, "%s", m);
+}
+
+/* --outputs LIST: 0 with *bits, or -1 after the message naming the first
+ * word that is no output. */
+static int parse_outputs(glscene_play *r, glscene_error *e, const char *s, unsigned *bits)
 {
     *bits = 0;
-    char tmp[256];
-    if (strlen(s) >= sizeof tmp)
-        return -1;
-    strcpy(tmp, s);
-    for (char *save = NULL, *t = strtok_r(tmp, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        if (strcmp(t, "image") == 0)
-            *bits |= GLS_OUT_IMAGE;
-        else if (strcmp(t, "depth") == 0)
-            *bits |= GLS_OUT_DEPTH;
-        else if (strcmp(t, "points") == 0)
-            *bits |= GLS_OUT_POINTS;
-        else if (strcmp(t, "edges") == 0)
-            *bits |= GLS_OUT_EDGES;
-        else if (strcmp(t, "mask") == 0) /* edges' old name, for one release */
-            *bits |= GLS_OUT_EDGES_AS_MASK;
-        else if (strcmp(t, "disparity") == 0)
-            *bits |= GLS_OUT_DISPARITY;
-        else if (strcmp(t, "disparity16") == 0)
-            *bits |= GLS_OUT_DISPARITY16;
-        else if (strcmp(t, "depth16") == 0)
-            *bits |= GLS_OUT_DEPTH16;
-        else if (strcmp(t, "landmarks") == 0)
-            *bits |= GLS_OUT_LANDMARKS;
-        else if (strcmp(t, "instance") == 0)
-            *bits |= GLS_OUT_INSTANCE;
-        else if (strcmp(t, "class") == 0)
-            *bits |= GLS_OUT_CLASS;
-        else if (strcmp(t, "coco") == 0)
-            *bits |= GLS_OUT_COCO;
-        else if (strcmp(t, "normals") == 0)
-            *bits |= GLS_OUT_NORMALS;
-        else if (strcmp(t, "flow") == 0)
-            *bits |= GLS_OUT_FLOW_ALL;
-        else if (strcmp(t, "boxes") == 0)
-            *bits |= GLS_OUT_BOXES_ALL;
-        else
-            return -1;
+    for (const char *w = s ? s : ""; *w;) {
+        size_t len = strcspn(w, ",");
+        if (len) {
+            int i = gls_choice_find(w, len, output_words, N_OUTPUT_WORDS);
+            if (i < 0)
+                return choice_fail(r, e, "--outputs", 1, w, len, output_words, N_OUTPUTS_LISTED);
+            *bits |= output_bits[i];
+        }
+        w += len + (w[len] == ',');
     }
-    return *bits ? 0 : -1;
+    return *bits ? 0 : choice_fail(r, e, "--outputs", 1, NULL, 0, output_words, N_OUTPUTS_LISTED);
+}
+
+/* Option a's value val (NULL: none given) as one of words[0..n): its
+ * index, or -1 after the message. */
+static int choose(glscene_play *r, glscene_error *e, const char *a, const char *val, const char *const *words,
+                  size_t n)
+{
+    int i = val ? gls_choice_find(val, strlen(val), words, n) : -1;
+    return i >= 0 ? i : choice_fail(r, e, a, 0, val, val ? strlen(val) : 0, words, n);
+}
+
+/* --progress's words, and whether an argument after --progress is meant
+ * as one: a bare word, no path (no '.' or '/') and no option, so that
+ * "--progress xml" is refused rather than taken for the bundle (a bundle
+ * has a name with a dot, NAME.glsb, or a path) */
+static const char *const progress_words[] = {"bar", "json"};
+static int progress_word(const char *next)
+{
+    return next && next[0] && next[0] != '-' && !strpbrk(next, "./");
 }
 
 static int parse_size(const char *s, uint32_t *w, uint32_t *h)
@@ -243,11 +259,7 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
             return play_fail(r, e, -1, "%s needs a non-empty output directory", a);
         return (o->outdir = keep(r, e, next)) ? 2 : -2;
     } else if (strcmp(a, "--outputs") == 0) {
-        if (!has_val || parse_outputs(next, &o->outputs))
-            return play_fail(r, e, -1, "--outputs needs a comma-separated list of image, depth, points, edges, disparity, "
-                             "disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, got '%s'",
-                             val);
-        return 2;
+        return parse_outputs(r, e, next, &o->outputs) ? -1 : 2;
     } else if (strcmp(a, "--size") == 0) {
         if (!has_val || parse_size(next, &o->width, &o->height))
             return play_fail(r, e, -1, "--size needs WxH with both in 1..16384, got '%s'", val);
@@ -278,18 +290,17 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
                              val);
         return 2;
     } else if (strcmp(a, "--filter") == 0) {
+        static const char *const filters[] = {"box", "gauss", "gauss:SIGMA"};
         if (!has_val || parse_filter(next, &o->aa))
-            return play_fail(r, e, -1, "--filter needs box, gauss or gauss:SIGMA, got '%s'", val);
+            return choice_fail(r, e, a, 0, next, has_val ? strlen(next) : 0, filters, 3);
         return 2;
     } else if (strcmp(a, "--pattern") == 0) {
-        if (has_val && strcmp(next, "grid") == 0)
-            o->aa.pattern = GLS_AA_GRID;
-        else if (has_val && strcmp(next, "stratified") == 0)
-            o->aa.pattern = GLS_AA_STRATIFIED;
-        else if (has_val && strcmp(next, "lattice") == 0)
-            o->aa.pattern = GLS_AA_LATTICE;
-        else
-            return play_fail(r, e, -1, "--pattern needs lattice, grid or stratified, got '%s'", val);
+        static const char *const words[] = {"lattice", "grid", "stratified"};
+        static const gls_aa_pattern pattern[] = {GLS_AA_LATTICE, GLS_AA_GRID, GLS_AA_STRATIFIED};
+        int i = choose(r, e, a, next, words, 3);
+        if (i < 0)
+            return -1;
+        o->aa.pattern = pattern[i];
         return 2;
     } else if (strcmp(a, "--seed") == 0) {
         unsigned long long v;
@@ -310,14 +321,12 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
         o->writer_threads = (unsigned)v;
         return 2;
     } else if (strcmp(a, "--occlusion") == 0) {
-        if (has_val && strcmp(next, "auto") == 0)
-            o->occlusion = GLS_OCCLUSION_AUTO;
-        else if (has_val && strcmp(next, "on") == 0)
-            o->occlusion = GLS_OCCLUSION_ON;
-        else if (has_val && strcmp(next, "off") == 0)
-            o->occlusion = GLS_OCCLUSION_OFF;
-        else
-            return play_fail(r, e, -1, "--occlusion needs auto, on or off, got '%s'", val);
+        static const char *const words[] = {"auto", "on", "off"};
+        static const int mode[] = {GLS_OCCLUSION_AUTO, GLS_OCCLUSION_ON, GLS_OCCLUSION_OFF};
+        int i = choose(r, e, a, next, words, 3);
+        if (i < 0)
+            return -1;
+        o->occlusion = mode[i];
         return 2;
     } else if (strcmp(a, "--anisotropic") == 0) {
         unsigned long long v;
@@ -326,9 +335,12 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
         o->anisotropy = (uint32_t)v;
         return 2;
     } else if (strcmp(a, "--backend") == 0) {
-        if (!has_val || gls_backend_parse(next, &o->backend))
-            return play_fail(r, e, -1, "--backend needs auto, egl, egl-device, egl-surfaceless or osmesa, got '%s'",
-                             val);
+        const char *words[GLS_BACKEND_OSMESA + 1];
+        for (int i = 0; i <= GLS_BACKEND_OSMESA; i++)
+            words[i] = gls_backend_name((gls_backend)i);
+        if (choose(r, e, a, next, words, GLS_BACKEND_OSMESA + 1) < 0)
+            return -1;
+        gls_backend_parse(next, &o->backend);
         /* asked for by name but not in this build: said before any
            input is read, like an option this glsplay lacks */
         if (!gls_backend_built(o->backend))
@@ -336,15 +348,13 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
                              o->backend == GLS_BACKEND_OSMESA ? "OSMesa" : "EGL", gls_backend_missing(o->backend));
         return 2;
     } else if (strcmp(a, "--image-format") == 0) {
-        const char *f = val;
-        if (strcmp(f, "png8") == 0 || strcmp(f, "png") == 0)
-            o->image_format = GLS_IMG_PNG8;
-        else if (strcmp(f, "png16") == 0)
-            o->image_format = GLS_IMG_PNG16;
-        else if (strcmp(f, "pfm") == 0)
-            o->image_format = GLS_IMG_PFM;
-        else
-            return play_fail(r, e, -1, "--image-format needs png8, png16 or pfm, got '%s'", f);
+        /* "png" is taken for png8 but not listed */
+        static const char *const words[] = {"png8", "png16", "pfm", "png"};
+        static const gls_image_format format[] = {GLS_IMG_PNG8, GLS_IMG_PNG16, GLS_IMG_PFM, GLS_IMG_PNG8};
+        int i = has_val ? gls_choice_find(next, strlen(next), words, 4) : -1;
+        if (i < 0)
+            return choice_fail(r, e, a, 0, next, has_val ? strlen(next) : 0, words, 3);
+        o->image_format = format[i];
         return 2;
     } else if (strcmp(a, "--depth-scale") == 0) {
         const char *v = val;
@@ -356,13 +366,12 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
             return play_fail(r, e, -1, "--depth-scale needs a positive number, kitti (256) or tum (5000), got '%s'", val);
         return 2;
     } else if (strcmp(a, "--float-format") == 0) {
-        const char *v = val;
-        if (strcmp(v, "pfm") == 0)
-            o->float_format = GLS_FLOAT_PFM;
-        else if (strcmp(v, "npy") == 0)
-            o->float_format = GLS_FLOAT_NPY;
-        else
-            return play_fail(r, e, -1, "--float-format needs pfm or npy, got '%s'", val);
+        static const char *const words[] = {"pfm", "npy"};
+        static const gls_float_format format[] = {GLS_FLOAT_PFM, GLS_FLOAT_NPY};
+        int i = choose(r, e, a, next, words, 2);
+        if (i < 0)
+            return -1;
+        o->float_format = format[i];
         return 2;
     } else if (strcmp(a, "--explain") == 0) {
         o->explain = 1;
@@ -384,12 +393,15 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
             return -2;
         o->motions = r->mots;
         return 2;
-    } else if (strcmp(a, "--progress") == 0) {
-        /* an optional value: only these words are taken as one */
-        o->progress = GLS_PROGRESS_BAR;
-        if (has_val && strcmp(next, "json") == 0)
-            o->progress = GLS_PROGRESS_JSON;
-        return has_val && (strcmp(next, "json") == 0 || strcmp(next, "bar") == 0) ? 2 : 1;
+    } else if (strcmp(a, "--progress") == 0 || strncmp(a, "--progress=", 11) == 0) {
+        /* an optional value: --progress=WORD, or a bare word after it
+           (progress_word); --progress alone is the bar */
+        const char *w = a[10] == '=' ? a + 11 : progress_word(next) ? next : NULL;
+        int i = w ? choose(r, e, "--progress", w, progress_words, 2) : 0;
+        if (i < 0)
+            return -1;
+        o->progress = i == 1 ? GLS_PROGRESS_JSON : GLS_PROGRESS_BAR;
+        return w == next ? 2 : 1;
     } else if (strcmp(a, "--shard") == 0) {
         char msg[512];
         if (!has_val)
@@ -398,7 +410,7 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
             return play_fail(r, e, -1, "%s", msg);
         return 2;
     } else if (strcmp(a, "--trajectory") == 0) {
-        if (!has_val)
+        if (!has_val || !next[0])
             return play_fail(r, e, -1, "--trajectory needs a trajectory file");
         return (o->trajectory = keep(r, e, next)) ? 2 : -2;
     } else if (strcmp(a, "--frames") == 0) {
@@ -422,7 +434,10 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
         memcpy(o->background, c, sizeof c);
         return 2;
     } else if (a[0] == '-' && a[1])
-        return play_fail(r, e, -1, "unknown option '%s'", a); else if (!o->bundle) {
+        return play_fail(r, e, -1, "unknown option '%s'", a);
+    else if (!a[0]) /* names no file (spec/exit_status.md) */
+        return play_fail(r, e, -1, "an empty bundle name");
+    else if (!o->bundle) {
         return (o->bundle = keep(r, e, a)) ? 1 : -2;
     } else 
         return play_fail(r, e, -1, "more than one bundle given ('%s')", a);
@@ -474,6 +489,11 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
         return play_fail(r, e, -1, "--write-calib writes into the output directory: give -o OUTDIR");
     if (o->outdir && o->ncameras == 0)
         return play_fail(r, e, -1, "no camera given (--camera CAM)");
+    /* what the runtime refuses from the options alone (two cameras for
+       disparity, their output names, ...): usage errors too */
+    char msg[2048];
+    if (gls_play_check_options(o, msg, sizeof msg))
+        return play_fail(r, e, -1, "%s", msg);
     r->checked = 1;
     return 0;
 }

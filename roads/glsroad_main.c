@@ -201,6 +201,8 @@ int main(int argc, char **argv)
     if (argc >= 2 && !strcmp(argv[1], "--camera-at")) {
         if (argc != 5)
             return usage_error("%s takes FRAME TRAJECTORY CAMERA", "--camera-at");
+        if (!argv[3][0] || !argv[4][0]) /* names no file (spec/exit_status.md) */
+            return usage_error("--camera-at: an empty %s name", !argv[3][0] ? "trajectory" : "camera file");
         return camera_at(argv[2], argv[3], argv[4]);
     }
     if (argc == 2 && !strcmp(argv[1], "--list-keys")) {
@@ -217,10 +219,14 @@ int main(int argc, char **argv)
             if (i + 1 >= argc)
                 return usage_error("%s needs a directory", "-o");
             out = argv[++i];
+            if (!out[0]) /* names no directory (spec/exit_status.md) */
+                return usage_error("%s needs a non-empty directory", "-o");
         } else if (argv[i][0] == '-' && argv[i][1]) {
             return usage_error("unknown option '%s'", argv[i]);
         } else if (in) {
             return usage_error("more than one road description ('%s')", argv[i]);
+        } else if (!argv[i][0]) {
+            return usage_error("%s", "an empty road description name");
         } else {
             in = argv[i];
         }

@@ -299,6 +299,8 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
         gls_rotation_rodrigues(val[K_RVEC], val[K_R]);
         seen[K_R] = seen[K_RVEC];
         vcol[K_R] = vcol[K_RVEC];
+        keys->eline[K_R][0] = keys->eline[K_RVEC][0];
+        keys->ecol[K_R][0] = keys->ecol[K_RVEC][0];
     }
     static const int dims[2] = {K_WIDTH, K_HEIGHT};
     for (int i = 0; i < 2; i++) {
@@ -358,8 +360,11 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     }
     char why[300];
     int rot = gls_rotation_check(val[K_R], why, sizeof why);
+    /* at R's first number: in OpenCV YAML that is on the data: line, not
+       the R: line (seen[K_R]) */
+    unsigned rline = keys->eline[K_R][0], rcol = keys->ecol[K_R][0];
     if (rot < 0) {
-        gls_text_error(err, errlen, text, len, fname, seen[K_R], vcol[K_R], "%s", why);
+        gls_text_error(err, errlen, text, len, fname, rline, rcol, "%s", why);
         return -1;
     }
     memset(cam, 0, sizeof *cam);
@@ -381,7 +386,7 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     cam->sensor = gls_sensor_none();
     /* notes only for a file that is accepted */
     if (rot > 0 && notes)
-        fprintf(notes, "%s:%u:%u: note: %s\n", fname, seen[K_R], vcol[K_R], why);
+        fprintf(notes, "%s:%u:%u: note: %s\n", fname, rline, rcol, why);
     if (!pose && use == GLS_POSE_RIG && notes)
         fprintf(notes, "%s: note: no 'pose' key: R and T are taken relative to the rig, as a trajectory needs; add "
                        "'pose rig' to say so\n", fname);

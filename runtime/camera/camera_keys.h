@@ -23,9 +23,11 @@ enum {
 typedef struct {
     double val[K_COUNT][9];
     unsigned seen[K_COUNT];       /* line of each key, 0 = absent          */
-    unsigned vcol[K_COUNT];       /* column of its first value             */
-    unsigned eline[K_COUNT][9];   /* line and column of each value         */
-    unsigned ecol[K_COUNT][9];
+    unsigned vcol[K_COUNT];       /* a column on that line: its first value,
+                                     or an OpenCV matrix's key (the values
+                                     are on the data: line below)          */
+    unsigned eline[K_COUNT][9];   /* line and column of each value: where  */
+    unsigned ecol[K_COUNT][9];    /* a message about a number points       */
     gls_pose pose;                /* the 'pose' word, if seen              */
     unsigned ndist;               /* K_DIST: numbers given (4, 5 or 8)     */
 } gls_camera_keys;

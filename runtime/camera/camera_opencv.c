@@ -174,7 +174,7 @@ static int matrix_end(const src *s, matrix *m, gls_camera_keys *keys)
         memcpy(keys->val[K_DIST], m->v, keys->ndist * sizeof *m->v);
         memcpy(keys->eline[K_DIST], m->vline, keys->ndist * sizeof *m->vline);
         memcpy(keys->ecol[K_DIST], m->vcol, keys->ndist * sizeof *m->vcol);
-        keys->vcol[K_DIST] = m->vcol[0];
+        keys->vcol[K_DIST] = m->col;
         return 0;
     }
     int square = key == K_K || key == K_R;
@@ -186,7 +186,7 @@ static int matrix_end(const src *s, matrix *m, gls_camera_keys *keys)
     memcpy(keys->val[key], m->v, m->n * sizeof *m->v);
     memcpy(keys->eline[key], m->vline, m->n * sizeof *m->vline);
     memcpy(keys->ecol[key], m->vcol, m->n * sizeof *m->vcol);
-    keys->vcol[key] = m->vcol[0];
+    keys->vcol[key] = m->col;
     return 0;
 }
 

@@ -1131,16 +1131,72 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
     return 0;
 }
 
-/* --outputs disparity: exactly two cameras, a rectified pair with the
- * left one first (out_disparity.h).  0 with *B, or 1 after a message. */
+static const char *disparity_word(const gls_play_opts *o)
+{
+    return o->outputs & GLS_OUT_DISPARITY ? "disparity" : "disparity16";
+}
+
+int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen)
+{
+    gls_aa_plan plan;
+    gls_aa_opts aao = o->aa;
+    if (aao.n == 0)
+        aao.n = 1;
+    if (gls_aa_plan_init(&plan, &aao, msg, msglen))
+        return -1;
+    /* OUTDIR/NAME, NAME the camera file's name without its extension */
+    for (size_t i = 0; i < o->ncameras; i++) {
+        char *name = camera_name(o->cameras[i]);
+        if (!name) {
+            snprintf(msg, msglen, "out of memory");
+            return -1;
+        }
+        int bad = !name[0] || strcmp(name, ".") == 0 || strcmp(name, "..") == 0;
+        size_t j = 0;
+        for (; !bad && j < i; j++) {
+            char *other = camera_name(o->cameras[j]);
+            int same = !other || strcmp(name, other) == 0;
+            free(other);
+            if (same)
+                break;
+        }
+        if (bad)
+            snprintf(msg, msglen, "%s: cannot name an output directory after this camera file", o->cameras[i]);
+        else if (j < i)
+            snprintf(msg, msglen, "cameras %s and %s would both write to %s/%s/", o->cameras[j], o->cameras[i],
+                     o->outdir ? o->outdir : "OUTDIR", name);
+        free(name);
+        if (bad || j < i)
+            return -1;
+    }
+    if ((o->outputs & GLS_OUT_DISPARITIES) && o->ncameras != 2) {
+        snprintf(msg, msglen, "--outputs %s needs a rectified pair: exactly two cameras, the left one first; %zu given",
+                 disparity_word(o), o->ncameras);
+        return -1;
+    }
+    /* the same NAME twice: decided here; two names of one instance
+       (motion_load) only once the bundle is read */
+    for (size_t i = 0; i < o->nmotions; i++)
+        for (size_t j = 0; j < i; j++) {
+            size_t n = strcspn(o->motions[i], "=");
+            if (n == strcspn(o->motions[j], "=") && strncmp(o->motions[i], o->motions[j], n) == 0) {
+                snprintf(msg, msglen, "--motion %s: instance %.*s is moved twice", o->motions[i], (int)n,
+                         o->motions[i]);
+                return -1;
+            }
+        }
+    return 0;
+}
+
+/* --outputs disparity: the two cameras (gls_play_check_options) are a
+ * rectified pair with the left one first (out_disparity.h).  0 with *B,
+ * or 1 after a message. */
 static int rectified_check(const gls_play_opts *o, const gls_camera *cams, const char *const *names, double *B,
                            FILE *errs)
 {
     char why[512];
-    const char *word = o->outputs & GLS_OUT_DISPARITY ? "disparity" : "disparity16";
-    if (o->ncameras != 2)
-        snprintf(why, sizeof why, "exactly two cameras, the left one first; %zu given", o->ncameras);
-    else if (gls_rectified_pair(&cams[0], &cams[1], names[0], names[1], B, why, sizeof why) == 0)
+    const char *word = disparity_word(o);
+    if (gls_rectified_pair(&cams[0], &cams[1], names[0], names[1], B, why, sizeof why) == 0)
         return 0;
     fprintf(errs, "glsplay: error: --outputs %s needs a rectified pair: %s\n", word, why);
     return 1;
@@ -1245,7 +1301,12 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     double baseline = 0;
     if (aao.n == 0)
         aao.n = 1;
-    if (gls_aa_plan_init(&plan, &aao, err, sizeof err)) {
+    if (gls_play_check_options(o, err, sizeof err)) {
+        fprintf(errs, "glsplay: error: %s\n", err);
+        rc = 2;
+        goto out;
+    }
+    if (gls_aa_plan_init(&plan, &aao, err, sizeof err)) { /* checked: cannot fail */
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
@@ -1273,22 +1334,11 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
             cams[i].width = o->width, cams[i].height = o->height;
         if (lens_check(&cams[i], o->cameras[i], &plan, errs) || lens_outputs_check(o, &cams[i], o->cameras[i], errs))
             goto out;
-        names[i] = camera_name(o->cameras[i]);
+        names[i] = camera_name(o->cameras[i]); /* usable: gls_play_check_options */
         if (!names[i]) {
             fprintf(errs, "glsplay: error: out of memory\n");
             goto out;
         }
-        if (!names[i][0] || strcmp(names[i], ".") == 0 || strcmp(names[i], "..") == 0) {
-            fprintf(errs, "glsplay: error: %s: cannot name an output directory after this camera file\n",
-                    o->cameras[i]);
-            goto out;
-        }
-        for (size_t j = 0; j < i; j++)
-            if (strcmp(names[i], names[j]) == 0) {
-                fprintf(errs, "glsplay: error: cameras %s and %s would both write to %s/%s/\n", o->cameras[j],
-                        o->cameras[i], o->outdir ? o->outdir : "OUTDIR", names[i]);
-                goto out;
-            }
     }
     /* disparity: a rectified pair, checked before anything is drawn */
     if ((o->outputs & GLS_OUT_DISPARITIES) && rectified_check(o, cams, (const char *const *)names, &baseline, errs))

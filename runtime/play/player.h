@@ -66,8 +66,18 @@ typedef struct {
                                     its plan                            */
 } gls_play_opts;
 
+/* The refusals of the player that its options alone decide, without
+ * reading any file, so that they are usage errors (exit status 2,
+ * spec/exit_status.md): the anti-aliasing plan (a Gaussian sigma outside
+ * 0.01..16), the output directory each camera file names (none, or two
+ * cameras naming the same one), disparity's two cameras, an instance
+ * given two --motion.  0, or -1 with the message (no "glsplay: error: ")
+ * in msg. */
+int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen);
+
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,
- * the plan to out.  Returns the exit status: 0 done, 1 input error. */
+ * the plan to out.  Returns the exit status: 0 done, 1 input error, 2 a
+ * usage error of gls_play_check_options (which it runs first). */
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs);
 
 /* Print the plan (explain.c): the GL backend and context, which GL

@@ -122,10 +122,10 @@ expect() {
     else ok "$name"; fi
 }
 expect backends_unknown 2 \
-    "glsplay: error: --backend needs auto, egl, egl-device, egl-surfaceless or osmesa, got 'vulkan' (try glsplay --help)" \
+    "glsplay: error: --backend takes one of: auto, egl, egl-device, egl-surfaceless, osmesa (not 'vulkan') (try glsplay --help)" \
     -- "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/x" --backend vulkan
 expect backends_missing_value 2 \
-    "glsplay: error: --backend needs auto, egl, egl-device, egl-surfaceless or osmesa, got '' (try glsplay --help)" \
+    "glsplay: error: --backend needs one of: auto, egl, egl-device, egl-surfaceless, osmesa (try glsplay --help)" \
     -- "$t/proj.glsb" --explain --backend
 # Mesa's drivers out of reach: its EGL has no driver (EGL_LOG_LEVEL keeps
 # Mesa's own warning off stderr)

@@ -32,6 +32,31 @@ else
     fail camera_r_three_decimals_refused "exit $rc: $(cat "$t/err")"
 fi
 
+# in OpenCV YAML the note and the error point at R's first number, on the
+# data: line, not at the R: key two lines above it (issue 26)
+yml() {
+    f=$1
+    shift
+    printf '%%YAML:1.0\n---\nimage_width: 32\nimage_height: 24\ncamera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ 30., 0., 15.5, 0., 30., 11.5, 0., 0., 1. ]\nR: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ %s ]\nT: !!opencv-matrix\n   rows: 3\n   cols: 1\n   dt: d\n   data: [ 0., 0., 5. ]\nnear: 0.1\nfar: 100.\n' "$(echo "$*" | sed 's/ /, /g')" >"$f"
+}
+yml "$t/y5.yml" 0.91839 -0.23599 0.3176 0.3176 0.91839 -0.23599 -0.23599 0.3176 0.91839
+"$BIN/glsplay" "$t/leaf.glsb" --camera "$t/y5.yml" -o "$t/oy" 2>"$t/err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q "^$t/y5.yml:14:12: note: R is orthonormal only within " "$t/err"; then
+    ok camera_yaml_r_note_at_data
+else
+    fail camera_yaml_r_note_at_data "exit $rc: $(cat "$t/err")"
+fi
+yml "$t/y3.yml" 0.918 -0.236 0.318 0.318 0.918 -0.236 -0.236 0.318 0.918
+"$BIN/glsplay" "$t/leaf.glsb" --camera "$t/y3.yml" -o "$t/oy3" 2>"$t/err"
+rc=$?
+if [ $rc -eq 1 ] && grep -q "^$t/y3.yml:14:12: error: R is not orthonormal: " "$t/err" &&
+    tail -1 "$t/err" | grep -qx '           ^'; then
+    ok camera_yaml_r_error_at_data
+else
+    fail camera_yaml_r_error_at_data "exit $rc: $(cat "$t/err")"
+fi
+
 # The frame of R and T: 'pose world' / 'pose rig' (spec/camera.md "The pose's frame").
 # A red square 10 units ahead; the rig moves 1 unit forward per frame.
 mkdir -p "$t/s"

@@ -137,6 +137,13 @@ usage_line usage_glsc_missing_argument "glsc: error: missing argument after -I" 
 usage_line usage_glsdis_no_bundle "glsdis: error: no bundle given" glsdis
 usage_line usage_glsdis_unknown_option "glsdis: error: unknown option -x" glsdis -x
 usage_line usage_glsdis_two_bundles "glsdis: error: more than one bundle given" glsdis a b
+# an empty path names nothing: a usage error (spec/exit_status.md), where it
+# was an input error (1) after trying to open it
+usage_line usage_glsc_empty_output "glsc: error: empty argument after -o" glsc -o "" x.scene
+usage_line usage_glsc_empty_root "glsc: error: empty argument after -I" glsc -I "" x.scene
+usage_line usage_glsc_empty_lib "glsc: error: empty argument after --lib" glsc --lib "" -o x.glsb
+usage_line usage_glsc_empty_top "glsc: error: an empty top-level object name" glsc ""
+usage_line usage_glsdis_empty_bundle "glsdis: error: an empty bundle name" glsdis ""
 
 # -o creates the directories it needs, as glsplay -o does.
 if "$BIN/glsc" -I tests/compiler/paper -o "$tmp/new/sub/x.glsb" road.tex.roads.Curve400m 2>"$tmp/err" &&

@@ -47,7 +47,7 @@ else
     fail landmarks_frame_record "$(cat "$t/o1/c/.frame_000000.done")"
 fi
 # far from the camera (the tolerance is relative to the depth, 1e-4 Zc,
-# runtime/gt_landmarks.c): a wall 100 units away, a mark 0.005 behind it
+# runtime/truth/gt_landmarks.c): a wall 100 units away, a mark 0.005 behind it
 # visible (within 0.01), one 0.02 behind hidden; an absolute 1e-4 would hide both
 mkdir "$t/far"
 printf 'mark("just.behind", 0, 0, 100.005);\nmark("well.behind", 0, 0, 100.02);\ncolor(0.5, 0.5, 0.5);\npoly { vert(-50, -50, 100); vert(50, -50, 100); vert(50, 50, 100); vert(-50, 50, 100); }\n' >"$t/far/Wall.scene"
@@ -70,7 +70,7 @@ fi
 # an unknown output word
 "$BIN/glsplay" "$t/top.glsb" --camera "$t/cams/c.cam" --outputs image,landmark -o "$t/o3" >/dev/null 2>"$t/err"
 rc=$?
-if [ $rc -eq 2 ] && [ "$(cat "$t/err")" = "glsplay: error: --outputs needs a comma-separated list of image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, got 'image,landmark' (try glsplay --help)" ]; then
+if [ $rc -eq 2 ] && [ "$(cat "$t/err")" = "glsplay: error: --outputs takes a comma-separated list of: image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes (not 'landmark'); did you mean 'landmarks'? (try glsplay --help)" ]; then
     ok landmarks_usage
 else
     fail landmarks_usage "exit $rc: $(cat "$t/err")"

@@ -75,7 +75,7 @@ if "$B/glsplay" "$t/o.glsb" --camera "$CAM" --occlusion sometimes --explain >/de
     fail occlusion_usage "--occlusion sometimes accepted"
 else
     rc=$?
-    if [ "$rc" -eq 2 ] && grep -qx "glsplay: error: --occlusion needs auto, on or off, got 'sometimes' (try glsplay --help)" "$t/err"; then
+    if [ "$rc" -eq 2 ] && grep -qx "glsplay: error: --occlusion takes one of: auto, on, off (not 'sometimes') (try glsplay --help)" "$t/err"; then
         ok occlusion_usage
     else
         fail occlusion_usage "exit $rc: $(head -c 300 "$t/err")"

@@ -88,7 +88,7 @@ if "$PLAY" "$t/wall.glsb" -c "$t/r1/left.cam" -c "$t/r1/right.cam" -o "$t/pfm" -
 else
     fail npy_renders "$(cat "$t/err")"
 fi
-exact float_format_usage 2 "glsplay: error: --float-format needs pfm or npy, got 'tiff' (try glsplay --help)" -- \
+exact float_format_usage 2 "glsplay: error: --float-format takes one of: pfm, npy (not 'tiff') (try glsplay --help)" -- \
     "$PLAY" "$t/wall.glsb" -c "$t/r1/left.cam" -o "$t/x" --float-format tiff
 exact depth_scale_usage 2 \
     "glsplay: error: --depth-scale needs a positive number, kitti (256) or tum (5000), got '0' (try glsplay --help)" -- \
@@ -114,11 +114,14 @@ exact depth16_rounds_to_zero 1 \
 
 # ---- rigs that are not rectified: refused before anything is rendered -------
 cp "$t/r1/left.cam" "$t/bad/left.cam"
+# the count of cameras is on the command line: a usage error (exit 2,
+# spec/exit_status.md); what the camera files say, an input error (exit 1)
 refused() { # refused NAME MESSAGE CAMERA...
     what=$1 msg=$2
     shift 2
     set -- "$t/wall.glsb" $(for c in "$@"; do printf -- '-c %s ' "$t/$c"; done)
-    exact "disparity_refuses_$what" 1 "glsplay: error: --outputs disparity needs a rectified pair: $msg" -- \
+    case $msg in exactly*) st=2 hint=" (try glsplay --help)" ;; *) st=1 hint= ;; esac
+    exact "disparity_refuses_$what" $st "glsplay: error: --outputs disparity needs a rectified pair: $msg$hint" -- \
         "$PLAY" "$@" -o "$t/no_$what" --outputs image,disparity
     [ ! -e "$t/no_$what" ] && ok "disparity_refuses_${what}_writes_nothing" ||
         fail "disparity_refuses_${what}_writes_nothing" "$(ls -R "$t/no_$what")"
@@ -137,8 +140,8 @@ sed 's/^fx 120$/fx 121/' "$t/r1/right.cam" >"$t/bad/fx.cam"
 refused intrinsics "cameras left and fx have different fx (120 and 121)" bad/left.cam bad/fx.cam
 sed 's/^width 160$/width 162/' "$t/r1/right.cam" >"$t/bad/wide.cam"
 refused size "cameras left and wide have different sizes (160x120 and 162x120)" bad/left.cam bad/wide.cam
-exact disparity16_refuses_one 1 \
-    "glsplay: error: --outputs disparity16 needs a rectified pair: exactly two cameras, the left one first; 1 given" -- \
+exact disparity16_refuses_one 2 \
+    "glsplay: error: --outputs disparity16 needs a rectified pair: exactly two cameras, the left one first; 1 given (try glsplay --help)" -- \
     "$PLAY" "$t/wall.glsb" -c "$t/r1/left.cam" -o "$t/no16" --outputs disparity16
 
 # ---- a trajectory: the rig-relative cameras are checked ---------------------

@@ -104,7 +104,7 @@ exact2 aa_usage_samples_and_aa "glsplay: error: --aa, --samples and --subpixel a
     $PLAY $S -o "$t/x" --aa 4 --samples 16
 exact2 aa_usage_grid_square "glsplay: error: --pattern grid needs a square --samples (N x N), got 17; the lattice takes any M (try glsplay --help)" -- \
     $PLAY $S -o "$t/x" --samples 17 --pattern grid
-exact2 aa_usage_pattern "glsplay: error: --pattern needs lattice, grid or stratified, got 'hex' (try glsplay --help)" -- \
+exact2 aa_usage_pattern "glsplay: error: --pattern takes one of: lattice, grid, stratified (not 'hex') (try glsplay --help)" -- \
     $PLAY $S -o "$t/x" --pattern hex
 exact2 aa_usage_memory "glsplay: error: --aa-memory needs MB in 16..1048576, got '8' (try glsplay --help)" -- \
     $PLAY $S -o "$t/x" --aa-memory 8

@@ -131,6 +131,84 @@ else
 fi
 exact player_usage_anisotropic 2 "glsplay: error: --anisotropic needs N in 1..16, got '32' (try glsplay --help)" -- \
     $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/u" --anisotropic 32
+# every option with a fixed set of words names itself, its words, what was
+# given, and the likely typo (base/choice.h; issue 26)
+H=" (try glsplay --help)"
+U="$PLAY $t/proj.glsb --camera $t/proj.cam -o $t/u"
+OUTS="image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes"
+exact player_choice_progress_word 2 "glsplay: error: --progress takes one of: bar, json (not 'xml')$H" -- $U --progress xml
+exact player_choice_progress_equals 2 "glsplay: error: --progress takes one of: bar, json (not 'xml')$H" -- $U --progress=xml
+exact player_choice_progress_typo 2 "glsplay: error: --progress takes one of: bar, json (not 'jsno'); did you mean 'json'?$H" -- \
+    $U --progress jsno
+exact player_choice_progress_empty 2 "glsplay: error: --progress takes one of: bar, json (not '')$H" -- $U --progress=
+exact player_choice_outputs_typo 2 \
+    "glsplay: error: --outputs takes a comma-separated list of: $OUTS (not 'dpeth'); did you mean 'depth'?$H" -- \
+    $U --outputs image,dpeth
+exact player_choice_outputs_far 2 "glsplay: error: --outputs takes a comma-separated list of: $OUTS (not 'colour')$H" -- \
+    $U --outputs image,colour
+exact player_choice_outputs_empty 2 "glsplay: error: --outputs needs a comma-separated list of: $OUTS$H" -- $U --outputs ,
+exact player_choice_pattern 2 "glsplay: error: --pattern takes one of: lattice, grid, stratified (not 'gird'); did you mean 'grid'?$H" -- \
+    $U --pattern gird
+exact player_choice_pattern_missing 2 "glsplay: error: --pattern needs one of: lattice, grid, stratified$H" -- $U --pattern
+exact player_choice_filter 2 "glsplay: error: --filter takes one of: box, gauss, gauss:SIGMA (not 'gaus'); did you mean 'gauss'?$H" -- \
+    $U --filter gaus
+exact player_choice_occlusion 2 "glsplay: error: --occlusion takes one of: auto, on, off (not 'yes')$H" -- $U --occlusion yes
+exact player_choice_image_format 2 "glsplay: error: --image-format takes one of: png8, png16, pfm (not 'png32'); did you mean 'png8'?$H" -- \
+    $U --image-format png32
+exact player_choice_float_format 2 "glsplay: error: --float-format takes one of: pfm, npy (not 'npz'); did you mean 'npy'?$H" -- \
+    $U --float-format npz
+exact player_choice_backend 2 \
+    "glsplay: error: --backend takes one of: auto, egl, egl-device, egl-surfaceless, osmesa (not 'osmsea'); did you mean 'osmesa'?$H" -- \
+    $U --backend osmsea
+# the values still taken: json before the bundle, after it, as =json; bar
+# (a single render draws no bar: nothing on stderr) and --progress alone
+# before a bundle path
+B1=$t/proj.glsb
+progress_ok() { # NAME WANT ARGS...: exit 0; WANT json: the end line, else an empty stderr
+    name=$1 want=$2
+    shift 2
+    $PLAY "$@" --camera "$t/proj.cam" -o "$t/p" --outputs depth 2>"$t/stderr"
+    rc=$?
+    if [ "$want" = json ]; then grep -q '"event": "end", "status": "ok"' "$t/stderr"; else [ ! -s "$t/stderr" ]; fi
+    seen=$?
+    [ $rc -eq 0 ] && [ $seen -eq 0 ] && ok "$name" || fail "$name" "exit $rc: $(cat "$t/stderr")"
+}
+progress_ok player_progress_json_before json --progress json "$B1"
+progress_ok player_progress_json_after json "$B1" --progress json
+progress_ok player_progress_json_equals json "$B1" --progress=json
+progress_ok player_progress_bar_before bar --progress bar "$B1"
+progress_ok player_progress_bar_equals bar "$B1" --progress=bar
+progress_ok player_progress_alone_before_bundle bar --progress "$B1"
+# exit status (spec/exit_status.md): what the command line alone shows is a
+# usage error, 2, found before any file is read; what a file shows, 1
+mkdir -p "$t/sub"
+cp "$t/proj.cam" "$t/sub/proj.cam"
+exact player_status_cameras_same_name 2 \
+    "glsplay: error: cameras $t/proj.cam and $t/sub/proj.cam would both write to $t/s1/proj/$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" --camera "$t/sub/proj.cam" -o "$t/s1"
+exact player_status_camera_no_name 2 "glsplay: error: $t/sub/: cannot name an output directory after this camera file$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/sub/" -o "$t/s1"
+exact player_status_disparity_one_camera 2 \
+    "glsplay: error: --outputs disparity needs a rectified pair: exactly two cameras, the left one first; 1 given$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --outputs disparity
+exact player_status_flow_without_trajectory 2 \
+    "glsplay: error: --outputs flow needs a --trajectory: the flow goes from each frame to the next$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --outputs flow
+exact player_status_gauss_sigma 2 "glsplay: error: Gaussian sigma 100 is outside 0.01..16 pixels$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --aa 2 --filter gauss:100
+exact player_status_motion_twice 2 "glsplay: error: --motion car=b.txt: instance car is moved twice$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --motion car=a.txt --motion car=b.txt
+exact player_status_empty_bundle 2 "glsplay: error: an empty bundle name$H" -- $PLAY "" --camera "$t/proj.cam" -o "$t/s1"
+exact player_status_empty_trajectory 2 "glsplay: error: --trajectory needs a trajectory file$H" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s1" --trajectory ""
+# both kinds: the usage error, and no file is read (the camera is missing)
+exact player_status_usage_first 2 \
+    "glsplay: error: --outputs disparity needs a rectified pair: exactly two cameras, the left one first; 1 given$H" -- \
+    $PLAY "$t/nope.glsb" --camera "$t/nope.cam" -o "$t/s1" --outputs disparity
+[ ! -e "$t/s1" ] && ok player_status_usage_writes_nothing || fail player_status_usage_writes_nothing "$(find "$t/s1")"
+# a --motion NAME the bundle lacks: only the bundle says so, exit 1
+expect player_status_motion_unknown_instance 1 "has no instance named 'car'" -- \
+    $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/s2" --motion car=a.txt
 # an image too large for memory: which framebuffer, how much memory, and
 # the option that lowers it (memory capped at 1.5 GB with ulimit -v; not
 # under ASan, which reserves far more address space than that)

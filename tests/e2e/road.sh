@@ -22,6 +22,12 @@ expect road_usage_no_args 2 "glsroad: error: no road description given" -- "$R"
 expect road_usage_no_output 2 "glsroad: error: no output directory: give -o DIR" -- "$R" examples/road/demo.road
 expect road_usage_unknown_option 2 "glsroad: error: unknown option '--frobnicate'" -- "$R" --frobnicate
 expect road_help 0 "" -- "$R" --help
+# an empty path names nothing: the command line alone is wrong, exit 2
+# (spec/exit_status.md), where it was 1 after trying to open it
+expect road_usage_empty_output 2 "glsroad: error: -o needs a non-empty directory" -- "$R" examples/road/demo.road -o ""
+expect road_usage_empty_description 2 "glsroad: error: an empty road description name" -- "$R" "" -o "$t/empty"
+expect road_usage_camera_at_empty 2 "glsroad: error: --camera-at: an empty camera file name" -- \
+    "$R" --camera-at 0 examples/road/trajectory.txt ""
 expect road_missing_file 1 "$t/none.road: error: cannot open: No such file or directory" -- "$R" "$t/none.road" -o "$t/o"
 # -o creates missing parent directories, like glsc -o and glsplay -o
 expect road_output_parents_created 0 "" -- "$R" examples/road/demo.road -o "$t/new/sub/road"

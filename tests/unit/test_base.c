@@ -1,6 +1,6 @@
 /* The base layer's helpers (base/): growth, whole-file reading, the caret
  * excerpt, the tokenizer, number reading, vector and matrix operations,
- * mkdir -p and atomic writes.  Each is used by several layers; the tools'
+ * mkdir -p, atomic writes and the fixed-set option message.  Each is used by several layers; the tools'
  * tests check them through their messages, these check the helpers
  * themselves, including the cases no tool's input reaches easily. */
 #include <dirent.h>
@@ -16,6 +16,7 @@
 #include "atomic_write.h"
 #include "buf.h"
 #include "check.h"
+#include "choice.h"
 #include "mkdirs.h"
 #include "numfmt.h"
 #include "readfile.h"
@@ -354,6 +355,31 @@ static void test_mkdir_made(void)
     CHECK(!gls_is_dir(p) && gls_is_file(q));
 }
 
+/* choice.h: found words, the message's three forms, a long value cut,
+ * a message cut to the buffer (always terminated) */
+static void test_choice(void)
+{
+    static const char *const w[] = {"lattice", "grid", "stratified"};
+    char m[256];
+    CHECK(gls_choice_find("grid", 4, w, 3) == 1);
+    CHECK(gls_choice_find("gridx", 4, w, 3) == 1); /* a length, not a C string */
+    CHECK(gls_choice_find("gri", 3, w, 3) == -1);
+    gls_choice_message(m, sizeof m, "--pattern", 0, "gird", 4, w, 3);
+    CHECK_STR(m, "--pattern takes one of: lattice, grid, stratified (not 'gird'); did you mean 'grid'?");
+    gls_choice_message(m, sizeof m, "--pattern", 0, "hex", 3, w, 3);
+    CHECK_STR(m, "--pattern takes one of: lattice, grid, stratified (not 'hex')");
+    gls_choice_message(m, sizeof m, "--pattern", 0, NULL, 0, w, 3);
+    CHECK_STR(m, "--pattern needs one of: lattice, grid, stratified");
+    gls_choice_message(m, sizeof m, "--outputs", 1, "grdi,x", 4, w, 3);
+    CHECK_STR(m, "--outputs takes a comma-separated list of: lattice, grid, stratified (not 'grdi'); did you mean 'grid'?");
+    char big[300], want[400];
+    memset(big, 'q', sizeof big);
+    gls_choice_message(want, sizeof want, "-x", 0, big, sizeof big, w, 1);
+    CHECK(strlen(want) == strlen("-x takes one of: lattice (not '...')") + 200);
+    gls_choice_message(m, 10, "--pattern", 0, "gird", 4, w, 3);
+    CHECK_STR(m, "--pattern");
+}
+
 int main(void)
 {
     if (!mkdtemp(dir)) {
@@ -370,6 +396,7 @@ int main(void)
     RUN(test_atomic_steps);
     RUN(test_atomic_failed_write);
     RUN(test_mkdir_made);
+    RUN(test_choice);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)
