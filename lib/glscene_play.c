@@ -108,17 +108,6 @@ const char *glscene_play_message(const glscene_play *r)
     return r && r->msg ? r->msg : "";
 }
 
-/* The words of --outputs, in the order --help lists them; "mask" last,
- * taken but not listed (edges' old name, for one release). */
-static const char *const output_words[] = {"image",    "depth", "points", "edges", "disparity", "disparity16",
-                                           "depth16",  "landmarks", "instance", "class", "coco", "normals",
-                                           "flow",     "boxes", "mask"};
-static const unsigned output_bits[] = {GLS_OUT_IMAGE,     GLS_OUT_DEPTH,     GLS_OUT_POINTS,       GLS_OUT_EDGES,
-                                       GLS_OUT_DISPARITY, GLS_OUT_DISPARITY16, GLS_OUT_DEPTH16,    GLS_OUT_LANDMARKS,
-                                       GLS_OUT_INSTANCE,  GLS_OUT_CLASS,     GLS_OUT_COCO,         GLS_OUT_NORMALS,
-                                       GLS_OUT_FLOW_ALL,  GLS_OUT_BOXES_ALL, GLS_OUT_EDGES_AS_MASK};
-#define N_OUTPUT_WORDS (sizeof output_words / sizeof output_words[0])
-#define N_OUTPUTS_LISTED (N_OUTPUT_WORDS - 1)
 
 /* The message of an option with a fixed set of words (choice.h); bad NULL:
  * no value given.  Returns -1. */
@@ -131,21 +120,24 @@ static int choice_fail(glscene_play *r, glscene_error *e, const char *a, int lis
 }
 
 /* --outputs LIST: 0 with *bits, or -1 after the message naming the first
- * word that is no output. */
+ * word that is no output.  The words are the output table's
+ * (output_table.h), listed in its order; mask, taken but not listed. */
 static int parse_outputs(glscene_play *r, glscene_error *e, const char *s, unsigned *bits)
 {
+    const char *words[GLS_OUT_KINDS];
+    size_t listed = gls_output_words(words, GLS_OUT_KINDS, 0);
     *bits = 0;
     for (const char *w = s ? s : ""; *w;) {
         size_t len = strcspn(w, ",");
         if (len) {
-            int i = gls_choice_find(w, len, output_words, N_OUTPUT_WORDS);
-            if (i < 0)
-                return choice_fail(r, e, "--outputs", 1, w, len, output_words, N_OUTPUTS_LISTED);
-            *bits |= output_bits[i];
+            unsigned b = gls_output_word_bits(w, len);
+            if (!b)
+                return choice_fail(r, e, "--outputs", 1, w, len, words, listed);
+            *bits |= b;
         }
         w += len + (w[len] == ',');
     }
-    return *bits ? 0 : choice_fail(r, e, "--outputs", 1, NULL, 0, output_words, N_OUTPUTS_LISTED);
+    return *bits ? 0 : choice_fail(r, e, "--outputs", 1, NULL, 0, words, listed);
 }
 
 /* Option a's value val (NULL: none given) as one of words[0..n): its

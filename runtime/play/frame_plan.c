@@ -25,8 +25,11 @@ const char *const gls_buffer_word[GLS_BUF_COUNT] = {
 /* Which passes run and what they read back. */
 static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls_camera *c)
 {
-    unsigned out = fp->outputs;
-    int colour = (out & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) != 0;
+    unsigned out = fp->outputs, need = 0;
+    for (int k = 0; k < GLS_OUT_KINDS; k++)
+        if (out & gls_output_kinds[k].bit)
+            need |= gls_output_kinds[k].needs;
+    int colour = (need & GLS_NEED_COLOUR) != 0;
     fp->ex = gls_exposure_of(c, in->moving);
     fp->effects = gls_exposure_on(&fp->ex) && colour;
     fp->aa = (in->aa->count > 1 || fp->effects) && colour;
@@ -36,12 +39,12 @@ static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls
     /* the centre pass: the image when it is not anti-aliased, and what
      * comes from the geometry at each pixel centre, never averaged across
      * an edge (depth, points and their colours, disparity, landmarks) */
-    fp->rgba = (!fp->aa && colour) || (out & GLS_OUT_POINTS);
-    fp->z = (out & GLS_OUT_FROM_Z) != 0;
-    fp->flow = (out & GLS_OUT_FLOW_ALL) != 0;
-    fp->boxes = (out & GLS_OUT_BOXES_ALL) != 0;
-    fp->ids = (out & GLS_OUT_IDS) || fp->flow || fp->boxes;
-    fp->normals = (out & GLS_OUT_NORMALS) != 0;
+    fp->rgba = (!fp->aa && colour) || (need & GLS_NEED_RGBA);
+    fp->z = (need & GLS_NEED_Z) != 0;
+    fp->flow = (need & GLS_NEED_NEXT) != 0;
+    fp->boxes = (need & GLS_NEED_ALONE) != 0;
+    fp->ids = (need & GLS_NEED_IDS) != 0;
+    fp->normals = (need & GLS_NEED_NORMALS) != 0;
     fp->truth_z = fp->flow;
     if (fp->rgba || fp->z)
         fp->passes |= GLS_PASS_CENTRE;
@@ -90,7 +93,7 @@ static void plan_buffers(gls_frame_plan *fp, const gls_plan_inputs *in, const gl
     b[GLS_BUF_NORMALS] = fp->normals ? 12 * n : 0;
     b[GLS_BUF_TRUTH_DEPTH] = fp->truth_z ? 4 * n : 0;
     b[GLS_BUF_ACCUM] = fp->aa ? (fp->weighted ? 32 : 16) * n + (uint64_t)c->width * 4 * (fp->weighted ? 8 : 2) : 0;
-    b[GLS_BUF_MIXED] = fp->aa && (out & GLS_OUT_EDGE_MAPS) ? 5 * n : 0;
+    b[GLS_BUF_MIXED] = fp->aa && (out & GLS_OUT_EDGE_MAPS) ? 5 * n : 0; /* GLS_NEED_MIXED */
     b[GLS_BUF_IMAGE] = image_bytes(fp, in, c) * n;
     b[GLS_BUF_LINEAR] = fp->image == GLS_IMAGE_SENSOR ? 12 * n : 0;
     b[GLS_BUF_EDGES] = (out & GLS_OUT_EDGE_MAPS) ? n : 0;
@@ -115,7 +118,8 @@ static void plan_buffers(gls_frame_plan *fp, const gls_plan_inputs *in, const gl
 void gls_frame_plan_make(gls_frame_plan *fp, const gls_plan_inputs *in, const gls_camera *c, int has_next)
 {
     memset(fp, 0, sizeof *fp);
-    fp->outputs = has_next ? in->outputs : in->outputs & ~(unsigned)GLS_OUT_FLOW_ALL;
+    unsigned out = gls_outputs_with(in->outputs);
+    fp->outputs = has_next ? out : out & ~(unsigned)GLS_OUT_FLOW_ALL;
     plan_passes(fp, in, c);
     plan_buffers(fp, in, c);
 }

@@ -87,25 +87,28 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
     char scale[32] = "-";
     if (out & GLS_OUT_DEPTH16)
         gls_fmt_double(scale, sizeof scale, o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI);
+    /* the words asked for, once each, in the output table's order (the
+     * rows of one word are adjacent) */
+    char words[256] = "";
+    const char *last = NULL;
+    for (int i = 0; i < GLS_OUT_KINDS; i++) {
+        const char *w = gls_output_kinds[i].word;
+        size_t wl = strlen(words);
+        if ((out & gls_output_kinds[i].bit) && w && !(last && strcmp(last, w) == 0))
+            snprintf(words + wl, sizeof words - wl, " %s", w), last = w;
+    }
     int k = snprintf(buf, len,
                      "glsplay frame record 2\n"
                      "frame %u\n"
                      "camera %s %ux%u\n"
-                     "outputs%s%s%s%s%s%s%s%s%s%s%s%s%s%s%s\n"
+                     "outputs%s\n"
                      "image-format %s\n"
                      "float-format %s\n"
                      "depth-scale %s\n"
                      "aa %s\n"
                      "anisotropic %u\n"
                      "background %s %s %s\n",
-                     frame, name, c->width, c->height, out & GLS_OUT_IMAGE ? " image" : "",
-                     out & GLS_OUT_DEPTH ? " depth" : "", out & GLS_OUT_POINTS ? " points" : "",
-                     out & GLS_OUT_EDGES ? " edges" : "", out & GLS_OUT_EDGES_AS_MASK ? " mask" : "",
-                     out & GLS_OUT_DISPARITY ? " disparity" : "", out & GLS_OUT_DISPARITY16 ? " disparity16" : "",
-                     out & GLS_OUT_DEPTH16 ? " depth16" : "", out & GLS_OUT_LANDMARKS ? " landmarks" : "",
-                     out & GLS_OUT_INSTANCE ? " instance" : "", out & GLS_OUT_CLASS ? " class" : "",
-                     out & GLS_OUT_COCO ? " coco" : "", out & GLS_OUT_NORMALS ? " normals" : "",
-                     out & GLS_OUT_FLOW_ALL ? " flow" : "", out & GLS_OUT_BOXES_ALL ? " boxes" : "",
+                     frame, name, c->width, c->height, words,
                      image ? fmt[o->image_format] : "-",
                      floats ? (o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm") : "-", scale, aa,
                      o->anisotropy > 1 ? o->anisotropy : 1, bg[0], bg[1], bg[2]);

@@ -89,10 +89,10 @@ static char *camera_name(const char *path)
 /* The file an output kind of one camera and frame goes to; -1 if too long. */
 static int output_file(char *path, size_t len, const gls_play_opts *o, const char *name, size_t k, uint32_t frame)
 {
-    const char *ext = gls_frame_kinds[k].ext;
-    if (!ext || (gls_frame_kinds[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM))
+    const char *ext = gls_output_kinds[k].ext;
+    if (!ext || (gls_output_kinds[k].bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM))
         ext = o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm";
-    return gls_output_path(path, len, o->outdir, name, gls_frame_kinds[k].kind, frame, ext);
+    return gls_output_path(path, len, o->outdir, name, gls_output_kinds[k].stem, frame, ext);
 }
 
 /* --motion: the named instances and their motion files. */
@@ -800,9 +800,9 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
                    gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
     /* one file a kind at most: files[] has room for every kind */
-    for (size_t k = 0; k < GLS_FRAME_KINDS && !too_long; k++)
-        if (fp.outputs & gls_frame_kinds[k].bit) {
-            f->files[f->nfiles].bit = gls_frame_kinds[k].bit;
+    for (size_t k = 0; k < GLS_OUT_KINDS && !too_long; k++)
+        if (fp.outputs & gls_output_kinds[k].bit) {
+            f->files[f->nfiles].bit = gls_output_kinds[k].bit;
             too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
         }
     if (too_long) {
@@ -872,8 +872,9 @@ static int frame_done(const gls_play_opts *o, const gls_camera *cams, const char
             gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame, inputs) ||
             !gls_frame_record_matches(path, text))
             return 0;
-        for (size_t k = 0; k < GLS_FRAME_KINDS; k++) {
-            if (!(o->outputs & gls_frame_kinds[k].bit) || (!has_next && (gls_frame_kinds[k].bit & GLS_OUT_FLOW_ALL)))
+        unsigned want = gls_outputs_with(o->outputs);
+        for (size_t k = 0; k < GLS_OUT_KINDS; k++) {
+            if (!(want & gls_output_kinds[k].bit) || (!has_next && (gls_output_kinds[k].bit & GLS_OUT_FLOW_ALL)))
                 continue;
             struct stat st;
             if (output_file(path, sizeof path, o, names[i], k, frame) ||

@@ -16,28 +16,6 @@
 #include "progress_line.h"
 #include "units.h"
 
-const gls_frame_kind gls_frame_kinds[] = {{GLS_OUT_IMAGE, "image", "png"},
-                                          {GLS_OUT_DEPTH, "depth", NULL},
-                                          {GLS_OUT_POINTS, "points", "ply"},
-                                          {GLS_OUT_EDGES, "edges", "png"},
-                                          {GLS_OUT_EDGES_AS_MASK, "mask", "png"},
-                                          {GLS_OUT_DISPARITY, "disparity", NULL},
-                                          {GLS_OUT_DISPARITY16, "disparity16", "png"},
-                                          {GLS_OUT_DEPTH16, "depth16", "png"},
-                                          {GLS_OUT_LANDMARKS, "landmarks", "csv"},
-                                          {GLS_OUT_INSTANCE, "instance", "png"},
-                                          {GLS_OUT_CLASS, "class", "png"},
-                                          {GLS_OUT_INSTANCE | GLS_OUT_CLASS, "instances", "json"},
-                                          {GLS_OUT_COCO, "coco", "json"},
-                                          {GLS_OUT_NORMALS, "normals", NULL},
-                                          {GLS_OUT_FLOW, "flow", "png"},
-                                          {GLS_OUT_FLOW_FLO, "flow", "flo"},
-                                          {GLS_OUT_FLOW_MASK, "flowmask", "png"},
-                                          {GLS_OUT_BOXES, "boxes", "txt"},
-                                          {GLS_OUT_BOXES_JSON, "boxes", "json"}};
-_Static_assert(sizeof gls_frame_kinds / sizeof gls_frame_kinds[0] == GLS_FRAME_KINDS,
-               "GLS_FRAME_KINDS, the room for a frame's files, must count the kinds of the table");
-
 void gls_frame_oom_message(char *buf, size_t len, const char *name, uint32_t w, uint32_t h, uint64_t bytes)
 {
     char need[32];
@@ -127,7 +105,7 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
     case GLS_OUT_INSTANCE:
     case GLS_OUT_CLASS:
         return gls_encode_ids_png(f->gt_inst, f->gt, bit == GLS_OUT_CLASS, c->width, c->height, buf);
-    case GLS_OUT_INSTANCE | GLS_OUT_CLASS: /* instances_F.json, with either */
+    case GLS_OUT_INSTANCES_JSON: /* instances_F.json, with either */
         return gls_encode_instances_json(f->gt_inst, f->gt, f->frame, f->name, c->width, c->height, buf);
     case GLS_OUT_COCO: {
         char image[64]; /* the image file's name, which COCO's "file_name" is */

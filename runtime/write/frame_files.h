@@ -17,20 +17,6 @@
 
 #define GLS_FRAME_PATH 4096
 
-/* The output kinds a camera frame can write, in the order they are
- * written: ext NULL is a float output, .pfm or .npy by --float-format;
- * bit is the GLS_OUT_* bits that ask for it (instance | class: the JSON
- * table, with either).  A frame writes each kind at most once, so a
- * frame's files fit files[] below whatever --outputs asks for: the
- * table's length is GLS_FRAME_KINDS (frame_files.c asserts it at compile
- * time: a kind added to the table without it does not build). */
-typedef struct {
-    unsigned bit;
-    const char *kind, *ext;
-} gls_frame_kind;
-#define GLS_FRAME_KINDS 19
-extern const gls_frame_kind gls_frame_kinds[];
-
 typedef struct {
     gls_write_job job; /* first: the writer sees this */
     gls_camera cam;    /* size; the points' back-projection */
@@ -65,7 +51,7 @@ typedef struct {
     struct {
         unsigned bit; /* GLS_OUT_* */
         char path[GLS_FRAME_PATH];
-    } files[GLS_FRAME_KINDS]; /* one a kind at most */
+    } files[GLS_OUT_KINDS]; /* one a kind at most (output_table.h) */
     char record[GLS_FRAME_PATH], record_text[1024];
     /* --progress json: told once the record is written (NULL: not) */
     gls_progress_json *json;
