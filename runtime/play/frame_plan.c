@@ -51,9 +51,8 @@ static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls
     if (fp->ids || fp->normals || fp->truth_z)
         fp->passes |= GLS_PASS_TRUTH;
     /* a rolling shutter draws the centre and truth passes in bands of
-     * rows, each at its time, whatever asks for them */
-    if (fp->ex.rolling && (fp->passes & (GLS_PASS_CENTRE | GLS_PASS_TRUTH)))
-        fp->passes |= GLS_PASS_BANDS;
+     * rows, each at its time; how many is chosen per frame from the
+     * scene's motion (exposure.h), so the plan has no count of them */
     if (fp->aa)
         fp->passes |= fp->effects ? GLS_PASS_EXPOSURE : GLS_PASS_SAMPLES;
     if (fp->lens && (fp->passes & (GLS_PASS_CENTRE | GLS_PASS_TRUTH | GLS_PASS_SAMPLES | GLS_PASS_EXPOSURE)))
@@ -147,5 +146,7 @@ void gls_frame_plan_explain(FILE *out, const gls_frame_plan *fp, const gls_aa_pl
             any = 1;
         }
     gls_fmt_bytes(b, sizeof b, fp->total);
-    fprintf(out, "%s; %s in all\n", any ? "" : " none", b);
+    fprintf(out, "%s; %s in all (%llu bytes, %llu of them the writer's)\n", any ? "" : " none", b,
+            (unsigned long long)fp->total,
+            (unsigned long long)(fp->bytes[GLS_BUF_DISPARITY] + fp->bytes[GLS_BUF_CODES16] + fp->bytes[GLS_BUF_ENCODE]));
 }

@@ -29,8 +29,8 @@
                       "from")                                                                                       \
     X(SAMPLES, "samples", "the anti-aliasing samples, summed into the accumulator")                                 \
     X(EXPOSURE, "exposure", "the samples at each sub-frame time, lens point and band of rows (motion blur, "        \
-                            "rolling shutter, depth of field)")                                                    \
-    X(BANDS, "bands", "rolling shutter: the centre and truth passes once per band of rows, at its time")            \
+                            "rolling shutter, depth of field); with a rolling shutter the centre and truth passes " \
+                            "too run once per band of rows, the bands chosen per frame from the scene's motion")   \
     X(LENS, "lens", "an undistorted fine image, read through the lens model at each pixel centre's ray")           \
     X(FLOW_NEXT, "flow", "the depth of frame t+1 with its poses (flow)")                                            \
     X(BOXES_ALONE, "boxes", "each visible instance drawn alone (the boxes' occlusion)")
@@ -125,7 +125,9 @@ extern const char *const gls_buffer_word[GLS_BUF_COUNT];
  * for its accumulator and one for its buffers:
  *   "  frame plan: passes centre truth samples"
  *   "  accumulator: 4 samples per pixel" / "  accumulator: none"
- *   "  buffers: colour 1.2 MiB, depth 1.2 MiB, ...; about 3.6 MiB in all" */
+ *   "  buffers: colour 1.2 MiB, depth 1.2 MiB, ...; 3.6 MiB in all (3774873
+ *   bytes, 1258291 of them the writer's)": the writer's are its estimates of
+ *   disparity, 16-bit codes and the file being encoded */
 void gls_frame_plan_explain(FILE *out, const gls_frame_plan *fp, const gls_aa_plan *aa);
 
 /* What a run did, counted as it ran (tests compare it with the plan:

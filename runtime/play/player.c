@@ -584,13 +584,12 @@ static void *frame_alloc(gls_frame_counts *cnt, int k, size_t bytes)
 }
 
 /* The centre and ground-truth passes just drawn, counted. */
-static void count_passes(gls_frame_counts *cnt, int centre, int truth, int bands)
+static void count_passes(gls_frame_counts *cnt, int centre, int truth)
 {
     if (!cnt)
         return;
     cnt->passes[GLS_PASS_I_CENTRE] += centre != 0;
     cnt->passes[GLS_PASS_I_TRUTH] += truth != 0;
-    cnt->passes[GLS_PASS_I_BANDS] += bands && (centre || truth);
 }
 
 /* Render one camera and write what was asked for.
@@ -663,13 +662,13 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
-        count_passes(cnt, rgba || z, gt_ids || normal || gt_z, 1);
+        count_passes(cnt, rgba || z, gt_ids || normal || gt_z);
     } else if (band < c->height) {
         /* flow starts from each band's ground-truth depth; boxes take
          * their 2D boxes from this instance image */
         if (centre_bands(s, c, band, rgba, z, gt_ids, normal, gt_z, msg, sizeof msg))
             goto out;
-        count_passes(cnt, rgba || z, gt_ids || normal || gt_z, 1);
+        count_passes(cnt, rgba || z, gt_ids || normal || gt_z);
     } else if (lens) {
         if (rgba || z)
             gls_distort_frame_centre(&df, c, rgba, z);
@@ -679,7 +678,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
-        count_passes(cnt, rgba || z, gt_ids || normal, 0);
+        count_passes(cnt, rgba || z, gt_ids || normal);
     } else {
         /* the centre pass only when something reads it back */
         if (rgba || z) {
@@ -696,7 +695,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
-        count_passes(cnt, rgba || z, gt_ids || normal, 0);
+        count_passes(cnt, rgba || z, gt_ids || normal);
     }
     if (aa) {
         if (gls_accum_init(&acc, c->width, c->height, fp.weighted, (fp.outputs & GLS_OUT_EDGE_MAPS) != 0))
