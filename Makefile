@@ -128,7 +128,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
-            $(B)/road_montage $(B)/rawseed $(B)/distort_project
+            $(B)/road_montage $(B)/rawseed $(B)/distort_project $(B)/glsplay_bands_whole
 
 .PHONY: gallery-truth gallery-effects gallery-road gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
 all: $(TOOLS) $(SCENELIB) $(GLSCENE_LIBS)
@@ -174,6 +174,7 @@ SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
 SEES_test_lighting := runtime
 SEES_test_lens_truth := runtime
+SEES_test_sensor := runtime
 SEES_test_road_geo := roads
 SEES_test_road_nurbs := roads
 SEES_test_road_motion := roads runtime
@@ -351,6 +352,12 @@ $(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC) $(SCENELIB_DIR
 $(B)/distort_project: $(B)/tools/distort_project.o $(LIB_runtime)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_runtime) $(LDLIBS) $(GL_LIBS)
 $(B)/tools/distort_project.o: LAYER_INC = $(INC_runtime)
+# glsplay_bands_whole: glsplay with each band of a rolling shutter drawn
+# whole, for tests/e2e/rolling_bands.sh (a test's choice, set through the
+# library's internal gls_api_play_opts, never read from the environment)
+$(B)/glsplay_bands_whole: $(B)/tools/glsplay_bands_whole.o $(B)/libglscene.a
+	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
+$(B)/tools/glsplay_bands_whole.o: LAYER_INC = $(INC_lib)
 
 $(B)/depth2png: $(B)/tools/depth2png.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm

@@ -490,6 +490,11 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
     return 0;
 }
 
+gls_play_opts *gls_api_play_opts(glscene_play *r)
+{
+    return &r->o;
+}
+
 int glscene_play_run(glscene_play *r, FILE *out, FILE *errs)
 {
     if (!r || !out || !errs)

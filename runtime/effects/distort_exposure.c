@@ -103,7 +103,7 @@ int gls_distort_exposure_render(gls_renderer *r, const gls_camera *c, const gls_
     return rc;
 }
 
-int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_distort_frame *df, uint32_t band,
+int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_distort_frame *df, gls_bands bands,
                             gls_pose_at_fn pose_at, void *ud, uint8_t *rgba, float *z, uint32_t *inst, float *normal,
                             float *gt_z, char *err, size_t errlen)
 {
@@ -121,8 +121,10 @@ int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_dist
                  f0->height);
         goto out;
     }
-    /* the test's switch: every band draws and reads the whole fine image */
-    int whole = gls_exposure_bands_whole();
+    /* the test's choice (gls_bands): every band draws and reads the whole
+     * fine image */
+    int whole = bands.whole;
+    uint32_t band = bands.rows;
     /* every pass of a band at the plain fine image's size (gt_pass.h draws
      * at the size set) */
     if (gls_renderer_set_size(r, f0->width, f0->height, err, errlen))

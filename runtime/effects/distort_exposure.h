@@ -31,14 +31,15 @@ int gls_distort_exposure_render(gls_renderer *r, const gls_camera *c, const gls_
                                 const gls_distort_frame *df, gls_pose_at_fn pose_at, void *ud, uint32_t band,
                                 uint64_t aa_memory, const char *name, gls_accum *acc, char *msg, size_t msglen);
 
-/* Rolling shutter through a lens: the ground truth of each band of `band`
- * rows at its middle row's time, through the plain fine camera of df
+/* Rolling shutter through a lens: the ground truth of each band of
+ * bands.rows rows at its middle row's time, through the plain fine camera of df
  * (df->lay, df->ray): colour (rgba) and depth (z) of the plain pass, ids
  * and normals of the ground-truth pass (gt_pass.h), and that pass's depth
- * (gt_z: where flow starts, as without a lens); NULL: not wanted.
- * Leaves the scene at the frame time (pose_at's time 0).  0, or -1 with a message (no
+ * (gt_z: where flow starts, as without a lens); NULL: not wanted.  Each
+ * band draws and reads the fine rows its pixels read, or the whole fine
+ * image when bands.whole (exposure.h).  Leaves the scene at the frame time (pose_at's time 0).  0, or -1 with a message (no
  * prefix) in err. */
-int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_distort_frame *df, uint32_t band,
+int gls_distort_truth_bands(gls_renderer *r, const gls_camera *c, const gls_distort_frame *df, gls_bands bands,
                             gls_pose_at_fn pose_at, void *ud, uint8_t *rgba, float *z, uint32_t *inst, float *normal,
                             float *gt_z, char *err, size_t errlen);
 

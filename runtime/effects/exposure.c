@@ -141,12 +141,6 @@ uint32_t gls_exposure_band_rows(const gls_renderer *r, const gls_camera *c, cons
     return !(speed > 0) || h >= H ? H : h < 1 ? 1 : (uint32_t)h;
 }
 
-int gls_exposure_bands_whole(void)
-{
-    const char *env = getenv("GLS_BANDS_WHOLE");
-    return env && strcmp(env, "1") == 0;
-}
-
 /* acc's rows v0..v1-1 += src's (sums, and which pixels are mixed); first:
  * src is acc's first sample of those rows. */
 static void add_rows(gls_accum *acc, const gls_accum *src, uint32_t v0, uint32_t v1, int first)
@@ -169,7 +163,7 @@ static void add_rows(gls_accum *acc, const gls_accum *src, uint32_t v0, uint32_t
 
 /* a's rows v0..v1-1 cleared and its counts reset: a band's scratch.  Only
  * those rows are read back from it (add_rows), so the others may hold
- * what earlier bands left (or what a band drawn whole, GLS_BANDS_WHOLE,
+ * what earlier bands left (or what a band drawn whole, gls_bands' whole,
  * added there).  Clearing the whole accumulator for every band cost a
  * tenth of a rolling frame (make bench-effects' road, rolling_shutter:
  * 357 ms a frame, 317 ms with this). */
@@ -227,11 +221,12 @@ int gls_exposure_render_bands(const gls_camera *c, const gls_exposure *e, const 
 }
 
 /* gls_exposure_render's band: the plan through the pinhole camera at the
- * band's pose and lens point, asked for the band's rows (all of them with
- * the test's switch); the band's kept. */
+ * band's pose and lens point, asked for the band's rows (all of them when
+ * whole, the test's choice: gls_bands); the band's kept. */
 typedef struct {
     gls_render_plan_fn render_plan;
     void *ud;
+    int whole;
 } plan_band;
 
 static int render_plan_band(void *ud, const gls_camera *at, double lx, double ly, uint32_t v0, uint32_t v1,
@@ -240,18 +235,18 @@ static int render_plan_band(void *ud, const gls_camera *at, double lx, double ly
     const plan_band *pb = ud;
     gls_camera cam;
     gls_exposure_lens(at, lx, ly, &cam);
-    if (gls_exposure_bands_whole())
+    if (pb->whole)
         v0 = 0, v1 = at->height;
     return pb->render_plan(pb->ud, &cam, v0, v1, tmp, msg, msglen);
 }
 
 int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
                         gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
-                        uint32_t band, char *msg, size_t msglen)
+                        gls_bands bands, char *msg, size_t msglen)
 {
     (void)r;
-    plan_band pb = {render_plan, ud};
-    return gls_exposure_render_bands(c, e, p, pose_at, ud, render_plan_band, &pb, acc, band, msg, msglen);
+    plan_band pb = {render_plan, ud, bands.whole};
+    return gls_exposure_render_bands(c, e, p, pose_at, ud, render_plan_band, &pb, acc, bands.rows, msg, msglen);
 }
 
 void gls_exposure_explain(FILE *out, const gls_camera *c, int moving, const gls_aa_plan *p, int image)

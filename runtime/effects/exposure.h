@@ -65,12 +65,19 @@ void gls_exposure_lens(const gls_camera *c, double lx, double ly, gls_camera *ou
  * 0, or -1 with why. */
 int gls_exposure_fits(const gls_exposure *e, const gls_aa_plan *p, char *why, size_t whylen);
 
-/* The test-only switch GLS_BANDS_WHOLE=1 (tests/e2e/rolling_bands.sh):
- * every band of a rolling shutter draws and reads back the whole image
- * (the fine image through a lens), as before the bands' rows were
- * narrowed, so that the test can compare the outputs byte for byte; 0
- * (narrowed: only the rows a band keeps) otherwise. */
-int gls_exposure_bands_whole(void);
+/* The bands of rows a rolling shutter draws: rows each
+ * (gls_exposure_band_rows; the height without a rolling shutter), each
+ * band drawing and reading back only the rows it keeps.  whole, for a
+ * test only (gls_play_opts' bands_whole, which glsplay never sets;
+ * tests/e2e/rolling_bands.sh through tools/glsplay_bands_whole.c): every
+ * band draws and reads back the whole image (the whole fine image through
+ * a lens), as before the bands' rows were narrowed, so that the test can
+ * compare the two byte for byte.  A parameter, not the environment: the
+ * production path reads no switch of a test. */
+typedef struct {
+    uint32_t rows;
+    int whole;
+} gls_bands;
 
 /* Rows per band for rolling shutter: at most GLS_BAND_PX pixels of image
  * motion within a band, from the projected corners of the scene's item
@@ -79,13 +86,13 @@ int gls_exposure_bands_whole(void);
 uint32_t gls_exposure_band_rows(const gls_renderer *r, const gls_camera *c, const gls_exposure *e,
                                 gls_pose_at_fn pose_at, void *ud);
 
-/* The image: every sample j, every band of `band` rows
- * (gls_exposure_band_rows; the height without rolling shutter), rendered by render_plan into a
- * scratch accumulator whose band rows are added to acc.  Leaves the scene
- * at s = 0.  0, or -1 with msg. */
+/* The image: every sample j, every band of bands.rows rows, rendered by
+ * render_plan into a scratch accumulator whose band rows are added to
+ * acc (render_plan asked for the band's rows, or the whole image when
+ * bands.whole).  Leaves the scene at s = 0.  0, or -1 with msg. */
 int gls_exposure_render(gls_renderer *r, const gls_camera *c, const gls_exposure *e, const gls_aa_plan *p,
                         gls_pose_at_fn pose_at, gls_render_plan_fn render_plan, void *ud, gls_accum *acc,
-                        uint32_t band, char *msg, size_t msglen);
+                        gls_bands bands, char *msg, size_t msglen);
 
 /* One band of one sample: rows v0..v1-1 of the image through camera at
  * (posed at the band's time, not yet moved to the lens point (lx, ly))

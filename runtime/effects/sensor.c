@@ -87,27 +87,23 @@ static void *apply_band(void *arg)
     return NULL;
 }
 
-/* Bands of at least this many pixels each, at most MAX_THREADS of them. */
-#define BAND_PIXELS 65536
-#define MAX_THREADS 16
+#define MAX_THREADS GLS_SENSOR_MAX_THREADS
 
 void gls_sensor_apply(const gls_sensor *s, float *rgb, uint32_t w, uint32_t h, double cx, double cy, double fx,
                       void (*ray)(void *ctx, double u, double v, double *x, double *y), void *ctx,
-                      uint64_t camera, uint32_t frame)
+                      uint64_t camera, uint32_t frame, unsigned threads)
 {
     uint64_t key = gls_rng_key(gls_rng_key(gls_rng_key(0, s->seed), camera), frame);
     band proto = {s, rgb, w, 0, h, cx, cy, fx, ray, ctx, gls_rng_key(key, STREAM_SHOT), gls_rng_key(key, STREAM_READ)};
     /* Each pixel's noise is keyed by the pixel, so the bands may run on
      * threads in any order and give the same numbers. */
-    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-    uint64_t n = (uint64_t)w * h, nb = n / BAND_PIXELS;
-    if (nb > (uint64_t)(cpus > 0 ? cpus : 1))
-        nb = (uint64_t)(cpus > 0 ? cpus : 1);
-    /* GLS_SENSOR_THREADS=N sets the number of bands (tests: the same
-     * image whatever it is) */
-    const char *env = getenv("GLS_SENSOR_THREADS");
-    if (env && atoi(env) > 0)
-        nb = (uint64_t)atoi(env);
+    uint64_t nb = threads;
+    if (!nb) {
+        long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+        nb = (uint64_t)w * h / GLS_SENSOR_BAND_PIXELS;
+        if (nb > (uint64_t)(cpus > 0 ? cpus : 1))
+            nb = (uint64_t)(cpus > 0 ? cpus : 1);
+    }
     if (nb > MAX_THREADS)
         nb = MAX_THREADS;
     if (nb > h)

@@ -31,10 +31,20 @@ double gls_sensor_vignetting(const gls_sensor *s, double u, double v, double cx,
  * to [0, 1].  ray(ctx, u, v, &x, &y) gives the camera-frame ray of pixel
  * (u, v) (only called for vignetting cos4).  The noise of pixel i,
  * channel c is drawn from the streams of (seed, camera, frame, i, c):
- * camera is a hash of the camera's name (gls_sensor_camera_key). */
+ * camera is a hash of the camera's name (gls_sensor_camera_key).  The
+ * rows are done in bands, each on a thread of its own: threads of them
+ * (at most GLS_SENSOR_MAX_THREADS and h), or with threads 0 (the
+ * player's) one per GLS_SENSOR_BAND_PIXELS pixels up to the processors
+ * online.  The image is the same bits whatever their number (tests:
+ * test_sensor's threads_same_image). */
 void gls_sensor_apply(const gls_sensor *s, float *rgb, uint32_t w, uint32_t h, double cx, double cy, double fx,
                       void (*ray)(void *ctx, double u, double v, double *x, double *y), void *ctx,
-                      uint64_t camera, uint32_t frame);
+                      uint64_t camera, uint32_t frame, unsigned threads);
+
+/* gls_sensor_apply's bands: at least this many pixels each when it
+ * chooses their number, and at most this many. */
+#define GLS_SENSOR_BAND_PIXELS 65536
+#define GLS_SENSOR_MAX_THREADS 16
 
 /* The camera's part of the noise key: FNV-1a of its name. */
 uint64_t gls_sensor_camera_key(const char *name);

@@ -52,7 +52,7 @@ void *gls_sensor_image(const gls_camera *c, const char *name, uint32_t frame, co
         else
             gls_rgba8_to_rgbf(rgba, n, rgb);
         gls_sensor_apply(s, rgb, c->width, c->height, c->cx, c->cy, c->fx, camera_ray, (void *)c,
-                         gls_sensor_camera_key(name), frame);
+                         gls_sensor_camera_key(name), frame, 0);
         if (fmt == GLS_IMG_PFM) {
             img = rgb;
         } else {

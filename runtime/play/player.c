@@ -312,7 +312,7 @@ static void say_failure(session *s, const char *msg)
 
 static int pose_at(void *ud, double t, gls_camera *cam);
 static int flow_frame_rolling(session *s, const gls_camera *c, const gls_distort_frame *df, const char *name,
-                              uint32_t frame, uint32_t band, const uint32_t *inst, const float *z, float *z1, float *uv,
+                              uint32_t frame, gls_bands bands, const uint32_t *inst, const float *z, float *z1, float *uv,
                               uint8_t *mask, char *msg, size_t msglen);
 
 /* The flow of camera c from frame to the trajectory's next row (gt_flow.h),
@@ -321,7 +321,7 @@ static int flow_frame_rolling(session *s, const gls_camera *c, const gls_distort
  * posed back for this frame's other cameras.  0 with *uv and *mask, or -1
  * with the whole line in msg (empty: out of memory). */
 static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *df, const char *name, uint32_t frame,
-                      uint32_t band,
+                      gls_bands bands,
                       const uint32_t *inst, const float *z, float **uv, uint8_t **mask, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height;
@@ -335,10 +335,10 @@ static int flow_frame(session *s, const gls_camera *c, const gls_distort_frame *
     if (s->counts)
         s->counts->bytes[GLS_BUF_FLOW] += n * sizeof *z1 + 2 * n * sizeof **uv + n,
             s->counts->passes[GLS_PASS_I_FLOW_NEXT]++;
-    if (band < c->height) {
+    if (bands.rows < c->height) {
         /* rolling shutter: both frames' rows at their own times (a lens,
          * df: their points projected by its model) */
-        rc = flow_frame_rolling(s, c, df, name, frame, band, inst, z, z1, *uv, *mask, msg, msglen);
+        rc = flow_frame_rolling(s, c, df, name, frame, bands, inst, z, z1, *uv, *mask, msg, msglen);
         if (rc)
             goto out;
         goto check;
@@ -389,13 +389,13 @@ out:
  * (through df's lens when df).  0, or -1 with the whole line in msg
  * (empty: out of memory). */
 static int flow_frame_rolling(session *s, const gls_camera *c, const gls_distort_frame *df, const char *name,
-                              uint32_t frame, uint32_t band, const uint32_t *inst, const float *z, float *z1, float *uv,
+                              uint32_t frame, gls_bands bands, const uint32_t *inst, const float *z, float *z1, float *uv,
                               uint8_t *mask, char *msg, size_t msglen)
 {
     double dt = (double)s->next->frame - (double)frame, bad = 0;
     char err[512];
     gls_flow_rows fr;
-    int k = gls_flow_rows_fill(&fr, c, band, dt, s->moves, s->ms->scene, pose_at, s, &bad);
+    int k = gls_flow_rows_fill(&fr, c, bands.rows, dt, s->moves, s->ms->scene, pose_at, s, &bad);
     if (k == 1) {
         char a[40];
         gls_fmt_double(a, sizeof a, (double)frame + bad);
@@ -407,7 +407,7 @@ static int flow_frame_rolling(session *s, const gls_camera *c, const gls_distort
     }
     if (k)
         return -1;
-    if (gls_flow_rolling_depth(s->r, c, df, band, dt, pose_at, s, z1, err, sizeof err)) {
+    if (gls_flow_rolling_depth(s->r, c, df, bands, dt, pose_at, s, z1, err, sizeof err)) {
         snprintf(msg, msglen, "glsplay: error: camera %s: %s", name, err);
         gls_flow_rows_free(&fr);
         return -1;
@@ -508,14 +508,15 @@ static int render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, 
  * row's time, scissored to the band's rows (the whole pass's viewport and
  * projection, so the same bits) and read back straight into their place;
  * the scene left at the frame time.  The buffers not asked for are NULL.
- * With the test's switch (gls_exposure_bands_whole) each band draws and
- * reads the whole image into scratch buffers and copies its rows out, as
- * before the rows were narrowed.  0, or -1 with msg. */
-static int centre_bands(session *s, const gls_camera *c, uint32_t band, uint8_t *rgba, float *z, uint32_t *inst,
+ * With the test's choice (gls_bands' whole, exposure.h) each band draws
+ * and reads the whole image into scratch buffers and copies its rows out,
+ * as before the rows were narrowed.  0, or -1 with msg. */
+static int centre_bands(session *s, const gls_camera *c, gls_bands bands, uint8_t *rgba, float *z, uint32_t *inst,
                         float *normal, float *gt_z, char *msg, size_t msglen)
 {
     size_t n = (size_t)c->width * c->height, W = c->width;
-    int whole = gls_exposure_bands_whole();
+    uint32_t band = bands.rows;
+    int whole = bands.whole;
     uint8_t *rb = whole && rgba ? malloc(n * 4) : NULL;
     float *zb = whole && z ? malloc(n * sizeof *zb) : NULL, *gb = whole && gt_z ? malloc(n * sizeof *gb) : NULL;
     float *nb = whole && normal ? malloc(n * 3 * sizeof *nb) : NULL;
@@ -649,6 +650,9 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     /* rolling shutter: the ground truth of each band of rows at its
      * time (exposure.h); one band, the whole image, otherwise */
     uint32_t band = ex.rolling ? gls_exposure_band_rows(r, c, &ex, pose_at, s) : c->height;
+    /* and how each band draws: its own rows, or the whole image when a
+     * test asks (gls_play_opts' bands_whole) */
+    gls_bands bands = {band, o->bands_whole != 0};
     if ((fp.rgba && !(rgba = frame_alloc(cnt, GLS_BUF_RGBA, n * 4))) ||
         (fp.z && !(z = frame_alloc(cnt, GLS_BUF_DEPTH, n * sizeof *z))) ||
         (fp.ids && !(gt_ids = frame_alloc(cnt, GLS_BUF_IDS, n * sizeof *gt_ids))) ||
@@ -658,7 +662,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     if (band < c->height && lens) {
         /* flow starts from each band's ground-truth depth at the nearest
          * fine pixel; boxes take their 2D boxes from this instance image */
-        if (gls_distort_truth_bands(r, c, &df, band, pose_at, s, rgba, z, gt_ids, normal, gt_z, err, sizeof err)) {
+        if (gls_distort_truth_bands(r, c, &df, bands, pose_at, s, rgba, z, gt_ids, normal, gt_z, err, sizeof err)) {
             snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
             goto out;
         }
@@ -666,7 +670,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
     } else if (band < c->height) {
         /* flow starts from each band's ground-truth depth; boxes take
          * their 2D boxes from this instance image */
-        if (centre_bands(s, c, band, rgba, z, gt_ids, normal, gt_z, msg, sizeof msg))
+        if (centre_bands(s, c, bands, rgba, z, gt_ids, normal, gt_z, msg, sizeof msg))
             goto out;
         count_passes(cnt, rgba || z, gt_ids || normal || gt_z);
     } else if (lens) {
@@ -712,7 +716,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         } else if (fx) {
             /* motion blur, rolling shutter, depth of field: the plan at
              * each sub-frame time and lens point (exposure.h) */
-            if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, band, msg, sizeof msg))
+            if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, bands, msg, sizeof msg))
                 goto out;
         } else if (lens) {
             if (gls_distort_frame_accum(&df, c, plan, &acc))
@@ -774,7 +778,7 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
         }
     } else if (fp.boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
         goto oom;
-    if (fp.flow && flow_frame(s, c, lens ? &df : NULL, name, frame, band, gt_ids, gt_z, &flow, &flowmask, msg,
+    if (fp.flow && flow_frame(s, c, lens ? &df : NULL, name, frame, bands, gt_ids, gt_z, &flow, &flowmask, msg,
                               sizeof msg)) {
         if (msg[0])
             goto out;

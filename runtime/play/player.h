@@ -64,6 +64,11 @@ typedef struct {
                                     counted as they run (frame_plan.h),
                                     for the tests that hold the run to
                                     its plan                            */
+    int bands_whole;             /* 0; tests only (glsplay never sets it):
+                                    each band of rows of a rolling
+                                    shutter draws and reads back the
+                                    whole image, the same bytes
+                                    (gls_bands, exposure.h)             */
 } gls_play_opts;
 
 /* The refusals of the player that its options alone decide, without

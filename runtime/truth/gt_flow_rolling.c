@@ -87,22 +87,22 @@ static int pose_shifted(void *ud, double t, gls_camera *cam)
     return sh->pose_at(sh->ud, sh->dt + t, cam);
 }
 
-int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_distort_frame *f, uint32_t band,
+int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_distort_frame *f, gls_bands bands,
                            double next_dt, gls_pose_at_fn pose_at, void *ud, float *z1, char *err, size_t errlen)
 {
     if (f) {
         shifted sh = {pose_at, ud, next_dt};
-        int rc = gls_distort_truth_bands(r, c, f, band, pose_shifted, &sh, NULL, NULL, NULL, NULL, z1, err, errlen);
+        int rc = gls_distort_truth_bands(r, c, f, bands, pose_shifted, &sh, NULL, NULL, NULL, NULL, z1, err, errlen);
         gls_camera at = *c;
         pose_at(ud, 0, &at); /* the scene back at frame t */
         return rc;
     }
     /* each band's ground-truth pass scissored to its rows and read
-     * straight into them; with the test's switch (exposure.h) the whole
-     * image into a scratch buffer, its rows copied */
+     * straight into them; with the test's choice (gls_bands' whole) the
+     * whole image into a scratch buffer, its rows copied */
     size_t n = (size_t)c->width * c->height, W = c->width;
-    uint32_t h = band ? band : c->height;
-    int whole = gls_exposure_bands_whole();
+    uint32_t h = bands.rows ? bands.rows : c->height;
+    int whole = bands.whole;
     float *zb = whole ? malloc((n ? n : 1) * sizeof *zb) : NULL;
     int rc = 0;
     if (whole && !zb) {

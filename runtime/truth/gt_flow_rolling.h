@@ -41,12 +41,14 @@ int gls_flow_rows_fill(gls_flow_rows *fr, const gls_camera *c, uint32_t band, do
                        const gls_scene *s, gls_pose_at_fn pose_at, void *ud, double *bad);
 void gls_flow_rows_free(gls_flow_rows *fr);
 
-/* Frame t+1's rolling depth (bands of `band` rows at t1's row times)
+/* Frame t+1's rolling depth (bands of bands.rows rows at t1's row times)
  * into z1 (c's size; the renderer at c's size); through f's lens (NULL:
  * none) each band's ground-truth depth read at the nearest fine pixel
- * (gls_distort_truth_bands; the renderer left at another size).  Leaves
- * the scene at frame t.  0, or -1 with a message (no prefix) in err. */
-int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_distort_frame *f, uint32_t band,
+ * (gls_distort_truth_bands; the renderer left at another size).  Each
+ * band draws and reads its own rows, or the whole image when bands.whole
+ * (exposure.h).  Leaves the scene at frame t.  0, or -1 with a message
+ * (no prefix) in err. */
+int gls_flow_rolling_depth(gls_renderer *r, const gls_camera *c, const gls_distort_frame *f, gls_bands bands,
                            double next_dt, gls_pose_at_fn pose_at, void *ud, float *z1, char *err, size_t errlen);
 
 /* The flow of every pixel of camera c (its size, intrinsics, near and
