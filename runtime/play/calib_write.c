@@ -7,6 +7,7 @@
 #include <string.h>
 #include "atomic_write.h"
 #include "calib_write.h"
+#include "frames.h"
 #include "numfmt.h"
 #include "buf.h"
 #include "trajectory.h"
@@ -310,7 +311,8 @@ int gls_calib_write(const gls_play_opts *o, const gls_traj_text *traj, const gls
     gls_buf b = {0};
     int rc = 1;
     gls_camera *world = NULL;
-    gls_traj *t = NULL;
+    gls_frames f;
+    memset(&f, 0, sizeof f); /* closed at out: even when never opened */
     /* the rig's files: relative poses, the same in every frame; KITTI's
        calib.txt is for rectified images and holds no lens */
     for (size_t i = 0; i < o->ncameras; i++)
@@ -337,19 +339,17 @@ int gls_calib_write(const gls_play_opts *o, const gls_traj_text *traj, const gls
        trajectory was checked before the first was rendered) */
     char err[1024];
     world = malloc(o->ncameras * sizeof *world);
-    t = gls_traj_open_text(traj, NULL);
-    if (!world || !t) {
+    if (!world || gls_frames_open(&f, traj, NULL, o->frame_first, o->frame_end, &o->shard)) {
         fprintf(errs, "glsplay: error: out of memory\n");
         goto out;
     }
     gls_traj_pose p;
+    gls_frame_mark m;
     int got;
-    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
-        if (p.frame < o->frame_first)
-            continue;
-        if (p.frame >= o->frame_end || p.frame > UINT32_MAX)
+    while ((got = gls_frames_next(&f, &p, &m, err, sizeof err)) == 1) {
+        if (p.frame > UINT32_MAX)
             break;
-        if (!gls_shard_has(&o->shard, o->frame_first, p.frame))
+        if (!m.mine)
             continue;
         for (size_t i = 0; i < o->ncameras; i++) {
             world[i] = cams[i];
@@ -365,7 +365,7 @@ int gls_calib_write(const gls_play_opts *o, const gls_traj_text *traj, const gls
     }
     rc = 0;
 out:
-    gls_traj_close(t);
+    gls_frames_close(&f);
     free(world);
     free(b.data);
     return rc;

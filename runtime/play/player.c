@@ -24,6 +24,7 @@
 #include "distort_render.h"
 #include "frame_files.h"
 #include "frame_plan.h"
+#include "frames.h"
 #include "frame_record.h"
 #include "frame_writer.h"
 #include "glctx.h"
@@ -924,33 +925,51 @@ static uint64_t trajectory_last_frame(const motion_set *ms)
  * which writes no flow).  With flow, the row after the range is read too,
  * and its motions checked: the last frame's flow goes to it.  0, or 1
  * after a message. */
+/* --resume's question of the frames iterator (frames.h): is frame f
+ * complete, for every camera? */
+typedef struct {
+    const gls_play_opts *o;
+    const gls_camera *rel;
+    const char *const *names;
+    uint64_t last;       /* the trajectory's last frame: no flow from it */
+    const char *inputs;
+} resume_ctx;
+
+static int resume_complete(void *ud, uint64_t frame)
+{
+    const resume_ctx *r = ud;
+    return r->o->resume && frame_done(r->o, r->rel, r->names, (uint32_t)frame, frame != r->last, r->inputs);
+}
+
+/* The frames of the run (frames.h), --resume asking resume_ctx r. */
+static int open_frames(gls_frames *f, const motion_set *ms, const gls_play_opts *o, FILE *notes, resume_ctx *r,
+                       FILE *errs)
+{
+    if (gls_frames_open(f, &ms->traj, notes, o->frame_first, o->frame_end, &o->shard)) {
+        fprintf(errs, "glsplay: error: out of memory\n");
+        return 1;
+    }
+    if (r && o->resume)
+        f->complete = resume_complete, f->ud = r;
+    return 0;
+}
+
 static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const gls_camera *rel,
                            const char *const *names, const char *inputs, uint64_t last, FILE *errs,
                            uint64_t *inrange, uint64_t *mine, uint64_t *complete)
 {
     char err[1024];
-    gls_traj *t = open_trajectory(ms, errs, errs);
-    if (!t)
+    resume_ctx rc_ = {o, rel, names, last, inputs};
+    gls_frames f;
+    if (open_frames(&f, ms, o, errs, &rc_, errs))
         return 1;
     gls_traj_pose p;
-    int got, rc = 0, past = 0;
+    gls_frame_mark m;
+    int got, rc = 0;
     gls_traj_gaps gaps;
     gls_traj_gaps_init(&gaps, o->frame_first);
     *inrange = *mine = *complete = 0;
-    /* every row to the end of the file, whatever the range: a row out of
-     * order after the range is as wrong as one in it (past: the rows
-     * after the range, which gls_traj_next still checks) */
-    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
-        if (p.frame < o->frame_first || past)
-            continue;
-        if (p.frame >= o->frame_end) {
-            past = 1; /* the row after the range: the last frame's flow goes to it */
-            if ((o->outputs & GLS_OUT_FLOW_ALL) && motion_check(ms, p.frame, errs)) {
-                rc = 1;
-                break;
-            }
-            continue;
-        }
+    while ((got = gls_frames_next(&f, &p, &m, err, sizeof err)) == 1) {
         gls_traj_gaps_row(&gaps, p.frame);
         if (p.frame > UINT32_MAX) {
             fprintf(errs, "%s:%u: error: frame %llu: frame numbers above %u are not supported\n", o->trajectory,
@@ -963,17 +982,20 @@ static int scan_trajectory(const gls_play_opts *o, const motion_set *ms, const g
             break;
         }
         (*inrange)++;
-        if (!gls_shard_has(&o->shard, o->frame_first, p.frame))
-            continue;
-        (*mine)++;
-        if (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last, inputs))
-            (*complete)++;
+        *mine += m.mine != 0;
+        *complete += m.complete != 0;
     }
+    /* the row after the range: the last frame's flow goes to it; then
+     * every row to the end of the file, whatever the range */
+    if (got == 0 && rc == 0 && f.past && (o->outputs & GLS_OUT_FLOW_ALL) && motion_check(ms, f.after.frame, errs))
+        rc = 1;
+    if (got == 0 && rc == 0)
+        got = gls_frames_rest(&f, err, sizeof err);
     if (got < 0) {
         fprintf(errs, "%s\n", err);
         rc = 1;
     }
-    gls_traj_close(t);
+    gls_frames_close(&f);
     if (rc == 0 && *inrange == 0) {
         fprintf(errs, "glsplay: error: %s: no frame in the range given by --frames\n", o->trajectory);
         rc = 1;
@@ -1023,26 +1045,25 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
     s->json->total = s->views;
     s->json->skipped = complete;
     char err[1024];
-    gls_traj *t = open_trajectory(s->ms, NULL, errs);
-    if (!t)
+    resume_ctx rctx = {o, rel, names, last, s->inputs};
+    gls_frames f;
+    if (open_frames(&f, s->ms, o, NULL, &rctx, errs))
         return 1;
     /* flow: a second reader one row ahead gives each frame's next row */
     gls_traj *ahead = flow ? open_trajectory(s->ms, NULL, errs) : NULL;
     if (flow && !ahead) {
-        gls_traj_close(t);
+        gls_frames_close(&f);
         return 1;
     }
     gls_traj_pose p, pn;
+    gls_frame_mark m;
     int got = 0, rc = 0, have = ahead ? gls_traj_next(ahead, &pn, err, sizeof err) : 0, noted = 0;
     double shown = 0;
     s->t0 = s->json->t0 = gls_now();
-    while (done < todo && (got = gls_traj_next(t, &p, err, sizeof err)) == 1) {
-        if (p.frame < o->frame_first)
-            continue;
-        if (p.frame >= o->frame_end || p.frame > UINT32_MAX) /* checked by the scan */
+    while (done < todo && (got = gls_frames_next(&f, &p, &m, err, sizeof err)) == 1) {
+        if (p.frame > UINT32_MAX) /* refused by the scan */
             break;
-        if (!gls_shard_has(&o->shard, o->frame_first, p.frame) ||
-            (o->resume && frame_done(o, rel, names, (uint32_t)p.frame, p.frame != last, s->inputs)))
+        if (!m.mine || m.complete)
             continue;
         while (have == 1 && pn.frame <= p.frame)
             have = gls_traj_next(ahead, &pn, err, sizeof err);
@@ -1083,7 +1104,7 @@ static int play_trajectory(session *s, const gls_camera *rel, const char *const 
         fprintf(errs, "%s\n", err);
         rc = 1;
     }
-    gls_traj_close(t);
+    gls_frames_close(&f);
     if (ahead)
         gls_traj_close(ahead);
     return rc;
@@ -1104,17 +1125,16 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
         return 0;
     }
     char err[1024];
-    gls_traj *t = open_trajectory(ms, NULL, errs);
-    if (!t)
+    gls_frames f;
+    if (open_frames(&f, ms, o, NULL, NULL, errs))
         return 1;
     gls_traj_pose p, first;
-    int got, have = 0;
+    gls_frame_mark m;
+    int have = 0;
     *inrange = *mine = 0;
-    while ((got = gls_traj_next(t, &p, err, sizeof err)) == 1 && p.frame < o->frame_end) {
-        if (p.frame < o->frame_first)
-            continue;
+    while (gls_frames_next(&f, &p, &m, err, sizeof err) == 1) {
         (*inrange)++;
-        if (!gls_shard_has(&o->shard, o->frame_first, p.frame))
+        if (!m.mine)
             continue;
         (*mine)++;
         if (!have)
@@ -1122,7 +1142,7 @@ static int explain_first_frame(const gls_play_opts *o, const motion_set *ms, gls
         if (!o->shard.count)
             break; /* nothing to count: the first frame is all it needs */
     }
-    gls_traj_close(t);
+    gls_frames_close(&f);
     if (!have)
         return 0; /* the scan before rendering says what is wrong */
     p = first;
