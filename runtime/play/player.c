@@ -594,6 +594,252 @@ static void count_passes(gls_frame_counts *cnt, int centre, int truth)
     cnt->passes[GLS_PASS_I_TRUTH] += truth != 0;
 }
 
+/* What one camera frame holds while it is drawn: its plan, and the
+ * buffers the plan asks for (NULL: not needed), freed together. */
+typedef struct {
+    gls_frame_plan fp;
+    gls_distort_frame df;  /* a lens: the undistorted images (distort_render.h) */
+    gls_bands bands;       /* rolling shutter: rows per band (exposure.h)      */
+    uint8_t *rgba, *mask, *flowmask;
+    float *z, *normal, *flow, *gt_z;
+    uint32_t *gt_ids;      /* the ground-truth pass (gt_pass.h): ids for
+                              instance, class, coco, flow, boxes             */
+    gls_box *boxes;
+    size_t nboxes;
+    void *img;             /* the image in its file's format, when not rgba  */
+    gls_accum acc;
+} cam_frame;
+
+static void cam_frame_free(cam_frame *cf)
+{
+    gls_accum_free(&cf->acc);
+    gls_distort_frame_free(&cf->df);
+    free(cf->rgba);
+    free(cf->z);
+    free(cf->img);
+    free(cf->mask);
+    free(cf->normal);
+    free(cf->flow);
+    free(cf->flowmask);
+    free(cf->gt_ids);
+    free(cf->gt_z);
+    free(cf->boxes);
+}
+
+/* "glsplay: error: camera NAME: ERR" into msg; -1. */
+static int camera_error(const session *s, const char *err, char *msg, size_t msglen)
+{
+    snprintf(msg, msglen, "glsplay: error: camera %s: %s", s->name_now, err);
+    return -1;
+}
+
+/* The centre pass (colour and depth at the pixel centres) and the
+ * ground-truth pass (ids, normals, the depth flow starts from), each
+ * only when the plan reads it back: in bands of rows under a rolling
+ * shutter, through the lens when there is one.  0, or -1 with msg
+ * (empty: out of memory). */
+static int frame_centre_truth(session *s, const gls_camera *c, cam_frame *cf, char *msg, size_t msglen)
+{
+    gls_renderer *r = s->r;
+    char err[512];
+    int centre = cf->rgba || cf->z, truth = cf->gt_ids || cf->normal;
+    if (cf->bands.rows < c->height && cf->fp.lens) {
+        /* flow starts from each band's ground-truth depth at the nearest
+         * fine pixel; boxes take their 2D boxes from this instance image */
+        if (gls_distort_truth_bands(r, c, &cf->df, cf->bands, pose_at, s, cf->rgba, cf->z, cf->gt_ids, cf->normal,
+                                    cf->gt_z, err, sizeof err))
+            return camera_error(s, err, msg, msglen);
+        truth |= cf->gt_z != NULL;
+    } else if (cf->bands.rows < c->height) {
+        /* flow starts from each band's ground-truth depth; boxes take
+         * their 2D boxes from this instance image */
+        if (centre_bands(s, c, cf->bands, cf->rgba, cf->z, cf->gt_ids, cf->normal, cf->gt_z, msg, msglen))
+            return -1;
+        truth |= cf->gt_z != NULL;
+    } else if (cf->fp.lens) {
+        if (centre)
+            gls_distort_frame_centre(&cf->df, c, cf->rgba, cf->z);
+        /* through the lens: the ground-truth pass drawn by the plain fine
+         * camera, read at each pixel centre's ray (lens_truth.h) */
+        if (truth && gls_lens_gt_render(r, &cf->df, c, cf->gt_ids, cf->normal, cf->gt_z, err, sizeof err))
+            return camera_error(s, err, msg, msglen);
+    } else {
+        if (centre) {
+            gls_render_pass(r, c, 0.0, 0.0);
+            if (cf->rgba)
+                gls_render_read_rgba(r, cf->rgba);
+            if (cf->z)
+                gls_render_read_z(r, cf->z);
+        }
+        /* ground truth: the centre sample again, one pass for ids, normals
+         * and the depth flow starts from (gt_pass.h), never blended
+         * whatever --aa is */
+        if (truth && gls_gt_render(r, c, cf->gt_ids, cf->normal, cf->gt_z, err, sizeof err))
+            return camera_error(s, err, msg, msglen);
+    }
+    count_passes(s->counts, centre, truth);
+    return 0;
+}
+
+/* The anti-aliased colour: the samples summed into the accumulator,
+ * at each sub-frame time and lens point with exposure effects (exposure.h,
+ * distort_exposure.h), through the lens's undistorted image with a lens.
+ * 0, or -1 with msg (empty: out of memory). */
+static int frame_colour(session *s, const gls_camera *c, cam_frame *cf, char *msg, size_t msglen)
+{
+    const gls_aa_plan *plan = s->plan;
+    gls_frame_counts *cnt = s->counts;
+    if (gls_accum_init(&cf->acc, c->width, c->height, cf->fp.weighted, (cf->fp.outputs & GLS_OUT_EDGE_MAPS) != 0))
+        return -1;
+    if (cnt) {
+        cnt->bytes[GLS_BUF_ACCUM] += gls_accum_sums_bytes(&cf->acc);
+        cnt->bytes[GLS_BUF_MIXED] += gls_accum_mask_bytes(&cf->acc);
+        cnt->passes[cf->fp.effects ? GLS_PASS_I_EXPOSURE : GLS_PASS_I_SAMPLES]++;
+    }
+    int rc = 0;
+    if (cf->fp.effects && cf->fp.lens)
+        rc = gls_distort_exposure_render(s->r, c, &cf->fp.ex, plan, &cf->df, pose_at, s, cf->bands.rows,
+                                         s->o->aa_memory, s->name_now, &cf->acc, msg, msglen);
+    else if (cf->fp.effects) /* the plan at each sub-frame time and lens point */
+        rc = gls_exposure_render(s->r, c, &cf->fp.ex, plan, pose_at, render_plan, s, &cf->acc, cf->bands, msg,
+                                 msglen);
+    else if (cf->fp.lens)
+        rc = gls_distort_frame_accum(&cf->df, c, plan, &cf->acc) ? (msg[0] = 0, -1) : 0;
+    else
+        rc = render_plan(s, c, 0, c->height, &cf->acc, msg, msglen);
+    if (cnt)
+        cnt->accum_samples = cf->acc.samples;
+    return rc;
+}
+
+/* The image in its file's format (through the sensor effects when the
+ * camera asks for them: sensor.h, never on ground truth) and the edges
+ * map.  0, or -1 when out of memory. */
+static int frame_image(session *s, const gls_camera *c, const char *name, uint32_t frame, cam_frame *cf)
+{
+    const gls_play_opts *o = s->o;
+    gls_frame_counts *cnt = s->counts;
+    size_t n = (size_t)c->width * c->height;
+    int aa = cf->fp.aa;
+    if (cf->fp.image == GLS_IMAGE_SENSOR) {
+        /* on the linear intensities before quantisation */
+        cf->img = gls_sensor_image(c, name, frame, aa ? &cf->acc : NULL, cf->rgba, o->image_format);
+        if (!cf->img)
+            return -1;
+        if (cnt) /* the linear intensities, then the image in its format (sensor_image.c's) */
+            cnt->bytes[GLS_BUF_LINEAR] += 12 * (uint64_t)n, cnt->bytes[GLS_BUF_IMAGE] += cf->fp.bytes[GLS_BUF_IMAGE];
+    } else if (cf->fp.image == GLS_IMAGE_CONVERTED) {
+        size_t px = o->image_format == GLS_IMG_PNG16 ? 3 * sizeof(uint16_t)
+                    : o->image_format == GLS_IMG_PFM ? 3 * sizeof(float) : 4;
+        if (!(cf->img = frame_alloc(cnt, GLS_BUF_IMAGE, n * px)))
+            return -1;
+        if (o->image_format == GLS_IMG_PNG16 && aa)
+            gls_accum_rgb16(&cf->acc, cf->img);
+        else if (o->image_format == GLS_IMG_PNG16)
+            gls_rgba8_to_rgb16(cf->rgba, n, cf->img);
+        else if (o->image_format == GLS_IMG_PFM && aa)
+            gls_accum_rgbf(&cf->acc, cf->img);
+        else if (o->image_format == GLS_IMG_PFM)
+            gls_rgba8_to_rgbf(cf->rgba, n, cf->img);
+        else
+            gls_accum_rgba8(&cf->acc, cf->img);
+    }
+    if (cf->fp.outputs & GLS_OUT_EDGE_MAPS) {
+        /* one sample per pixel cannot straddle anything: all zero */
+        if (!(cf->mask = calloc(n ? n : 1, 1)))
+            return -1;
+        if (cnt)
+            cnt->bytes[GLS_BUF_EDGES] += n;
+        for (size_t i = 0; aa && i < n; i++)
+            cf->mask[i] = cf->acc.mixed[i] ? 255 : 0;
+    }
+    return 0;
+}
+
+/* Boxes and flow, from the ground-truth pass's ids.  0, or -1 with msg
+ * (empty: out of memory). */
+static int frame_boxes_flow(session *s, const gls_camera *c, uint32_t frame, cam_frame *cf, char *msg,
+                            size_t msglen)
+{
+    char err[512];
+    if (cf->fp.boxes && s->counts)
+        s->counts->passes[GLS_PASS_I_BOXES_ALONE]++;
+    if (cf->fp.boxes && cf->fp.lens) {
+        if (gls_boxes_compute_lens(s->r, s->ms->scene, c, &cf->df, cf->gt_ids, &cf->boxes, &cf->nboxes, err,
+                                   sizeof err))
+            return camera_error(s, err, msg, msglen);
+    } else if (cf->fp.boxes && gls_boxes_compute(s->r, s->ms->scene, c, cf->gt_ids, &cf->boxes, &cf->nboxes)) {
+        return -1;
+    }
+    if (cf->fp.flow && flow_frame(s, c, cf->fp.lens ? &cf->df : NULL, s->name_now, frame, cf->bands, cf->gt_ids,
+                                  cf->gt_z, &cf->flow, &cf->flowmask, msg, msglen))
+        return -1;
+    return 0;
+}
+
+/* The files go to the writer (frame_writer.h, frame_files.h), which
+ * encodes and writes them, with its thread while the next frame renders,
+ * and writes the frame record after the last one; the buffers it takes
+ * are the writer's from here.  0, or -1 with msg (empty: out of memory). */
+static int frame_submit(session *s, const gls_camera *c, const char *name, uint32_t frame, cam_frame *cf, char *msg,
+                        size_t msglen)
+{
+    const gls_play_opts *o = s->o;
+    uint32_t band = cf->bands.rows;
+    gls_frame_files *f = gls_frame_files_new();
+    if (!f)
+        return -1;
+    f->cam = *c;
+    f->name = name;
+    f->frame = frame;
+    f->image_format = o->image_format;
+    f->image_mosaic = c->sensor.bayer[0] != 0;
+    f->float_format = o->float_format;
+    f->fxB = c->fx * s->baseline;
+    f->depth_scale = o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI;
+    f->buffer_bytes = cf->fp.total;
+    f->json = s->json;
+    int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
+                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
+    /* one file a kind at most: files[] has room for every kind */
+    for (size_t k = 0; k < GLS_OUT_KINDS && !too_long; k++)
+        if (cf->fp.outputs & gls_output_kinds[k].bit) {
+            f->files[f->nfiles].bit = gls_output_kinds[k].bit;
+            too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
+        }
+    int rc = -1;
+    if (too_long) {
+        snprintf(msg, msglen, "glsplay: error: output path for camera %s is too long", name);
+        goto fail;
+    }
+    /* where the landmarks are in this frame: motion moves them; under a
+     * rolling shutter each at its band's time, as its rows */
+    if ((cf->fp.outputs & GLS_OUT_LANDMARKS) && !(f->landmarks = gls_landmarks_take(s->scene)))
+        goto fail;
+    if (f->landmarks && band < c->height && gls_exposure_landmarks(s->scene, c, band, pose_at, s, f->landmarks))
+        goto fail;
+    /* rolling shutter: each row's points through the pose its depth was
+     * drawn with (spec/outputs.md) */
+    if ((cf->fp.outputs & GLS_OUT_POINTS) && band < c->height &&
+        !(f->row_pose = gls_exposure_row_poses(c, band, pose_at, s)))
+        goto fail;
+    f->rgba = cf->rgba, f->z = cf->z, f->image = cf->img, f->mask = cf->mask;
+    /* the writer needs the ids only for the id images and tables */
+    int ids = (cf->fp.outputs & GLS_OUT_IDS) != 0;
+    f->gt_inst = ids ? cf->gt_ids : NULL, f->normal = cf->normal, f->gt = s->gt;
+    f->flow = cf->flow, f->flowmask = cf->flowmask;
+    f->boxes = cf->boxes, f->nboxes = cf->nboxes, f->box_names = s->box_names;
+    if (ids)
+        cf->gt_ids = NULL;
+    cf->rgba = cf->mask = cf->flowmask = NULL, cf->z = cf->flow = cf->normal = NULL, cf->img = NULL;
+    cf->boxes = NULL;
+    /* the writer's now, submitted or freed */
+    return gls_writer_submit(s->w, &f->job, msg, msglen) ? -1 : 0;
+fail:
+    f->job.destroy(&f->job);
+    return rc;
+}
+
 /* Render one camera and write what was asked for.
  *
  * Plain (N = 1): one pass at jitter (0, 0), no accumulator.
@@ -609,256 +855,58 @@ static int play_camera(session *s, const gls_camera *c, const char *name, uint32
 {
     static const char lower_size[] = "lower --size (or the camera's width and height)";
     const gls_play_opts *o = s->o;
-    const gls_aa_plan *plan = s->plan;
     gls_renderer *r = s->r;
     char err[512], msg[1024] = "";
     size_t n = (size_t)c->width * c->height;
+    cam_frame cf;
+    memset(&cf, 0, sizeof cf);
     /* everything this frame needs, decided once (frame_plan.h) */
-    gls_frame_plan fp;
-    gls_plan_inputs pin = {o->outputs, o->image_format, plan, s->moving};
-    gls_frame_plan_make(&fp, &pin, c, s->next != NULL);
-    gls_exposure ex = fp.ex;
-    int fx = fp.effects, aa = fp.aa, lens = fp.lens;
+    gls_plan_inputs pin = {o->outputs, o->image_format, s->plan, s->moving};
+    gls_frame_plan_make(&cf.fp, &pin, c, s->next != NULL);
+    const gls_frame_plan *fp = &cf.fp;
     gls_frame_counts *cnt = s->counts;
     if (cnt)
         memset(cnt, 0, sizeof *cnt), cnt->frames = 1;
-    uint8_t *rgba = NULL, *mask = NULL, *flowmask = NULL;
-    float *z = NULL, *normal = NULL, *flow = NULL, *gt_z = NULL;
-    uint32_t *gt_ids = NULL; /* the ground-truth pass (gt_pass.h): ids for instance, class, coco, flow, boxes */
-    gls_box *boxes = NULL;
-    size_t nboxes = 0;
-    void *img = NULL; /* image in its output format when not rgba */
-    gls_accum acc;
-    memset(&acc, 0, sizeof acc);
-    gls_frame_files *f = NULL;
     int rc = -1;
-    /* a lens: one undistorted fine image, read through the inverse model
-       (distort_render.h); with the exposure's effects, one at each
-       sub-frame time, lens point and band (distort_exposure.h) */
-    gls_distort_frame df;
-    memset(&df, 0, sizeof df);
     s->name_now = name;
     if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
-    if (lens && gls_distort_frame_render(&df, r, c, plan, fp.rgba, fp.z, aa && !fx, o->aa_memory, err, sizeof err)) {
+    /* a lens: one undistorted fine image, read through the inverse model
+       (distort_render.h); with the exposure's effects, one at each
+       sub-frame time, lens point and band (distort_exposure.h) */
+    if (fp->lens && gls_distort_frame_render(&cf.df, r, c, s->plan, fp->rgba, fp->z, fp->aa && !fp->effects,
+                                             o->aa_memory, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }
-    if (lens && cnt)
+    if (fp->lens && cnt)
         cnt->passes[GLS_PASS_I_LENS]++;
-    /* rolling shutter: the ground truth of each band of rows at its
-     * time (exposure.h); one band, the whole image, otherwise */
-    uint32_t band = ex.rolling ? gls_exposure_band_rows(r, c, &ex, pose_at, s) : c->height;
-    /* and how each band draws: its own rows, or the whole image when a
-     * test asks (gls_play_opts' bands_whole) */
-    gls_bands bands = {band, o->bands_whole != 0};
-    if ((fp.rgba && !(rgba = frame_alloc(cnt, GLS_BUF_RGBA, n * 4))) ||
-        (fp.z && !(z = frame_alloc(cnt, GLS_BUF_DEPTH, n * sizeof *z))) ||
-        (fp.ids && !(gt_ids = frame_alloc(cnt, GLS_BUF_IDS, n * sizeof *gt_ids))) ||
-        (fp.normals && !(normal = frame_alloc(cnt, GLS_BUF_NORMALS, n * 3 * sizeof *normal))) ||
-        (fp.truth_z && !(gt_z = frame_alloc(cnt, GLS_BUF_TRUTH_DEPTH, n * sizeof *gt_z))))
-        goto oom;
-    if (band < c->height && lens) {
-        /* flow starts from each band's ground-truth depth at the nearest
-         * fine pixel; boxes take their 2D boxes from this instance image */
-        if (gls_distort_truth_bands(r, c, &df, bands, pose_at, s, rgba, z, gt_ids, normal, gt_z, err, sizeof err)) {
-            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
-            goto out;
-        }
-        count_passes(cnt, rgba || z, gt_ids || normal || gt_z);
-    } else if (band < c->height) {
-        /* flow starts from each band's ground-truth depth; boxes take
-         * their 2D boxes from this instance image */
-        if (centre_bands(s, c, bands, rgba, z, gt_ids, normal, gt_z, msg, sizeof msg))
-            goto out;
-        count_passes(cnt, rgba || z, gt_ids || normal || gt_z);
-    } else if (lens) {
-        if (rgba || z)
-            gls_distort_frame_centre(&df, c, rgba, z);
-        /* through the lens: the ground-truth pass drawn by the plain fine
-         * camera, read at each pixel centre's ray (lens_truth.h) */
-        if ((gt_ids || normal) && gls_lens_gt_render(r, &df, c, gt_ids, normal, gt_z, err, sizeof err)) {
-            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
-            goto out;
-        }
-        count_passes(cnt, rgba || z, gt_ids || normal);
-    } else {
-        /* the centre pass only when something reads it back */
-        if (rgba || z) {
-            gls_render_pass(r, c, 0.0, 0.0);
-            if (rgba)
-                gls_render_read_rgba(r, rgba);
-            if (z)
-                gls_render_read_z(r, z);
-        }
-        /* ground truth: the centre sample again, one pass for ids, normals
-         * and the depth flow starts from (gt_pass.h), never blended
-         * whatever --aa is */
-        if ((gt_ids || normal) && gls_gt_render(r, c, gt_ids, normal, gt_z, err, sizeof err)) {
-            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
-            goto out;
-        }
-        count_passes(cnt, rgba || z, gt_ids || normal);
-    }
-    if (aa) {
-        if (gls_accum_init(&acc, c->width, c->height, fp.weighted, (fp.outputs & GLS_OUT_EDGE_MAPS) != 0))
-            goto oom;
-        if (cnt) {
-            cnt->bytes[GLS_BUF_ACCUM] += gls_accum_sums_bytes(&acc);
-            cnt->bytes[GLS_BUF_MIXED] += gls_accum_mask_bytes(&acc);
-            cnt->passes[fx ? GLS_PASS_I_EXPOSURE : GLS_PASS_I_SAMPLES]++;
-        }
-        if (fx && lens) {
-            if (gls_distort_exposure_render(r, c, &ex, plan, &df, pose_at, s, band, o->aa_memory, name, &acc, msg,
-                                            sizeof msg))
-                goto out;
-        } else if (fx) {
-            /* motion blur, rolling shutter, depth of field: the plan at
-             * each sub-frame time and lens point (exposure.h) */
-            if (gls_exposure_render(r, c, &ex, plan, pose_at, render_plan, s, &acc, bands, msg, sizeof msg))
-                goto out;
-        } else if (lens) {
-            if (gls_distort_frame_accum(&df, c, plan, &acc))
-                goto oom;
-        } else if (render_plan(s, c, 0, c->height, &acc, msg, sizeof msg)) {
-            goto out;
-        }
-        if (cnt)
-            cnt->accum_samples = acc.samples;
-    }
-    if (fp.image == GLS_IMAGE_SENSOR) {
-        /* sensor effects, asked for by the camera file (sensor.h): on the
-         * linear intensities before quantisation; never on ground truth */
-        img = gls_sensor_image(c, name, frame, aa ? &acc : NULL, rgba, o->image_format);
-        if (!img)
-            goto oom;
-        if (cnt) /* the linear intensities, then the image in its format (sensor_image.h) */
-            cnt->bytes[GLS_BUF_LINEAR] += 12 * (uint64_t)n, cnt->bytes[GLS_BUF_IMAGE] += fp.bytes[GLS_BUF_IMAGE];
-    } else if (fp.image == GLS_IMAGE_CONVERTED) {
-        if (o->image_format == GLS_IMG_PNG16) {
-            img = frame_alloc(cnt, GLS_BUF_IMAGE, n * 3 * sizeof(uint16_t));
-            if (!img)
-                goto oom;
-            if (aa)
-                gls_accum_rgb16(&acc, img);
-            else
-                gls_rgba8_to_rgb16(rgba, n, img);
-        } else if (o->image_format == GLS_IMG_PFM) {
-            img = frame_alloc(cnt, GLS_BUF_IMAGE, n * 3 * sizeof(float));
-            if (!img)
-                goto oom;
-            if (aa)
-                gls_accum_rgbf(&acc, img);
-            else
-                gls_rgba8_to_rgbf(rgba, n, img);
-        } else {
-            img = frame_alloc(cnt, GLS_BUF_IMAGE, n * 4);
-            if (!img)
-                goto oom;
-            gls_accum_rgba8(&acc, img);
-        }
-    }
-    if (fp.outputs & GLS_OUT_EDGE_MAPS) {
-        /* one sample per pixel cannot straddle anything: all zero */
-        mask = calloc(n ? n : 1, 1);
-        if (!mask)
-            goto oom;
-        if (cnt)
-            cnt->bytes[GLS_BUF_EDGES] += n;
-        for (size_t i = 0; aa && i < n; i++)
-            mask[i] = acc.mixed[i] ? 255 : 0;
-    }
-    if (fp.boxes && cnt)
-        cnt->passes[GLS_PASS_I_BOXES_ALONE]++;
-    if (fp.boxes && lens) {
-        if (gls_boxes_compute_lens(r, s->ms->scene, c, &df, gt_ids, &boxes, &nboxes, err, sizeof err)) {
-            snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s", name, err);
-            goto out;
-        }
-    } else if (fp.boxes && gls_boxes_compute(r, s->ms->scene, c, gt_ids, &boxes, &nboxes))
-        goto oom;
-    if (fp.flow && flow_frame(s, c, lens ? &df : NULL, name, frame, bands, gt_ids, gt_z, &flow, &flowmask, msg,
-                              sizeof msg)) {
-        if (msg[0])
-            goto out;
-        goto oom;
-    }
-    /* The files go to the writer (frame_writer.h, frame_files.h), which
-     * encodes and writes them, with its thread while the next frame
-     * renders, and writes the frame record after the last one. */
-    f = gls_frame_files_new();
-    if (!f)
-        goto oom;
-    f->cam = *c;
-    f->name = name;
-    f->frame = frame;
-    f->image_format = o->image_format;
-    f->image_mosaic = c->sensor.bayer[0] != 0;
-    f->float_format = o->float_format;
-    f->fxB = c->fx * s->baseline;
-    f->depth_scale = o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI;
-    f->buffer_bytes = fp.total;
-    f->json = s->json;
-    int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
-                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
-    /* one file a kind at most: files[] has room for every kind */
-    for (size_t k = 0; k < GLS_OUT_KINDS && !too_long; k++)
-        if (fp.outputs & gls_output_kinds[k].bit) {
-            f->files[f->nfiles].bit = gls_output_kinds[k].bit;
-            too_long = output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
-        }
-    if (too_long) {
-        snprintf(msg, sizeof msg, "glsplay: error: output path for camera %s is too long", name);
+    /* rolling shutter: the ground truth of each band of rows at its time
+     * (exposure.h), the bands chosen from this frame's motion; one band,
+     * the whole image, otherwise.  Each band draws its own rows, or the
+     * whole image when a test asks (gls_play_opts' bands_whole) */
+    cf.bands.rows = fp->ex.rolling ? gls_exposure_band_rows(r, c, &fp->ex, pose_at, s) : c->height;
+    cf.bands.whole = o->bands_whole != 0;
+    if ((fp->rgba && !(cf.rgba = frame_alloc(cnt, GLS_BUF_RGBA, n * 4))) ||
+        (fp->z && !(cf.z = frame_alloc(cnt, GLS_BUF_DEPTH, n * sizeof *cf.z))) ||
+        (fp->ids && !(cf.gt_ids = frame_alloc(cnt, GLS_BUF_IDS, n * sizeof *cf.gt_ids))) ||
+        (fp->normals && !(cf.normal = frame_alloc(cnt, GLS_BUF_NORMALS, n * 3 * sizeof *cf.normal))) ||
+        (fp->truth_z && !(cf.gt_z = frame_alloc(cnt, GLS_BUF_TRUTH_DEPTH, n * sizeof *cf.gt_z))))
         goto out;
-    }
-    /* where the landmarks are in this frame: motion moves them */
-    if ((o->outputs & GLS_OUT_LANDMARKS) && !(f->landmarks = gls_landmarks_take(s->scene)))
-        goto oom;
-    /* rolling shutter: each landmark at its band's time, as its rows */
-    if (f->landmarks && band < c->height &&
-        gls_exposure_landmarks(s->scene, c, band, pose_at, s, f->landmarks))
-        goto oom;
-    /* rolling shutter: each row's points through the pose its depth was
-     * drawn with (spec/outputs.md) */
-    if ((o->outputs & GLS_OUT_POINTS) && band < c->height &&
-        !(f->row_pose = gls_exposure_row_poses(c, band, pose_at, s)))
-        goto oom;
-    f->rgba = rgba, f->z = z, f->image = img, f->mask = mask;
-    /* the writer needs the ids only for the id images and tables */
-    f->gt_inst = (o->outputs & GLS_OUT_IDS) ? gt_ids : NULL, f->normal = normal, f->gt = s->gt;
-    f->flow = flow, f->flowmask = flowmask;
-    f->boxes = boxes, f->nboxes = nboxes, f->box_names = s->box_names;
-    if (o->outputs & GLS_OUT_IDS)
-        gt_ids = NULL;
-    rgba = mask = flowmask = NULL, z = flow = normal = NULL, img = NULL, boxes = NULL;
-    gls_write_job *job = &f->job;
-    f = NULL; /* the writer's now, submitted or freed */
-    if (gls_writer_submit(s->w, job, msg, sizeof msg))
+    if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)) ||
+        frame_image(s, c, name, frame, &cf) || frame_boxes_flow(s, c, frame, &cf, msg, sizeof msg) ||
+        frame_submit(s, c, name, frame, &cf, msg, sizeof msg))
         goto out;
     view_done(s);
     rc = 0;
-    goto out;
-oom:
-    gls_frame_oom_message(msg, sizeof msg, name, c->width, c->height, fp.total);
 out:
-    if (rc && msg[0])
+    if (rc && !msg[0])
+        gls_frame_oom_message(msg, sizeof msg, name, c->width, c->height, fp->total);
+    if (rc)
         say_failure(s, msg);
-    if (f)
-        f->job.destroy(&f->job);
-    gls_accum_free(&acc);
-    gls_distort_frame_free(&df);
-    free(rgba);
-    free(z);
-    free(img);
-    free(mask);
-    free(normal);
-    free(flow);
-    free(flowmask);
-    free(gt_ids);
-    free(gt_z);
-    free(boxes);
+    cam_frame_free(&cf);
     return rc;
 }
 
