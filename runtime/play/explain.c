@@ -139,34 +139,10 @@ static void explain_depth_outputs(FILE *out, const gls_play_opts *o, int aa)
             u & GLS_OUT_DEPTH16 ? ")" : "", aa ? "unjittered centre pass" : "pass");
 }
 
-void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
-                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o,
-                 const gls_glctx *ctx)
+/* The files, the state always on, and each feature of the bundle with
+ * the GL state it switches on. */
+static void explain_features(FILE *out, const gls_bundle *b, const gls_scene *s, const gls_play_opts *o)
 {
-    unsigned outputs = o->outputs;
-    gls_aa_opts ao = o->aa;
-    if (ao.n == 0)
-        ao.n = 1;
-    gls_aa_plan p;
-    char err[128];
-    if (gls_aa_plan_init(&p, &ao, err, sizeof err))
-        p.count = 1, p.o = ao, p.o.n = 1;
-    /* the anti-aliasing pattern, when --aa asks for one and an output is
-     * drawn with it; whether a camera's frame uses an accumulator is its
-     * frame plan's (below: exposure effects need one even at --aa 1) */
-    int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
-    int centre = !aa || (outputs & GLS_OUT_FROM_Z);
-    int npy = o->float_format == GLS_FLOAT_NPY;
-    static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
-    fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
-            b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
-    fprintf(out, "geometry: %u unique triangles in %u chunks (cells of %g units, double anchors), %u state batches",
-            s->nverts / 3, s->nchunks, GLS_SCENE_CELL, s->nbatches);
-    if (s->dropped)
-        fprintf(out, ", %llu triangles dropped (a vertex beyond 2^50 units from the origin, or at infinity)", (unsigned long long)s->dropped);
-    fprintf(out, "\n");
-    explain_instances(out, s, cams, names, n, o);
-    explain_backend(out, o, ctx);
     if (o->writer_threads)
         fprintf(out, "files: PNG by %s; each frame's files encoded and written on a thread of their own while the "
                      "next frame renders (--writer-threads 1), at most %d frames pending\n",
@@ -198,7 +174,15 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                              "on llvmpipe)\n", "");
         }
     }
-    if (aa) {
+}
+
+/* The anti-aliasing pattern, when --aa asks for one and an output is
+ * drawn with it (whether a camera's frame uses an accumulator is its
+ * frame plan's: exposure effects need one even at --aa 1). */
+static void explain_aa(FILE *out, const gls_aa_plan *pp, const gls_play_opts *o, int centre)
+{
+    const gls_aa_plan p = *pp;
+    {
         if (p.o.n)
             fprintf(out, "anti-aliasing: %ux%u = %llu samples per pixel, %s filter", p.o.n, p.o.n,
                     (unsigned long long)p.m, p.o.filter == GLS_AA_BOX ? "box" : "Gaussian");
@@ -237,119 +221,175 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
                          "one read-back of colour only)%s\n",
                     o->aa_tiles ? "a fixed number" : "several", centre ? "; plus 1 unjittered pass for depth/points" : "");
     }
+}
+
+/* Camera c: its model and pose, its effects, its frame plan, and what its
+ * passes read back and its files hold. */
+/* Camera c's anti-aliasing: the fine framebuffer's passes and tiles, or
+ * the jittered passes' mosaic, and what each reads back. */
+static void explain_camera_aa(FILE *out, const gls_camera *c, const gls_play_opts *o, const gls_aa_plan *pp, int aa)
+{
+    const gls_aa_plan p = *pp;
+    char err[128];
+    gls_aa_fine_layout lay;
+    gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
+    if (aa && p.count > 1 && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
+        char mem[32], budget[32];
+        gls_fmt_bytes(mem, sizeof mem, lay.bytes);
+        gls_fmt_bytes(budget, sizeof budget, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
+        fprintf(out, "  anti-aliasing: %llu pass%s of %llu sample%s per pixel; fine framebuffer %lldx%lld "
+                     "(A = [%lld %lld; %lld %lld]: image pixel (1, 0) -> (%lld, %lld) fine pixels)\n",
+                (unsigned long long)lay.f.k, lay.f.k == 1 ? "" : "es", (unsigned long long)lay.f.l,
+                lay.f.l == 1 ? "" : "s",
+                (long long)lay.fw, (long long)lay.fh, (long long)lay.f.a[0][0], (long long)lay.f.a[0][1],
+                (long long)lay.f.a[1][0], (long long)lay.f.a[1][1], (long long)lay.f.a[0][0],
+                (long long)lay.f.a[1][0]);
+        fprintf(out, "  tiles: %llu per pass of %ux%u (at most; those no pixel needs are skipped), %s of "
+                     "framebuffer and read-backs (--aa-memory %s); %llu gather entries per pixel and pass\n",
+                (unsigned long long)lay.tiles, lay.tw, lay.th, mem, budget, (unsigned long long)lay.kernel);
+        fprintf(out, "  reads back: colour (RGBA8) per tile\n");
+    } else if (aa && p.count > 1) {
+        uint32_t kx, ky;
+        gls_aa_mosaic_shape(NULL, c->width, c->height, p.count, o->aa_tiles, &kx, &ky);
+        fprintf(out, "  anti-aliasing: %llu samples in %llu passes of %ux%u tiles (%ux%u framebuffer)\n",
+                (unsigned long long)p.count, (unsigned long long)((p.count + kx * ky - 1) / (kx * ky)), kx, ky,
+                kx * c->width, ky * c->height);
+        fprintf(out, "  reads back: colour (RGBA8) per anti-aliasing pass\n");
+    }
+}
+
+/* What camera c's passes read back and its files hold. */
+static void explain_camera_writes(FILE *out, const gls_scene *s, const gls_camera *c, const gls_play_opts *o,
+                                  const gls_frame_plan *fpp, int aa, int centre)
+{
+    const gls_frame_plan fp = *fpp;
+    unsigned outputs = o->outputs;
+    int npy = o->float_format == GLS_FLOAT_NPY;
+    static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
+    if (centre)
+        fprintf(out, "  reads back%s: %s%s\n", aa ? " (unjittered centre pass)" : "",
+                fp.rgba ? "colour (RGBA8) " : "", fp.z ? "depth (float32) " : "");
+    fprintf(out, "  writes:%s%s%s%s%s\n", outputs & GLS_OUT_IMAGE ? " image (" : "",
+            outputs & GLS_OUT_IMAGE ? (npy && o->image_format == GLS_IMG_PFM ? "float32 NPY (H, W, 3)"
+                                                                             : fmt_name[o->image_format])
+                                    : "",
+            outputs & GLS_OUT_IMAGE ? ")" : "",
+            outputs & GLS_OUT_DEPTH ? (npy ? " depth (NPY, Zc)" : " depth (PFM, Zc)") : "",
+            outputs & GLS_OUT_POINTS ? " points (PLY, world, double)" : "");
+    if (outputs & GLS_OUT_EDGE_MAPS)
+        fprintf(out, "  writes: %s (8-bit PNG, 255 where the samples of a pixel differ)\n",
+                outputs & GLS_OUT_EDGES ? "edges" : "mask");
+    explain_depth_outputs(out, o, aa);
+    gls_sensor_explain(out, &c->sensor, (uint64_t)c->width * c->height, (outputs & GLS_OUT_IMAGE) != 0);
+    if (outputs & GLS_OUT_LANDMARKS)
+        fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
+                !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"
+                                                                     : "one extra unjittered pass (--aa)");
+    if (outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) {
+        int ids = (outputs & (GLS_OUT_IDS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) != 0;
+        fprintf(out, "  ground truth: one extra pass (%s%s%s%s)\n", ids ? "instance ids" : "",
+                ids && (outputs & GLS_OUT_NORMALS) ? ", " : "", outputs & GLS_OUT_NORMALS ? "normals" : "",
+                outputs & GLS_OUT_FLOW_ALL ? ", depth of frame t" : "");
+    }
+    if (outputs & GLS_OUT_FLOW_ALL)
+        fprintf(out, "  flow: 1 more centre pass (the depth of frame t+1 with its poses); writes flow (KITTI "
+                     "PNG), .flo, flowmask (PNG)\n");
+    if (outputs & GLS_OUT_BOXES_ALL)
+        fprintf(out, "  boxes: the ground-truth pass's instance ids and one pass per visible instance drawn "
+                     "alone (its occlusion); writes boxes (KITTI labels, JSON)\n");
+    if (gls_distort_on(c) && (outputs & GLS_OUT_FLOW_ALL))
+        fprintf(out, "  lens: flow: the depth of frame t+1 drawn by the fine camera and read at each pixel "
+                     "centre's ray; points projected by the %s model\n", gls_distort_model_name(&c->dist));
+    if (gls_distort_on(c) && (outputs & GLS_OUT_BOXES_ALL))
+        fprintf(out, "  lens: boxes: each instance drawn alone by the fine camera and read at each pixel "
+                     "centre's ray; truncated from %d points an edge through the %s model\n",
+                GLS_LENS_BOX_EDGE_STEPS + 1, gls_distort_model_name(&c->dist));
+    if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && fp.ex.rolling)
+        fprintf(out, "  rolling shutter: %s%s%s\n",
+                outputs & GLS_OUT_FLOW_ALL ? "flow from each row's time to the row of frame t+1 whose time sees "
+                                             "the point (a fixed point, the poses of every row of frame t+1), the "
+                                             "depth of frame t+1 in its bands of rows"
+                                           : "",
+                (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
+                outputs & GLS_OUT_BOXES_ALL ? "boxes' 2D boxes from the rolling instance image, their 3D boxes "
+                                              "and occlusion passes at the frame time"
+                                            : "");
+    if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_distort_on(c) &&
+        fp.ex.rolling)
+        fprintf(out, "  lens with the rolling shutter: %s%s%s\n",
+                outputs & GLS_OUT_FLOW_ALL ? "flow: each pixel's point on its centre's ray at its band's depth, "
+                                             "the row of frame t+1 whose time sees it through the model at every "
+                                             "row's pose, the depth of frame t+1 from one more ground-truth pass of "
+                                             "the whole fine image per band, read at the pixel centres' rays"
+                                           : "",
+                (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
+                outputs & GLS_OUT_BOXES_ALL ? "boxes: 2D boxes from the rolling instance image through the lens, "
+                                              "truncation and occlusion through the model at the frame time"
+                                            : "");
+}
+
+static void explain_camera(FILE *out, const gls_scene *s, const gls_camera *c, const char *name,
+                           const gls_play_opts *o, const gls_aa_plan *pp)
+{
+    const gls_aa_plan p = *pp;
+    unsigned outputs = o->outputs;
+    int moving = o->trajectory || o->nmotions;
+    gls_plan_inputs pin = {outputs, o->image_format, &p, moving};
+    /* the first frame's plan, the one the player runs (frame_plan.h);
+     * with a trajectory, taken to have a next row (flow) */
+    gls_frame_plan fp;
+    gls_frame_plan_make(&fp, &pin, c, o->trajectory != NULL);
+    int aa = fp.aa, centre = (fp.passes & GLS_PASS_CENTRE) != 0;
+    fprintf(out, "camera %s: %ux%u fx %g fy %g cx %g cy %g skew %g near %g far %g\n", name, c->width,
+            c->height, c->fx, c->fy, c->cx, c->cy, c->skew, c->near, c->far);
+    /* the frame R and T are in: declared by the file, or implied by
+       --trajectory (spec/camera.md "The pose's frame") */
+    if (o->trajectory)
+        fprintf(out, "  pose: rig (%s): R and T map the rig into the camera, composed with each frame of %s\n",
+                c->pose == GLS_POSE_RIG ? "declared by 'pose rig'" : "not declared; implied by --trajectory",
+                o->trajectory);
+    else
+        fprintf(out, "  pose: world (%s): R and T map the world into the camera\n",
+                c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
+    gls_distort_explain(out, c, &p);
+    gls_exposure_explain(out, c, moving, &p, fp.effects);
+    if (fp.effects)
+        gls_distort_exposure_explain(out, c, moving, &p);
+    gls_frame_plan_explain(out, &fp, &p);
+    explain_camera_aa(out, c, o, &p, aa);
+    explain_camera_writes(out, s, c, o, &fp, aa, centre);
+}
+
+void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
+                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o,
+                 const gls_glctx *ctx)
+{
+    unsigned outputs = o->outputs;
+    gls_aa_opts ao = o->aa;
+    if (ao.n == 0)
+        ao.n = 1;
+    gls_aa_plan p;
+    char err[128];
+    if (gls_aa_plan_init(&p, &ao, err, sizeof err))
+        p.count = 1, p.o = ao, p.o.n = 1;
+    int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
+    int centre = !aa || (outputs & GLS_OUT_FROM_Z);
+    fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
+            b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
+    fprintf(out, "geometry: %u unique triangles in %u chunks (cells of %g units, double anchors), %u state batches",
+            s->nverts / 3, s->nchunks, GLS_SCENE_CELL, s->nbatches);
+    if (s->dropped)
+        fprintf(out, ", %llu triangles dropped (a vertex beyond 2^50 units from the origin, or at infinity)", (unsigned long long)s->dropped);
+    fprintf(out, "\n");
+    explain_instances(out, s, cams, names, n, o);
+    explain_backend(out, o, ctx);
+    explain_features(out, b, s, o);
+    if (aa)
+        explain_aa(out, &p, o, centre);
     if (!n) {
         fprintf(out, "cameras: none given\n");
         return;
     }
-    int moving = o->trajectory || o->nmotions;
-    gls_plan_inputs pin = {outputs, o->image_format, &p, moving};
-    for (size_t i = 0; i < n; i++) {
-        const gls_camera *c = &cams[i];
-        /* the first frame's plan, the one the player runs (frame_plan.h);
-         * with a trajectory, taken to have a next row (flow) */
-        gls_frame_plan fp;
-        gls_frame_plan_make(&fp, &pin, c, o->trajectory != NULL);
-        int aa = fp.aa, centre = (fp.passes & GLS_PASS_CENTRE) != 0;
-        fprintf(out, "camera %s: %ux%u fx %g fy %g cx %g cy %g skew %g near %g far %g\n", names[i], c->width,
-                c->height, c->fx, c->fy, c->cx, c->cy, c->skew, c->near, c->far);
-        /* the frame R and T are in: declared by the file, or implied by
-           --trajectory (spec/camera.md "The pose's frame") */
-        if (o->trajectory)
-            fprintf(out, "  pose: rig (%s): R and T map the rig into the camera, composed with each frame of %s\n",
-                    c->pose == GLS_POSE_RIG ? "declared by 'pose rig'" : "not declared; implied by --trajectory",
-                    o->trajectory);
-        else
-            fprintf(out, "  pose: world (%s): R and T map the world into the camera\n",
-                    c->pose == GLS_POSE_WORLD ? "declared by 'pose world'" : "not declared; the default without --trajectory");
-        gls_distort_explain(out, c, &p);
-        gls_exposure_explain(out, c, moving, &p, fp.effects);
-        if (fp.effects)
-            gls_distort_exposure_explain(out, c, moving, &p);
-        gls_frame_plan_explain(out, &fp, &p);
-        gls_aa_fine_layout lay;
-        gls_aa_fine_opts fo = {o->aa_memory, 0, 0, NULL, NULL, NULL, NULL};
-        if (aa && p.count > 1 && gls_aa_fine_ok(&p) && gls_aa_fine_plan(&p, c->width, c->height, 0, &fo, &lay, err, sizeof err) == 0) {
-            char mem[32], budget[32];
-            gls_fmt_bytes(mem, sizeof mem, lay.bytes);
-            gls_fmt_bytes(budget, sizeof budget, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
-            fprintf(out, "  anti-aliasing: %llu pass%s of %llu sample%s per pixel; fine framebuffer %lldx%lld "
-                         "(A = [%lld %lld; %lld %lld]: image pixel (1, 0) -> (%lld, %lld) fine pixels)\n",
-                    (unsigned long long)lay.f.k, lay.f.k == 1 ? "" : "es", (unsigned long long)lay.f.l,
-                    lay.f.l == 1 ? "" : "s",
-                    (long long)lay.fw, (long long)lay.fh, (long long)lay.f.a[0][0], (long long)lay.f.a[0][1],
-                    (long long)lay.f.a[1][0], (long long)lay.f.a[1][1], (long long)lay.f.a[0][0],
-                    (long long)lay.f.a[1][0]);
-            fprintf(out, "  tiles: %llu per pass of %ux%u (at most; those no pixel needs are skipped), %s of "
-                         "framebuffer and read-backs (--aa-memory %s); %llu gather entries per pixel and pass\n",
-                    (unsigned long long)lay.tiles, lay.tw, lay.th, mem, budget, (unsigned long long)lay.kernel);
-            fprintf(out, "  reads back: colour (RGBA8) per tile\n");
-        } else if (aa && p.count > 1) {
-            uint32_t kx, ky;
-            gls_aa_mosaic_shape(NULL, c->width, c->height, p.count, o->aa_tiles, &kx, &ky);
-            fprintf(out, "  anti-aliasing: %llu samples in %llu passes of %ux%u tiles (%ux%u framebuffer)\n",
-                    (unsigned long long)p.count, (unsigned long long)((p.count + kx * ky - 1) / (kx * ky)), kx, ky,
-                    kx * c->width, ky * c->height);
-            fprintf(out, "  reads back: colour (RGBA8) per anti-aliasing pass\n");
-        }
-        if (centre)
-            fprintf(out, "  reads back%s: %s%s\n", aa ? " (unjittered centre pass)" : "",
-                    fp.rgba ? "colour (RGBA8) " : "", fp.z ? "depth (float32) " : "");
-        fprintf(out, "  writes:%s%s%s%s%s\n", outputs & GLS_OUT_IMAGE ? " image (" : "",
-                outputs & GLS_OUT_IMAGE ? (npy && o->image_format == GLS_IMG_PFM ? "float32 NPY (H, W, 3)"
-                                                                                 : fmt_name[o->image_format])
-                                        : "",
-                outputs & GLS_OUT_IMAGE ? ")" : "",
-                outputs & GLS_OUT_DEPTH ? (npy ? " depth (NPY, Zc)" : " depth (PFM, Zc)") : "",
-                outputs & GLS_OUT_POINTS ? " points (PLY, world, double)" : "");
-        if (outputs & GLS_OUT_EDGE_MAPS)
-            fprintf(out, "  writes: %s (8-bit PNG, 255 where the samples of a pixel differ)\n",
-                    outputs & GLS_OUT_EDGES ? "edges" : "mask");
-        explain_depth_outputs(out, o, aa);
-        gls_sensor_explain(out, &c->sensor, (uint64_t)c->width * c->height, (outputs & GLS_OUT_IMAGE) != 0);
-        if (outputs & GLS_OUT_LANDMARKS)
-            fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
-                    !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"
-                                                                         : "one extra unjittered pass (--aa)");
-        if (outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) {
-            int ids = (outputs & (GLS_OUT_IDS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) != 0;
-            fprintf(out, "  ground truth: one extra pass (%s%s%s%s)\n", ids ? "instance ids" : "",
-                    ids && (outputs & GLS_OUT_NORMALS) ? ", " : "", outputs & GLS_OUT_NORMALS ? "normals" : "",
-                    outputs & GLS_OUT_FLOW_ALL ? ", depth of frame t" : "");
-        }
-        if (outputs & GLS_OUT_FLOW_ALL)
-            fprintf(out, "  flow: 1 more centre pass (the depth of frame t+1 with its poses); writes flow (KITTI "
-                         "PNG), .flo, flowmask (PNG)\n");
-        if (outputs & GLS_OUT_BOXES_ALL)
-            fprintf(out, "  boxes: the ground-truth pass's instance ids and one pass per visible instance drawn "
-                         "alone (its occlusion); writes boxes (KITTI labels, JSON)\n");
-        if (gls_distort_on(c) && (outputs & GLS_OUT_FLOW_ALL))
-            fprintf(out, "  lens: flow: the depth of frame t+1 drawn by the fine camera and read at each pixel "
-                         "centre's ray; points projected by the %s model\n", gls_distort_model_name(&c->dist));
-        if (gls_distort_on(c) && (outputs & GLS_OUT_BOXES_ALL))
-            fprintf(out, "  lens: boxes: each instance drawn alone by the fine camera and read at each pixel "
-                         "centre's ray; truncated from %d points an edge through the %s model\n",
-                    GLS_LENS_BOX_EDGE_STEPS + 1, gls_distort_model_name(&c->dist));
-        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && fp.ex.rolling)
-            fprintf(out, "  rolling shutter: %s%s%s\n",
-                    outputs & GLS_OUT_FLOW_ALL ? "flow from each row's time to the row of frame t+1 whose time sees "
-                                                 "the point (a fixed point, the poses of every row of frame t+1), the "
-                                                 "depth of frame t+1 in its bands of rows"
-                                               : "",
-                    (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
-                    outputs & GLS_OUT_BOXES_ALL ? "boxes' 2D boxes from the rolling instance image, their 3D boxes "
-                                                  "and occlusion passes at the frame time"
-                                                : "");
-        if ((outputs & (GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) && gls_distort_on(c) &&
-            fp.ex.rolling)
-            fprintf(out, "  lens with the rolling shutter: %s%s%s\n",
-                    outputs & GLS_OUT_FLOW_ALL ? "flow: each pixel's point on its centre's ray at its band's depth, "
-                                                 "the row of frame t+1 whose time sees it through the model at every "
-                                                 "row's pose, the depth of frame t+1 from one more ground-truth pass of "
-                                                 "the whole fine image per band, read at the pixel centres' rays"
-                                               : "",
-                    (outputs & GLS_OUT_FLOW_ALL) && (outputs & GLS_OUT_BOXES_ALL) ? "; " : "",
-                    outputs & GLS_OUT_BOXES_ALL ? "boxes: 2D boxes from the rolling instance image through the lens, "
-                                                  "truncation and occlusion through the model at the frame time"
-                                                : "");
-    }
+    for (size_t i = 0; i < n; i++)
+        explain_camera(out, s, &cams[i], names[i], o, &p);
 }
