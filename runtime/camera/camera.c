@@ -381,7 +381,7 @@ int gls_camera_from_keys(gls_camera_keys *keys, const char *const *names, const 
     cam->far = val[K_FAR][0];
     cam->pose = pose;
     if (lens_from_keys(keys, names, text, len, fname, cam, err, errlen) ||
-        gls_camera_effect_keys(keys, names, text, len, fname, cam, err, errlen))
+        gls_camera_exposure_keys(keys, names, text, len, fname, cam, err, errlen))
         return -1;
     cam->sensor = gls_sensor_none();
     /* notes only for a file that is accepted */

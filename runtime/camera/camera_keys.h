@@ -39,9 +39,9 @@ typedef struct {
 int gls_camera_from_keys(gls_camera_keys *k, const char *const *names, const char *text, size_t len,
                          const char *fname, gls_pose use, FILE *notes, gls_camera *cam, char *err, size_t errlen);
 
-/* The effect keys (camera_effects.c): checked, and set in cam (zeros:
+/* The effect keys (camera_exposure.c): checked, and set in cam (zeros:
  * off).  0, or -1 with the located message in err. */
-int gls_camera_effect_keys(const gls_camera_keys *k, const char *const *names, const char *text, size_t len,
+int gls_camera_exposure_keys(const gls_camera_keys *k, const char *const *names, const char *text, size_t len,
                            const char *fname, gls_camera *cam, char *err, size_t errlen);
 
 /* A camera given as OpenCV FileStorage YAML (camera_opencv.c): the text

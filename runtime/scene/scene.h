@@ -60,11 +60,11 @@ typedef struct {
     uint32_t first, count; /* vertex range in gls_scene.verts             */
 } gls_chunk;
 
-/* A box in a proto's frame (scene_boxes.c). */
+/* A box in a proto's frame (scene_test_boxes.c). */
 typedef struct {
     double lo[3], hi[3];
 } gls_tbox;
-/* Test boxes a proto has at most (scene_boxes.c). */
+/* Test boxes a proto has at most (scene_test_boxes.c). */
 #define GLS_PROTO_TEST_BOXES 8
 /* Geometry of one object entered with one drawing state. */
 typedef struct {
@@ -74,7 +74,7 @@ typedef struct {
     double lo[3], hi[3];   /* bounding box in the proto's frame (double)   */
     uint32_t first_tbox, ntboxes; /* its test boxes in gls_scene.tboxes:
                               their union holds its triangles, more
-                              tightly than lo..hi (scene_boxes.c)         */
+                              tightly than lo..hi (scene_test_boxes.c)         */
     /* build only: the drawing state it was entered with (texture and
      * mode as they were, not normalised: an object that selects a
      * texture itself draws it in the mode it inherits), next proto of
@@ -228,7 +228,7 @@ void gls_scene_update(gls_scene *s);
  * world transform (motion included) applied, divided by w, in double. */
 void gls_scene_mark_world(const gls_scene *s, uint32_t k, double X[3]);
 
-/* The protos' test boxes (scene_boxes.c), once chunks are packed.  0,
+/* The protos' test boxes (scene_test_boxes.c), once chunks are packed.  0,
  * or -1 when out of memory. */
 int gls_scene_test_boxes(gls_scene *s);
 /* Memory: unique geometry (vertices, exact positions, chunks, protos) and

@@ -7,7 +7,7 @@
 #include "numfmt.h"
 #include "srcline.h"
 
-int gls_camera_effect_keys(const gls_camera_keys *k, const char *const *names, const char *text, size_t len,
+int gls_camera_exposure_keys(const gls_camera_keys *k, const char *const *names, const char *text, size_t len,
                            const char *fname, gls_camera *cam, char *err, size_t errlen)
 {
     const unsigned *seen = k->seen, *vcol = k->vcol;
