@@ -37,12 +37,7 @@ static const char *const dist_name[14] = {"k1", "k2", "p1", "p2", "k3", "k4", "k
                                           "k6", "s1", "s2", "s3", "s4", "tx", "ty"};
 #define MAXDATA 16
 
-typedef struct {
-    const char *text, *fname;
-    size_t len;
-    char *err;
-    size_t errlen;
-} src;
+typedef gls_camera_src src;
 
 static int fail(const src *s, unsigned line, unsigned col, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
 static int fail(const src *s, unsigned line, unsigned col, const char *fmt, ...)
