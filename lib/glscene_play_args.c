@@ -355,12 +355,13 @@ static int take_motion(glscene_play *r, const option *op, const char *a, const c
 static int take_progress(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)
 {
     (void)op;
-    const char *w = a[10] == '=' ? a + 11 : progress_word(next) ? next : NULL;
+    int takes_next = a[10] != '=' && progress_word(next);
+    const char *w = a[10] == '=' ? a + 11 : takes_next ? next : NULL;
     int i = w ? choose(r, e, "--progress", w, progress_words, 2) : 0;
     if (i < 0)
         return -1;
     r->o.progress = i == 1 ? GLS_PROGRESS_JSON : GLS_PROGRESS_BAR;
-    return w == next ? 2 : 1;
+    return takes_next ? 2 : 1;
 }
 
 static int take_shard(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)
