@@ -256,7 +256,7 @@ $(B)/glsc: $(B)/compiler/glsc_main.o $(LIB_compiler)
 $(B)/glsdis: $(B)/compiler/glsdis_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 # glsplay is its main over libglscene.a's public API (glscene_play_*,
-# lib/glscene_play.c; tests/e2e/glsplay_public_api.sh); base for the
+# lib/glscene_play*.c; tests/e2e/glsplay_public_api.sh); base for the
 # tools' usage and standard output helpers, which the library leaves out.
 $(B)/glsplay: $(B)/apps/glsplay_main.o $(B)/libglscene.a $(LIB_base)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)

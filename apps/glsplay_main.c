@@ -1,7 +1,8 @@
 /* glsplay: render a compiled glscene bundle through OpenCV pinhole
  * cameras.  Its help text and the library's public API only: each
  * argument goes to glscene_play_arg, and glscene_play_run does the work
- * (lib/glscene_play.c, docs/api.md "How glsplay uses it"). */
+ * (lib/glscene_play.c, its options lib/glscene_play_args.c; docs/api.md
+ * "How glsplay uses it"). */
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>

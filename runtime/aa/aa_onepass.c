@@ -1,4 +1,12 @@
-/* One-pass anti-aliasing (aa_onepass.h, spec/antialiasing.md "One pass"). */
+/* One-pass anti-aliasing (aa_onepass.h, spec/antialiasing.md "One pass").
+ *
+ * Over 500 lines because its three parts work on one private pair of
+ * types, the pass's kernel and the gather's context: the kernel (each
+ * pass's fine offsets and weights, sorted into runs), the gather that
+ * sums a read-back tile through it into the accumulator, and the tile
+ * loop that decides from the kernel which tiles, pixels and chunks a pass
+ * draws.  Apart, the kernel would need a header only these two files
+ * read. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -402,134 +410,185 @@ int gls_aa_render_fine(gls_renderer *r, const gls_camera *c, const gls_aa_plan *
     return gls_aa_render_fine_rows(r, c, p, fo, 0, c->height, acc, st, err, errlen);
 }
 
+/* What the passes of one render share: the camera, the plan and the
+ * layout, the rows asked for, the tile buffers (two: a tile is read back
+ * into one while the previous tile, in the other, is gathered), the
+ * chunks' bounds and which are drawn, the pass's kernel and its gather
+ * offsets, and the stats and progress. */
+typedef struct {
+    gls_renderer *r;
+    const gls_camera *c;
+    const gls_aa_plan *p;
+    const gls_aa_fine_opts *fo;
+    const gls_aa_fine *f;
+    uint32_t W, H, tw, th, v0, v1, nch;
+    gls_accum *acc;
+    double (*cb)[4];
+    uint8_t *vis, *buf[2], *seen;
+    kernel k;
+    int64_t *off, *run_off;
+    uint32_t *run_len;
+    gls_aa_fine_stats s;
+    uint64_t total, done; /* tiles, for the progress line */
+    double t0, last;
+} fine_run;
+
+/* Pass `pass`'s kernel (and its shift) and the gather's offsets of it,
+ * replacing the previous pass's. */
+static int pass_kernel(fine_run *u, uint64_t pass, int64_t shift[2], char *err, size_t errlen)
+{
+    kernel_free(&u->k);
+    free(u->off), free(u->run_off), free(u->run_len);
+    u->off = u->run_off = NULL, u->run_len = NULL;
+    kernel *k = &u->k;
+    if (kernel_make(u->f, pass, k, shift) || !(u->off = malloc((k->n ? k->n : 1) * sizeof *u->off)) ||
+        !(u->run_off = malloc((k->n ? k->n : 1) * sizeof *u->run_off)) ||
+        !(u->run_len = malloc((k->n ? k->n : 1) * sizeof *u->run_len))) {
+        snprintf(err, errlen, "out of memory for the gather of %llu samples", (unsigned long long)u->f->l);
+        return -1;
+    }
+    for (uint64_t e = 0; e < k->n; e++)
+        u->off[e] = (k->c[e][1] * (int64_t)u->tw + k->c[e][0]) * 4;
+    return 0;
+}
+
+/* One pass's tiles: each drawn with the chunks that can reach its pixels'
+ * samples and read back, while the tile before it is gathered.  The loop
+ * stays whole because that pipeline (the buffer drawn into, the one
+ * pending with its pixel range and origin) is carried from one tile to
+ * the next. */
+static void run_pass(fine_run *u, const int64_t shift[2])
+{
+    const gls_aa_fine *f = u->f;
+    const kernel *k = &u->k;
+    gls_aa_fine_stats *s = &u->s;
+    uint32_t W = u->W, H = u->H, tw = u->tw, th = u->th, v0 = u->v0, v1 = u->v1;
+    gather_ctx g = {f, k, u->off, u->acc, u->seen, u->run_off, u->run_len,
+                    kernel_runs(k, u->off, u->run_off, u->run_len)};
+    /* the tiles cover this pass's own fine bounding box (the layout's
+     * is an estimate for --explain and the progress line) */
+    int64_t x0, y0, x1, y1;
+    fine_box(f, W, H, k->lo, k->hi, &x0, &y0, &x1, &y1);
+    uint64_t tx = (uint64_t)((x1 - x0 + tw - 1) / tw), ty = (uint64_t)((y1 - y0 + th - 1) / th);
+    if (u->done + tx * ty > u->total)
+        u->total = u->done + tx * ty;
+    int pending = 0;
+    int64_t pr[4] = {0, 0, 0, 0}, pX = 0, pY = 0;
+    int cur = 0;
+    for (uint64_t t = 0; t < tx * ty; t++) {
+        int64_t X0 = x0 + (int64_t)(t % tx) * tw, Y0 = y0 + (int64_t)(t / tx) * th;
+        int64_t rng[4];
+        u->done++;
+        /* the pixels of rows v0..v1-1 whose samples the tile holds */
+        if (!pixel_range(f, k, X0, Y0, X0 + tw, Y0 + th, W, H, rng) || rng[3] < (int64_t)v0 ||
+            rng[2] > (int64_t)v1 - 1) {
+            s->tiles_skipped++;
+            continue;
+        }
+        rng[2] = rng[2] < (int64_t)v0 ? (int64_t)v0 : rng[2];
+        rng[3] = rng[3] > (int64_t)v1 - 1 ? (int64_t)v1 - 1 : rng[3];
+        /* geometry that can reach the samples of those pixels: their
+         * squares, the Gaussian's cells, a pixel of margin */
+        double R = (double)(gls_aa_weighted(u->p) ? u->p->radius : 0) + 1.5;
+        double iu0 = (double)rng[0] - R, iu1 = (double)rng[1] + R, iv0 = (double)rng[2] - R, iv1 = (double)rng[3] + R;
+        for (uint32_t i = 0; i < u->nch; i++) {
+            double *cb = u->cb[i];
+            u->vis[i] = !(cb[2] < iu0 || cb[0] > iu1 || cb[3] < iv0 || cb[1] > iv1);
+            s->chunks_drawn += u->vis[i];
+        }
+        double m[6];
+        uint32_t sc[4];
+        if (!tile_scissor(f, W, v0, v1, R + 1, X0, Y0, tw, th, sc)) {
+            s->tiles_skipped++;
+            continue;
+        }
+        gls_aa_fine_map(f, shift, X0, Y0, m);
+        double ta = gls_now();
+        gls_render_mapped(u->r, u->c, m, tw, th, sc, u->vis);
+        gls_render_flush(u->r);
+        double tb = gls_now();
+        s->draw_s += tb - ta;
+        if (pending)
+            gather(&g, u->buf[cur ^ 1], pX, pY, tw, th, pr[0], pr[1], pr[2], pr[3]);
+        double tc = gls_now();
+        s->gather_s += tc - tb;
+        gls_render_read_rect(u->r, tw, sc, u->buf[cur]);
+        s->read_s += gls_now() - tc;
+        memcpy(pr, rng, sizeof pr);
+        pX = X0, pY = Y0;
+        pending = 1;
+        cur ^= 1;
+        s->tiles_drawn++;
+        gls_progress_steps(u->fo->progress, u->fo->label, "tiles", u->done, u->total, u->t0, &u->last, 0);
+        if (u->fo->on_pass)
+            u->fo->on_pass(u->fo->ctx, u->done, u->total, gls_now() - u->t0);
+    }
+    if (pending) {
+        double tc = gls_now();
+        gather(&g, u->buf[cur ^ 1], pX, pY, tw, th, pr[0], pr[1], pr[2], pr[3]);
+        s->gather_s += gls_now() - tc;
+    }
+}
+
+static void run_free(fine_run *u)
+{
+    kernel_free(&u->k);
+    free(u->off), free(u->run_off), free(u->run_len);
+    free(u->cb);
+    free(u->vis);
+    free(u->buf[0]);
+    free(u->buf[1]);
+    free(u->seen);
+}
+
 int gls_aa_render_fine_rows(gls_renderer *r, const gls_camera *c, const gls_aa_plan *p, const gls_aa_fine_opts *fo_in,
                             uint32_t v0, uint32_t v1, gls_accum *acc, gls_aa_fine_stats *st, char *err, size_t errlen)
 {
     gls_aa_fine_opts fo0;
     memset(&fo0, 0, sizeof fo0);
-    const gls_aa_fine_opts *fo = fo_in ? fo_in : &fo0;
-    gls_aa_fine_stats s;
-    memset(&s, 0, sizeof s);
-    uint32_t W = c->width, H = c->height;
-    double t0 = gls_now(), last = t0;
-    if (gls_aa_fine_plan(p, W, H, gls_renderer_max_dim(r), fo, &s.lay, err, errlen))
+    fine_run u;
+    memset(&u, 0, sizeof u);
+    u.r = r, u.c = c, u.p = p, u.fo = fo_in ? fo_in : &fo0, u.acc = acc;
+    u.W = c->width, u.H = c->height, u.v0 = v0, u.v1 = v1;
+    gls_aa_fine_stats *s = &u.s;
+    u.t0 = u.last = gls_now();
+    if (gls_aa_fine_plan(p, u.W, u.H, gls_renderer_max_dim(r), u.fo, &s->lay, err, errlen))
         return -1;
-    const gls_aa_fine *f = &s.lay.f;
-    uint32_t tw = s.lay.tw, th = s.lay.th;
+    u.f = &s->lay.f;
+    uint32_t tw = u.tw = s->lay.tw, th = u.th = s->lay.th;
     int rc = -1;
-    uint32_t nch = gls_renderer_nchunks(r);
-    double(*cb)[4] = malloc((nch ? nch : 1) * sizeof *cb);
-    uint8_t *vis = malloc(nch ? nch : 1);
-    uint8_t *buf[2] = {malloc((size_t)tw * th * 4), malloc((size_t)tw * th * 4)};
-    uint8_t *seen = acc->mixed ? calloc((size_t)W * H, 1) : NULL;
-    kernel k;
-    memset(&k, 0, sizeof k);
-    int64_t *off = NULL, *run_off = NULL;
-    uint32_t *run_len = NULL;
-    if (!cb || !vis || !buf[0] || !buf[1] || (acc->mixed && !seen)) {
+    uint32_t nch = u.nch = gls_renderer_nchunks(r);
+    u.cb = malloc((nch ? nch : 1) * sizeof *u.cb);
+    u.vis = malloc(nch ? nch : 1);
+    u.buf[0] = malloc((size_t)tw * th * 4), u.buf[1] = malloc((size_t)tw * th * 4);
+    u.seen = acc->mixed ? calloc((size_t)u.W * u.H, 1) : NULL;
+    if (!u.cb || !u.vis || !u.buf[0] || !u.buf[1] || (acc->mixed && !u.seen)) {
         char need[32];
-        gls_fmt_bytes(need, sizeof need, s.lay.bytes);
+        gls_fmt_bytes(need, sizeof need, s->lay.bytes);
         snprintf(err, errlen, "out of memory for %ux%u anti-aliasing tiles (%s; lower --aa-memory)", tw, th, need);
         goto out;
     }
     if (gls_renderer_set_size(r, tw, th, err, errlen))
         goto out;
-    gls_render_chunk_bounds(r, c, cb);
+    gls_render_chunk_bounds(r, c, u.cb);
     gls_render_prepare(r, c);
-    s.chunks_total = (uint64_t)nch * s.lay.tiles * f->k;
-    uint64_t total = s.lay.tiles * f->k, done = 0;
-    for (uint64_t pass = 0; pass < f->k; pass++) {
-        kernel_free(&k);
-        free(off), free(run_off), free(run_len);
-        off = run_off = NULL, run_len = NULL;
+    s->chunks_total = (uint64_t)nch * s->lay.tiles * u.f->k;
+    u.total = s->lay.tiles * u.f->k;
+    for (uint64_t pass = 0; pass < u.f->k; pass++) {
         int64_t shift[2];
-        if (kernel_make(f, pass, &k, shift) || !(off = malloc((k.n ? k.n : 1) * sizeof *off)) ||
-            !(run_off = malloc((k.n ? k.n : 1) * sizeof *run_off)) ||
-            !(run_len = malloc((k.n ? k.n : 1) * sizeof *run_len))) {
-            snprintf(err, errlen, "out of memory for the gather of %llu samples", (unsigned long long)f->l);
+        if (pass_kernel(&u, pass, shift, err, errlen))
             goto out;
-        }
-        for (uint64_t e = 0; e < k.n; e++)
-            off[e] = (k.c[e][1] * (int64_t)tw + k.c[e][0]) * 4;
-        gather_ctx g = {f, &k, off, acc, seen, run_off, run_len, kernel_runs(&k, off, run_off, run_len)};
-        /* the tiles cover this pass's own fine bounding box (the layout's
-         * is an estimate for --explain and the progress line) */
-        int64_t x0, y0, x1, y1;
-        fine_box(f, W, H, k.lo, k.hi, &x0, &y0, &x1, &y1);
-        uint64_t tx = (uint64_t)((x1 - x0 + tw - 1) / tw), ty = (uint64_t)((y1 - y0 + th - 1) / th);
-        if (done + tx * ty > total)
-            total = done + tx * ty;
-        int pending = 0;
-        int64_t pr[4] = {0, 0, 0, 0}, pX = 0, pY = 0;
-        int cur = 0;
-        for (uint64_t t = 0; t < tx * ty; t++) {
-            int64_t X0 = x0 + (int64_t)(t % tx) * tw, Y0 = y0 + (int64_t)(t / tx) * th;
-            int64_t rng[4];
-            done++;
-            /* the pixels of rows v0..v1-1 whose samples the tile holds */
-            if (!pixel_range(f, &k, X0, Y0, X0 + tw, Y0 + th, W, H, rng) || rng[3] < (int64_t)v0 ||
-                rng[2] > (int64_t)v1 - 1) {
-                s.tiles_skipped++;
-                continue;
-            }
-            rng[2] = rng[2] < (int64_t)v0 ? (int64_t)v0 : rng[2];
-            rng[3] = rng[3] > (int64_t)v1 - 1 ? (int64_t)v1 - 1 : rng[3];
-            /* geometry that can reach the samples of those pixels: their
-             * squares, the Gaussian's cells, a pixel of margin */
-            double R = (double)(gls_aa_weighted(p) ? p->radius : 0) + 1.5;
-            double iu0 = (double)rng[0] - R, iu1 = (double)rng[1] + R, iv0 = (double)rng[2] - R, iv1 = (double)rng[3] + R;
-            for (uint32_t i = 0; i < nch; i++) {
-                vis[i] = !(cb[i][2] < iu0 || cb[i][0] > iu1 || cb[i][3] < iv0 || cb[i][1] > iv1);
-                s.chunks_drawn += vis[i];
-            }
-            double m[6];
-            uint32_t sc[4];
-            if (!tile_scissor(f, W, v0, v1, R + 1, X0, Y0, tw, th, sc)) {
-                s.tiles_skipped++;
-                continue;
-            }
-            gls_aa_fine_map(f, shift, X0, Y0, m);
-            double ta = gls_now();
-            gls_render_mapped(r, c, m, tw, th, sc, vis);
-            gls_render_flush(r);
-            double tb = gls_now();
-            s.draw_s += tb - ta;
-            if (pending)
-                gather(&g, buf[cur ^ 1], pX, pY, tw, th, pr[0], pr[1], pr[2], pr[3]);
-            double tc = gls_now();
-            s.gather_s += tc - tb;
-            gls_render_read_rect(r, tw, sc, buf[cur]);
-            s.read_s += gls_now() - tc;
-            memcpy(pr, rng, sizeof pr);
-            pX = X0, pY = Y0;
-            pending = 1;
-            cur ^= 1;
-            s.tiles_drawn++;
-            gls_progress_steps(fo->progress, fo->label, "tiles", done, total, t0, &last, 0);
-            if (fo->on_pass)
-                fo->on_pass(fo->ctx, done, total, gls_now() - t0);
-        }
-        if (pending) {
-            double tc = gls_now();
-            gather(&g, buf[cur ^ 1], pX, pY, tw, th, pr[0], pr[1], pr[2], pr[3]);
-            s.gather_s += gls_now() - tc;
-        }
+        run_pass(&u, shift);
     }
     acc->wsum = p->wsum;
     acc->samples = p->count;
-    s.total_s = gls_now() - t0;
-    if (s.total_s > 2)
-        gls_progress_steps(fo->progress, fo->label, "tiles", total, total, t0, &last, 1);
-    rc = gls_renderer_set_size(r, W, H, err, errlen);
+    s->total_s = gls_now() - u.t0;
+    if (s->total_s > 2)
+        gls_progress_steps(u.fo->progress, u.fo->label, "tiles", u.total, u.total, u.t0, &u.last, 1);
+    rc = gls_renderer_set_size(r, u.W, u.H, err, errlen);
 out:
-    kernel_free(&k);
-    free(off), free(run_off), free(run_len);
-    free(cb);
-    free(vis);
-    free(buf[0]);
-    free(buf[1]);
-    free(seen);
+    run_free(&u);
     if (st)
-        *st = s;
+        *st = *s;
     return rc;
 }

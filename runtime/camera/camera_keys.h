@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "camera.h"
+#include "srcline.h"
 
 enum {
     K_WIDTH, K_HEIGHT, K_FX, K_FY, K_CX, K_CY, K_SKEW, K_R, K_T, K_NEAR, K_FAR, K_POSE,
@@ -19,6 +20,19 @@ enum {
     K_SHUTTER, K_LINE_DELAY, K_APERTURE, K_FOCUS, K_EXPOSURE_SAMPLES,
     K_COUNT
 };
+
+/* Where a message about a camera file points (gls_text_error): the
+ * file's text and name, and where the message goes. */
+typedef struct {
+    const char *text, *fname;
+    size_t len;
+    char *err;
+    size_t errlen;
+} gls_camera_src;
+
+/* The located message at line:col of *s; evaluates to -1. */
+#define GLS_CAMERA_FAIL(s, line, col, ...) \
+    (gls_text_error((s)->err, (s)->errlen, (s)->text, (s)->len, (s)->fname, line, col, __VA_ARGS__), -1)
 
 typedef struct {
     double val[K_COUNT][9];
@@ -33,7 +47,8 @@ typedef struct {
 } gls_camera_keys;
 
 /* Check the values of a parsed camera file whose required keys are all
- * there (K may stand for fx fy cx cy skew, rvec for R) and fill cam.
+ * there (K may stand for fx fy cx cy skew, rvec for R) and fill cam
+ * (camera_keys.c).
  * names[k] is what the file calls key k, for the messages.  Errors and
  * notes as gls_camera_parse(). */
 int gls_camera_from_keys(gls_camera_keys *k, const char *const *names, const char *text, size_t len,

@@ -37,12 +37,7 @@ static const char *const dist_name[14] = {"k1", "k2", "p1", "p2", "k3", "k4", "k
                                           "k6", "s1", "s2", "s3", "s4", "tx", "ty"};
 #define MAXDATA 16
 
-typedef struct {
-    const char *text, *fname;
-    size_t len;
-    char *err;
-    size_t errlen;
-} src;
+typedef gls_camera_src src;
 
 static int fail(const src *s, unsigned line, unsigned col, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
 static int fail(const src *s, unsigned line, unsigned col, const char *fmt, ...)
@@ -254,135 +249,158 @@ static int lens_model(const src *s, char *v, unsigned line, unsigned vc, int *fi
     return 0;
 }
 
-int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes,
-                            gls_camera *cam, char *err, size_t errlen)
+/* The reading of one file: what the lines so far gave. */
+typedef struct {
+    gls_camera_keys keys;
+    unsigned seen[Y_COUNT], last; /* line of each key; of the last key */
+    int fisheye;                  /* distortion_model: fisheye (or equidistant) */
+    gls_sensor_keys sensor;       /* the sensor's keys, read apart (sensor_keys.h) */
+    matrix m;                     /* the matrix block open, if any */
+    int skipping;                 /* inside the value of a key glsplay does not read */
+} reading;
+
+/* A top-level line's key p (its column col) and value v (column vc):
+ * which key, not given before, and its value read or its matrix opened. */
+static int key_line(const src *s, reading *rd, char *buf, char *p, unsigned col, char *v, unsigned line)
 {
-    src s = {text, fname, len, err, errlen};
-    static gls_camera_keys zero;
-    gls_camera_keys keys = zero;
-    unsigned seen[Y_COUNT] = {0}, last = 1;
-    int fisheye = 0; /* distortion_model: fisheye (or equidistant) */
-    gls_sensor_keys sensor; /* the sensor's keys, read apart (sensor_keys.h) */
-    gls_sensor_keys_init(&sensor);
-    matrix m = {.key = -1};
-    int skipping = 0; /* inside the value of a key glsplay does not read */
-    gls_text_lines it = {text, len, 0, 0};
-    char buf[GLS_TEXT_MAX_LINE + 1];
-    size_t n;
-    int got;
-    while ((got = gls_text_next_line(&it, buf, &n)) != 0) {
-        unsigned line = it.line;
-        if (got < 0)
-            return fail(&s, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
-        if (memchr(buf, 0, n))
-            return fail(&s, line, (unsigned)((char *)memchr(buf, 0, n) - buf) + 1,
-                        "NUL byte in camera file (is it a text file?)");
-        buf[strcspn(buf, "\r")] = 0;
-        size_t ind = strspn(buf, " \t");
-        char *p = buf + ind;
-        unsigned col = (unsigned)ind + 1;
-        if (!*p || *p == '#')
-            continue;
-        if (ind > 0) {
-            if (m.key >= 0) {
-                if (matrix_field(&s, &m, p, line, col))
-                    return -1;
-            } else if (!skipping) {
-                return fail(&s, line, col, "an indented line outside a matrix (expected 'key: value')");
-            }
-            continue;
-        }
-        if (m.key >= 0 && matrix_end(&s, &m, &keys))
+    unsigned vc = (unsigned)(v - buf) + 1;
+    int sk = gls_sensor_key(p);
+    if (sk >= 0) {
+        if (sensor_value(s, &rd->sensor, sk, buf, p, v, line))
             return -1;
-        m.key = -1;
-        skipping = 0;
-        if (*p == '%' || strcmp(p, "---") == 0 || strcmp(p, "...") == 0)
-            continue; /* directives, document markers */
-        char *colon = strchr(p, ':');
-        if (!colon)
-            return fail(&s, line, col, "expected 'key: value' (an OpenCV FileStorage YAML file)");
-        *colon = 0;
-        char *v = colon + 1;
-        v += strspn(v, " \t");
-        unsigned vc = (unsigned)(v - buf) + 1;
-        int sk = gls_sensor_key(p);
-        if (sk >= 0) {
-            if (sensor_value(&s, &sensor, sk, buf, p, v, line))
-                return -1;
-            last = line;
-            continue;
-        }
-        int k;
-        for (k = 0; k < Y_COUNT; k++)
-            if (yname[k] && k != K_FX && k != K_FY && k != K_CX && k != K_CY && k != K_SKEW &&
-                strcmp(p, yname[k]) == 0)
-                break;
-        if (k == Y_COUNT) {
-            skipping = 1; /* calibration metadata: per-view errors, times, ... */
-            continue;
-        }
-        if (seen[k])
-            return fail(&s, line, col, "key '%s' given twice (first on line %u)", p, seen[k]);
-        static const int pairs[3][2] = {{K_R, K_RVEC}, {K_T, Y_TVEC}, {-1, -1}};
-        for (int i = 0; pairs[i][0] >= 0; i++) {
-            int other = k == pairs[i][0] ? pairs[i][1] : k == pairs[i][1] ? pairs[i][0] : -1;
-            if (other >= 0 && seen[other])
-                return fail(&s, line, col, "key '%s' and key '%s' (line %u) both give the %s: give one", p,
-                            yname[other], seen[other], i == 0 ? "rotation" : "translation");
-        }
-        seen[k] = line;
-        last = line;
-        if (k != Y_DMODEL)
-            keys.seen[k == Y_TVEC ? K_T : k] = line;
-        if (k == K_K || k == K_R || k == K_RVEC || k == K_T || k == K_DIST || k == Y_TVEC) {
-            if (strncmp(v, "!!opencv-matrix", 15) != 0 || v[15 + strspn(v + 15, " \t")] != 0)
-                return fail(&s, line, vc, "key '%s' must be an !!opencv-matrix (as cv::FileStorage writes a cv::Mat)",
-                            p);
-            m = (matrix){.key = k, .line = line, .col = col, .rows = -1, .cols = -1};
-            continue;
-        }
-        if (k == Y_DMODEL) {
-            if (lens_model(&s, v, line, vc, &fisheye))
-                return -1;
-            continue;
-        }
-        if (scalar(&s, &keys, k, v, line, vc))
-            return -1;
+        rd->last = line;
+        return 0;
     }
-    if (m.key >= 0 && matrix_end(&s, &m, &keys))
+    int k;
+    for (k = 0; k < Y_COUNT; k++)
+        if (yname[k] && k != K_FX && k != K_FY && k != K_CX && k != K_CY && k != K_SKEW && strcmp(p, yname[k]) == 0)
+            break;
+    if (k == Y_COUNT) {
+        rd->skipping = 1; /* calibration metadata: per-view errors, times, ... */
+        return 0;
+    }
+    unsigned *seen = rd->seen;
+    if (seen[k])
+        return fail(s, line, col, "key '%s' given twice (first on line %u)", p, seen[k]);
+    static const int pairs[3][2] = {{K_R, K_RVEC}, {K_T, Y_TVEC}, {-1, -1}};
+    for (int i = 0; pairs[i][0] >= 0; i++) {
+        int other = k == pairs[i][0] ? pairs[i][1] : k == pairs[i][1] ? pairs[i][0] : -1;
+        if (other >= 0 && seen[other])
+            return fail(s, line, col, "key '%s' and key '%s' (line %u) both give the %s: give one", p, yname[other],
+                        seen[other], i == 0 ? "rotation" : "translation");
+    }
+    seen[k] = line;
+    rd->last = line;
+    if (k != Y_DMODEL)
+        rd->keys.seen[k == Y_TVEC ? K_T : k] = line;
+    if (k == K_K || k == K_R || k == K_RVEC || k == K_T || k == K_DIST || k == Y_TVEC) {
+        if (strncmp(v, "!!opencv-matrix", 15) != 0 || v[15 + strspn(v + 15, " \t")] != 0)
+            return fail(s, line, vc, "key '%s' must be an !!opencv-matrix (as cv::FileStorage writes a cv::Mat)", p);
+        rd->m = (matrix){.key = k, .line = line, .col = col, .rows = -1, .cols = -1};
+        return 0;
+    }
+    if (k == Y_DMODEL)
+        return lens_model(s, v, line, vc, &rd->fisheye);
+    return scalar(s, &rd->keys, k, v, line, vc);
+}
+
+/* One line of the file (got, buf and n as gls_text_next_line gave them):
+ * a matrix's field, a skipped key's, or a top-level key (which ends the
+ * open matrix). */
+static int read_line(const src *s, reading *rd, int got, char *buf, size_t n, unsigned line)
+{
+    if (got < 0)
+        return fail(s, line, GLS_TEXT_MAX_LINE + 1, "line longer than %u bytes", GLS_TEXT_MAX_LINE);
+    if (memchr(buf, 0, n))
+        return fail(s, line, (unsigned)((char *)memchr(buf, 0, n) - buf) + 1,
+                    "NUL byte in camera file (is it a text file?)");
+    buf[strcspn(buf, "\r")] = 0;
+    size_t ind = strspn(buf, " \t");
+    char *p = buf + ind;
+    unsigned col = (unsigned)ind + 1;
+    if (!*p || *p == '#')
+        return 0;
+    if (ind > 0) {
+        if (rd->m.key >= 0)
+            return matrix_field(s, &rd->m, p, line, col);
+        if (!rd->skipping)
+            return fail(s, line, col, "an indented line outside a matrix (expected 'key: value')");
+        return 0;
+    }
+    if (rd->m.key >= 0 && matrix_end(s, &rd->m, &rd->keys))
         return -1;
+    rd->m.key = -1;
+    rd->skipping = 0;
+    if (*p == '%' || strcmp(p, "---") == 0 || strcmp(p, "...") == 0)
+        return 0; /* directives, document markers */
+    char *colon = strchr(p, ':');
+    if (!colon)
+        return fail(s, line, col, "expected 'key: value' (an OpenCV FileStorage YAML file)");
+    *colon = 0;
+    char *v = colon + 1;
+    v += strspn(v, " \t");
+    return key_line(s, rd, buf, p, col, v, line);
+}
+
+/* After the last line: the required keys, and the coefficients made
+ * cv::fisheye's when distortion_model says fisheye. */
+static int all_read(const src *s, reading *rd)
+{
+    const unsigned *seen = rd->seen;
+    gls_camera_keys *keys = &rd->keys;
     static const int required[][2] = {{K_WIDTH, -1}, {K_HEIGHT, -1}, {K_K, -1}, {K_R, K_RVEC},
                                       {K_T, Y_TVEC}, {K_NEAR, -1},   {K_FAR, -1}};
     for (size_t i = 0; i < sizeof required / sizeof required[0]; i++) {
         int k = required[i][0], alt = required[i][1];
         if (!seen[k] && (alt < 0 || !seen[alt]))
-            return fail(&s, last, 1, "missing key '%s' (required: image_width image_height camera_matrix R (or rvec) "
-                        "T (or tvec) near far%s)", yname[k],
+            return fail(s, rd->last, 1, "missing key '%s' (required: image_width image_height camera_matrix R (or "
+                        "rvec) T (or tvec) near far%s)", yname[k],
                         k == K_NEAR || k == K_FAR ? "; OpenCV files hold no clipping range: add near: and far:, "
                                                     "in scene units" : "");
     }
-    /* distortion_model: fisheye makes the coefficients cv::fisheye's */
-    if (fisheye && !seen[K_DIST])
-        return fail(&s, seen[Y_DMODEL], 1, "key 'distortion_model' is fisheye, but there is no "
+    if (!rd->fisheye)
+        return 0;
+    if (!seen[K_DIST])
+        return fail(s, seen[Y_DMODEL], 1, "key 'distortion_model' is fisheye, but there is no "
                     "distortion_coefficients (k1 k2 k3 k4)");
-    if (fisheye && keys.ndist != 4)
-        return fail(&s, seen[K_DIST], 1, "key 'distortion_coefficients': the fisheye model (distortion_model, "
-                    "line %u) takes 4 coefficients, k1 k2 k3 k4; got %u", seen[Y_DMODEL], keys.ndist);
-    if (fisheye) {
-        memcpy(keys.val[K_FISHEYE], keys.val[K_DIST], sizeof keys.val[K_DIST]);
-        keys.seen[K_FISHEYE] = keys.seen[K_DIST];
-        keys.vcol[K_FISHEYE] = keys.vcol[K_DIST];
-        memcpy(keys.eline[K_FISHEYE], keys.eline[K_DIST], sizeof keys.eline[K_DIST]);
-        memcpy(keys.ecol[K_FISHEYE], keys.ecol[K_DIST], sizeof keys.ecol[K_DIST]);
-        keys.seen[K_DIST] = 0;
-    }
+    if (keys->ndist != 4)
+        return fail(s, seen[K_DIST], 1, "key 'distortion_coefficients': the fisheye model (distortion_model, "
+                    "line %u) takes 4 coefficients, k1 k2 k3 k4; got %u", seen[Y_DMODEL], keys->ndist);
+    memcpy(keys->val[K_FISHEYE], keys->val[K_DIST], sizeof keys->val[K_DIST]);
+    keys->seen[K_FISHEYE] = keys->seen[K_DIST];
+    keys->vcol[K_FISHEYE] = keys->vcol[K_DIST];
+    memcpy(keys->eline[K_FISHEYE], keys->eline[K_DIST], sizeof keys->eline[K_DIST]);
+    memcpy(keys->ecol[K_FISHEYE], keys->ecol[K_DIST], sizeof keys->ecol[K_DIST]);
+    keys->seen[K_DIST] = 0;
+    return 0;
+}
+
+int gls_camera_parse_opencv(const char *text, size_t len, const char *fname, gls_pose use, FILE *notes,
+                            gls_camera *cam, char *err, size_t errlen)
+{
+    src s = {text, fname, len, err, errlen};
+    static reading zero;
+    reading rd = zero;
+    rd.last = 1;
+    gls_sensor_keys_init(&rd.sensor);
+    rd.m.key = -1;
+    gls_text_lines it = {text, len, 0, 0};
+    char buf[GLS_TEXT_MAX_LINE + 1];
+    size_t n;
+    int got;
+    while ((got = gls_text_next_line(&it, buf, &n)) != 0)
+        if (read_line(&s, &rd, got, buf, n, it.line))
+            return -1;
+    if ((rd.m.key >= 0 && matrix_end(&s, &rd.m, &rd.keys)) || all_read(&s, &rd))
+        return -1;
+    /* distortion_model: fisheye makes the coefficients cv::fisheye's */
     const char *names[K_COUNT];
     memcpy(names, yname, sizeof names);
     names[K_FISHEYE] = yname[K_DIST];
-    if (seen[Y_TVEC])
+    if (rd.seen[Y_TVEC])
         names[K_T] = "tvec";
-    if (gls_camera_from_keys(&keys, names, text, len, fname, use, notes, cam, err, errlen))
+    if (gls_camera_from_keys(&rd.keys, names, text, len, fname, use, notes, cam, err, errlen))
         return -1;
-    cam->sensor = sensor.s;
+    cam->sensor = rd.sensor.s;
     return 0;
 }

@@ -649,13 +649,46 @@ static void enter(walker *w, uint32_t oi, state st, uint32_t parent, const char 
         replay(w, r, i);
 }
 
+/* A CALL or CALLN of run's, with the drawing state st at the call; k:
+ * the call's index among the object's calls for the landmarks' call
+ * path (gls_markwalk_calls).
+ *
+ * By value: the callee gets a copy.  Instanced: an affine call is an
+ * instance; a named call (CALLN) always is one, with the bundle's name,
+ * so --motion can move it (a projective matrix goes to GL as it is: no
+ * exactness claim for that rare case).  Flattened (--flatten): both are
+ * inlined, names unused.  The call path goes on for the landmarks in the
+ * callee. */
+static void call(walker *w, const gls_insn *in, const state *st, uint32_t inst, uint32_t proto, uint32_t rec,
+                 uint32_t k)
+{
+    uint32_t callee = in->u[GLS_ARG_CALL_OBJECT];
+    size_t saved;
+    if (gls_markwalk_enter(&w->marks, callee, k, &saved)) {
+        w->oom = 1;
+        return;
+    }
+    if (w->instanced && (in->op == GLS_OP_CALLN || is_affine(st->M))) {
+        const char *name = in->op == GLS_OP_CALLN ? w->b->instnames[in->u[GLS_ARG_CALLN_NAME]] : NULL;
+        rec_put(w, rec, EV_ENTER, callee, k, st, sizeof *st, name);
+        enter(w, callee, *st, inst, name);
+    } else {
+        if (w->marks.on)
+            rec_put(w, rec, EV_IN, callee, k, NULL, 0, NULL);
+        run(w, callee, *st, inst, proto, rec);
+        if (w->marks.on)
+            rec_out(w, rec);
+    }
+    gls_markwalk_leave(&w->marks, saved);
+}
+
 /* Walk object oi in instance inst's frame; prims go to proto (GLS_NONE:
  * built already, only calls matter), what else it does to record rec
  * (GLS_NONE: none). */
 static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto, uint32_t rec)
 {
     const gls_object *o = &w->b->objects[oi];
-    size_t pos = 0, base = w->sp, saved;
+    size_t pos = 0, base = w->sp;
     gls_insn in;
     double A[16], h[4];
     uint32_t ncall = 0; /* calls so far: their index into callk */
@@ -711,32 +744,9 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto,
             st = w->stack[--w->sp];
             break;
         case GLS_OP_CALL:
-        case GLS_OP_CALLN: {
-            /* by value: the callee gets a copy.  Instanced: an affine call
-             * is an instance; a named call (CALLN) always is one, with the
-             * bundle's name, so --motion can move it (a projective matrix
-             * goes to GL as it is: no exactness claim for that rare case).
-             * Flattened (--flatten): both are inlined, names unused.
-             * The call path goes on for the landmarks in the callee. */
-            uint32_t callee = in.u[GLS_ARG_CALL_OBJECT], k = callk ? callk[ncall++] : 0;
-            if (gls_markwalk_enter(&w->marks, callee, k, &saved)) {
-                w->oom = 1;
-                break;
-            }
-            if (w->instanced && (in.op == GLS_OP_CALLN || is_affine(st.M))) {
-                const char *name = in.op == GLS_OP_CALLN ? w->b->instnames[in.u[GLS_ARG_CALLN_NAME]] : NULL;
-                rec_put(w, rec, EV_ENTER, callee, k, &st, sizeof st, name);
-                enter(w, callee, st, inst, name);
-            } else {
-                if (w->marks.on)
-                    rec_put(w, rec, EV_IN, callee, k, NULL, 0, NULL);
-                run(w, callee, st, inst, proto, rec);
-                if (w->marks.on)
-                    rec_out(w, rec);
-            }
-            gls_markwalk_leave(&w->marks, saved);
+        case GLS_OP_CALLN:
+            call(w, &in, &st, inst, proto, rec, callk ? callk[ncall++] : 0);
             break;
-        }
         case GLS_OP_MARK: /* in the instance's frame, like a vertex; drawn by no proto */
             m4_apply(st.M, in.d[GLS_ARG_MARK_X], in.d[GLS_ARG_MARK_Y], in.d[GLS_ARG_MARK_Z], 1.0, h);
             rec_put(w, rec, EV_MARK, in.u[GLS_ARG_MARK_NAME], 0, h, sizeof h, NULL);
@@ -764,6 +774,50 @@ static void run(walker *w, uint32_t oi, state st, uint32_t inst, uint32_t proto,
         }
     }
     w->sp = base;
+}
+
+/* The vertex layout the walk's attributes ask for: position, then
+ * colour, texture coordinates, and normal and specular when lit. */
+static void vertex_layout(const walker *w, gls_scene *s)
+{
+    s->has_color = w->has_color;
+    s->has_texcoord = w->has_texcoord;
+    s->stride = 12;
+    s->color_offset = s->texcoord_offset = 0;
+    if (s->has_color)
+        s->color_offset = s->stride, s->stride += 4;
+    if (s->has_texcoord)
+        s->texcoord_offset = s->stride, s->stride += 8;
+    s->lit = w->lit;
+    if (s->lit) {
+        s->normal_offset = s->stride, s->stride += 12;
+        s->specular_offset = s->stride, s->stride += 16;
+    }
+}
+
+/* What the walker holds that the scene did not take. */
+static void walker_free(walker *w)
+{
+    free(w->stack);
+    free(w->tris);
+    free(w->wpos);
+    free(w->wcol);
+    free(w->wtc);
+    free(w->wnrm);
+    free(w->wspec);
+    free(w->lights);
+    free(w->protos);
+    for (size_t i = 0; w->inst && i < w->ninst; i++)
+        free(w->inst[i].name);
+    free(w->inst);
+    free(w->proto_head);
+    free(w->has_call);
+    for (size_t i = 0; i < w->nrecs; i++)
+        free(w->recs[i].ev), free(w->recs[i].data.data);
+    free(w->recs);
+    free(w->proto_rec);
+    free(w->saved);
+    gls_markwalk_free(&w->marks);
 }
 
 static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, size_t errlen)
@@ -821,19 +875,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     gls_pack_sort(w.tris, w.ntri);
 
     s->features = b->features;
-    s->has_color = w.has_color;
-    s->has_texcoord = w.has_texcoord;
-    s->stride = 12;
-    s->color_offset = s->texcoord_offset = 0;
-    if (s->has_color)
-        s->color_offset = s->stride, s->stride += 4;
-    if (s->has_texcoord)
-        s->texcoord_offset = s->stride, s->stride += 8;
-    s->lit = w.lit;
-    if (s->lit) {
-        s->normal_offset = s->stride, s->stride += 12;
-        s->specular_offset = s->stride, s->stride += 16;
-    }
+    vertex_layout(&w, s);
     s->lights = w.lights, s->nlights = (uint32_t)w.nlights;
     s->shadow_res = w.shadow_res; /* drawn only when lit (render.c) */
     w.lights = NULL;
@@ -857,26 +899,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     gls_scene_update(s);
     rc = 0;
 out:
-    free(w.stack);
-    free(w.tris);
-    free(w.wpos);
-    free(w.wcol);
-    free(w.wtc);
-    free(w.wnrm);
-    free(w.wspec);
-    free(w.lights);
-    free(w.protos);
-    for (size_t i = 0; w.inst && i < w.ninst; i++)
-        free(w.inst[i].name);
-    free(w.inst);
-    free(w.proto_head);
-    free(w.has_call);
-    for (size_t i = 0; i < w.nrecs; i++)
-        free(w.recs[i].ev), free(w.recs[i].data.data);
-    free(w.recs);
-    free(w.proto_rec);
-    free(w.saved);
-    gls_markwalk_free(&w.marks);
+    walker_free(&w);
     if (rc)
         gls_scene_free(s);
     return rc;
