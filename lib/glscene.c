@@ -1,9 +1,10 @@
 /* The player of the library (include/glscene.h): a bundle's scene, its GL
  * context and renderer, kept open across renders.  Each render does what
- * glsplay's play_camera does for the same outputs (runtime/play/player.c): the
- * centre pass for depth and an image of one sample, the anti-aliasing
- * passes for an image of more, the ground-truth pass for ids and normals,
- * with the same functions, so that the numbers are glsplay's. */
+ * glsplay's play_camera does for the same outputs
+ * (runtime/play/play_frame.c): the centre pass for depth and an image of
+ * one sample, the anti-aliasing passes for an image of more, the
+ * ground-truth pass for ids and normals, with the same functions, so that
+ * the numbers are glsplay's. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

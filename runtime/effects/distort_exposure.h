@@ -16,7 +16,7 @@
  *    colour of the points, ids, normals): the plain fine pass at the
  *    band's time, read at the band's pixel centres (nearest fine pixel).
  * Without a rolling shutter the ground truth is the lens's own (the frame
- * time, lens centre; player.c). */
+ * time, lens centre; play_frame.c). */
 #ifndef GLS_DISTORT_EXPOSURE_H
 #define GLS_DISTORT_EXPOSURE_H
 #include <stdio.h>

@@ -12,7 +12,7 @@
  *    output pixel (the plan's positions, aa.h, in the distorted image)
  *    mapped through the inverse lens model and read there bilinearly,
  *    accumulated with the plan's weights.
- * Cameras without distortion never come here (player.c). */
+ * Cameras without distortion never come here (play_frame.c). */
 #ifndef GLS_DISTORT_RENDER_H
 #define GLS_DISTORT_RENDER_H
 

@@ -4,7 +4,7 @@
  * whether the frame has a next row (flow), gls_frame_plan_make decides
  * which passes run, which buffers they fill and how large, where the
  * image comes from, and which files go to the writer.  The player runs
- * the plan (player.c), --explain prints it (explain.c) and never decides
+ * the plan (play_frame.c), --explain prints it (explain.c) and never decides
  * anything again, the out-of-memory message sums its buffers, and the
  * frame record keys on it (frame_record.c).
  *

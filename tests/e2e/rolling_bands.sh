@@ -3,7 +3,7 @@
 # it needs (spec/outputs.md "With a rolling shutter", "Through a lens"):
 # through a lens the fine rows its pixels read (runtime/effects/distort_exposure.c,
 # gls_distort_truth_bands), through a pinhole the band's own rows
-# (runtime/play/player.c centre_bands; the image's bands: one sample a pixel,
+# (runtime/play/play_passes.c play_centre_bands; the image's bands: one sample a pixel,
 # or a lattice plan's fine tiles, aa_onepass.c, or the jittered passes,
 # aa_render.c; gt_flow_rolling.c for the
 # next frame's depth).  Every output must be the
