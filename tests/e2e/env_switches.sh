@@ -12,10 +12,10 @@
 # FILE<tab>the code that reads the environment: why it is the user's
 cat >"$t/allowed" <<'LIST'
 compiler/roots.c	const char *env = getenv("GLSCENE_PATH");
-lib/glscene_play.c	if (gls_shard_parse(next, getenv, &o->shard, msg, sizeof msg))
+lib/glscene_play_args.c	if (gls_shard_parse(next, getenv, &r->o.shard, msg, sizeof msg))
 LIST
 # GLSCENE_PATH: glsc's search path for imports (spec/language.md);
-# glscene_play.c: --shard slurm reads SLURM_ARRAY_TASK_* (runtime/play/shard.h)
+# glscene_play_args.c: --shard slurm reads SLURM_ARRAY_TASK_* (runtime/play/shard.h)
 
 # every use of getenv, secure_getenv or environ outside comments, as
 # FILE<tab>code (no line numbers, so that moving code needs no edit here)
