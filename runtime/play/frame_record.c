@@ -53,15 +53,18 @@ static int append_intrinsics(char *buf, size_t len, int *k, const gls_camera *c)
     return append(buf, len, k, "\n");
 }
 
-int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_camera *c, const char *name,
-                          uint32_t frame, const char *inputs)
+int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_frame_plan *fp,
+                          const gls_camera *c, const char *name, uint32_t frame, const char *inputs)
 {
     static const char *const fmt[] = {"png8", "png16", "pfm"};
     char sigma[32], bg[3][32];
     gls_fmt_double(sigma, sizeof sigma, o->aa.sigma);
     for (int i = 0; i < 3; i++)
         gls_fmt_float(bg[i], sizeof bg[i], o->background[i]);
-    unsigned out = o->outputs;
+    /* keyed on the frame's plan (frame_plan.h): the files it writes (no
+     * flow from a trajectory's last frame) and whether its image comes
+     * from the accumulator */
+    unsigned out = fp->outputs;
     int image = (out & GLS_OUT_IMAGE) != 0;
     /* the anti-aliasing that shapes the image and mask: nothing but M when
      * M is 1, nothing at all when neither is written (depth and points
@@ -74,7 +77,7 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
     if (onepass)
         snprintf(mem, sizeof mem, " memory %llu",
                  (unsigned long long)(o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY));
-    if (m == 1 || !(out & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)))
+    if (m == 1 || !fp->aa)
         snprintf(aa, sizeof aa, "1");
     else
         snprintf(aa, sizeof aa, "%llu %s%s%s %s %llu%s", (unsigned long long)m,

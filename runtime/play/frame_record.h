@@ -15,6 +15,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "player.h"
+#include "frame_plan.h"
 #include "trajectory.h"
 
 /* OUTDIR/NAME/.frame_F.done (hidden: it is bookkeeping, not an output).
@@ -26,8 +27,8 @@ int gls_frame_record_path(char *buf, size_t len, const char *outdir, const char 
  * scale, anti-aliasing, anisotropy, background, the camera's effects),
  * ending with the inputs' digest (gls_frame_inputs).  0, or -1 if it does
  * not fit in len. */
-int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_camera *c, const char *name,
-                          uint32_t frame, const char *inputs);
+int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const gls_frame_plan *fp,
+                          const gls_camera *c, const char *name, uint32_t frame, const char *inputs);
 
 /* The digest of what the frames are made from, as the record's "inputs"
  * line shows it (16 hex digits): the bundle file, every camera file, the

@@ -248,7 +248,7 @@ static int frame_submit(session *s, const gls_camera *c, const char *name, uint3
     f->buffer_bytes = cf->fp.total;
     f->json = s->json;
     int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
-                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, c, name, frame, s->inputs);
+                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, &cf->fp, c, name, frame, s->inputs);
     /* one file a kind at most: files[] has room for every kind */
     for (size_t k = 0; k < GLS_OUT_KINDS && !too_long; k++)
         if (cf->fp.outputs & gls_output_kinds[k].bit) {

@@ -123,10 +123,10 @@ int play_flow_frame(session *s, const gls_camera *c, const gls_distort_frame *df
 int play_camera(session *s, const gls_camera *c, const char *name, uint32_t frame);
 
 /* play_sequence.c */
-int play_frame_done(const gls_play_opts *o, const gls_camera *cams, const char *const *names, uint32_t frame,
-                    int has_next, const char *inputs);
+int play_frame_done(const gls_play_opts *o, const gls_aa_plan *plan, int moving, const gls_camera *cams,
+                    const char *const *names, uint32_t frame, int has_next, const char *inputs);
 uint64_t play_trajectory_last_frame(const motion_set *ms);
-int play_scan_trajectory(const gls_play_opts *o, const motion_set *ms, const gls_camera *rel,
+int play_scan_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, const motion_set *ms, const gls_camera *rel,
                          const char *const *names, const char *inputs, uint64_t last, FILE *errs,
                          uint64_t *inrange, uint64_t *mine, uint64_t *complete);
 void play_resume_note(FILE *errs, uint64_t complete, uint64_t total);

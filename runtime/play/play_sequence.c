@@ -12,20 +12,23 @@
 /* Is this frame complete: for every camera, a record that covers what o
  * asks for (written after the camera's last file, frame_record.h), and
  * every requested output file still there? */
-int play_frame_done(const gls_play_opts *o, const gls_camera *cams, const char *const *names, uint32_t frame,
-                    int has_next, const char *inputs)
+int play_frame_done(const gls_play_opts *o, const gls_aa_plan *plan, int moving, const gls_camera *cams,
+                    const char *const *names, uint32_t frame, int has_next, const char *inputs)
 {
+    gls_plan_inputs pin = {o->outputs, o->image_format, plan, moving};
     if (strcmp(inputs, "-") == 0) /* an input that cannot be read again: never taken */
         return 0;
     char path[MAXPATH], text[1024];
     for (size_t i = 0; i < o->ncameras; i++) {
+        /* the record and the files of the frame's plan (frame_plan.h) */
+        gls_frame_plan fp;
+        gls_frame_plan_make(&fp, &pin, &cams[i], has_next);
         if (gls_frame_record_path(path, sizeof path, o->outdir, names[i], frame) ||
-            gls_frame_record_text(text, sizeof text, o, &cams[i], names[i], frame, inputs) ||
+            gls_frame_record_text(text, sizeof text, o, &fp, &cams[i], names[i], frame, inputs) ||
             !gls_frame_record_matches(path, text))
             return 0;
-        unsigned want = gls_outputs_with(o->outputs);
         for (size_t k = 0; k < GLS_OUT_KINDS; k++) {
-            if (!(want & gls_output_kinds[k].bit) || (!has_next && (gls_output_kinds[k].bit & GLS_OUT_FLOW_ALL)))
+            if (!(fp.outputs & gls_output_kinds[k].bit))
                 continue;
             struct stat st;
             if (play_output_file(path, sizeof path, o, names[i], k, frame) ||
@@ -68,6 +71,8 @@ uint64_t play_trajectory_last_frame(const motion_set *ms)
  * complete, for every camera? */
 typedef struct {
     const gls_play_opts *o;
+    const gls_aa_plan *plan; /* with moving: the frames' plans            */
+    int moving;
     const gls_camera *rel;
     const char *const *names;
     uint64_t last;       /* the trajectory's last frame: no flow from it */
@@ -77,7 +82,8 @@ typedef struct {
 static int resume_complete(void *ud, uint64_t frame)
 {
     const resume_ctx *r = ud;
-    return r->o->resume && play_frame_done(r->o, r->rel, r->names, (uint32_t)frame, frame != r->last, r->inputs);
+    return r->o->resume && play_frame_done(r->o, r->plan, r->moving, r->rel, r->names, (uint32_t)frame,
+                                           frame != r->last, r->inputs);
 }
 
 /* The frames of the run (frames.h), --resume asking resume_ctx r. */
@@ -101,12 +107,12 @@ static int open_frames(gls_frames *f, const motion_set *ms, const gls_play_opts 
  * which writes no flow).  With flow, the row after the range is read too,
  * and its motions checked: the last frame's flow goes to it.  0, or 1
  * after a message. */
-int play_scan_trajectory(const gls_play_opts *o, const motion_set *ms, const gls_camera *rel,
+int play_scan_trajectory(const gls_play_opts *o, const gls_aa_plan *plan, const motion_set *ms, const gls_camera *rel,
                          const char *const *names, const char *inputs, uint64_t last, FILE *errs,
                          uint64_t *inrange, uint64_t *mine, uint64_t *complete)
 {
     char err[1024];
-    resume_ctx rc_ = {o, rel, names, last, inputs};
+    resume_ctx rc_ = {o, plan, ms->moving, rel, names, last, inputs};
     gls_frames f;
     if (open_frames(&f, ms, o, errs, &rc_, errs))
         return 1;
@@ -187,7 +193,7 @@ int play_trajectory(session *s, const gls_camera *rel, const char *const *names,
     s->json->total = s->views;
     s->json->skipped = complete;
     char err[1024];
-    resume_ctx rctx = {o, rel, names, last, s->inputs};
+    resume_ctx rctx = {o, s->plan, s->moving, rel, names, last, s->inputs};
     gls_frames f;
     if (open_frames(&f, s->ms, o, NULL, &rctx, errs))
         return 1;

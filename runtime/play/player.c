@@ -204,7 +204,8 @@ static int run_single(run *u, session *ses)
     if (!mine)
         fprintf(errs, "glsplay: note: --shard %llu/%llu: a single render (no --trajectory) is shard 0's; "
                       "nothing to render\n", (unsigned long long)o->shard.index, (unsigned long long)o->shard.count);
-    int skip = !mine || (o->resume && play_frame_done(o, u->cams, (const char *const *)u->names, o->frame, 0, ses->inputs));
+    int skip = !mine || (o->resume && play_frame_done(o, &u->plan, u->ms.moving, u->cams, (const char *const *)u->names, o->frame, 0,
+                                                   ses->inputs));
     if (o->resume && mine)
         play_resume_note(errs, skip, 1);
     u->json.total = skip ? 0 : o->ncameras;
@@ -298,7 +299,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     if (o->trajectory) {
         if (o->outputs & GLS_OUT_FLOW_ALL)
             scan.last = play_trajectory_last_frame(&u.ms);
-        if (play_scan_trajectory(o, &u.ms, u.cams, (const char *const *)u.names, inputs, scan.last, errs, &scan.inrange,
+        if (play_scan_trajectory(o, &u.plan, &u.ms, u.cams, (const char *const *)u.names, inputs, scan.last, errs, &scan.inrange,
                                  &scan.mine, &scan.complete))
             goto out;
     }

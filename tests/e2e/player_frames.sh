@@ -137,3 +137,20 @@ if [ $rc -eq 0 ] && grep -q "nothing to render" "$t/err" && [ ! -e "$t/shard" ];
 else
     fail empty_shard_leaves_no_directory "rc $rc: $(cat "$t/err"); $(find "$t/shard" 2>/dev/null | tr '\n' ' ')"
 fi
+
+# the frame record keys on the frame's plan (runtime/play/frame_plan.h):
+# the trajectory's last frame writes no flow (there is no next row), so
+# its record does not list flow while the others do; --resume then finds
+# every frame complete, the last one included
+$PLAY --outputs image,flow --trajectory "$t/traj.txt" --frames 2: -o "$t/rec" 2>"$t/err"
+rc=$?
+first=$(grep '^outputs' "$t/rec/cam/.frame_000002.done" 2>/dev/null)
+last=$(grep '^outputs' "$t/rec/cam/.frame_000004.done" 2>/dev/null)
+$PLAY --outputs image,flow --trajectory "$t/traj.txt" --frames 2: -o "$t/rec" --resume 2>"$t/err2"
+rc2=$?
+if [ $rc -eq 0 ] && [ "$first" = "outputs image flow" ] && [ "$last" = "outputs image" ] && [ $rc2 -eq 0 ] &&
+    grep -q "3 of 3 frames complete, skipped; 0 to render" "$t/err2"; then
+    ok frame_record_keys_on_plan
+else
+    fail frame_record_keys_on_plan "rc $rc/$rc2; first '$first', last '$last': $(cat "$t/err" "$t/err2")"
+fi
