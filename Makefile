@@ -37,34 +37,60 @@ endif
 INC_base     := -Ibase
 INC_format   := -Iformat $(INC_base)
 INC_compiler := -Icompiler -I$(B)/gen $(INC_format)
+# The runtime is rooms (docs/ARCHITECTURE.md "The runtime's rooms"), each a
+# folder of runtime/ with one job, in this order; a room sees its own
+# headers and those of the rooms before it, and no others
+# (tests/e2e/build_layers.sh).  gl: GL context, backends, entry points,
+# programs; scene: the bundle built into draw state; camera: camera
+# models, files, lens maths, trajectories, motion; render: colour, depth
+# and id passes, lighting, shadows, occlusion; aa: anti-aliasing; effects:
+# sensor, exposure (motion blur, rolling shutter, depth of field), lens
+# resampling; truth: ground truth (ids, classes, boxes, flow, landmarks,
+# disparity); encode: file formats and the output vocabulary; write: the
+# writer thread and a frame's files; play: the frame plan, the frame loop,
+# explain, progress, frame records, calibration files.
+RUNTIME_ROOMS := gl scene camera render aa effects truth encode write play
 # $(B)/gen/runtime: glctx_backends.h, which GL backends this build has (below)
-INC_runtime  := -Iruntime -I$(B)/gen/runtime $(INC_format)
+INC_rt_gl      := -Iruntime/gl -I$(B)/gen/runtime $(INC_format)
+INC_rt_scene   := -Iruntime/scene $(INC_rt_gl)
+INC_rt_camera  := -Iruntime/camera $(INC_rt_scene)
+INC_rt_render  := -Iruntime/render $(INC_rt_camera)
+INC_rt_aa      := -Iruntime/aa $(INC_rt_render)
+INC_rt_effects := -Iruntime/effects $(INC_rt_aa)
+INC_rt_truth   := -Iruntime/truth $(INC_rt_effects)
+INC_rt_encode  := -Iruntime/encode $(INC_rt_truth)
+INC_rt_write   := -Iruntime/write $(INC_rt_encode)
+INC_rt_play    := -Iruntime/play $(INC_rt_write)
+# seeing the runtime: seeing its top room, and so every room
+INC_runtime  := $(INC_rt_play)
 INC_roads    := -Iroads $(INC_base)
 # libglscene (lib/, docs/api.md): the public API over the compiler and the
 # runtime; include/ holds its one public header
 INC_lib      := -Ilib -Iinclude $(INC_compiler) $(INC_runtime)
-# glsroad's main also reads camera files and trajectories (runtime/)
-INC_glsroad  := $(INC_roads) $(INC_runtime)
-# An object sees the layer of its top directory (base/x.c: base).
-LAYER_INC = $(INC_$(firstword $(subst /, ,$*)))
+# glsroad's main also reads camera files and trajectories (runtime/camera)
+INC_glsroad  := $(INC_roads) $(INC_rt_camera)
+# An object sees the layer of its top directory (base/x.c: base), or in
+# runtime/ the room of its folder (runtime/aa/x.c: aa).
+LAYER_INC = $(if $(filter runtime,$(firstword $(subst /, ,$*))),$(INC_rt_$(word 2,$(subst /, ,$*))),$(INC_$(firstword $(subst /, ,$*))))
 $(B)/roads/glsroad_main.o: LAYER_INC = $(INC_glsroad)
-# glsplay's main sees the public header and the tools' helpers only: it
-# goes through the library's API (docs/api.md "How glsplay uses it")
-$(B)/runtime/glsplay_main.o: LAYER_INC = -Iinclude $(INC_base)
+# The tools' mains that sit above the library (apps/): glsplay's sees the
+# public header and the tools' helpers only: it goes through the library's
+# API (docs/api.md "How glsplay uses it")
+$(B)/apps/glsplay_main.o: LAYER_INC = -Iinclude $(INC_base)
 
 # The GL backends (runtime/glctx_*.c, spec/backends.md): each is built when
 # pkg-config finds its library, and left out otherwise or when GLS_NO_EGL=1
 # or GLS_NO_OSMESA=1 says to build as if the library were absent
 # (tests/e2e/build_backends.sh).  At least one is needed.  Every GL call
-# goes through the backend (runtime/glcalls.h), so no GL library is linked:
+# goes through the backend (runtime/gl/glcalls.h), so no GL library is linked:
 # only libEGL and/or libOSMesa.
 HAVE_EGL    := $(if $(filter 1,$(GLS_NO_EGL)),,$(shell pkg-config --exists egl 2>/dev/null && echo 1))
 HAVE_OSMESA := $(if $(filter 1,$(GLS_NO_OSMESA)),,$(shell pkg-config --exists osmesa 2>/dev/null && echo 1))
-GLCTX_LEFT_OUT := $(if $(HAVE_EGL),,runtime/glctx_egl.c) $(if $(HAVE_OSMESA),,runtime/glctx_osmesa.c)
+GLCTX_LEFT_OUT := $(if $(HAVE_EGL),,runtime/gl/glctx_egl.c) $(if $(HAVE_OSMESA),,runtime/gl/glctx_osmesa.c)
 GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),$(shell pkg-config --libs osmesa)) -lspng -pthread
-$(B)/runtime/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
-$(B)/runtime/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
-# Which backends are in, for runtime/glctx.c: written when the Makefile is
+$(B)/runtime/gl/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
+$(B)/runtime/gl/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
+# Which backends are in, for runtime/gl/glctx.c: written when the Makefile is
 # read, and only when it changes, so that switching GLS_NO_EGL (or
 # installing libegl-dev) recompiles glctx.c and relinks, and nothing else.
 GLCTX_CONFIG := $(B)/gen/runtime/glctx_backends.h
@@ -74,7 +100,7 @@ $(shell mkdir -p $(B)/gen/runtime && { printf '$(GLCTX_CONFIG_TEXT)' | cmp -s - 
 BASE_SRC     := $(wildcard base/*.c)
 FORMAT_SRC   := $(wildcard format/*.c)
 COMPILER_SRC := $(filter-out compiler/glsc_main.c compiler/glsdis_main.c,$(wildcard compiler/*.c))
-RUNTIME_SRC  := $(filter-out runtime/glsplay_main.c $(GLCTX_LEFT_OUT),$(wildcard runtime/*.c))
+RUNTIME_SRC  := $(filter-out $(GLCTX_LEFT_OUT),$(foreach r,$(RUNTIME_ROOMS),$(wildcard runtime/$(r)/*.c)))
 
 BASE_OBJ     := $(BASE_SRC:%.c=$(B)/%.o)
 FORMAT_OBJ   := $(FORMAT_SRC:%.c=$(B)/%.o)
@@ -102,15 +128,15 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
-            $(B)/road_montage $(B)/rawseed $(B)/distort_project
+            $(B)/road_montage $(B)/rawseed $(B)/distort_project $(B)/glsplay_bands_whole
 
 .PHONY: gallery-truth gallery-effects gallery-road gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
 all: $(TOOLS) $(SCENELIB) $(GLSCENE_LIBS)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
 
-# No backend: say what to install (the #error in glctx.c is the fallback).
-$(B)/runtime/glctx.o: $(GLCTX_CONFIG) | gl-backend-check
+# No backend: say what to install (the #error in gl/glctx.c is the fallback).
+$(B)/runtime/gl/glctx.o: $(GLCTX_CONFIG) | gl-backend-check
 gl-backend-check:
 	@[ -n "$(HAVE_EGL)$(HAVE_OSMESA)" ] || { echo "glscene: no GL backend to build: pkg-config finds neither egl (Debian: libegl-dev) nor osmesa (libosmesa6-dev)$(if $(filter 1,$(GLS_NO_EGL) $(GLS_NO_OSMESA)),; GLS_NO_EGL=1 / GLS_NO_OSMESA=1 left out what it finds)" >&2; exit 1; }
 
@@ -134,6 +160,7 @@ SEES_test_aa := bench
 SEES_test_aa_lattice := bench
 SEES_test_camera := runtime
 SEES_test_player := runtime
+SEES_test_plan_matrix := runtime
 SEES_test_instances := runtime
 SEES_test_occlusion := runtime
 SEES_test_outputs := runtime
@@ -147,6 +174,7 @@ SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
 SEES_test_lighting := runtime
 SEES_test_lens_truth := runtime
+SEES_test_sensor := runtime
 SEES_test_road_geo := roads
 SEES_test_road_nurbs := roads
 SEES_test_road_motion := roads runtime
@@ -228,9 +256,9 @@ $(B)/glsc: $(B)/compiler/glsc_main.o $(LIB_compiler)
 $(B)/glsdis: $(B)/compiler/glsdis_main.o $(LIB_compiler)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 # glsplay is its main over libglscene.a's public API (glscene_play_*,
-# lib/glscene_play.c; tests/e2e/glsplay_public_api.sh); base for the
+# lib/glscene_play*.c; tests/e2e/glsplay_public_api.sh); base for the
 # tools' usage and standard output helpers, which the library leaves out.
-$(B)/glsplay: $(B)/runtime/glsplay_main.o $(B)/libglscene.a $(LIB_base)
+$(B)/glsplay: $(B)/apps/glsplay_main.o $(B)/libglscene.a $(LIB_base)
 	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
 
 # libglscene (docs/api.md): lib/ over every layer but roads, without the
@@ -273,10 +301,10 @@ $(B)/pic/gen/%.o: $(B)/gen/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -fPIC $(INC_compiler) -Wno-unused-parameter -Wno-unused-variable $(DEPFLAGS) -c $< -o $@
 $(GLSCENE_PIC_OBJ): | $(B)/gen/grammar.h
-$(B)/pic/runtime/glctx.o: $(GLCTX_CONFIG) | gl-backend-check
-$(B)/pic/runtime/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
-$(B)/pic/runtime/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
-$(B)/pic/runtime/aa.o: CFLAGS += -O3
+$(B)/pic/runtime/gl/glctx.o: $(GLCTX_CONFIG) | gl-backend-check
+$(B)/pic/runtime/gl/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
+$(B)/pic/runtime/gl/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
+$(B)/pic/runtime/aa/aa.o: CFLAGS += -O3
 
 # Fuzz targets (tests/fuzz/README.md): `make fuzz-build`, then
 # `sh tests/fuzz/run.sh SECONDS` fuzzes every target.
@@ -324,6 +352,12 @@ $(B)/scenelib.glsb: $(B)/glsc $(B)/textures.stamp $(SCENELIB_SRC) $(SCENELIB_DIR
 $(B)/distort_project: $(B)/tools/distort_project.o $(LIB_runtime)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_runtime) $(LDLIBS) $(GL_LIBS)
 $(B)/tools/distort_project.o: LAYER_INC = $(INC_runtime)
+# glsplay_bands_whole: glsplay with each band of a rolling shutter drawn
+# whole, for tests/e2e/rolling_bands.sh (a test's choice, set through the
+# library's internal gls_api_play_opts, never read from the environment)
+$(B)/glsplay_bands_whole: $(B)/tools/glsplay_bands_whole.o $(B)/libglscene.a
+	$(CC) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(GL_LIBS)
+$(B)/tools/glsplay_bands_whole.o: LAYER_INC = $(INC_lib)
 
 $(B)/depth2png: $(B)/tools/depth2png.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
@@ -479,7 +513,7 @@ bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
 # -O3 vectorises them (gcc 12's -O2 leaves loops with remainders scalar).
-$(B)/runtime/aa.o: CFLAGS += -O3
+$(B)/runtime/aa/aa.o: CFLAGS += -O3
 
 # glsroad (roads/, spec/road.md): road descriptions -> scene, trajectory,
 # ground truth.  Library libglsroad.a (tests link it) and the tool.

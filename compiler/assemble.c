@@ -137,6 +137,91 @@ static uint32_t find_name(char *const *names, uint32_t n, const char *s)
     return hit ? (uint32_t)(hit - names) : GLS_NONE;
 }
 
+/* Operand j of in, an index into unit u's tables (or its vertices, which
+ * start at p0, c0, t0, n0 in the bundle's), made an index into the
+ * bundle's: the operand kinds say which index is which. */
+static void relocate(const gls_bundle *b, const gls_unit *u, gls_insn *in, uint32_t p0, uint32_t c0, uint32_t t0,
+                     uint32_t n0)
+{
+    for (uint32_t j = 0; j < gls_op[in->op].noperands; j++) {
+        uint32_t *v = &in->u[j];
+        switch ((gls_operand_kind)gls_op[in->op].kind[j]) {
+        case GLS_KIND_OBJECT: *v = u->refs[*v].target->final_index; break;
+        case GLS_KIND_TEXTURE: *v = gls_bundle_find_texture(b, u->texrefs[*v].name); break;
+        case GLS_KIND_FIRST_POS: *v += p0; break;
+        case GLS_KIND_FIRST_COL: if (*v != GLS_NONE) *v += c0; break;
+        case GLS_KIND_FIRST_TC: if (*v != GLS_NONE) *v += t0; break;
+        case GLS_KIND_FIRST_NRM: *v += n0; break;
+        case GLS_KIND_INSTNAME: *v = find_name(b->instnames, b->ninstnames, u->instnames[*v].name); break;
+        case GLS_KIND_MARKNAME: *v = find_name(b->marknames, b->nmarknames, u->marknames[*v].name); break;
+        case GLS_KIND_CLASSNAME: *v = find_name(b->marknames, b->nmarknames, u->classnames[*v].name); break;
+        case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
+        case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
+        case GLS_KIND_LIGHTKIND: case GLS_KIND_INTENSITY: case GLS_KIND_SHADOWRES:
+            break; /* not an index */
+        }
+    }
+}
+
+/* Unit u as object o of the bundle: its vertices appended to the bundle's,
+ * its code relocated, its source lines.  0, or -1: out of memory. */
+static int add_object(gls_bundle *b, const gls_unit *u, gls_object *o)
+{
+    uint32_t p0 = b->npos, c0 = b->ncol, t0 = b->ntex, n0 = b->nnrm;
+    /* a unit without colours has u->col == NULL: memcpy(NULL, 0) is undefined */
+    if (u->npos)
+        memcpy(b->pos + p0, u->pos, u->npos * sizeof *u->pos);
+    if (u->ncol)
+        memcpy(b->col + c0, u->col, u->ncol * sizeof *u->col);
+    if (u->ntc)
+        memcpy(b->tc + t0, u->tc, u->ntc * sizeof *u->tc);
+    b->npos += u->npos;
+    b->ncol += u->ncol;
+    b->ntex += u->ntc;
+    if (u->nnrm)
+        memcpy(b->nrm + n0, u->nrm, u->nnrm * sizeof *u->nrm);
+    b->nnrm += u->nnrm;
+    gls_buf code = {0};
+    size_t pos = 0;
+    int has_src = u->ninsn && u->lines[0].file != GLS_NONE;
+    o->src = has_src ? malloc(u->ninsn * sizeof *o->src) : NULL;
+    if (!(o->name = strdup(u->name)) || (has_src && !o->src))
+        return -1;
+    for (uint32_t k = 0; k < u->ninsn; k++) {
+        gls_insn in;
+        gls_insn_decode(u->code.data, u->code.len, &pos, &in);
+        relocate(b, u, &in, p0, c0, t0, n0);
+        if (gls_insn_encode(&code, &in)) {
+            free(code.data);
+            return -1;
+        }
+        if (has_src)
+            o->src[k] = u->lines[k];
+    }
+    o->code = code.data;
+    o->code_len = (uint32_t)code.len;
+    o->ninsn = u->ninsn;
+    return 0;
+}
+
+/* The textures of the bundle, sorted: every loaded one (all_textures) or
+ * those a unit of units[0..nu) uses; their count. */
+static uint32_t pick_textures(gls_compiler *c, gls_unit *const *units, uint32_t nu, int all_textures,
+                              tex_entry **texs)
+{
+    uint32_t nt = 0;
+    gls_strmap used = {0};
+    for (uint32_t i = 0; i < nu; i++)
+        for (uint32_t k = 0; k < units[i]->ntexrefs; k++)
+            gls_strmap_put(&used, units[i]->texrefs[k].name, (void *)1);
+    for (size_t i = 0; i < c->nalltex; i++)
+        if (c->alltex[i]->ok && (all_textures || gls_strmap_get(&used, c->alltex[i]->name)))
+            texs[nt++] = c->alltex[i];
+    gls_strmap_free(&used);
+    qsort(texs, nt, sizeof *texs, cmp_tex);
+    return nt;
+}
+
 /* Build the bundle from every unit with state 2 and every loaded texture
  * that a reachable unit uses (all loaded ones in library mode). */
 gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
@@ -151,16 +236,7 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
         if (c->all[i]->state == 2)
             units[nu++] = c->all[i];
     qsort(units, nu, sizeof *units, cmp_unit);
-    /* which textures are used: all_textures, or referenced by a unit */
-    gls_strmap used = {0};
-    for (uint32_t i = 0; i < nu; i++)
-        for (uint32_t k = 0; k < units[i]->ntexrefs; k++)
-            gls_strmap_put(&used, units[i]->texrefs[k].name, (void *)1);
-    for (size_t i = 0; i < c->nalltex; i++)
-        if (c->alltex[i]->ok && (all_textures || gls_strmap_get(&used, c->alltex[i]->name)))
-            texs[nt++] = c->alltex[i];
-    gls_strmap_free(&used);
-    qsort(texs, nt, sizeof *texs, cmp_tex);
+    nt = pick_textures(c, units, nu, all_textures, texs);
 
     b->version = GLS_FORMAT_VERSION;
     b->nobjects = nu;
@@ -202,60 +278,9 @@ gls_bundle *gls_assemble(gls_compiler *c, const gls_unit *top, int all_textures)
     b->nrm = nnrm ? malloc(nnrm * sizeof *b->nrm) : NULL;
     if (!b->pos || !b->col || !b->tc || (nnrm && !b->nrm))
         goto oom;
-    for (uint32_t i = 0; i < nu; i++) {
-        gls_unit *u = units[i];
-        gls_object *o = &b->objects[i];
-        uint32_t p0 = b->npos, c0 = b->ncol, t0 = b->ntex, n0 = b->nnrm;
-        /* a unit without colours has u->col == NULL: memcpy(NULL, 0) is undefined */
-        if (u->npos)
-            memcpy(b->pos + p0, u->pos, u->npos * sizeof *u->pos);
-        if (u->ncol)
-            memcpy(b->col + c0, u->col, u->ncol * sizeof *u->col);
-        if (u->ntc)
-            memcpy(b->tc + t0, u->tc, u->ntc * sizeof *u->tc);
-        b->npos += u->npos;
-        b->ncol += u->ncol;
-        b->ntex += u->ntc;
-        if (u->nnrm)
-            memcpy(b->nrm + n0, u->nrm, u->nnrm * sizeof *u->nrm);
-        b->nnrm += u->nnrm;
-        gls_buf code = {0};
-        size_t pos = 0;
-        int has_src = u->ninsn && u->lines[0].file != GLS_NONE;
-        o->src = has_src ? malloc(u->ninsn * sizeof *o->src) : NULL;
-        if (!(o->name = strdup(u->name)) || (has_src && !o->src))
+    for (uint32_t i = 0; i < nu; i++)
+        if (add_object(b, units[i], &b->objects[i]))
             goto oom;
-        for (uint32_t k = 0; k < u->ninsn; k++) {
-            gls_insn in;
-            gls_insn_decode(u->code.data, u->code.len, &pos, &in);
-            /* relocate: the operand kinds say which index is which */
-            for (uint32_t j = 0; j < gls_op[in.op].noperands; j++) {
-                uint32_t *v = &in.u[j];
-                switch ((gls_operand_kind)gls_op[in.op].kind[j]) {
-                case GLS_KIND_OBJECT: *v = u->refs[*v].target->final_index; break;
-                case GLS_KIND_TEXTURE: *v = gls_bundle_find_texture(b, u->texrefs[*v].name); break;
-                case GLS_KIND_FIRST_POS: *v += p0; break;
-                case GLS_KIND_FIRST_COL: if (*v != GLS_NONE) *v += c0; break;
-                case GLS_KIND_FIRST_TC: if (*v != GLS_NONE) *v += t0; break;
-                case GLS_KIND_FIRST_NRM: *v += n0; break;
-                case GLS_KIND_INSTNAME: *v = find_name(b->instnames, b->ninstnames, u->instnames[*v].name); break;
-                case GLS_KIND_MARKNAME: *v = find_name(b->marknames, b->nmarknames, u->marknames[*v].name); break;
-                case GLS_KIND_CLASSNAME: *v = find_name(b->marknames, b->nmarknames, u->classnames[*v].name); break;
-                case GLS_KIND_NUM: case GLS_KIND_ANGLE: case GLS_KIND_COMPONENT: case GLS_KIND_ALPHA:
-                case GLS_KIND_TEXMODE: case GLS_KIND_PRIMKIND: case GLS_KIND_NVERT: case GLS_KIND_COUNT:
-                case GLS_KIND_LIGHTKIND: case GLS_KIND_INTENSITY: case GLS_KIND_SHADOWRES:
-                    break; /* not an index */
-                }
-            }
-            if (gls_insn_encode(&code, &in))
-                goto oom;
-            if (has_src)
-                o->src[k] = u->lines[k];
-        }
-        o->code = code.data;
-        o->code_len = (uint32_t)code.len;
-        o->ninsn = u->ninsn;
-    }
     b->nsources = c->nsources;
     b->sources = calloc(c->nsources ? c->nsources : 1, sizeof *b->sources);
     if (!b->sources)

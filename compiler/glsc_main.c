@@ -49,6 +49,86 @@ static char *build_dir_of(const char *argv0)
 
 #define usage_error(msg, arg) gls_usage_error("glsc", "\n" USAGE, "%s%s", msg, (arg) ? (arg) : "")
 
+/* glsc's command line */
+typedef struct {
+    const char *out, *lib, *top;
+    const char **roots; /* the -I roots, argc of room */
+    int nroots;
+} args;
+
+/* Read the command line into a: -1 when the compile is to go on, else
+ * glsc's exit status (--help, --version, a usage error). */
+static int parse_args(int argc, char **argv, args *g)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            gls_stdout_text(USAGE);
+            return 0;
+        } else if (strcmp(a, "--version") == 0) {
+            return gls_version("glsc");
+        } else if (strcmp(a, "-I") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--lib") == 0) {
+            if (i + 1 >= argc)
+                return usage_error("missing argument after ", a);
+            const char *v = argv[++i];
+            if (!v[0]) /* names no file: a usage error (spec/exit_status.md) */
+                return usage_error("empty argument after ", a);
+            if (a[1] == 'I')
+                g->roots[g->nroots++] = v;
+            else if (a[1] == 'o')
+                g->out = v;
+            else
+                g->lib = v;
+        } else if (strncmp(a, "-I", 2) == 0) {
+            g->roots[g->nroots++] = a + 2;
+        } else if (a[0] == '-' && a[1]) {
+            return usage_error("unknown option ", a);
+        } else if (g->top) {
+            return usage_error("more than one top-level object: ", a);
+        } else if (!a[0]) {
+            return usage_error("an empty top-level object name", NULL);
+        } else {
+            g->top = a;
+        }
+    }
+    if (g->lib && g->top)
+        return usage_error("--lib takes no top-level object", NULL);
+    if (!g->lib && !g->top)
+        return usage_error("no top-level object given", NULL);
+    if (g->lib && !g->out)
+        return usage_error("--lib needs -o LIB.glsb", NULL);
+    return -1;
+}
+
+/* Encode bundle b and write it to out ("-": standard output); 0, or -1
+ * after the message. */
+static int write_bundle(const gls_bundle *b, const char *out)
+{
+    uint8_t *bytes;
+    size_t len;
+    gls_error err;
+    int rc = 0;
+    if (gls_bundle_write(b, &bytes, &len, &err)) {
+        fprintf(stderr, "glsc: error: %s\n", err.msg);
+        return -1;
+    }
+    if (strcmp(out, "-") == 0) {
+        /* the whole bundle is built and validated before its first
+           byte goes out, so a failed compile writes none of it; a
+           failed write is reported at exit (stdout_check.h) */
+        gls_stdout_write(bytes, len);
+    } else if (gls_mkdir_parents(out)) {
+        /* like glsplay -o, glsc -o creates the directories it needs */
+        fprintf(stderr, "glsc: error: cannot create the directory of %s: %s\n", out, strerror(errno));
+        rc = -1;
+    } else if (gls_write_file_atomic(out, bytes, len)) {
+        fprintf(stderr, "glsc: error: cannot write %s: %s\n", out, gls_write_error(out, errno));
+        rc = -1;
+    }
+    free(bytes);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     gls_check_stdout_at_exit("glsc");
@@ -58,76 +138,27 @@ int main(int argc, char **argv)
        on the bench-compile scene). */
     mallopt(M_MMAP_THRESHOLD, 1 << 30);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
-    const char *out = NULL, *lib = NULL, *top = NULL;
-    const char **roots = calloc((size_t)argc, sizeof *roots);
-    int nroots = 0;
-    if (!roots)
+    args g = {NULL, NULL, NULL, calloc((size_t)argc, sizeof *g.roots), 0};
+    if (!g.roots)
         return 1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            gls_stdout_text(USAGE);
-            free(roots);
-            return 0;
-        } else if (strcmp(a, "--version") == 0) {
-            free(roots);
-            return gls_version("glsc");
-        } else if (strcmp(a, "-I") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--lib") == 0) {
-            if (i + 1 >= argc) {
-                free(roots);
-                return usage_error("missing argument after ", a);
-            }
-            const char *v = argv[++i];
-            if (!v[0]) { /* names no file: a usage error (spec/exit_status.md) */
-                free(roots);
-                return usage_error("empty argument after ", a);
-            }
-            if (a[1] == 'I')
-                roots[nroots++] = v;
-            else if (a[1] == 'o')
-                out = v;
-            else
-                lib = v;
-        } else if (strncmp(a, "-I", 2) == 0) {
-            roots[nroots++] = a + 2;
-        } else if (a[0] == '-' && a[1]) {
-            free(roots);
-            return usage_error("unknown option ", a);
-        } else if (top) {
-            free(roots);
-            return usage_error("more than one top-level object: ", a);
-        } else if (!a[0]) {
-            free(roots);
-            return usage_error("an empty top-level object name", NULL);
-        } else {
-            top = a;
-        }
+    int status = parse_args(argc, argv, &g);
+    if (status >= 0) {
+        free(g.roots);
+        return status;
     }
-    if (lib && top) {
-        free(roots);
-        return usage_error("--lib takes no top-level object", NULL);
-    }
-    if (!lib && !top) {
-        free(roots);
-        return usage_error("no top-level object given", NULL);
-    }
-    if (lib && !out) {
-        free(roots);
-        return usage_error("--lib needs -o LIB.glsb", NULL);
-    }
-
+    const char *out = g.out;
     gls_compiler *c = gls_compiler_new(stderr);
     char *build_dir = build_dir_of(argv[0]);
     gls_compiler_set_build_dir(c, build_dir);
     int rc = 0;
-    for (int i = 0; i < nroots && rc == 0; i++)
-        rc = gls_compiler_add_root(c, roots[i]);
+    for (int i = 0; i < g.nroots && rc == 0; i++)
+        rc = gls_compiler_add_root(c, g.roots[i]);
     if (rc == 0)
         rc = gls_compiler_add_env_roots(c);
-    free(roots);
+    free(g.roots);
     gls_bundle *b = NULL;
     if (rc == 0)
-        rc = lib ? gls_compile_lib(c, lib, &b) : gls_compile_top(c, top, &b);
+        rc = g.lib ? gls_compile_lib(c, g.lib, &b) : gls_compile_top(c, g.top, &b);
     char *defout = NULL;
     if (rc == 0 && !out) {
         /* default: last component of the top name, + .glsb */
@@ -139,32 +170,8 @@ int main(int argc, char **argv)
             sprintf(defout, "%s.glsb", base);
         out = defout;
     }
-    if (rc == 0) {
-        uint8_t *bytes;
-        size_t len;
-        gls_error err;
-        if (gls_bundle_write(b, &bytes, &len, &err)) {
-            fprintf(stderr, "glsc: error: %s\n", err.msg);
-            rc = -1;
-        } else if (strcmp(out, "-") == 0) {
-            /* the whole bundle is built and validated before its first
-               byte goes out, so a failed compile writes none of it; a
-               failed write is reported at exit (stdout_check.h) */
-            gls_stdout_write(bytes, len);
-            free(bytes);
-        } else if (gls_mkdir_parents(out)) {
-            /* like glsplay -o, glsc -o creates the directories it needs */
-            fprintf(stderr, "glsc: error: cannot create the directory of %s: %s\n", out, strerror(errno));
-            rc = -1;
-            free(bytes);
-        } else {
-            if (gls_write_file_atomic(out, bytes, len)) {
-                fprintf(stderr, "glsc: error: cannot write %s: %s\n", out, gls_write_error(out, errno));
-                rc = -1;
-            }
-            free(bytes);
-        }
-    }
+    if (rc == 0)
+        rc = write_bundle(b, out);
     gls_bundle_free(b);
     gls_compiler_free(c);
     free(build_dir);

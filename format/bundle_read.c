@@ -377,16 +377,10 @@ static int read_normals(gls_bundle *b, cursor *c, gls_error *err)
     return 0;
 }
 
-gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
+/* The header after check_start: checksum, header size, section count
+ * (into *nsect), reserved fields; version, features and top into b. */
+static int check_header(const uint8_t *data, size_t len, gls_bundle *b, uint32_t *nsect, gls_error *err)
 {
-    uint8_t *raw[GLS_SEC_COUNT] = {0};
-    uint64_t rawlen[GLS_SEC_COUNT] = {0};
-    gls_bundle *b = calloc(1, sizeof *b);
-    if (!b)
-        FAIL("out of memory");
-
-    if (check_start(data, len, len, err))
-        goto fail;
     uint32_t version = gls_le_get_u32(data + GLS_HDR_VERSION);
     {
         uint8_t zero[4] = {0};
@@ -401,70 +395,96 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
     if (gls_le_get_u32(data + GLS_HDR_HSIZE) != GLS_HEADER_SIZE)
         FAIL("bundle header size %u is not %u", gls_le_get_u32(data + GLS_HDR_HSIZE), GLS_HEADER_SIZE);
     /* every required section, and those of the optional ones present */
-    const uint32_t nsect = gls_le_get_u32(data + GLS_HDR_NSECT);
-    if (nsect < GLS_SEC_REQUIRED || nsect > GLS_SEC_COUNT)
-        FAIL("bundle has %u sections, expected %u to %u", nsect, GLS_SEC_REQUIRED, GLS_SEC_COUNT);
+    *nsect = gls_le_get_u32(data + GLS_HDR_NSECT);
+    if (*nsect < GLS_SEC_REQUIRED || *nsect > GLS_SEC_COUNT)
+        FAIL("bundle has %u sections, expected %u to %u", *nsect, GLS_SEC_REQUIRED, GLS_SEC_COUNT);
     if (gls_le_get_u32(data + GLS_HDR_RES0) || gls_le_get_u32(data + GLS_HDR_RES1))
         FAIL("bundle header: reserved fields are not zero");
     b->version = version;
     b->features = gls_le_get_u32(data + GLS_HDR_FEATURES);
     b->top = gls_le_get_u32(data + GLS_HDR_TOP);
+    return 0;
+fail:
+    return -1;
+}
 
+/* Section directory entry s: its id (in order after ids[0..s), into
+ * ids[s]), its place (at *expect_off, contiguous; *expect_off moves past
+ * it), its decoded size (under the limit, alone and with *total_raw, the
+ * sections' before it), its codec; decoded into raw[s], rawlen[s]. */
+static int read_section(const uint8_t *data, size_t len, unsigned s, uint32_t *ids, uint64_t *expect_off,
+                        uint64_t *total_raw, uint8_t **raw, uint64_t *rawlen, gls_error *err)
+{
+    const uint8_t *e = data + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
+    uint32_t id = gls_le_get_u32(e), codec = gls_le_get_u32(e + 4);
+    uint64_t off = gls_le_get_u64(e + 8), stored = gls_le_get_u64(e + 16), rl = gls_le_get_u64(e + 24);
+    /* the required sections in order, then optional ones in id order */
+    if (s < GLS_SEC_REQUIRED && id != GLS_SEC_OBJECTS + s)
+        FAIL("section directory entry %u has id %u, expected %u", s, id, GLS_SEC_OBJECTS + s);
+    if (s >= GLS_SEC_REQUIRED && (id <= ids[s - 1] || id > GLS_SEC_COUNT))
+        FAIL("section directory entry %u has id %u, expected an optional section after %u (up to %u)", s, id,
+             ids[s - 1], GLS_SEC_COUNT);
+    ids[s] = id;
+    if (off != *expect_off || stored > len - off)
+        FAIL("section %u: offset %llu / size %llu outside the file or not contiguous", id,
+             (unsigned long long)off, (unsigned long long)stored);
+    *expect_off = off + stored;
+    if (rl > GLS_MAX_SECTION_RAW)
+        FAIL("section %u declares %llu decoded bytes, over the limit of %llu", id,
+             (unsigned long long)rl, (unsigned long long)GLS_MAX_SECTION_RAW);
+    /* the sum too: what the reader allocates in all (spec/bundle.md 5) */
+    if (*total_raw + rl > GLS_MAX_SECTION_RAW)
+        FAIL("section %u declares %llu decoded bytes, %llu with the sections before it, over the limit of %llu "
+             "for all sections",
+             id, (unsigned long long)rl, (unsigned long long)(*total_raw + rl),
+             (unsigned long long)GLS_MAX_SECTION_RAW);
+    *total_raw += rl;
+    if (codec == GLS_CODEC_RAW) {
+        if (rl != stored)
+            FAIL("section %u: raw section with stored size %llu != decoded size %llu", id,
+                 (unsigned long long)stored, (unsigned long long)rl);
+    } else if (codec == GLS_CODEC_ZSTD) {
+        unsigned long long fcs = ZSTD_getFrameContentSize(data + off, stored);
+        if (fcs == ZSTD_CONTENTSIZE_ERROR || fcs == ZSTD_CONTENTSIZE_UNKNOWN || fcs != rl)
+            FAIL("section %u: zstd frame header does not declare the %llu bytes the directory says", id,
+                 (unsigned long long)rl);
+    } else {
+        FAIL("section %u: unknown codec %u", id, codec);
+    }
+    raw[s] = malloc(rl ? rl : 1);
+    if (!raw[s])
+        FAIL("out of memory for section %u (%llu bytes)", id, (unsigned long long)rl);
+    rawlen[s] = rl;
+    if (codec == GLS_CODEC_RAW) {
+        memcpy(raw[s], data + off, rl);
+    } else {
+        size_t got = ZSTD_decompress(raw[s], rl, data + off, stored);
+        if (ZSTD_isError(got) || got != rl)
+            FAIL("section %u: zstd data is corrupted (%s)", id, ZSTD_isError(got) ? ZSTD_getErrorName(got) : "short");
+    }
+    return 0;
+fail:
+    return -1;
+}
+
+gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
+{
+    uint8_t *raw[GLS_SEC_COUNT] = {0};
+    uint64_t rawlen[GLS_SEC_COUNT] = {0};
+    gls_bundle *b = calloc(1, sizeof *b);
+    if (!b)
+        FAIL("out of memory");
+    uint32_t nsect;
+    if (check_start(data, len, len, err) || check_header(data, len, b, &nsect, err))
+        goto fail;
     size_t dir_end = GLS_HEADER_SIZE + nsect * GLS_DIRENT_SIZE;
     if (len < dir_end)
         FAIL("bundle is truncated inside its section directory");
     uint64_t expect_off = dir_end, total_raw = 0;
     uint32_t ids[GLS_SEC_COUNT];
-    for (unsigned s = 0; s < nsect; s++) {
-        const uint8_t *e = data + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
-        uint32_t id = gls_le_get_u32(e), codec = gls_le_get_u32(e + 4);
-        uint64_t off = gls_le_get_u64(e + 8), stored = gls_le_get_u64(e + 16), rl = gls_le_get_u64(e + 24);
-        /* the required sections in order, then optional ones in id order */
-        if (s < GLS_SEC_REQUIRED && id != GLS_SEC_OBJECTS + s)
-            FAIL("section directory entry %u has id %u, expected %u", s, id, GLS_SEC_OBJECTS + s);
-        if (s >= GLS_SEC_REQUIRED && (id <= ids[s - 1] || id > GLS_SEC_COUNT))
-            FAIL("section directory entry %u has id %u, expected an optional section after %u (up to %u)", s, id,
-                 ids[s - 1], GLS_SEC_COUNT);
-        ids[s] = id;
-        if (off != expect_off || stored > len - off)
-            FAIL("section %u: offset %llu / size %llu outside the file or not contiguous", id,
-                 (unsigned long long)off, (unsigned long long)stored);
-        expect_off = off + stored;
-        if (rl > GLS_MAX_SECTION_RAW)
-            FAIL("section %u declares %llu decoded bytes, over the limit of %llu", id,
-                 (unsigned long long)rl, (unsigned long long)GLS_MAX_SECTION_RAW);
-        /* the sum too: what the reader allocates in all (spec/bundle.md 5) */
-        if (total_raw + rl > GLS_MAX_SECTION_RAW)
-            FAIL("section %u declares %llu decoded bytes, %llu with the sections before it, over the limit of %llu "
-                 "for all sections",
-                 id, (unsigned long long)rl, (unsigned long long)(total_raw + rl),
-                 (unsigned long long)GLS_MAX_SECTION_RAW);
-        total_raw += rl;
-        if (codec == GLS_CODEC_RAW) {
-            if (rl != stored)
-                FAIL("section %u: raw section with stored size %llu != decoded size %llu", id,
-                     (unsigned long long)stored, (unsigned long long)rl);
-        } else if (codec == GLS_CODEC_ZSTD) {
-            unsigned long long fcs = ZSTD_getFrameContentSize(data + off, stored);
-            if (fcs == ZSTD_CONTENTSIZE_ERROR || fcs == ZSTD_CONTENTSIZE_UNKNOWN || fcs != rl)
-                FAIL("section %u: zstd frame header does not declare the %llu bytes the directory says", id,
-                     (unsigned long long)rl);
-        } else {
-            FAIL("section %u: unknown codec %u", id, codec);
-        }
-        raw[s] = malloc(rl ? rl : 1);
-        if (!raw[s])
-            FAIL("out of memory for section %u (%llu bytes)", id, (unsigned long long)rl);
-        rawlen[s] = rl;
-        if (codec == GLS_CODEC_RAW) {
-            memcpy(raw[s], data + off, rl);
-        } else {
-            size_t got = ZSTD_decompress(raw[s], rl, data + off, stored);
-            if (ZSTD_isError(got) || got != rl)
-                FAIL("section %u: zstd data is corrupted (%s)", id,
-                     ZSTD_isError(got) ? ZSTD_getErrorName(got) : "short");
-        }
-    }
+    for (unsigned s = 0; s < nsect; s++)
+        if (read_section(data, len, s, ids, &expect_off, &total_raw, raw, rawlen, err))
+            goto fail;
     if (expect_off != len)
         FAIL("bundle has %llu bytes after its last section", (unsigned long long)(len - expect_off));
 

@@ -1,9 +1,10 @@
 /* The player of the library (include/glscene.h): a bundle's scene, its GL
  * context and renderer, kept open across renders.  Each render does what
- * glsplay's play_camera does for the same outputs (runtime/player.c): the
- * centre pass for depth and an image of one sample, the anti-aliasing
- * passes for an image of more, the ground-truth pass for ids and normals,
- * with the same functions, so that the numbers are glsplay's. */
+ * glsplay's play_camera does for the same outputs
+ * (runtime/play/play_frame.c): the centre pass for depth and an image of
+ * one sample, the anti-aliasing passes for an image of more, the
+ * ground-truth pass for ids and normals, with the same functions, so that
+ * the numbers are glsplay's. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 #include "aa_onepass.h"
 #include "aa_render.h"
 #include "bundle.h"
+#include "frame_plan.h"
 #include "glctx.h"
 #include "glscene_internal.h"
 #include "gt_pass.h"
@@ -200,15 +202,25 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
     if (gls_renderer_set_size(p->r, c.width, c.height, err, sizeof err))
         return gls_api_fail(e, "%s", err);
     size_t n = (size_t)c.width * c.height;
-    int image = out->rgb8 || out->rgbf, aa = image && p->plan.count > 1;
+    /* what the frame needs, decided by the player's frame plan
+     * (frame_plan.h) from the buffers asked for: the same decision
+     * glsplay makes for the same outputs (a library camera is a pinhole
+     * without effects, and nothing moves) */
+    int image = out->rgb8 || out->rgbf;
+    gls_plan_inputs pin = {(image ? GLS_OUT_IMAGE : 0u) | (out->depth ? GLS_OUT_DEPTH : 0u) |
+                               (out->instance ? GLS_OUT_INSTANCE : 0u) | (out->normals ? GLS_OUT_NORMALS : 0u),
+                           out->rgbf ? GLS_IMG_PFM : GLS_IMG_PNG8, &p->plan, 0};
+    gls_frame_plan fp;
+    gls_frame_plan_make(&fp, &pin, &c, 0);
+    int aa = fp.aa;
     uint8_t *rgba = NULL;
     uint32_t *ids = NULL;
     gls_accum acc;
     memset(&acc, 0, sizeof acc);
     int rc = -1;
-    if ((image && !aa) || out->depth) {
+    if (fp.passes & GLS_PASS_CENTRE) {
         gls_render_pass(p->r, &c, 0.0, 0.0);
-        if (image && !aa) {
+        if (fp.rgba) {
             if (!(rgba = malloc(n * 4)))
                 goto oom;
             gls_render_read_rgba(p->r, rgba);
@@ -216,7 +228,7 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
         if (out->depth)
             gls_render_read_z(p->r, out->depth);
     }
-    if (out->instance || out->normals) {
+    if (fp.passes & GLS_PASS_TRUTH) {
         if (out->instance && !(ids = malloc(n * sizeof *ids)))
             goto oom;
         if (gls_gt_render(p->r, &c, ids, out->normals, NULL, err, sizeof err)) {

@@ -37,7 +37,7 @@ int glscene_camera_from_file(const char *path, glscene_camera *out, glscene_erro
     return glscene_camera_set(out, c.width, c.height, c.fx, c.fy, c.cx, c.cy, c.skew, c.R, c.T, c.near, c.far, e);
 }
 
-/* The checks of runtime/camera.c's gls_camera_from_keys, on numbers. */
+/* The checks of runtime/camera/camera.c's gls_camera_from_keys, on numbers. */
 static int check(glscene_camera *c, glscene_error *e)
 {
     const double *num[] = {&c->fx, &c->fy, &c->cx, &c->cy, &c->skew, &c->near, &c->far};

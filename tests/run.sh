@@ -49,8 +49,10 @@ if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     export LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
     units=$(for f in tests/unit/*.c; do printf 'build-asan/tests/%s ' "$(basename "$f" .c)"; done)
-    # distort_project: the lens model as a filter, run by distortion.sh
+    # distort_project: the lens model as a filter, run by distortion.sh;
+    # glsplay_bands_whole: glsplay with whole bands, run by rolling_bands.sh
     if make --no-print-directory -s -j2 B=build-asan SANITIZE=1 CC=clang all $units build-asan/distort_project \
+        build-asan/glsplay_bands_whole \
         >build-asan.log 2>&1; then
         export GLS_SANITIZED=1
         suite build-asan | sed 's/^ok /ok asan:/; s/^FAIL /FAIL asan:/' | tee -a "$log"

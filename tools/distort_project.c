@@ -1,4 +1,4 @@
-/* distort_project CAMERA: the camera model of glsplay (runtime/distort.h)
+/* distort_project CAMERA: the camera model of glsplay (runtime/camera/distort.h)
  * as a filter, for tests/py/check_distortion.py, which compares it with
  * cv2.projectPoints and cv2.fisheye.projectPoints.  Each input line is
  *   w X Y Z   a world point: prints "u v" (through the lens model)

@@ -1,7 +1,7 @@
 #!/bin/sh
 # docs/ARCHITECTURE.md stays true as the code changes (issue 12): every
 # source, header, script or spec file it names in backquotes (`name.c`,
-# `runtime/render.c`, `spec/bundle.md`, ...) exists in the tree, by its
+# `runtime/render/render.c`, `spec/bundle.md`, ...) exists in the tree, by its
 # path when it gives one, else by its name (gen/...: generated, in the
 # build directory).  Prints "ok NAME" /
 # "FAIL NAME: why".

@@ -4,7 +4,7 @@
 # and point clouds; the projection and depth exactness tests pass through
 # each; --explain names the backend; the errors are one line each; auto
 # falls back to OSMesa when EGL gives no context; glsplay imports no GL
-# function from any library (runtime/glcalls.h).
+# function from any library (runtime/gl/glcalls.h).
 # EGL is made to render with llvmpipe here whatever the machine has
 # (--backend egl-surfaceless with LIBGL_ALWAYS_SOFTWARE=1), so that the
 # comparison holds on a machine with a GPU too; the exactness tests run
@@ -154,7 +154,7 @@ if command -v nm >/dev/null; then
         [ -e "$p" ] || continue
         gl=$(nm -D --undefined-only "$p" | awk '$2 ~ /^gl[A-Z]/ { printf " %s", $2 }')
         [ -z "$gl" ] && ok "backends_no_gl_import_$(basename "$p")" ||
-            fail "backends_no_gl_import_$(basename "$p")" "imports$gl: add them to runtime/glcalls.h"
+            fail "backends_no_gl_import_$(basename "$p")" "imports$gl: add them to runtime/gl/glcalls.h"
     done
 else
     fail backends_nm "no nm"

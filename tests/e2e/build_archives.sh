@@ -30,11 +30,12 @@ else
     echo "FAIL build_archives_from_scratch: the first build failed: $(tail -1 "$t/log")"
 fi
 
-# archive  its sources (without the tools' mains)  generated objects
+# archive  its sources' directories (the runtime's rooms: runtime/*/)
+# (without the tools' mains)  generated objects
 while read -r lib dir extra; do
     [ -n "$lib" ] || continue
     [ -f "$B/$lib" ] || { echo "FAIL build_archives_$lib: no $B/$lib (run make)"; continue; }
-    want=$( (for f in "$dir"/*.c; do basename "$f" .c; done | grep -v '_main$'; for e in $extra; do echo "$e"; done) |
+    want=$( (for f in $dir/*.c; do basename "$f" .c; done | grep -v '_main$'; for e in $extra; do echo "$e"; done) |
         sed 's/$/.o/' | sort)
     got=$(ar t "$B/$lib" | sort)
     if [ "$want" = "$got" ]; then
@@ -46,6 +47,6 @@ done <<EOF
 libglsbase.a base
 libglsformat.a format
 libglscompiler.a compiler lexer grammar
-libglsruntime.a runtime
+libglsruntime.a runtime/*
 libglsroad.a roads
 EOF

@@ -76,7 +76,7 @@ fi
 # objects are there from the two builds above) and relinks
 make --no-print-directory B="$t/b" "$t/b/glsplay" >"$t/log" 2>&1
 compiled=$(grep -o ' -c [^ ]*\.c' "$t/log" | sed 's/ -c //' | tr '\n' ' ')
-if [ "$compiled" = "runtime/glctx.c " ]; then
+if [ "$compiled" = "runtime/gl/glctx.c " ]; then
     ok build_backends_switch_rebuilds_glctx
 else
     fail build_backends_switch_rebuilds_glctx "compiled: ${compiled:-nothing} $(grep -i error "$t/log" | head -2)"

@@ -16,20 +16,36 @@ CC=${CC:-cc}
 # LAYER  a file of it  the directories it may see (gen: the compiler's
 # generated grammar.h); glsroad is the glsroad tool's main, which also reads
 # camera files and trajectories; lib is libglscene (docs/api.md), over the
-# compiler and the runtime, with its public header in include/
+# compiler and the runtime, with its public header in include/; glsplay is
+# glsplay's main (apps/), which sees the public header and base only.  The
+# runtime is rooms (runtime/ROOM, docs/ARCHITECTURE.md), each seeing the
+# rooms before it: gl < scene < camera < render < aa < effects < truth <
+# encode < write < play.
 table='
-base     base/buf.c                 base
-format   format/insn.c              format base
-compiler compiler/unit.c            compiler gen format base
-runtime  runtime/camera.c           runtime format base
-roads    roads/nurbs.c              roads base
-glsroad  roads/glsroad_main.c       roads runtime format base
-lib      lib/glscene.c              lib include compiler gen runtime format base
+base     base/buf.c                    base
+format   format/insn.c                 format base
+compiler compiler/unit.c               compiler gen format base
+gl       runtime/gl/glcalls.c          gl format base
+scene    runtime/scene/scene_pack.c    scene gl format base
+camera   runtime/camera/camera.c       camera scene gl format base
+render   runtime/render/render.c       render camera scene gl format base
+aa       runtime/aa/aa.c               aa render camera scene gl format base
+effects  runtime/effects/exposure.c    effects aa render camera scene gl format base
+truth    runtime/truth/gt_flow.c       truth effects aa render camera scene gl format base
+encode   runtime/encode/outputs.c      encode truth effects aa render camera scene gl format base
+write    runtime/write/frame_files.c   write encode truth effects aa render camera scene gl format base
+play     runtime/play/player.c         play write encode truth effects aa render camera scene gl format base
+roads    roads/nurbs.c                 roads base
+glsroad  roads/glsroad_main.c          roads camera scene gl format base
+lib      lib/glscene.c                 lib include compiler gen play write encode truth effects aa render camera scene gl format base
+glsplay  apps/glsplay_main.c           include base
 '
-dirs="base format compiler gen runtime roads lib include"
+rooms="gl scene camera render aa effects truth encode write play"
+dirs="base format compiler gen $rooms roads lib include"
 headers() { # DIR: the headers of a layer directory
     case $1 in
     gen) echo "$B/gen/grammar.h" ;;
+    gl | scene | camera | render | aa | effects | truth | encode | write | play) ls runtime/"$1"/*.h ;;
     *) ls "$1"/*.h ;;
     esac
 }
@@ -61,7 +77,7 @@ echo "$table" | while read -r layer file sees; do
 done
 
 # no relative include reaches out of its directory
-esc=$(grep -n '#[[:space:]]*include[[:space:]]*"\.\./' base/* format/* compiler/* runtime/* roads/* lib/* include/* \
+esc=$(grep -n '#[[:space:]]*include[[:space:]]*"\.\./' base/* format/* compiler/* runtime/*/* apps/* roads/* lib/* include/* \
       tests/unit/* tests/fuzz/*.c bench/* tools/*.c scenelib/gen/*.c 2>/dev/null | head -5)
 if [ -z "$esc" ]; then echo "ok build_layers_no_relative_includes"
 else echo "FAIL build_layers_no_relative_includes: $(echo "$esc" | tr '\n' ' ')"; fi

@@ -1,7 +1,7 @@
 #!/bin/sh
 # spec/camera.md "File format"'s table of keys is the parser's: the keys
 # its rows name (the first column, in backquotes) are exactly those of
-# runtime/camera.c's key_name table (the sensor's keys have their own
+# runtime/camera/camera.c's key_name table (the sensor's keys have their own
 # table, "Sensor effects").  A row that stands outside the table, after
 # a blank line or a paragraph, is not in it, so its keys are missing.
 # Prints "ok NAME" / "FAIL NAME: why".
@@ -21,14 +21,14 @@ spec_keys() {
          on && !/^\|-/ { split($0, c, "|"); print c[2] }' "$1" | grep -o '`[A-Za-z_]*`' | tr -d '`' | sort
 }
 
-code_keys runtime/camera.c >"$t/code"
+code_keys runtime/camera/camera.c >"$t/code"
 spec_keys spec/camera.md >"$t/spec"
 if [ "$(wc -l <"$t/code")" -lt 15 ]; then
-    fail camera_keys_spec_table "only $(wc -l <"$t/code") keys found in runtime/camera.c's key_name"
+    fail camera_keys_spec_table "only $(wc -l <"$t/code") keys found in runtime/camera/camera.c's key_name"
 elif cmp -s "$t/code" "$t/spec"; then
     ok camera_keys_spec_table
 else
-    fail camera_keys_spec_table "spec/camera.md's key table and runtime/camera.c differ (< code, > spec): $(diff "$t/code" "$t/spec" | grep '^[<>]' | tr '\n' ' ')"
+    fail camera_keys_spec_table "spec/camera.md's key table and runtime/camera/camera.c differ (< code, > spec): $(diff "$t/code" "$t/spec" | grep '^[<>]' | tr '\n' ' ')"
 fi
 
 # the check sees a row left outside the table (issue 26: the effects' row

@@ -8,7 +8,7 @@
 # every internal symbol, links, and renders the same bytes as glsplay.
 # Prints "ok NAME" / "FAIL NAME: why".
 . tests/e2e/lib.sh
-main=$B/runtime/glsplay_main.o
+main=$B/apps/glsplay_main.o
 so=$B/libglscene.so
 for f in "$main" "$so" "$B/libglscene.a" "$B/base/usage.o" "$B/base/stdout_check.o"; do
     [ -e "$f" ] || { echo "FAIL glsplay_public_api: no $f (run make all)"; exit 0; }

@@ -47,7 +47,7 @@ else
     fail landmarks_frame_record "$(cat "$t/o1/c/.frame_000000.done")"
 fi
 # far from the camera (the tolerance is relative to the depth, 1e-4 Zc,
-# runtime/gt_landmarks.c): a wall 100 units away, a mark 0.005 behind it
+# runtime/truth/gt_landmarks.c): a wall 100 units away, a mark 0.005 behind it
 # visible (within 0.01), one 0.02 behind hidden; an absolute 1e-4 would hide both
 mkdir "$t/far"
 printf 'mark("just.behind", 0, 0, 100.005);\nmark("well.behind", 0, 0, 100.02);\ncolor(0.5, 0.5, 0.5);\npoly { vert(-50, -50, 100); vert(50, -50, 100); vert(50, 50, 100); vert(-50, 50, 100); }\n' >"$t/far/Wall.scene"

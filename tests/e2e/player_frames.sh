@@ -55,19 +55,20 @@ else
     fail every_output_at_once "rc $rc, $n0 files of left's frame 0, $n4 of right's frame 4: $(cat "$t/err")"
 fi
 
-# --explain draws the plan the player draws (frame_passes.h): a camera
+# --explain prints the plan the player runs (frame_plan.h): a camera
 # with a shutter over a trajectory accumulates its sub-frame renders even
 # at --aa 1, so no line may say "no accumulator" for it; the still
-# cameras beside it (cam, right) draw 1 pass without one
+# camera beside it (right) draws 1 pass without one
 $PLAY --camera "$t/blur.cam" --camera "$t/pair/right.cam" --aa 1 --trajectory "$t/traj.txt" --frames 1:4 \
     --explain >"$t/plan" 2>"$t/err"
 rc=$?
 blur=$(sed -n '/^camera blur:/,/^camera right:/p' "$t/plan")
 still=$(sed -n '/^camera right:/,$p' "$t/plan")
-if [ $rc -eq 0 ] && ! grep -q "^passes: 1 per camera and frame (no anti-aliasing)" "$t/plan" &&
+if [ $rc -eq 0 ] && ! grep -q "^passes: " "$t/plan" &&
     echo "$blur" | grep -q "the image from an accumulator of 16 samples per pixel" &&
-    echo "$blur" | grep -q "passes: 1 per sub-frame render (no anti-aliasing), into the accumulator" &&
-    ! echo "$blur" | grep -q "no accumulator" && echo "$still" | grep -q "passes: 1 (.*); no accumulator" &&
+    echo "$blur" | grep -q "accumulator: 16 samples per pixel (anti-aliasing samples x sub-frame renders)" &&
+    echo "$blur" | grep -q "frame plan: passes centre exposure" &&
+    ! echo "$blur" | grep -q "no accumulator" && echo "$still" | grep -q "passes: 1 per camera and frame .*; no accumulator" &&
     echo "$blur" | grep -q "reads back (unjittered centre pass): colour (RGBA8) depth" &&
     echo "$still" | grep -q "reads back: colour (RGBA8) depth"; then
     ok explain_shutter_at_aa1_accumulates
@@ -135,4 +136,21 @@ if [ $rc -eq 0 ] && grep -q "nothing to render" "$t/err" && [ ! -e "$t/shard" ];
     ok empty_shard_leaves_no_directory
 else
     fail empty_shard_leaves_no_directory "rc $rc: $(cat "$t/err"); $(find "$t/shard" 2>/dev/null | tr '\n' ' ')"
+fi
+
+# the frame record keys on the frame's plan (runtime/play/frame_plan.h):
+# the trajectory's last frame writes no flow (there is no next row), so
+# its record does not list flow while the others do; --resume then finds
+# every frame complete, the last one included
+$PLAY --outputs image,flow --trajectory "$t/traj.txt" --frames 2: -o "$t/rec" 2>"$t/err"
+rc=$?
+first=$(grep '^outputs' "$t/rec/cam/.frame_000002.done" 2>/dev/null)
+last=$(grep '^outputs' "$t/rec/cam/.frame_000004.done" 2>/dev/null)
+$PLAY --outputs image,flow --trajectory "$t/traj.txt" --frames 2: -o "$t/rec" --resume 2>"$t/err2"
+rc2=$?
+if [ $rc -eq 0 ] && [ "$first" = "outputs image flow" ] && [ "$last" = "outputs image" ] && [ $rc2 -eq 0 ] &&
+    grep -q "3 of 3 frames complete, skipped; 0 to render" "$t/err2"; then
+    ok frame_record_keys_on_plan
+else
+    fail frame_record_keys_on_plan "rc $rc/$rc2; first '$first', last '$last': $(cat "$t/err" "$t/err2")"
 fi

@@ -1,5 +1,5 @@
 #!/bin/sh
-# glsplay's writer thread (runtime/frame_writer.h) and PNG encoding:
+# glsplay's writer thread (runtime/write/frame_writer.h) and PNG encoding:
 # the same files with --writer-threads 1 and 0; PNG pixels exact through
 # cv2.imread (8-bit and 16-bit mid-greys); a write that fails mid-sequence
 # (a directory in a later frame's place, a full disk) stops the run with

@@ -1,6 +1,6 @@
 #!/bin/sh
 # --resume takes a frame only if it was made from the same inputs
-# (runtime/frame_record.h; spec/road.md "Resuming a sequence"): the
+# (runtime/play/frame_record.h; spec/road.md "Resuming a sequence"): the
 # record names the camera's intrinsics and the digest of the bundle, the
 # camera files, the trajectory and the motion files, so a changed scene,
 # camera or trajectory re-renders every frame, and what it writes equals a

@@ -1,18 +1,21 @@
 #!/bin/sh
 # A rolling shutter draws and reads, for each band of rows, only the rows
 # it needs (spec/outputs.md "With a rolling shutter", "Through a lens"):
-# through a lens the fine rows its pixels read (runtime/distort_exposure.c,
+# through a lens the fine rows its pixels read (runtime/effects/distort_exposure.c,
 # gls_distort_truth_bands), through a pinhole the band's own rows
-# (runtime/player.c centre_bands; the image's bands: one sample a pixel,
+# (runtime/play/play_passes.c play_centre_bands; the image's bands: one sample a pixel,
 # or a lattice plan's fine tiles, aa_onepass.c, or the jittered passes,
 # aa_render.c; gt_flow_rolling.c for the
 # next frame's depth).  Every output must be the
 # same bytes as with each band drawing and reading the whole image
-# (GLS_BANDS_WHOLE=1, the switch that exists for this test).  The scene
+# ($B/glsplay_bands_whole, glsplay's run with gls_play_opts' bands_whole
+# set, tools/glsplay_bands_whole.c: a parameter of the API, never read
+# from the environment; tests/e2e/env_switches.sh).  The scene
 # of tests/py/flow_scene.py (a moving box: ids, normals, flow, boxes),
 # every output each camera allows.
 # Prints "ok NAME" / "FAIL NAME: why".
 . tests/e2e/lib.sh
+need rolling_bands_setup glsplay glsplay_bands_whole
 if ! $PY tests/py/flow_scene.py "$t" 2>"$t/err" ||
     ! "$BIN/glsc" -I "$BIN/scenelib.glsb" -o "$t/f.glsb" "$t/Flow.scene" 2>>"$t/err"; then
     echo "FAIL rolling_bands_setup: $(cat "$t/err")"
@@ -35,8 +38,8 @@ same() {
     name=$1 want=$2
     shift 2
     for how in rows whole; do
-        [ $how = whole ] && w=1 || w=0
-        if ! GLS_BANDS_WHOLE=$w "$BIN/glsplay" "$t/f.glsb" --trajectory "$t/trajectory.txt" \
+        [ $how = whole ] && play=glsplay_bands_whole || play=glsplay
+        if ! "$BIN/$play" "$t/f.glsb" --trajectory "$t/trajectory.txt" \
             --motion "mover=$t/mover.txt" --frames 0:1 -o "$t/$name.$how" "$@" 2>"$t/$name.err"; then
             echo "FAIL $name: glsplay failed: $(cat "$t/$name.err")"
             return

@@ -16,7 +16,6 @@ effects; keys at their neutral values change nothing.  Run with
 """
 import math
 import os
-import subprocess
 import sys
 import numpy as np
 import cv2
@@ -209,16 +208,9 @@ for nm, d, fn in (('seed', s, 'image_000000.png'), ('camera', o, 'image_000000.p
     frac = np.mean(ia != ib)
     result('sensor_other_%s_other_noise' % nm, frac > 0.9, 'only %.3f of the samples differ' % frac)
 
-# the bands of rows the noise is drawn in, on threads, change nothing
-# (each pixel's noise is keyed by the pixel): 1, 3 and 16 bands
-big = camera(D + '/det/t/big.cam', noisy + 'vignetting cos4\n')
-outs = []
-for nb in ('1', '3', '16'):
-    env = dict(os.environ, GLS_SENSOR_THREADS=nb)
-    p = subprocess.run([BIN + '/glsplay', D + '/wall.glsb', '--camera', big, '--size', '640x480', '--outputs', 'image',
-                        '--image-format', 'pfm', '-o', D + '/thr' + nb], env=env, capture_output=True, text=True)
-    outs.append(raw(D + '/thr%s/big/image_000000.pfm' % nb) if p.returncode == 0 else p.stderr)
-result('sensor_threads_same_image', outs[0] == outs[1] == outs[2], 'the image differs with the number of bands')
+# the bands of rows the noise is drawn in, on threads, change nothing:
+# tests/unit/test_sensor.c (test_sensor_threads_same_image) passes their
+# number to gls_sensor_apply, which no variable of the environment sets
 
 # ---- vignetting against cos^4 of the ray angle (K in numpy) -------------
 u, v = np.meshgrid(np.arange(W, dtype=np.float64), np.arange(H, dtype=np.float64))

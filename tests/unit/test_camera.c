@@ -1,4 +1,4 @@
-/* Camera files and the camera's matrices (runtime/camera.c), CPU only. */
+/* Camera files and the camera's matrices (runtime/camera/camera.c), CPU only. */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>

@@ -234,6 +234,11 @@ static void test_glscene_play(void)
     CHECK(glscene_play_arg(r, "--explain", "--aa", &e) == 1);
     CHECK(glscene_play_arg(r, "--progress", "json", &e) == 2);
     CHECK(glscene_play_arg(r, "--progress", "x.glsb", &e) == 1);
+    /* --progress last takes itself alone; --progress=WORD never takes the
+       next argument, even one that is the same string as WORD */
+    CHECK(glscene_play_arg(r, "--progress", NULL, &e) == 1);
+    static const char progress_bar[] = "--progress=bar";
+    CHECK(glscene_play_arg(r, progress_bar, progress_bar + 11, &e) == 1);
     CHECK(glscene_play_arg(r, "--aa", "0", &e) == -1);
     CHECK_STR(e.message, "--aa needs N in 1..4096, got '0'");
     CHECK(glscene_play_arg(r, "--camera", NULL, &e) == -1);

@@ -1,4 +1,4 @@
-/* The ground-truth pass (runtime/gt_pass.h): instance ids against the
+/* The ground-truth pass (runtime/render/gt_pass.h): instance ids against the
  * closed-form footprints of two boxes, normals against the box face each
  * pixel's ray enters first, depth bit for bit the colour pass's, and ids
  * cut exactly where an alpha-tested texture cuts the image; passes of some

@@ -1,4 +1,4 @@
-/* The ids of the instance and class outputs (runtime/gt_table.h): ranks
+/* The ids of the instance and class outputs (runtime/truth/gt_table.h): ranks
  * among the drawing instances in call-path order, call paths with #k per
  * parent and object, classes from packages, sorted. */
 #include <stdint.h>

@@ -1,4 +1,4 @@
-/* Flow and boxes through a lens at the model's fold (runtime/lens_truth.c,
+/* Flow and boxes through a lens at the model's fold (runtime/truth/lens_truth.c,
  * spec/outputs.md "Through a lens"), against closed forms: a Brown lens
  * k1 = -0.3 has r (1 + k1 r^2) rising up to r^2 = 1 / (3 |k1|) = 10/9 and
  * folding back beyond, where OpenCV's formula would bring a point far off

@@ -1,8 +1,8 @@
-/* Occlusion culling (runtime/occlusion.h): the padded box contains its
+/* Occlusion culling (runtime/render/occlusion.h): the padded box contains its
  * geometry with the documented margin, in the oriented and the world-box
  * form; boxes reaching the near plane are never tested; the faces drawn
  * are exactly those the camera sees (against an independent rule in the
- * box's own frame); each proto's test boxes (runtime/scene_boxes.c) hold
+ * box's own frame); each proto's test boxes (runtime/scene/scene_test_boxes.c) hold
  * every one of its triangles, fit a tree's trunk and crown apart and are
  * deterministic; and a scene built
  * to hide most of its instances behind a wall with alpha-tested holes

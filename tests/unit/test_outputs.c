@@ -1,4 +1,4 @@
-/* The player's PNG encoders (runtime/outputs.c): every 8-bit and 16-bit
+/* The player's PNG encoders (runtime/encode/outputs.c): every 8-bit and 16-bit
  * sample value, mid-greys included, decodes (stb_image, a decoder
  * independent of libspng) to exactly what went in, and to exactly what the
  * encoders before issue 14 gave (stb_image_write for 8-bit, libspng at its

@@ -1,5 +1,5 @@
 /* The player's frame progress line, its render-time estimate and the
- * duration and size formats they use (runtime/progress.c, units.c):
+ * duration and size formats they use (runtime/play/progress.c, units.c):
  * given numbers in, exact text out, no clock involved. */
 #include <stdlib.h>
 #include "check.h"

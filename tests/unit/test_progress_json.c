@@ -1,4 +1,4 @@
-/* --progress json (runtime/progress_json.c): the exact lines for given
+/* --progress json (runtime/write/progress_json.c): the exact lines for given
  * times, one whole line per call. */
 #include <stdlib.h>
 #include "check.h"

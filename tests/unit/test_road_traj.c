@@ -1,4 +1,4 @@
-/* The trajectory reader and pose composition (runtime/trajectory.c). */
+/* The trajectory reader and pose composition (runtime/camera/trajectory.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

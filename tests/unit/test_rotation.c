@@ -1,4 +1,4 @@
-/* The shared rotation check and re-orthonormalisation (runtime/rotation.c). */
+/* The shared rotation check and re-orthonormalisation (runtime/camera/rotation.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,4 +1,4 @@
-/* --shard I/N and --shard slurm (runtime/shard.c): parsing, the messages
+/* --shard I/N and --shard slurm (runtime/play/shard.c): parsing, the messages
  * of bad values and variables, and that the shards split a range. */
 #include <stdlib.h>
 #include "check.h"

@@ -1,4 +1,4 @@
-/* Sub-frame poses (runtime/subframe.c) against closed forms: the slerp of
+/* Sub-frame poses (runtime/camera/subframe.c) against closed forms: the slerp of
  * two rotations about one axis is the rotation by the interpolated angle;
  * a trajectory's centre moves on the straight line between its rows; the
  * rows themselves come back bit for bit; nothing beyond the ends. */

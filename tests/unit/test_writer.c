@@ -1,4 +1,4 @@
-/* The player's writer queue (runtime/frame_writer.h) with jobs whose
+/* The player's writer queue (runtime/write/frame_writer.h) with jobs whose
  * timing the test controls: jobs run in order; at most GLS_WRITER_DEPTH
  * are pending (submit blocks); after a failure no later job runs, every
  * later submit and finish return that failure's message and every job is

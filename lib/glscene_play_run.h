@@ -1,0 +1,28 @@
+/* What glscene_play.c (a run: its life, its checks, the run itself) and
+ * glscene_play_args.c (glsplay's options, one table) share: the run's
+ * state and its failure and string keeping.  Not installed. */
+#ifndef GLSCENE_PLAY_RUN_H
+#define GLSCENE_PLAY_RUN_H
+#include "glscene.h"
+#include "player.h"
+
+struct glscene_play {
+    gls_play_opts o;     /* what gls_play runs; its strings are copies  */
+    char **strs;         /* the copies, freed with the run              */
+    size_t nstrs, strs_cap;
+    const char **cams, **mots; /* o.cameras, o.motions                  */
+    size_t cams_cap, mots_cap;
+    int frames;          /* --frames given (needs --trajectory)         */
+    double subpixel;     /* --subpixel A, 0: not given                  */
+    int have_aa, have_samples;
+    int checked;         /* glscene_play_check passed since the last arg */
+    char *msg;           /* the last failure's whole message            */
+};
+
+/* Keep the whole message in r->msg (glscene_play_message) and as much as
+ * fits in e; returns rc. */
+__attribute__((format(printf, 4, 5))) int gls_play_fail(glscene_play *r, glscene_error *e, int rc, const char *fmt,
+                                                          ...);
+/* A copy of s that lives as long as r; NULL (with e) when out of memory. */
+char *gls_play_keep(glscene_play *r, glscene_error *e, const char *s);
+#endif

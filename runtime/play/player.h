@@ -1,0 +1,101 @@
+/* The player as a library: what glsplay does, callable from tests and,
+ * later, from a Python binding or a trajectory driver. */
+#ifndef GLS_PLAYER_H
+#define GLS_PLAYER_H
+
+#include <stdint.h>
+#include <stdio.h>
+#include "aa.h"
+#include "frame_plan.h"
+#include "output_table.h"
+#include "bundle.h"
+#include "camera.h"
+#include "glctx.h"
+#include "scene.h"
+#include "shard.h"
+
+/* --progress: nothing, the terminal line (progress.h), or one JSON
+ * object a line per camera frame (progress_json.h) */
+enum { GLS_PROGRESS_OFF = 0, GLS_PROGRESS_BAR = 1, GLS_PROGRESS_JSON = 2 };
+
+typedef struct {
+    const char *bundle;          /* path of the .glsb                    */
+    const char *const *cameras;  /* camera file paths                    */
+    size_t ncameras;
+    const char *outdir;          /* NULL: nothing is rendered            */
+    unsigned outputs;            /* GLS_OUT_* bits                       */
+    uint32_t width, height;      /* --size override, 0 = the camera's    */
+    int explain;                 /* print the plan first                 */
+    uint32_t frame;              /* frame number in the file names, when
+                                    there is no trajectory              */
+    const char *trajectory;      /* NULL, or a trajectory file: render
+                                    each of its frames (spec/road.md)   */
+    uint64_t frame_first, frame_end; /* --frames A:B: frames A..B-1 of the
+                                    trajectory; end UINT64_MAX = all    */
+    int resume;                  /* skip complete frames (frame_record.h) */
+    gls_shard shard;             /* --shard I/N: only frames f with
+                                    (f - frame_first) mod N = I (shard.h) */
+    float background[3];         /* clear colour, 0..1 (default black)   */
+    gls_aa_opts aa;              /* anti-aliasing; n = 0 is taken as 1   */
+    gls_image_format image_format;
+    gls_float_format float_format; /* depth, disparity, a pfm image    */
+    double depth_scale;          /* depth16: Zc * depth_scale, 0 = KITTI's */
+    uint32_t aa_tiles;           /* samples per GL pass, 0 = automatic   */
+    uint64_t aa_memory;          /* one-pass anti-aliasing: bytes for the
+                                    fine framebuffer's tiles, 0 = default */
+    int occlusion;               /* gls_occlusion_mode (occlusion.h):
+                                    0 = auto, the default               */
+    uint32_t anisotropy;         /* anisotropic texture filtering up to N x;
+                                    0 or 1 = off (the fast default)     */
+    int progress;                /* GLS_PROGRESS_*: what goes to errs     */
+    gls_backend backend;         /* GL backend (glctx.h); 0 = auto       */
+    int write_calib;             /* --write-calib: calibration files
+                                    (calib_write.h)                     */
+    int flatten;                 /* --flatten: the flattened reference path */
+    const char *const *motions;  /* --motion NAME=FILE arguments         */
+    size_t nmotions;
+    unsigned writer_threads;     /* 1: encode and write each camera
+                                    frame's files on a writer thread while
+                                    the next renders (glsplay's default);
+                                    0: on the rendering thread.  Same
+                                    files either way (frame_writer.h)   */
+    gls_frame_counts *counts;    /* NULL; or where the passes, buffers and
+                                    samples of the last camera frame are
+                                    counted as they run (frame_plan.h),
+                                    for the tests that hold the run to
+                                    its plan                            */
+    int bands_whole;             /* 0; tests only (glsplay never sets it):
+                                    each band of rows of a rolling
+                                    shutter draws and reads back the
+                                    whole image, the same bytes
+                                    (gls_bands, exposure.h)             */
+} gls_play_opts;
+
+/* The refusals of the player that its options alone decide, without
+ * reading any file, so that they are usage errors (exit status 2,
+ * spec/exit_status.md): the anti-aliasing plan (a Gaussian sigma outside
+ * 0.01..16), the output directory each camera file names (none, or two
+ * cameras naming the same one), disparity's two cameras, an instance
+ * given two --motion.  0, or -1 with the message (no "glsplay: error: ")
+ * in msg. */
+int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen);
+
+/* Run the player.  Messages go to errs as "glsplay: error: ..." lines,
+ * the plan to out.  Returns the exit status: 0 done, 1 input error, 2 a
+ * usage error of gls_play_check_options (which it runs first). */
+int gls_play(const gls_play_opts *o, FILE *out, FILE *errs);
+
+/* Print the plan (explain.c): the GL backend and context, which GL
+ * effects are on and why, passes, anti-aliasing, read-backs.  cams/names
+ * may be empty (n = 0); o gives the outputs, the anti-aliasing, the image
+ * format and the backend asked for; ctx is the context made for it. */
+void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const gls_scene *s,
+                 const gls_camera *cams, const char *const *names, size_t n, const gls_play_opts *o,
+                 const gls_glctx *ctx);
+
+/* Output file name: OUTDIR/NAME/KIND_%06u.EXT (frame numbers grow past
+ * six digits without breaking).  Returns 0, -1 if it does not fit. */
+int gls_output_path(char *buf, size_t len, const char *outdir, const char *name, const char *kind,
+                    uint32_t frame, const char *ext);
+
+#endif

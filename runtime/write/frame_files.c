@@ -1,0 +1,212 @@
+/* Encoding and writing one camera frame's files (frame_files.h). */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "atomic_write.h"
+#include "frame_files.h"
+#include "numfmt.h"
+#include "out_disparity.h"
+#include "out_flow.h"
+#include "out_gt.h"
+#include "out_npy.h"
+#include "out_png16.h"
+#include "outputs.h"
+#include "progress_line.h"
+#include "units.h"
+
+void gls_frame_oom_message(char *buf, size_t len, const char *name, uint32_t w, uint32_t h, uint64_t bytes)
+{
+    char need[32];
+    gls_fmt_bytes(need, sizeof need, bytes);
+    snprintf(buf, len,
+             "glsplay: error: camera %s: out of memory for the buffers of a %ux%u image (about %s); "
+             "lower --size (or the camera's width and height)",
+             name, w, h, need);
+}
+
+/* A float output (depth, disparity, a pfm image) in the chosen format. */
+static int encode_float(const gls_frame_files *f, const float *v, unsigned channels, gls_buf *buf)
+{
+    const gls_camera *c = &f->cam;
+    if (f->float_format == GLS_FLOAT_NPY)
+        return gls_encode_npy(v, c->width, c->height, channels, buf);
+    return channels == 3 ? gls_encode_pfm_rgb(v, c->width, c->height, buf) : gls_encode_pfm(v, c->width, c->height, buf);
+}
+
+/* disparity16 and depth16: a value that does not fit is refused, with
+ * the pixel, the value, the limit and what to do instead.  Checked before
+ * any file of the frame is written; 0, or 1 with the message in err. */
+static int check_16(const gls_frame_files *f, unsigned bit, const float *v, char *err, size_t errlen)
+{
+    const gls_camera *c = &f->cam;
+    int disp = bit == GLS_OUT_DISPARITY16;
+    double scale = disp ? 256.0 : f->depth_scale;
+    size_t bad = 0;
+    int rc = gls_scaled16_check(v, (size_t)c->width * c->height, scale, &bad);
+    if (rc == 0)
+        return 0;
+    char at[256], sc[32];
+    snprintf(at, sizeof at, "glsplay: error: %s: camera %s, frame %u, pixel (%zu, %zu)", disp ? "disparity16" : "depth16",
+             f->name, f->frame, bad % c->width, bad / c->width);
+    gls_fmt_double(sc, sizeof sc, scale);
+    if (disp && rc == GLS_SCALED16_OVER)
+        snprintf(err, errlen,
+                 "%s: disparity %.6g px is over %.6g px, the most a KITTI 16-bit PNG holds (d * 256 <= 65535); "
+                 "use --outputs disparity (float) instead",
+                 at, v[bad], 65535 / 256.0);
+    else if (disp)
+        snprintf(err, errlen,
+                 "%s: disparity %.6g px rounds to 0, which a KITTI 16-bit PNG reads as no disparity "
+                 "(d * 256 >= 0.5 for a surface); use --outputs disparity (float) instead",
+                 at, v[bad]);
+    else if (rc == GLS_SCALED16_OVER)
+        snprintf(err, errlen,
+                 "%s: depth %.6g is over %.6g, the largest a 16-bit PNG holds at --depth-scale %s (65535 / %s); "
+                 "lower --depth-scale or use --outputs depth (float) instead",
+                 at, v[bad], 65535 / scale, sc, sc);
+    else
+        snprintf(err, errlen,
+                 "%s: depth %.6g rounds to 0 at --depth-scale %s, which means no surface; raise --depth-scale or "
+                 "use --outputs depth (float) instead",
+                 at, v[bad], sc);
+    return 1;
+}
+
+/* 0, or -1 when out of memory. */
+static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls_buf *buf)
+{
+    const gls_camera *c = &f->cam;
+    uint64_t np;
+    size_t bad;
+    switch (bit) {
+    case GLS_OUT_IMAGE:
+        if (f->image_mosaic) /* one sample a pixel, in the image's bit depth */
+            return f->image_format == GLS_IMG_PNG16 ? gls_encode_png16_gray(f->image, c->width, c->height, buf)
+                   : f->image_format == GLS_IMG_PFM ? encode_float(f, f->image, 1, buf)
+                                                    : gls_encode_png_gray(f->image, c->width, c->height, buf);
+        return f->image_format == GLS_IMG_PNG16 ? gls_encode_png16(f->image, c->width, c->height, buf)
+               : f->image_format == GLS_IMG_PFM ? encode_float(f, f->image, 3, buf)
+                                                : gls_encode_png(f->image ? f->image : f->rgba, c->width, c->height,
+                                                                 buf);
+    case GLS_OUT_DEPTH:
+        return encode_float(f, f->z, 1, buf);
+    case GLS_OUT_POINTS:
+        return gls_encode_ply_rows(c, (const double (*)[12])f->row_pose, f->z, f->rgba, buf, &np);
+    case GLS_OUT_LANDMARKS:
+        return gls_encode_landmarks_csv(f->landmarks, c, f->z, buf);
+    case GLS_OUT_DISPARITY:
+        return encode_float(f, disp, 1, buf);
+    case GLS_OUT_DISPARITY16: /* checked by check_16 */
+        return gls_encode_scaled16(disp, c->width, c->height, 256.0, buf, &bad);
+    case GLS_OUT_DEPTH16:
+        return gls_encode_scaled16(f->z, c->width, c->height, f->depth_scale, buf, &bad);
+    case GLS_OUT_INSTANCE:
+    case GLS_OUT_CLASS:
+        return gls_encode_ids_png(f->gt_inst, f->gt, bit == GLS_OUT_CLASS, c->width, c->height, buf);
+    case GLS_OUT_INSTANCES_JSON: /* instances_F.json, with either */
+        return gls_encode_instances_json(f->gt_inst, f->gt, f->frame, f->name, c->width, c->height, buf);
+    case GLS_OUT_COCO: {
+        char image[64]; /* the image file's name, which COCO's "file_name" is */
+        snprintf(image, sizeof image, "image_%06u.%s", f->frame,
+                 f->image_format != GLS_IMG_PFM ? "png" : f->float_format == GLS_FLOAT_NPY ? "npy" : "pfm");
+        return gls_encode_coco(f->gt_inst, f->gt, f->frame, image, c->width, c->height, buf);
+    }
+    case GLS_OUT_NORMALS:
+        return encode_float(f, f->normal, 3, buf);
+    case GLS_OUT_FLOW:
+        return gls_encode_flow_kitti(f->flow, f->flowmask, c->width, c->height, buf);
+    case GLS_OUT_FLOW_FLO:
+        return gls_encode_flo(f->flow, c->width, c->height, buf);
+    case GLS_OUT_FLOW_MASK:
+        return gls_encode_png_gray(f->flowmask, c->width, c->height, buf);
+    case GLS_OUT_BOXES:
+        return gls_encode_boxes_kitti(f->boxes, f->nboxes, f->box_names, buf);
+    case GLS_OUT_BOXES_JSON:
+        return gls_encode_boxes_json(f->boxes, f->nboxes, f->box_names, c, f->name, f->frame, buf);
+    default: /* edges, and the same map as mask */
+        return gls_encode_png_gray(f->mask, c->width, c->height, buf);
+    }
+}
+
+static int run(gls_write_job *job, char *err, size_t errlen)
+{
+    gls_frame_files *f = (gls_frame_files *)job;
+    gls_buf buf = {0};
+    float *disp = NULL;
+    int rc = -1;
+    /* The disparity, made once for disparity and disparity16; a value
+     * a 16-bit file cannot hold stops the frame before any file of it
+     * is written. */
+    size_t n = (size_t)f->cam.width * f->cam.height;
+    for (size_t k = 0; k < f->nfiles; k++) {
+        unsigned bit = f->files[k].bit;
+        if ((bit & GLS_OUT_DISPARITIES) && !disp) {
+            disp = malloc((n ? n : 1) * sizeof *disp);
+            if (!disp) {
+                gls_frame_oom_message(err, errlen, f->name, f->cam.width, f->cam.height, f->buffer_bytes);
+                return -1;
+            }
+            gls_disparity_from_z(f->z, n, f->fxB, disp);
+        }
+        if ((bit & (GLS_OUT_DISPARITY16 | GLS_OUT_DEPTH16)) &&
+            check_16(f, bit, bit == GLS_OUT_DISPARITY16 ? disp : f->z, err, errlen))
+            goto out;
+    }
+    /* The frame is incomplete from the first file rewritten until the
+     * last is written: no record meanwhile (frame_record.h). */
+    if (unlink(f->record) != 0 && errno != ENOENT) {
+        snprintf(err, errlen, "glsplay: error: cannot remove %s: %s", f->record, strerror(errno));
+        goto out;
+    }
+    for (size_t k = 0; k < f->nfiles; k++) {
+        buf.len = 0;
+        if (encode(f, f->files[k].bit, disp, &buf)) {
+            gls_frame_oom_message(err, errlen, f->name, f->cam.width, f->cam.height, f->buffer_bytes);
+            goto out;
+        }
+        const char *path = f->files[k].path;
+        if (gls_write_file_atomic(path, buf.data, buf.len)) {
+            snprintf(err, errlen, "glsplay: error: cannot write %s: %s", path, gls_write_error(path, errno));
+            goto out;
+        }
+    }
+    if (gls_write_file_atomic(f->record, f->record_text, strlen(f->record_text))) {
+        snprintf(err, errlen, "glsplay: error: cannot write %s: %s", f->record, strerror(errno));
+        goto out;
+    }
+    gls_progress_json_frame(f->json, f->frame, f->name, gls_now());
+    rc = 0;
+out:
+    free(buf.data);
+    free(disp);
+    return rc;
+}
+
+static void destroy(gls_write_job *job)
+{
+    gls_frame_files *f = (gls_frame_files *)job;
+    free(f->rgba);
+    free(f->mask);
+    free(f->image);
+    free(f->z);
+    free(f->row_pose);
+    gls_landmarks_free(f->landmarks);
+    free(f->gt_inst);
+    free(f->normal);
+    free(f->flow);
+    free(f->flowmask);
+    free(f->boxes);
+    free(f);
+}
+
+gls_frame_files *gls_frame_files_new(void)
+{
+    gls_frame_files *f = calloc(1, sizeof *f);
+    if (f) {
+        f->job.run = run;
+        f->job.destroy = destroy;
+    }
+    return f;
+}
