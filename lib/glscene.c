@@ -9,15 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "aa.h"
-#include "aa_fine.h"
-#include "aa_onepass.h"
-#include "aa_render.h"
 #include "bundle.h"
-#include "frame_plan.h"
 #include "glctx.h"
 #include "glscene_internal.h"
-#include "gt_pass.h"
 #include "gt_table.h"
+#include "player.h"
 #include "render.h"
 #include "rotation.h"
 #include "scene.h"
@@ -162,24 +158,6 @@ uint32_t glscene_instance_count(glscene_player *p)
     return p ? p->drawing : 0;
 }
 
-/* The anti-aliased image of camera c into acc (glsplay's two paths:
- * the fine framebuffer for lattice and grid, jittered passes otherwise). */
-static int render_aa(glscene_player *p, const gls_camera *c, gls_accum *acc, glscene_error *e)
-{
-    char err[512];
-    if (gls_accum_init(acc, c->width, c->height, gls_aa_weighted(&p->plan), 0))
-        return gls_api_fail(e, "out of memory for a %ux%u anti-aliased image", c->width, c->height);
-    int rc;
-    if (gls_aa_fine_ok(&p->plan)) {
-        gls_aa_fine_opts fo = {0, 0, 0, NULL, "glscene", NULL, NULL};
-        rc = gls_aa_render_fine(p->r, c, &p->plan, &fo, acc, NULL, err, sizeof err);
-    } else {
-        gls_aa_run_opts ro = {0, 0, NULL, "glscene", NULL, NULL};
-        rc = gls_aa_render(p->r, c, &p->plan, &ro, acc, NULL, err, sizeof err);
-    }
-    return rc ? gls_api_fail(e, "%s", err) : 0;
-}
-
 static void rgba_to_rgb(const uint8_t *rgba, size_t n, uint8_t *rgb)
 {
     for (size_t i = 0; i < n; i++)
@@ -202,67 +180,46 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
     if (gls_renderer_set_size(p->r, c.width, c.height, err, sizeof err))
         return gls_api_fail(e, "%s", err);
     size_t n = (size_t)c.width * c.height;
-    /* what the frame needs, decided by the player's frame plan
-     * (frame_plan.h) from the buffers asked for: the same decision
-     * glsplay makes for the same outputs (a library camera is a pinhole
-     * without effects, and nothing moves) */
+    /* the frame drawn by the player's own steps (player.h gls_play_frame):
+     * its frame plan for the outputs these buffers ask for, its centre
+     * and truth passes, its accumulator; here only the conversions into
+     * the caller's layouts */
     int image = out->rgb8 || out->rgbf;
-    gls_plan_inputs pin = {(image ? GLS_OUT_IMAGE : 0u) | (out->depth ? GLS_OUT_DEPTH : 0u) |
-                               (out->instance ? GLS_OUT_INSTANCE : 0u) | (out->normals ? GLS_OUT_NORMALS : 0u),
-                           out->rgbf ? GLS_IMG_PFM : GLS_IMG_PNG8, &p->plan, 0};
-    gls_frame_plan fp;
-    gls_frame_plan_make(&fp, &pin, &c, 0);
-    int aa = fp.aa;
-    uint8_t *rgba = NULL;
-    uint32_t *ids = NULL;
-    gls_accum acc;
-    memset(&acc, 0, sizeof acc);
+    unsigned outputs = (image ? GLS_OUT_IMAGE : 0u) | (out->depth ? GLS_OUT_DEPTH : 0u) |
+                       (out->instance ? GLS_OUT_INSTANCE : 0u) | (out->normals ? GLS_OUT_NORMALS : 0u);
+    gls_play_frame_result res;
+    if (gls_play_frame(p->r, &p->scene, &p->plan, &c, outputs, &res, err, sizeof err))
+        return err[0] ? gls_api_fail(e, "%s", err)
+                      : gls_api_fail(e, "out of memory for a %ux%u image", c.width, c.height);
     int rc = -1;
-    if (fp.passes & GLS_PASS_CENTRE) {
-        gls_render_pass(p->r, &c, 0.0, 0.0);
-        if (fp.rgba) {
-            if (!(rgba = malloc(n * 4)))
-                goto oom;
-            gls_render_read_rgba(p->r, rgba);
-        }
-        if (out->depth)
-            gls_render_read_z(p->r, out->depth);
-    }
-    if (fp.passes & GLS_PASS_TRUTH) {
-        if (out->instance && !(ids = malloc(n * sizeof *ids)))
-            goto oom;
-        if (gls_gt_render(p->r, &c, ids, out->normals, NULL, err, sizeof err)) {
-            gls_api_fail(e, "%s", err);
-            goto done;
-        }
-        /* scene instance index + 1 -> the id glsplay's instance output has */
-        for (size_t i = 0; out->instance && i < n; i++)
-            out->instance[i] = ids[i] ? p->gt.id[ids[i] - 1] : 0;
-    }
-    if (aa) {
-        if (render_aa(p, &c, &acc, e))
-            goto done;
+    uint8_t *rgba = NULL;
+    if (out->depth)
+        memcpy(out->depth, res.z, n * sizeof *res.z);
+    if (out->normals)
+        memcpy(out->normals, res.normals, 3 * n * sizeof *res.normals);
+    /* scene instance index + 1 -> the id glsplay's instance output has */
+    for (size_t i = 0; out->instance && i < n; i++)
+        out->instance[i] = res.ids[i] ? p->gt.id[res.ids[i] - 1] : 0;
+    if (res.fp.aa) {
         if (out->rgb8) {
-            if (!(rgba = malloc(n * 4)))
-                goto oom;
-            gls_accum_rgba8(&acc, rgba);
+            if (!(rgba = malloc(n * 4))) {
+                gls_api_fail(e, "out of memory for a %ux%u image", c.width, c.height);
+                goto done;
+            }
+            gls_accum_rgba8(&res.acc, rgba);
             rgba_to_rgb(rgba, n, out->rgb8);
         }
         if (out->rgbf)
-            gls_accum_rgbf(&acc, out->rgbf);
+            gls_accum_rgbf(&res.acc, out->rgbf);
     } else if (image) {
         if (out->rgb8)
-            rgba_to_rgb(rgba, n, out->rgb8);
+            rgba_to_rgb(res.rgba, n, out->rgb8);
         if (out->rgbf)
-            gls_rgba8_to_rgbf(rgba, n, out->rgbf);
+            gls_rgba8_to_rgbf(res.rgba, n, out->rgbf);
     }
     rc = 0;
-    goto done;
-oom:
-    gls_api_fail(e, "out of memory for a %ux%u image", c.width, c.height);
 done:
-    gls_accum_free(&acc);
     free(rgba);
-    free(ids);
+    gls_play_frame_free(&res);
     return rc;
 }

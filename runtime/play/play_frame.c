@@ -357,3 +357,53 @@ out:
     cam_frame_free(&cf);
     return rc;
 }
+
+int gls_play_frame(gls_renderer *r, const gls_scene *scene, const gls_aa_plan *plan, const gls_camera *c,
+                   unsigned outputs, gls_play_frame_result *res, char *msg, size_t msglen)
+{
+    /* a session of one still frame: no motion, no writer, no progress */
+    gls_play_opts o;
+    memset(&o, 0, sizeof o);
+    o.outputs = outputs;
+    o.aa = plan->o;
+    motion_set ms;
+    memset(&ms, 0, sizeof ms);
+    ms.scene = (gls_scene *)scene;
+    session s;
+    memset(&s, 0, sizeof s);
+    s.o = &o, s.ms = &ms, s.scene = scene, s.plan = plan, s.r = r, s.name_now = "glscene";
+    cam_frame cf;
+    memset(&cf, 0, sizeof cf);
+    memset(res, 0, sizeof *res);
+    msg[0] = 0;
+    gls_plan_inputs pin = {outputs, GLS_IMG_PNG8, plan, 0};
+    gls_frame_plan_make(&cf.fp, &pin, c, 0);
+    size_t n = (size_t)c->width * c->height;
+    const gls_frame_plan *fp = &cf.fp;
+    cf.bands.rows = c->height;
+    int rc = -1;
+    if ((fp->rgba && !(cf.rgba = malloc(n * 4))) || (fp->z && !(cf.z = malloc(n * sizeof *cf.z))) ||
+        (fp->ids && !(cf.gt_ids = malloc(n * sizeof *cf.gt_ids))) ||
+        (fp->normals && !(cf.normal = malloc(n * 3 * sizeof *cf.normal))))
+        goto out;
+    if (frame_centre_truth(&s, c, &cf, msg, msglen) || (fp->aa && frame_colour(&s, c, &cf, msg, msglen)))
+        goto out;
+    res->fp = cf.fp, res->rgba = cf.rgba, res->z = cf.z, res->ids = cf.gt_ids, res->normals = cf.normal;
+    res->acc = cf.acc;
+    memset(&cf.acc, 0, sizeof cf.acc);
+    cf.rgba = NULL, cf.z = NULL, cf.gt_ids = NULL, cf.normal = NULL;
+    rc = 0;
+out:
+    cam_frame_free(&cf);
+    return rc;
+}
+
+void gls_play_frame_free(gls_play_frame_result *res)
+{
+    free(res->rgba);
+    free(res->z);
+    free(res->ids);
+    free(res->normals);
+    gls_accum_free(&res->acc);
+    memset(res, 0, sizeof *res);
+}

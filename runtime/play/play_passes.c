@@ -115,7 +115,10 @@ int play_render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, gl
         /* lattice and grid: the samples are the pixels of a fine
          * framebuffer drawn in tiles (aa_onepass.h), those of rows
          * v0..v1-1 only */
-        gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name, estimate_from_tiles, s};
+        /* the estimate only where there is somewhere to say it (not the
+         * library's frames, gls_play_frame) */
+        gls_aa_fine_opts fo = {o->aa_memory, 0, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name,
+                               s->errs ? estimate_from_tiles : NULL, s};
         if (gls_aa_render_fine_rows(r, c, plan, &fo, v0, v1, acc, NULL, err, sizeof err)) {
             char mem[32];
             gls_fmt_bytes(mem, sizeof mem, o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY);
@@ -126,7 +129,8 @@ int play_render_plan(void *ud, const gls_camera *c, uint32_t v0, uint32_t v1, gl
     } else {
         /* stratified, grid Gaussian: one jittered pass per sample,
          * several per GL pass (aa_render.h), rows v0..v1-1 only */
-        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name, estimate_from_passes, s};
+        gls_aa_run_opts ro = {o->aa_tiles, 0, o->progress == GLS_PROGRESS_BAR ? s->errs : NULL, name,
+                              s->errs ? estimate_from_passes : NULL, s};
         if (gls_aa_render_rows(r, c, plan, &ro, v0, v1, acc, NULL, err, sizeof err)) {
             uint32_t kx, ky;
             gls_aa_mosaic_shape(r, c->width, c->height, plan->count, o->aa_tiles, &kx, &ky);

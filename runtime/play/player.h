@@ -80,6 +80,25 @@ typedef struct {
  * in msg. */
 int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen);
 
+/* One camera frame drawn by the player's own steps into buffers the
+ * caller takes (libglscene's glscene_render): the frame plan for
+ * outputs (GLS_OUT_IMAGE, DEPTH, INSTANCE, NORMALS: what a library
+ * caller can ask), its centre and ground-truth passes and, when the plan
+ * accumulates, its colour; no files, no writer.  The renderer has the
+ * camera's size set.  0 with *res (free it with gls_play_frame_free), or
+ * -1 with msg (empty: out of memory). */
+typedef struct {
+    gls_frame_plan fp;  /* what ran                                     */
+    uint8_t *rgba;      /* the centre pass's colour (fp.rgba), or NULL  */
+    float *z;           /* its depth (fp.z), or NULL                    */
+    uint32_t *ids;      /* the truth pass's ids, scene instance + 1     */
+    float *normals;     /* its normals, 3 a pixel                        */
+    gls_accum acc;      /* the accumulated samples (fp.aa)              */
+} gls_play_frame_result;
+int gls_play_frame(gls_renderer *r, const gls_scene *scene, const gls_aa_plan *plan, const gls_camera *c,
+                   unsigned outputs, gls_play_frame_result *res, char *msg, size_t msglen);
+void gls_play_frame_free(gls_play_frame_result *res);
+
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,
  * the plan to out.  Returns the exit status: 0 done, 1 input error, 2 a
  * usage error of gls_play_check_options (which it runs first). */
