@@ -1,7 +1,7 @@
 /* The run is its plan (runtime/play/frame_plan.h, issue 27): over a
  * matrix of options (--aa 1 and 4, each pattern; a plain camera, a lens,
- * shutter, line_delay, aperture and focus, sensor noise; several sets of
- * outputs), what --explain states for a camera (the passes, whether there
+ * shutter, line_delay, aperture and focus, sensor noise, a Bayer mosaic
+ * with and without noise; several sets of outputs), what --explain states for a camera (the passes, whether there
  * is an accumulator and of how many samples, the buffers and their sum)
  * is what the run did, counted where it draws and allocates
  * (gls_play_opts.counts), never derived from the plan; and the files
@@ -184,6 +184,8 @@ static void test_plan_matrix(void)
         {"rolling", "line_delay 0.001\n"},
         {"dof", "aperture 0.2\nfocus 5\nexposure_samples 4\n"},
         {"sensor", "shot_noise 1000\nread_noise 0.01\n"},
+        {"bayer", "bayer RGGB\nread_noise 0.01\n"},
+        {"mosaic", "bayer GBRG\n"},
     };
     double Tc[3] = {0, 0, 0};
     gls_camera c = tb_camera(32, 24, 30, 30, 15.5, 11.5, 0, I3, Tc, 0.1, 100);
