@@ -35,11 +35,17 @@ static void *plain_image(const gls_camera *c, const gls_accum *acc, const uint8_
 }
 
 void *gls_sensor_image(const gls_camera *c, const char *name, uint32_t frame, const gls_accum *acc,
-                       const uint8_t *rgba, gls_image_format fmt)
+                       const uint8_t *rgba, gls_image_format fmt, uint64_t bytes[2])
 {
     const gls_sensor *s = &c->sensor;
     size_t n = (size_t)c->width * c->height;
     void *img;
+    /* what is allocated, for the caller's count: the linear intensities
+     * when they are a buffer of their own, and the image returned */
+    uint64_t px = fmt == GLS_IMG_PNG8 ? 4 : fmt == GLS_IMG_PNG16 ? 3 * sizeof(uint16_t) : 3 * sizeof(float);
+    if (bytes)
+        bytes[0] = (s->on & ~GLS_SENSOR_BAYER) && fmt != GLS_IMG_PFM ? 3 * sizeof(float) * (uint64_t)n : 0,
+        bytes[1] = (s->bayer[0] ? px / (fmt == GLS_IMG_PNG8 ? 4 : 3) : px) * (uint64_t)n;
     if (!(s->on & ~GLS_SENSOR_BAYER)) {
         img = plain_image(c, acc, rgba, fmt);
     } else {

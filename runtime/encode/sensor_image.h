@@ -13,8 +13,11 @@
 /* acc: the accumulated samples, or NULL for a single pass whose colours
  * are rgba (RGBA8).  Returns a malloc'd image in fmt's layout (RGBA8,
  * RGB16 or RGB float; one sample a pixel with a Bayer pattern), or NULL
- * when out of memory.  name and frame key the noise. */
+ * when out of memory.  name and frame key the noise.  bytes (or NULL):
+ * [0] the linear intensities' buffer when it is one of its own (none
+ * without photometric effects, and the image itself for a float image),
+ * [1] the image returned. */
 void *gls_sensor_image(const gls_camera *c, const char *name, uint32_t frame, const gls_accum *acc,
-                       const uint8_t *rgba, gls_image_format fmt);
+                       const uint8_t *rgba, gls_image_format fmt, uint64_t bytes[2]);
 
 #endif

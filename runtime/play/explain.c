@@ -258,12 +258,32 @@ static void explain_camera_aa(FILE *out, const gls_camera *c, const gls_play_opt
     }
 }
 
+/* Each file camera c's frame plan writes, by the output table's rows
+ * (output_table.h): "  files: image_F.png (the image), depth_F.pfm (Zc,
+ * float32), ..." (F: the frame number). */
+static void explain_files(FILE *out, const gls_frame_plan *fp, const gls_play_opts *o)
+{
+    const char *fl = o->float_format == GLS_FLOAT_NPY ? "npy" : "pfm";
+    int any = 0;
+    fprintf(out, "  files:");
+    for (int k = 0; k < GLS_OUT_KINDS; k++) {
+        const gls_output_kind *r = &gls_output_kinds[k];
+        if (!(fp->outputs & r->bit))
+            continue;
+        const char *ext = !r->ext || (r->bit == GLS_OUT_IMAGE && o->image_format == GLS_IMG_PFM) ? fl : r->ext;
+        fprintf(out, "%s %s_F.%s (%s)", any ? "," : "", r->stem, ext, r->what);
+        any = 1;
+    }
+    fprintf(out, "%s\n", any ? "" : " none");
+}
+
 /* What camera c's passes read back and its files hold. */
 static void explain_camera_writes(FILE *out, const gls_scene *s, const gls_camera *c, const gls_play_opts *o,
                                   const gls_frame_plan *fpp, int aa, int centre)
 {
     const gls_frame_plan fp = *fpp;
     unsigned outputs = o->outputs;
+    explain_files(out, &fp, o);
     int npy = o->float_format == GLS_FLOAT_NPY;
     static const char *const fmt_name[] = {"8-bit PNG", "16-bit PNG", "float32 PFM (PF, RGB)"};
     if (centre)

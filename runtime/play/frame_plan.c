@@ -94,7 +94,10 @@ static void plan_buffers(gls_frame_plan *fp, const gls_plan_inputs *in, const gl
     b[GLS_BUF_ACCUM] = fp->aa ? (fp->weighted ? 32 : 16) * n + (uint64_t)c->width * 4 * (fp->weighted ? 8 : 2) : 0;
     b[GLS_BUF_MIXED] = fp->aa && (out & GLS_OUT_EDGE_MAPS) ? 5 * n : 0; /* GLS_NEED_MIXED */
     b[GLS_BUF_IMAGE] = image_bytes(fp, in, c) * n;
-    b[GLS_BUF_LINEAR] = fp->image == GLS_IMAGE_SENSOR ? 12 * n : 0;
+    /* the sensor's linear intensities: a buffer of their own under a
+     * photometric effect, but for a float image, which they become */
+    b[GLS_BUF_LINEAR] = fp->image == GLS_IMAGE_SENSOR && (c->sensor.on & ~GLS_SENSOR_BAYER) &&
+                                in->image_format != GLS_IMG_PFM ? 12 * n : 0;
     b[GLS_BUF_EDGES] = (out & GLS_OUT_EDGE_MAPS) ? n : 0;
     b[GLS_BUF_FLOW] = fp->flow ? 13 * n : 0;
     b[GLS_BUF_DISPARITY] = (out & GLS_OUT_DISPARITIES) ? 4 * n : 0;

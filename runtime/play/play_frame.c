@@ -171,11 +171,12 @@ static int frame_image(session *s, const gls_camera *c, const char *name, uint32
     int aa = cf->fp.aa;
     if (cf->fp.image == GLS_IMAGE_SENSOR) {
         /* on the linear intensities before quantisation */
-        cf->img = gls_sensor_image(c, name, frame, aa ? &cf->acc : NULL, cf->rgba, o->image_format);
+        uint64_t b[2];
+        cf->img = gls_sensor_image(c, name, frame, aa ? &cf->acc : NULL, cf->rgba, o->image_format, b);
         if (!cf->img)
             return -1;
-        if (cnt) /* the linear intensities, then the image in its format (sensor_image.c's) */
-            cnt->bytes[GLS_BUF_LINEAR] += 12 * (uint64_t)n, cnt->bytes[GLS_BUF_IMAGE] += cf->fp.bytes[GLS_BUF_IMAGE];
+        if (cnt) /* what sensor_image.c allocated */
+            cnt->bytes[GLS_BUF_LINEAR] += b[0], cnt->bytes[GLS_BUF_IMAGE] += b[1];
     } else if (cf->fp.image == GLS_IMAGE_CONVERTED) {
         size_t px = o->image_format == GLS_IMG_PNG16 ? 3 * sizeof(uint16_t)
                     : o->image_format == GLS_IMG_PFM ? 3 * sizeof(float) : 4;

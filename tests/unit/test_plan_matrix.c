@@ -1,10 +1,11 @@
 /* The run is its plan (runtime/play/frame_plan.h, issue 27): over a
  * matrix of options (--aa 1 and 4, each pattern; a plain camera, a lens,
- * shutter, line_delay, aperture and focus, sensor noise; several sets of
- * outputs), what --explain states for a camera (the passes, whether there
+ * shutter, line_delay, aperture and focus, sensor noise, a Bayer mosaic
+ * with and without noise; several sets of outputs), what --explain states for a camera (the passes, whether there
  * is an accumulator and of how many samples, the buffers and their sum)
  * is what the run did, counted where it draws and allocates
- * (gls_play_opts.counts), never derived from the plan.  The writer's
+ * (gls_play_opts.counts), never derived from the plan; and the files
+ * explain names (from the output table's rows) are the files written.  The writer's
  * buffers (disparity, 16-bit codes, the file being encoded) are estimates
  * of the writer's work, not the frame's allocations, and are left out of
  * the byte comparison. */
@@ -131,6 +132,21 @@ static void run_case(const char *bpath, const char *traj, const cam_case *cc, ui
               "%s: no exact total: %s", label, line);
     CHECK_MSG(total - writer == sum, "%s: explain's %llu bytes less the writer's %llu, the run's %llu: %s", label,
               total, writer, (unsigned long long)sum, line);
+    /* the files: each the files line names was written, and no other */
+    CHECK_MSG(find_line(plan, "  files:", line, sizeof line) == 0, "%s: no files line", label);
+    for (int k = 0; k < GLS_OUT_KINDS; k++) {
+        const gls_output_kind *row = &gls_output_kinds[k];
+        char item[96], path[700];
+        snprintf(item, sizeof item, " %s_F.%s (", row->stem, row->ext ? row->ext : "pfm");
+        snprintf(path, sizeof path, "%s/%s/%s_000001.%s", outdir, cc->name, row->stem, row->ext ? row->ext : "pfm");
+        int named = strstr(line, item) != NULL, written = access(path, F_OK) == 0;
+        CHECK_MSG(named == written, "%s: %s %s by explain, %s by the run", label, path, named ? "named" : "not named",
+                  written ? "written" : "not written");
+    }
+    char rm[700];
+    snprintf(rm, sizeof rm, "rm -rf '%s'", outdir);
+    if (system(rm) != 0)
+        printf("  could not remove %s\n", outdir);
     free(plan), free(err);
 }
 
@@ -168,6 +184,8 @@ static void test_plan_matrix(void)
         {"rolling", "line_delay 0.001\n"},
         {"dof", "aperture 0.2\nfocus 5\nexposure_samples 4\n"},
         {"sensor", "shot_noise 1000\nread_noise 0.01\n"},
+        {"bayer", "bayer RGGB\nread_noise 0.01\n"},
+        {"mosaic", "bayer GBRG\n"},
     };
     double Tc[3] = {0, 0, 0};
     gls_camera c = tb_camera(32, 24, 30, 30, 15.5, 11.5, 0, I3, Tc, 0.1, 100);
@@ -195,7 +213,7 @@ static void test_plan_matrix(void)
                 run_case(bpath, traj, &cams[i], aas[a].n, aas[a].pattern, &outs[k]);
                 runs++;
             }
-    printf("  %d runs: explain's passes, accumulator and buffers against the run's counts\n", runs);
+    printf("  %d runs: explain's passes, accumulator, buffers and files against the run's\n", runs);
     gls_bundle_free(b);
 }
 
