@@ -179,7 +179,7 @@ static void explain_features(FILE *out, const gls_bundle *b, const gls_scene *s,
 /* The anti-aliasing pattern, when --aa asks for one and an output is
  * drawn with it (whether a camera's frame uses an accumulator is its
  * frame plan's: exposure effects need one even at --aa 1). */
-static void explain_aa(FILE *out, const gls_aa_plan *pp, const gls_play_opts *o, int centre)
+static void explain_aa(FILE *out, const gls_aa_plan *pp, const gls_play_opts *o)
 {
     const gls_aa_plan p = *pp;
     {
@@ -214,12 +214,13 @@ static void explain_aa(FILE *out, const gls_aa_plan *pp, const gls_play_opts *o,
                                     : "uint32 per channel, unit weights");
         if (gls_aa_fine_ok(&p))
             fprintf(out, "  passes: one fine framebuffer whose pixel centres are the samples, drawn in tiles "
-                         "(geometry culled per tile), read back (RGBA8) and gathered%s\n",
-                    centre ? "; plus 1 unjittered pass for depth/points" : "");
+                         "(geometry culled per tile), read back (RGBA8) and gathered; whether an unjittered centre "
+                         "pass is drawn too: each camera's frame plan\n");
         else
             fprintf(out, "  passes: samples drawn %s per GL pass (a mosaic of jittered viewports, one clear, "
-                         "one read-back of colour only)%s\n",
-                    o->aa_tiles ? "a fixed number" : "several", centre ? "; plus 1 unjittered pass for depth/points" : "");
+                         "one read-back of colour only); whether an unjittered centre pass is drawn too: each "
+                         "camera's frame plan\n",
+                    o->aa_tiles ? "a fixed number" : "several");
     }
 }
 
@@ -305,12 +306,9 @@ static void explain_camera_writes(FILE *out, const gls_scene *s, const gls_camer
         fprintf(out, "  writes: landmarks (CSV, %u per frame): the centre pass's depth, %s\n", s ? s->nmarks : 0,
                 !aa || (outputs & (GLS_OUT_DEPTH | GLS_OUT_POINTS)) ? "no extra pass"
                                                                      : "one extra unjittered pass (--aa)");
-    if (outputs & (GLS_OUT_IDS | GLS_OUT_NORMALS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) {
-        int ids = (outputs & (GLS_OUT_IDS | GLS_OUT_FLOW_ALL | GLS_OUT_BOXES_ALL)) != 0;
-        fprintf(out, "  ground truth: one extra pass (%s%s%s%s)\n", ids ? "instance ids" : "",
-                ids && (outputs & GLS_OUT_NORMALS) ? ", " : "", outputs & GLS_OUT_NORMALS ? "normals" : "",
-                outputs & GLS_OUT_FLOW_ALL ? ", depth of frame t" : "");
-    }
+    if (fp.passes & GLS_PASS_TRUTH) /* what the plan's truth pass reads back */
+        fprintf(out, "  ground truth: one extra pass (%s%s%s%s)\n", fp.ids ? "instance ids" : "",
+                fp.ids && fp.normals ? ", " : "", fp.normals ? "normals" : "", fp.truth_z ? ", depth of frame t" : "");
     if (outputs & GLS_OUT_FLOW_ALL)
         fprintf(out, "  flow: 1 more centre pass (the depth of frame t+1 with its poses); writes flow (KITTI "
                      "PNG), .flo, flowmask (PNG)\n");
@@ -393,7 +391,6 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     if (gls_aa_plan_init(&p, &ao, err, sizeof err))
         p.count = 1, p.o = ao, p.o.n = 1;
     int aa = p.count > 1 && (outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS));
-    int centre = !aa || (outputs & GLS_OUT_FROM_Z);
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
             b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
     fprintf(out, "geometry: %u unique triangles in %u chunks (cells of %g units, double anchors), %u state batches",
@@ -405,7 +402,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     explain_backend(out, o, ctx);
     explain_features(out, b, s, o);
     if (aa)
-        explain_aa(out, &p, o, centre);
+        explain_aa(out, &p, o);
     if (!n) {
         fprintf(out, "cameras: none given\n");
         return;
