@@ -130,7 +130,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed $(B)/distort_project $(B)/glsplay_bands_whole
 
-.PHONY: gallery-truth gallery-effects gallery-road gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects
+.PHONY: gallery-truth gallery-effects gallery-road gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects bench-gpu
 all: $(TOOLS) $(SCENELIB) $(GLSCENE_LIBS)
 units: $(UNIT_BIN)
 programs: $(PROGRAMS)
@@ -509,6 +509,14 @@ bench-effects: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
+# bench-gpu: frames/s of whole glsplay runs on the road demo, a 10,000-tree
+# forest and 100,000 scattered triangles at 640x480 and 1920x1080 through EGL
+# (a GPU where there is one: bench/gpu.sh); writes docs/gpu.txt.  On a machine
+# without a GPU it measures llvmpipe, slowly (GPU_FRAMES frames, default 120).
+bench-gpu: $(TOOLS) $(SCENELIB)
+	@sh bench/gpu.sh prepare $(B) $(B)/bench-gpu
+	@sh bench/gpu.sh run $(B) $(B)/bench-gpu egl $(or $(GPU_FRAMES),120) >$(B)/gpu.txt.tmp && mv $(B)/gpu.txt.tmp docs/gpu.txt
+
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;

@@ -12,7 +12,7 @@
 # and the helpers below.  Not a test itself: tests/run.sh skips it.
 B=${GLS_BIN:-build}
 BIN=$B
-PY=/usr/bin/python3
+PY=${GLS_PY:-/usr/bin/python3}  # GLS_PY: another Python with cv2 and numpy (a GPU machine's)
 # (the trap removes the directory made here even where a script uses t
 # for something else later, as install.sh's loops do)
 e2e_tmp=$(mktemp -d) && trap 'rm -rf "$e2e_tmp"' EXIT || exit 1

@@ -14,7 +14,7 @@ import sys
 import numpy as np
 import cv2
 
-from glstest import Checks
+from glstest import Checks, undistort_iter
 
 CHECKS = Checks('exposure_combos_setup')
 result, run, grey = CHECKS.result, CHECKS.run, CHECKS.grey
@@ -51,11 +51,11 @@ vv = np.arange(H)[:, None, None] + ov.ravel()[None, None, :]
 uu, vv = np.broadcast_arrays(uu, vv)
 pts = np.stack([uu.ravel(), vv.ravel()], axis=1).reshape(-1, 1, 2).astype(np.float64)
 crit = (cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 200, 1e-14)
-ray = cv2.undistortPointsIter(pts, KM, np.array(DIST), None, None, crit).reshape(H, W, SUB * SUB, 2)
+ray = undistort_iter(pts, KM, np.array(DIST), crit).reshape(H, W, SUB * SUB, 2)
 RX, RY = ray[..., 0], ray[..., 1]
 # the pixel centres' rays
 cpts = np.stack(np.meshgrid(np.arange(W, dtype=np.float64), np.arange(H, dtype=np.float64)), axis=2).reshape(-1, 1, 2)
-cray = cv2.undistortPointsIter(cpts, KM, np.array(DIST), None, None, crit).reshape(H, W, 2)
+cray = undistort_iter(cpts, KM, np.array(DIST), crit).reshape(H, W, 2)
 
 # ---- motion blur through the lens: a white 4 x 4 square at Z0 moving +x
 # one unit per frame.  The expected image: the mean of the distorted sharp

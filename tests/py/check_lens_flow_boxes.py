@@ -40,6 +40,7 @@ import check_boxes as B  # noqa: E402
 import check_flow  # noqa: E402  (its ray-box slab test)
 import flow_scene as S  # noqa: E402
 import gt_checks  # noqa: E402
+from glstest import undistort_iter  # noqa: E402
 
 BIN, LIB, D = sys.argv[1], sys.argv[2], sys.argv[3]
 result = gt_checks.result
@@ -59,8 +60,7 @@ def rays(lens, K, u, v):
     if fish:
         xy = cv2.fisheye.undistortPoints(pts, K, np.array(dist)).reshape(-1, 2)
     else:
-        xy = cv2.undistortPointsIter(pts, K, np.array(dist), None, None,
-                                     (cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 100, 1e-15)).reshape(-1, 2)
+        xy = undistort_iter(pts, K, np.array(dist), (cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 100, 1e-15)).reshape(-1, 2)
     return np.column_stack([xy, np.ones(len(xy))]).reshape(np.shape(u) + (3,))
 
 

@@ -16,7 +16,7 @@ import sys
 import numpy as np
 import cv2
 
-from glstest import Checks
+from glstest import Checks, undistort_iter
 
 CHECKS = Checks('lens_rolling_setup')
 result, run = CHECKS.result, CHECKS.run
@@ -39,8 +39,8 @@ OFF = 1.0 / 8
 def camera(path, lens, extra):
     key, k = LENSES[lens]
     with open(path, 'w') as f:
-        f.write('width %d\nheight %d\nfx %r\nfy %r\ncx %r\ncy %r\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 1000\n'
-                '%s %s\npose rig\nline_delay %r\n' % (W, H, FX, FX, CX, CY, key, ' '.join(repr(x) for x in k), DL)
+        f.write('width %d\nheight %d\nfx %.17g\nfy %.17g\ncx %.17g\ncy %.17g\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 1000\n'
+                '%s %s\npose rig\nline_delay %.17g\n' % (W, H, FX, FX, CX, CY, key, ' '.join("%.17g" % x for x in k), DL)
                 + extra)
 
 
@@ -51,7 +51,7 @@ def rays(lens, u, v):
     if lens == 'fisheye':
         r = cv2.fisheye.undistortPoints(pts, KM, np.array(k), criteria=CRIT)
     else:
-        r = cv2.undistortPointsIter(pts, KM, np.array(k), None, None, CRIT)
+        r = undistort_iter(pts, KM, np.array(k), CRIT)
     return r.reshape(u.shape + (2,))
 
 
@@ -82,7 +82,7 @@ with open(D + '/src/Tilt.scene', 'w') as f:
 run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/tilt.glsb', 'Tilt'])
 with open(D + '/traj_v.txt', 'w') as f:
     for k in range(5):
-        f.write('%d %d 1 0 0 0 1 0 0 0 1 %r %r %r\n' % ((k, k) + tuple(-V * k)))
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %.17g %.17g %.17g\n' % ((k, k) + tuple(-V * k)))
 
 
 def plane_point(d, C0):
@@ -172,12 +172,12 @@ with open(D + '/src/Sq.scene', 'w') as f:
     f.write('color(1, 1, 1);\npoly { vert(-2, -2, 0); vert(2, -2, 0); vert(2, 2, 0); vert(-2, 2, 0); }\n')
 with open(D + '/src/MovWall.scene', 'w') as f:
     f.write('poly { vert(-50, -50, 30); vert(50, -50, 30); vert(50, 50, 30); vert(-50, 50, 30); }\n'
-            'push; trans(0, 0, %r); call("Sq", "mover"); pop;\n' % Z0)
+            'push; trans(0, 0, %.17g); call("Sq", "mover"); pop;\n' % Z0)
 run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/movwall.glsb', 'MovWall'])
 with open(D + '/mover.txt', 'w') as f:
     f.write('# glsroad motion 1\n')
     for k in range(4):
-        f.write('%d %d 1 0 0 0 1 0 0 0 1 %r %r 0\n' % ((k, k) + tuple(M[:2] * k)))
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %.17g %.17g 0\n' % ((k, k) + tuple(M[:2] * k)))
 with open(D + '/still.txt', 'w') as f:
     for k in range(4):
         f.write('%d %d 1 0 0 0 1 0 0 0 1 0 0 0\n' % (k, k))
@@ -226,11 +226,11 @@ else:
 # pixels along the edges).
 SX = -7.0
 with open(D + '/src/Boxed.scene', 'w') as f:
-    f.write('push; trans(%r, 0, %r); call("Sq", "sq"); pop;\n' % (SX, Z0))
+    f.write('push; trans(%.17g, 0, %.17g); call("Sq", "sq"); pop;\n' % (SX, Z0))
 run([BIN + '/glsc', '-I', D + '/src', '-o', D + '/boxed.glsb', 'Boxed'])
 with open(D + '/traj_x.txt', 'w') as f:
     for k in range(4):
-        f.write('%d %d 1 0 0 0 1 0 0 0 1 %r 0 0\n' % (k, k, -2.0 * k))  # C = (2 k, 0, 0)
+        f.write('%d %d 1 0 0 0 1 0 0 0 1 %.17g 0 0\n' % (k, k, -2.0 * k))  # C = (2 k, 0, 0)
 
 
 def on_square(lens, du, dv, t):

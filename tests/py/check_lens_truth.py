@@ -11,7 +11,7 @@ import sys
 import numpy as np
 import cv2
 
-from glstest import Checks
+from glstest import Checks, undistort_iter
 
 BIN, D = sys.argv[1], sys.argv[2]
 CHECKS = Checks('lens_truth_setup')
@@ -83,8 +83,7 @@ for lens, (key, dist, fish) in LENSES.items():
     if fish:
         xy = cv2.fisheye.undistortPoints(pts, K, np.array(dist)).reshape(-1, 2)
     else:
-        xy = cv2.undistortPointsIter(pts, K, np.array(dist), None, None,
-                                     (cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 100, 1e-14)).reshape(-1, 2)
+        xy = undistort_iter(pts, K, np.array(dist), (cv2.TERM_CRITERIA_COUNT | cv2.TERM_CRITERIA_EPS, 100, 1e-14)).reshape(-1, 2)
     ray = (R.T @ np.column_stack([xy, np.ones(len(xy))]).T).T
     s = (-0.4 - C[2]) / ray[:, 2]
     hit = C + s[:, None] * ray

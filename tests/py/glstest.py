@@ -117,3 +117,14 @@ def render_green(BIN, d, R, T, size, far):
     run(os.path.join(BIN, "glsplay"), os.path.join(d, "s.glsb"), "--camera", cam, "--outputs", "image", "-o",
         os.path.join(d, "out"))
     return cv2.imread(os.path.join(d, "out", "cam", "image_000000.png"), cv2.IMREAD_COLOR)[:, :, 1].astype(float)
+
+
+def undistort_iter(pts, K, dist, crit):
+    """Normalised rays of distorted pixels pts, solved to criteria crit:
+    cv2.undistortPointsIter in OpenCV 4; OpenCV 5 dropped it and gave
+    cv2.undistortPoints the criteria (a GPU machine's pip OpenCV is 5)."""
+    import cv2
+    f = getattr(cv2, "undistortPointsIter", None)
+    if f is not None:
+        return f(pts, K, dist, None, None, crit)
+    return cv2.undistortPoints(pts, K, dist, None, None, criteria=crit)
