@@ -20,14 +20,20 @@ B=${GLS_BIN:-build}
 log=$B/test.log
 : >"$log"
 
+# took NAME T0: the line "# took S s NAME", the seconds since T0 (the
+# slowest are listed at the end, for whoever shortens the suite)
+took() { awk -v n="$1" -v a="$2" -v b="$(date +%s.%N)" 'BEGIN { printf "# took %.1f s %s\n", b - a, n }'; }
+
 # suite BUILD PREFIX: unit tests and e2e scripts against BUILD
 suite() {
     out=$(mktemp)
     for t in "$1"/tests/*; do
         [ -f "$t" ] && [ -x "$t" ] || continue # not the objects' directories
         echo "== $t"
+        t0=$(date +%s.%N)
         "$t" >"$out" 2>&1
         rc=$?
+        took "$t" "$t0"
         cat "$out"
         if [ $rc -ne 0 ] && ! grep -q '^FAIL ' "$out"; then
             echo "FAIL $(basename "$t"): exited with status $rc"
@@ -36,7 +42,9 @@ suite() {
     for t in tests/e2e/*.sh; do
         [ -f "$t" ] && [ "$t" != tests/e2e/lib.sh ] || continue
         echo "== $t"
+        t0=$(date +%s.%N)
         GLS_BIN=$1 sh "$t" 2>&1
+        took "$t" "$t0"
     done
     rm -f "$out"
 }
@@ -45,6 +53,7 @@ suite "$B" | tee -a "$log"
 
 if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
     echo "== sanitizer build (clang, ASan + UBSan) in build-asan" | tee -a "$log"
+    t0=$(date +%s.%N)
     export ASAN_OPTIONS=abort_on_error=0:detect_leaks=1
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     export LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
@@ -55,13 +64,15 @@ if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
         build-asan/glsplay_bands_whole \
         >build-asan.log 2>&1; then
         export GLS_SANITIZED=1
-        suite build-asan | sed 's/^ok /ok asan:/; s/^FAIL /FAIL asan:/' | tee -a "$log"
+        suite build-asan | sed 's/^ok /ok asan:/; s/^FAIL /FAIL asan:/; s/^\(# took [0-9.]* s \)/\1asan:/' | tee -a "$log"
     else
         tail -20 build-asan.log
         echo "FAIL asan_build: see build-asan.log" | tee -a "$log"
     fi
 
+    took "the sanitizer build and its suite (all)" "$t0" | tee -a "$log"
     echo "== fuzzing (libFuzzer, ASan + UBSan)" | tee -a "$log"
+    t0=$(date +%s.%N)
     if make --no-print-directory -s -j2 fuzz-build >build-fuzz.log 2>&1; then
         export GLS_FUZZ_JOBS=${GLS_FUZZ_JOBS:-2} # two targets at a time: the CI machine has 2 cores
         sh tests/fuzz/run.sh 0 2>&1 | sed 's/^ok fuzz_/ok fuzz_replay_/; s/^FAIL fuzz_/FAIL fuzz_replay_/' | tee -a "$log"
@@ -71,13 +82,18 @@ if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
         echo "FAIL fuzz_build: see build-fuzz.log" | tee -a "$log"
     fi
 
+    took "fuzzing (all)" "$t0" | tee -a "$log"
     echo "== valgrind: glsplay renders the demo" | tee -a "$log"
+    t0=$(date +%s.%N)
     sh tests/valgrind.sh "$B" 2>&1 | tee -a "$log"
+    took "valgrind (all)" "$t0" | tee -a "$log"
 fi
 
 passed=$(grep -c '^ok ' "$log")
 failed=$(grep -c '^FAIL ' "$log")
 echo
+echo "the slowest (seconds):"
+grep '^# took ' "$log" | sort -k3 -n -r | head -12 | cut -d' ' -f3,5-
 grep '^FAIL ' "$log"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
