@@ -68,3 +68,8 @@ rm -f "$repo"/build/libglscene.so*
 install ./python python_package_subdir
 [ -f "$repo/build/libglscene.so.0" ] && ok python_package_builds_library ||
     fail python_package_builds_library "no build/libglscene.so.0 after pip install ./python"
+# the README's install commands are the ones run above
+grep -qxF '    python3 -m venv --system-site-packages ~/glscene-venv' README.md &&
+    grep -qxF '    ~/glscene-venv/bin/pip install --no-index --no-build-isolation .' README.md &&
+    ok python_package_readme_commands ||
+    fail python_package_readme_commands "README.md no longer gives the venv and pip install commands this test runs"
