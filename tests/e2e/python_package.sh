@@ -29,6 +29,10 @@ rm -f "$repo/build/test.log"
 # what a user's shell has, not this suite's
 unset MAKEFLAGS MFLAGS MAKELEVEL B GLS_BIN PYTHONPATH GLSCENE_LIBRARY
 export PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_NO_CACHE_DIR=1 PYTHONDONTWRITEBYTECODE=1
+# pip sees what Debian gives and nothing this machine's pip settings add
+# (a wheel directory, an index)
+unset PIP_FIND_LINKS PIP_INDEX_URL PIP_EXTRA_INDEX_URL PIP_NO_INDEX
+export PIP_CONFIG_FILE=/dev/null
 
 # the render, run from a directory that is not the checkout
 mkdir "$t/elsewhere"
