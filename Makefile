@@ -398,7 +398,7 @@ demo-examples: $(EXAMPLES:%=out/%/.stamp)
 $(B)/pnghalf: $(B)/tools/pnghalf.o
 	$(CC) $(LDFLAGS) $< -o $@ -lstb -lm
 
-# Regenerate the README's gallery images from the demo (committed copies).
+# Regenerate the gallery images (docs/gallery.md) from the demo (committed copies).
 gallery: demo $(B)/pnghalf
 	cp out/demo/left/image_000000.png docs/demo_left.png
 	cp out/demo/right/image_000000.png docs/demo_right.png
@@ -407,7 +407,7 @@ gallery: demo $(B)/pnghalf
 	cp out/gallery/ex_*.png docs/
 	@$(MAKE) --no-print-directory gallery-effects
 
-# The README's rows of camera effects (docs/effects_*.png): exposure, lens
+# The gallery's rows of camera effects (docs/gallery.md) (docs/effects_*.png): exposure, lens
 # distortion and shadows on the demo's left camera.
 gallery-effects: all $(B)/pnghalf
 	sh bench/effects_o9/gallery.sh $(B) docs
@@ -453,8 +453,13 @@ uninstall:
 	rm -rf $(INSTALL_PY)
 	-rmdir $(INSTALL_SHARE) 2>/dev/null
 
+# Every bench-NAME writes its output (machine, load, tables) to
+# $(B)/bench/NAME.txt and then into its block of docs/benchmarks.md, where
+# the figures live beside the prose that reads them (tools/bench_md.sh).
+BENCH_MD := sh tools/bench_md.sh --write
 bench-compile: $(B)/glsc
-	@sh bench/compile.sh $(B)
+	@mkdir -p $(B)/bench && sh bench/compile.sh $(B) >$(B)/bench/compile.txt; st=$$?; cat $(B)/bench/compile.txt; exit $$st
+	@$(BENCH_MD) compile $(B)/bench/compile.txt
 
 clean:
 	rm -rf $(B) out
@@ -471,41 +476,48 @@ $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 
 # bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
 bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
-	@sh bench/play.sh $(B)
+	@mkdir -p $(B)/bench && sh bench/play.sh $(B) >$(B)/bench/play.txt; st=$$?; cat $(B)/bench/play.txt; exit $$st
+	@$(BENCH_MD) play $(B)/bench/play.txt
 
 # bench-instances (runtime owner): instanced replay against --flatten and
 # the floor, random-order triangles and a 10,000-tree forest
-# (docs/instances.txt; minutes: the flattened forest has 20 M triangles).
+# (docs/benchmarks.md; minutes: the flattened forest has 20 M triangles).
 bench-instances: $(B)/bench/play_floor $(B)/bench/instances_bench
 	@sh bench/instances.sh $(B)
+	@$(BENCH_MD) instances $(B)/bench/instances.txt
 
 # bench-encode: what writing the files costs glsplay: frames per second
 # with and without image files, writer thread on and off, 640x480 and
 # 1920x1080, and each PNG encoder and level on one frame; writes
-# docs/encode.txt (BE_BASELINE=path/to/old/glsplay adds a column).
+# docs/benchmarks.md (BE_BASELINE=path/to/old/glsplay adds a column).
 bench-encode: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench $(B)/bench/png_bench
 	@sh bench/encode.sh $(B)
+	@$(BENCH_MD) encode $(B)/bench/encode.txt
 
 # bench-backends: frames per second of each GL backend (spec/backends.md),
 # the road sequence and the 100k-triangle terrain, 1 and 256 samples a
-# pixel; writes docs/backends.txt.
+# pixel; writes docs/benchmarks.md.
 bench-backends: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/backends.sh $(B)
+	@$(BENCH_MD) backends $(B)/bench/backends.txt
 
 # bench-scaling: frames per second with 1 and 2 processes (--shard) and
 # LP_NUM_THREADS 1, 2 and unset, the road sequence and the 100k-triangle
-# terrain; writes docs/scaling.txt (README "Run it on a cluster").
+# terrain; writes docs/benchmarks.md (docs/cluster.md points there).
 bench-scaling: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/scaling.sh $(B)
+	@$(BENCH_MD) scaling $(B)/bench/scaling.txt
 # bench-distortion: lens distortion's time per frame (road demo), edge
-# accuracy and the 15-view calibration (docs/distortion.txt; DB_BASELINE=
+# accuracy and the 15-view calibration (docs/benchmarks.md; DB_BASELINE=
 # a glsplay from before the lens adds its pinhole time).
 bench-distortion: $(TOOLS) $(SCENELIB)
 	@sh bench/distortion.sh $(B)
+	@$(BENCH_MD) distortion $(B)/bench/distortion.txt
 # bench-effects: the effects' cost, and none when unused, against the build
-# before issue 16 (bench/effects.sh, docs/effects.txt).
+# before issue 16 (bench/effects.sh, docs/benchmarks.md).
 bench-effects: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/effects.sh $(B)
+	@$(BENCH_MD) effects $(B)/bench/effects.txt
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
@@ -519,6 +531,7 @@ bench-gpu: $(TOOLS) $(SCENELIB)
 
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
+	@$(BENCH_MD) aa $(B)/bench/aa.txt
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
 # -O3 vectorises them (gcc 12's -O2 leaves loops with remainders scalar).
 $(B)/runtime/aa/aa.o: CFLAGS += -O3
@@ -553,11 +566,11 @@ demo-road:
 	@sh tools/deps.sh
 	@$(MAKE) --no-print-directory all $(B)/textures.stamp $(B)/road_montage
 	sh examples/road/render.sh $(B) out/road out/road/road_strip.png
-# The README's strip, docs/road_strip.png, from demo-road's.
+# docs/roads.md's strip, docs/road_strip.png, from demo-road's.
 gallery-road: demo-road
 	cp out/road/road_strip.png docs/road_strip.png
 
-# The README's ground-truth gallery row (docs/gt_*.png): colour views of
+# The README's ground-truth row (and docs/gallery.md's) (docs/gt_*.png): colour views of
 # the road clip's answer-key files (frame 200) and the stereo example's
 # disparity, made by tools/gt_gallery.py (cv2, numpy).
 gallery-truth: demo-road out/stereo/.stamp

@@ -1,6 +1,6 @@
 #!/bin/sh
-# make bench-aa: what sub-pixel accuracy costs.  Writes docs/aa_cost.txt
-# (the tables) and docs/aa_cost.svg (the plot, gnuplot: bench/aa_plot.gp).
+# make bench-aa: what sub-pixel accuracy costs.  Writes $B/bench/aa.txt
+# (the tables; make bench-aa puts them in docs/benchmarks.md) and docs/aa_cost.svg (the plot, gnuplot: bench/aa_plot.gp).
 #  1. accuracy and time per frame, box filter, straight edges: for every
 #     pattern and M = 16, 64, 256, 4096 (AA_MS), the per-row (per-column
 #     for near-horizontal edges) RMS edge error against the exact answer
@@ -39,8 +39,8 @@ if ! command -v gnuplot >/dev/null 2>&1; then
 fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-old=docs/aa_cost.txt
-[ -f "$old" ] && cp "$old" "$tmp/old.txt"
+# the last run's tables (docs/benchmarks.md), for the anisotropic rows it carries over
+sh tools/bench_md.sh --print aa >"$tmp/old.txt" 2>/dev/null || : >"$tmp/old.txt"
 out="$tmp/aa_cost.txt"
 {
 echo "machine: $(nproc) cores, $(cpu), Mesa llvmpipe; GL backend: --backend auto (section 2 names the one it picked)"
@@ -180,8 +180,8 @@ elif [ -f "$tmp/old.txt" ] && grep -q '^| anisotropic filtering' "$tmp/old.txt";
     echo >>"$out"
     sed -n '/^| anisotropic filtering/,/^$/p' "$tmp/old.txt" | sed '/^$/d' >>"$out"
 fi
-cp "$out" docs/aa_cost.txt
+mkdir -p "$B/bench" && cp "$out" "$B/bench/aa.txt" || exit 1
 [ -n "$AA_KEEP_RAW" ] && cp "$raw" "$AA_KEEP_RAW"
 gnuplot -e "raw='$raw'; out='docs/aa_cost.svg'" bench/aa_plot.gp || exit 1
-cat docs/aa_cost.txt
+cat "$B/bench/aa.txt"
 echo "plot: docs/aa_cost.svg"

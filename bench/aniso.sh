@@ -5,7 +5,7 @@
 # image only), with filtering off (the default; best of 3) and at each N
 # in ANISO_NS (default 16; one run each, as each takes minutes).  Prints a
 # markdown table; make bench-aa (bench/aa.sh) appends it to
-# docs/aa_cost.txt.
+# docs/benchmarks.md.
 B=${1:-build}
 NS=${ANISO_NS:-16}
 FRAME=${ANISO_FRAME:-4}

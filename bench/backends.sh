@@ -12,7 +12,7 @@
 # of BB_REPEAT runs (default 3), the backends interleaved, since the
 # machine may be shared.  Also the renderer alone (bench/play_bench: 200
 # frames of the terrain, colour and depth read back, no files).  Writes
-# docs/backends.txt.  Not a pass/fail test.
+# $B/bench/backends.txt (make bench-backends puts it in docs/benchmarks.md).  Not a pass/fail test.
 #   BB_FRAMES (default 36) single-pass frames; BB_AA_FRAMES (default 3)
 #   frames at 256 samples; BB_BACKENDS (default: "egl osmesa", those built)
 B=${1:-build}
@@ -20,7 +20,7 @@ B=${1:-build}
 FRAMES=${BB_FRAMES:-36}
 AA_FRAMES=${BB_AA_FRAMES:-3}
 REPEAT=${BB_REPEAT:-3}
-OUT=docs/backends.txt
+mkdir -p "$B/bench" && OUT=$B/bench/backends.txt
 work_dir
 fixed_malloc
 

@@ -1,7 +1,7 @@
 #!/bin/sh
 # make bench-distortion: what lens distortion costs and keeps (spec/camera.md
 # "The distorted image").  Not a pass/fail run (the tests are
-# tests/e2e/distortion.sh); writes docs/distortion.txt.
+# tests/e2e/distortion.sh); writes $B/bench/distortion.txt (make bench-distortion: into docs/benchmarks.md).
 #  1. time per frame of the road demo (examples/road, the left rig camera,
 #     640x480, --outputs image,depth,points), DB_FRAMES frames (default 8),
 #     best of DB_REPEAT runs (default 2): the pinhole camera, the same with
@@ -18,7 +18,7 @@ B=${1:-build}
 FRAMES=${DB_FRAMES:-8}
 REPEAT=${DB_REPEAT:-2}
 PY=/usr/bin/python3
-OUT=docs/distortion.txt
+mkdir -p "$B/bench" && OUT=$B/bench/distortion.txt
 work_dir
 fixed_malloc
 "$B/glsroad" examples/road/demo.road -o "$t/road" >/dev/null &&

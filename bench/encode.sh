@@ -1,6 +1,7 @@
 #!/bin/sh
 # make bench-encode: what writing the output files costs glsplay (issue 14).
-# Not a pass/fail test; timings only.  Writes docs/encode.txt.
+# Not a pass/fail test; timings only.  Writes $B/bench/encode.txt
+# (make bench-encode puts it in docs/benchmarks.md).
 #
 # 1. glsplay frames per second on two sequences (the road demo as glsroad
 #    writes it, textured, left rig camera; the 100,352-triangle terrain of
@@ -23,7 +24,7 @@ B=${1:-build}
 FRAMES=${BE_FRAMES:-36}
 FRAMES_HD=${BE_FRAMES_HD:-12}
 REPEAT=${BE_REPEAT:-2}
-OUT=docs/encode.txt
+mkdir -p "$B/bench" && OUT=$B/bench/encode.txt
 work_dir
 fixed_malloc
 

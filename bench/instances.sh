@@ -1,7 +1,7 @@
 #!/bin/sh
 # make bench-instances: instanced replay (spec/bundle.md 9.3) against the
 # flattened path (glsplay --flatten) and the bare-GL floor, in one run;
-# writes docs/instances.txt.  Not a pass/fail test: it states which of
+# writes $B/bench/instances.txt (make bench-instances: into docs/benchmarks.md).  Not a pass/fail test: it states which of
 # issue 14's targets the figures meet.
 #  1. the 100,352-triangle height field of bench/play_scene.h with its
 #     triangles in random order (bench/random_order.h), 640x480, 200
@@ -28,7 +28,7 @@ REPS=${INST_REPS:-2}
 EF=${INST_EDGE_FRAMES:-10}
 AF=${INST_ALL_FRAMES:-3}
 FREPS=${INST_FOREST_REPS:-3}
-out=docs/instances.txt
+mkdir -p "$B/bench" && out=$B/bench/instances.txt
 mkdir -p docs
 # fixed malloc thresholds, as bench/lib.sh explains
 fixed_malloc

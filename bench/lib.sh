@@ -17,7 +17,7 @@ work_dir() {
 }
 
 # cpu: the processor's model name; machine: the machine line of the
-# docs/*.txt tables (processor, cores, kernel)
+# docs/benchmarks.md blocks (processor, cores, kernel)
 cpu() { grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'; }
 machine() { echo "$(cpu), $(nproc) cores, $(uname -sr)"; }
 

@@ -11,7 +11,7 @@
 # first process's start to the last one's end (start-up, upload and PNG
 # writing included); the best of BS_REPEAT rounds (default 3), the
 # settings interleaved within each round, since the machine may be shared.
-# Writes docs/scaling.txt with the machine and its load.  Not a pass/fail
+# Writes $B/bench/scaling.txt (make bench-scaling: into docs/benchmarks.md) with the machine and its load.  Not a pass/fail
 # test.
 #   BS_FRAMES (default 48) frames of each sequence; BS_PROCS (default
 #   "1 2") process counts; BS_THREADS (default "1 2 default")
@@ -21,7 +21,7 @@ FRAMES=${BS_FRAMES:-48}
 REPEAT=${BS_REPEAT:-3}
 PROCS=${BS_PROCS:-1 2}
 THREADS=${BS_THREADS:-1 2 default}
-OUT=docs/scaling.txt
+mkdir -p "$B/bench" && OUT=$B/bench/scaling.txt
 work_dir
 fixed_malloc
 

@@ -7,7 +7,7 @@
 # each way.  Prints per example the pixels whose colour differs (and by
 # how many levels at most), pixels where only one depth map has a
 # surface, and the largest relative depth difference.  Not a pass/fail
-# test: the figures go into the spec and the README.
+# test: the figures go into the spec and docs/scenes.md.
 B=${1:-build}
 PY=/usr/bin/python3
 t=$(mktemp -d)

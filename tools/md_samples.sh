@@ -5,7 +5,7 @@
 # and holds exactly what `sh -c COMMAND` prints, standard output and
 # error together (the exit status is not looked at, so a sample may show
 # an error).  COMMAND runs in the current directory, the repository root,
-# as README commands do (after `make demo` and the README's commands
+# as README commands do (after `make demo` and the commands of the README and the guides
 # before it: tests/e2e/readme_commands.sh runs --check in such a copy).
 #
 # usage: md_samples.sh --check FILE...   exit 1 and a diff per sample that

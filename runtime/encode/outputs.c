@@ -8,7 +8,7 @@
 #include <spng.h>
 
 /* The player's PNG settings (outputs.h).  Measured on rendered frames
- * (make bench-encode, docs/encode.txt): level 1 is 3 to 5 times faster
+ * (make bench-encode, docs/benchmarks.md): level 1 is 3 to 5 times faster
  * than level 6 and 4 to 6 times faster than stb_image_write; "sub" gives
  * the smallest files of the single filters at about the speed of none
  * (none makes the terrain's files half as large again), while the

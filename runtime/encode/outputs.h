@@ -11,7 +11,7 @@
 
 /* Every PNG is encoded by libspng at zlib level 1 with the "sub" filter on
  * every row (outputs.c), chosen by measurement (make bench-encode,
- * docs/encode.txt): 4 to 6 times faster than stb_image_write's encoder,
+ * docs/benchmarks.md): 4 to 6 times faster than stb_image_write's encoder,
  * which the player used before, with files of about the same size or
  * smaller and the same pixels. */
 

@@ -13,7 +13,7 @@ tmp=$t
     "$BIN/glsc" -I "$tmp/road" -I "$BIN/scenelib.glsb" -o "$tmp/road.glsb" "$tmp/road/road.scene" ||
     { fail cluster_setup "the road demo does not build"; exit 0; }
 GLSPLAY=$(cd "$BIN" && pwd)/glsplay
-# the demo's sequence command (README), frames 3..11 written with every
+# the demo's sequence command (docs/roads.md), frames 3..11 written with every
 # output and the calibration files
 set -- "$tmp/road.glsb" --camera examples/road/rig/left.cam --camera examples/road/rig/right.cam \
     --trajectory "$tmp/road/trajectory.txt" --frames 3:12 --background 0.55,0.7,0.9 \

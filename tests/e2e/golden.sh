@@ -61,7 +61,7 @@ render() {
     done
 }
 
-# the README's "Compile, inspect, play" command (image, depth, points)
+# docs/scenes.md's "Compile, inspect, play" command (image, depth, points)
 render demo demo --camera examples/demo/left.cam --camera examples/demo/right.cam
 # an example with textures and anti-aliasing, as examples/render.sh renders it
 render signs signs --camera examples/signs/left.cam --aa 4 --outputs image,depth --background 0.55,0.7,0.9

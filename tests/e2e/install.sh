@@ -1,5 +1,5 @@
 #!/bin/sh
-# make install / make uninstall (Makefile, README "Install"): into a
+# make install / make uninstall (Makefile, docs/install.md): into a
 # temporary DESTDIR, exactly the listed files and nothing outside it; the
 # installed tools run (--help) and render the road demo with the installed
 # library bundle, byte for byte as the build's tools do; the man pages
@@ -91,7 +91,7 @@ else
     fail installed_tools_render_demo "exit $rc: $(tail -5 "$tmp/log")"
 fi
 
-# libglscene through pkg-config (README "Use it from C"): the .pc names
+# libglscene through pkg-config (docs/install.md "Use it from C"): the .pc names
 # the install's prefix; --define-variable moves it into DESTDIR.  The
 # program renders the demo's left camera and checks the depth at a pixel
 # of the road (the plane y = 0.01) against the camera model.

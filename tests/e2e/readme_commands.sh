@@ -1,17 +1,23 @@
 #!/bin/sh
-# Every command in README.md runs as written in a fresh copy of the
-# repository after `make demo`, and leaves that checkout clean: outputs go
-# only under out/ and build/, which git ignores.  Also `make demo` is
-# incremental: a second run renders nothing, and touching one camera file
-# renders again only the scene that camera belongs to.  Samples of output
-# marked <!-- sample: COMMAND --> in README.md, docs/ and spec/ are what
-# their commands print in that copy (tools/md_samples.sh --check).
-# Prints "ok NAME" / "FAIL NAME: why".
+# Every command in README.md and in the guides of docs/ runs as written in
+# a fresh copy of the repository after `make demo`, and leaves that
+# checkout clean: outputs go only under out/ and build/, which git
+# ignores.  Also `make demo` is incremental: a second run renders nothing,
+# and touching one camera file renders again only the scene that camera
+# belongs to.  Samples of output marked <!-- sample: COMMAND --> in
+# README.md, docs/ and spec/ are what their commands print in that copy
+# (tools/md_samples.sh --check).  Prints "ok NAME" / "FAIL NAME: why".
 #
-# The commands: the lines of README.md's indented code blocks whose first
-# line starts with "build/" or "make " (a trailing backslash joins the next
-# line), in order; the first is `make demo`.  `make test` is not run: it is
-# the suite this script belongs to.
+# The commands: the lines of a file's indented code blocks whose first
+# line starts with "build/", "make " or "parallel ", and in README.md also
+# "cc " (its C example's build; docs/api.md's and docs/install.md's cc
+# lines need `make install`, which install.sh runs) (a trailing backslash
+# joins the next line), in order; README.md's first, whose first
+# is `make demo`, then each guide's of GUIDES in that order (a guide's
+# commands may read what the README's and the guides before it wrote).
+# `make test` is not run: it is the suite this script belongs to.  A file
+# of docs/ with commands that is not in GUIDES fails
+# (docs_commands_all_run), so that no guide's commands go untested.
 # The copy: the files git tracks or would track (not ignored) in this
 # checkout, as they are now, in a new git repository under mktemp -d, with
 # $GLS_BIN copied as its build/ (timestamps kept: make rebuilds nothing).
@@ -33,35 +39,62 @@ rm -f "$repo/build/test.log"
 # the commands see the environment a user has, not this suite's make
 unset MAKEFLAGS MFLAGS MAKELEVEL B GLS_BIN
 
+# ---- the README is a front door (issue 29): at most 300 lines; the rest
+# is in the guides of docs/
+n=$(wc -l <README.md)
+[ "$n" -le 300 ] && ok readme_at_most_300_lines || fail readme_at_most_300_lines "README.md has $n lines"
+
 # ---- the commands ----------------------------------------------------------------
-awk '
-    /^    / && (blank || inblock) {
-        if (!inblock) { inblock = 1; cmds = ($0 ~ /^    (build\/|make )/) }
-        if (cmds) {
-            line = substr($0, 5)
-            if (line ~ /\\$/) { acc = acc substr(line, 1, length(line) - 1); next }
-            sub(/^ +/, "", line)
-            print acc line
-            acc = ""
+GUIDES="docs/scenes.md docs/outputs.md docs/antialiasing.md docs/effects.md docs/roads.md docs/cluster.md"
+# commands FILE: its commands, one a line
+commands() {
+    awk -v readme=$([ "$1" = README.md ] && echo 1) '
+        /^    / && (blank || inblock) {
+            if (!inblock) { inblock = 1; cmds = ($0 ~ /^    (build\/|make |parallel )/ || (readme && $0 ~ /^    cc /)) }
+            if (cmds) {
+                line = substr($0, 5)
+                if (line ~ /\\$/) { acc = acc substr(line, 1, length(line) - 1); next }
+                sub(/^ +/, "", line)
+                print acc line
+                acc = ""
+            }
+            blank = 0; next
         }
-        blank = 0; next
-    }
-    { inblock = 0; blank = ($0 ~ /^[ \t]*$/) }
-    BEGIN { blank = 1 }' README.md >"$t/commands"
+        { inblock = 0; blank = ($0 ~ /^[ \t]*$/) }
+        BEGIN { blank = 1 }' "$1"
+}
+commands README.md >"$t/commands"
 n=$(wc -l <"$t/commands")
 [ "$n" -ge 10 ] && [ "$(head -1 "$t/commands" | cut -c1-9)" = "make demo" ] && ok readme_commands_found ||
     fail readme_commands_found "$n commands, the first '$(head -1 "$t/commands")' (want make demo first, and at least 10)"
-i=0
-while IFS= read -r cmd; do
-    i=$((i + 1))
-    case "$cmd" in "make test"*) continue ;; esac
-    echo "# README command $i: $cmd"
-    if (cd "$repo" && timeout 600 sh -c "$cmd") >"$t/out" 2>&1 </dev/null; then
-        ok "readme_command_$i"
-    else
-        fail "readme_command_$i" "'$cmd' failed: $(tail -3 "$t/out" | tr '\n' ' ')"
-    fi
-done <"$t/commands"
+unlisted=""
+for f in docs/*.md; do
+    case " $GUIDES " in *" $f "*) continue ;; esac
+    commands "$f" >"$t/c"
+    [ -s "$t/c" ] && unlisted="$unlisted $f"
+done
+[ -z "$unlisted" ] && ok docs_commands_all_run || fail docs_commands_all_run "commands in$unlisted, which GUIDES does not list"
+# run NAME FILE: each command of FILE in the copy, "ok NAME_I" each
+run() {
+    i=0
+    while IFS= read -r cmd; do
+        i=$((i + 1))
+        case "$cmd" in "make test"*) continue ;; esac
+        echo "# $2 command $i: $cmd"
+        if (cd "$repo" && timeout 600 sh -c "$cmd") >"$t/out" 2>&1 </dev/null; then
+            ok "${1}_$i"
+        else
+            fail "${1}_$i" "'$cmd' failed: $(tail -3 "$t/out" | tr '\n' ' ')"
+        fi
+    done
+}
+run readme_command README.md <"$t/commands"
+for f in $GUIDES; do
+    commands "$f" >"$t/commands"
+    name=docs_command_$(basename "$f" .md)
+    [ -s "$t/commands" ] && ok "${name}_found" || fail "${name}_found" "no commands in $f"
+    run "$name" "$f" <"$t/commands"
+done
 # ---- samples of output: each block marked <!-- sample: COMMAND --> in the
 # README, docs/ and spec/ is what COMMAND prints now (tools/md_samples.sh);
 # the README's --explain sample is one, and a stale sample is caught
