@@ -519,16 +519,18 @@ bench-effects: $(TOOLS) $(SCENELIB) $(B)/bench/play_bench
 	@sh bench/effects.sh $(B)
 	@$(BENCH_MD) effects $(B)/bench/effects.txt
 
-# bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
-# the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
 # bench-gpu: frames/s of whole glsplay runs on the road demo, a 10,000-tree
 # forest and 100,000 scattered triangles at 640x480 and 1920x1080 through EGL
-# (a GPU where there is one: bench/gpu.sh); writes docs/gpu.txt.  On a machine
-# without a GPU it measures llvmpipe, slowly (GPU_FRAMES frames, default 120).
-bench-gpu: $(TOOLS) $(SCENELIB)
-	@sh bench/gpu.sh prepare $(B) $(B)/bench-gpu
-	@sh bench/gpu.sh run $(B) $(B)/bench-gpu egl $(or $(GPU_FRAMES),120) >$(B)/gpu.txt.tmp && mv $(B)/gpu.txt.tmp docs/gpu.txt
+# (a GPU where there is one), and the bench-play and bench-instances
+# programs (bench/gpu.sh).  Without a GPU it measures llvmpipe, slowly
+# (GPU_FRAMES frames a run, default 120).
+bench-gpu: $(TOOLS) $(SCENELIB) $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/instances_bench
+	@sh bench/gpu.sh prepare $(B) $(B)/bench/gpu-inputs
+	@sh bench/gpu.sh run $(B) $(B)/bench/gpu-inputs egl $(or $(GPU_FRAMES),120) >$(B)/bench/gpu.txt; st=$$?; cat $(B)/bench/gpu.txt; exit $$st
+	@$(BENCH_MD) gpu $(B)/bench/gpu.txt
 
+# bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
+# the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
 bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 	@$(BENCH_MD) aa $(B)/bench/aa.txt

@@ -72,6 +72,14 @@ run)
         --backend "$BACKEND" --explain | grep -m2 -i 'backend:\|GL_RENDERER'
     echo "machine: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores"
     command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | sed 's/^/gpu: /'
+    if [ -x "$BIN/bench/play_floor" ]; then
+        echo "in process, no files (make bench-play's and bench-instances' programs; frames/s, colour + depth read back):"
+        for p in "play_floor" "play_floor --random" "play_bench --backend $BACKEND" "instances_bench random" \
+            "instances_bench forest edge 50" "instances_bench forest all 20"; do
+            echo "  $p: $("$BIN"/bench/$p 2>&1 | tail -1)"
+        done
+    fi
+    echo "whole glsplay runs:"
     echo "frames: $FRAMES along each camera path; best of $REPS; glsplay --backend $BACKEND"
     echo "scene | size | output | first image (s, whole process) | frames/s after it"
     for scene in road forest random; do

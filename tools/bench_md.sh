@@ -2,7 +2,7 @@
 # The latest run of each benchmark lives in docs/benchmarks.md, in a fenced
 # block right after a line
 #     <!-- bench: NAME -->
-# (NAME: compile, play, instances, scaling, backends, encode, distortion,
+# (NAME: compile, play, instances, scaling, backends, encode, distortion, gpu,
 # aa, effects).  `make bench-NAME` runs bench/NAME.sh, which writes its
 # output (machine, load, command, tables) to $B/bench/NAME.txt, and then
 # this script puts that text in the block: the figures have one home, the
