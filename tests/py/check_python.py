@@ -52,7 +52,7 @@ player = glscene.Player(bundle)
 out = player.render(cam, outputs=("depth", "instance", "normals"))
 z, ids = out["depth"], out["instance"]
 result("python_outputs_asked_for", sorted(out) == ["depth", "instance", "normals"] and z.dtype == np.float32
-       and z.shape == (H, W) and ids.dtype == np.uint32 and out["normals"].shape == (H, W, 3))
+       and z.shape == (H, W) and ids.dtype == np.uint16 and out["normals"].shape == (H, W, 3))
 
 # the wall's depth from the model: pixel (u, v) -> ray d = K^-1 (u, v, 1)
 # in the camera, P = R^T (Zc d - T) in the world, P_z = 10
