@@ -41,7 +41,8 @@ def compile(scene: Union[str, os.PathLike], roots: Sequence[Union[str, os.PathLi
     found under the roots, or the text of a scene (anything holding a
     newline or a brace), with the search roots (directories or library
     bundles) into out (default: the scene's name + .glsb; for text,
-    scene.glsb); returns out."""
+    scene.glsb, its errors located as "<scene text>:line:col"); returns
+    out."""
     text = isinstance(scene, str) and ("\n" in scene or "{" in scene)
     if text:
         import tempfile
@@ -49,7 +50,10 @@ def compile(scene: Union[str, os.PathLike], roots: Sequence[Union[str, os.PathLi
             path = os.path.join(d, "scene.scene")
             with open(path, "w") as f:
                 f.write(scene)
-            return compile(path, list(roots) + [d], out if out is not None else "scene.glsb")
+            try:
+                return compile(path, list(roots) + [d], out if out is not None else "scene.glsb")
+            except Error as e:  # the text has no file: its lines are the text's
+                raise Error(str(e).replace(path, "<scene text>")) from None
     scene = os.fspath(scene)
     if out is None:
         out = os.path.splitext(os.path.basename(scene))[0].split(".")[-1] + ".glsb"

@@ -159,6 +159,7 @@ class Player:
         instance and normals, is drawn by glscene_render, and sees the
         instances move() has posed; any other render is a run of the
         player, which move() does not reach (use motion)."""
+        self._open()
         words = (outputs,) if isinstance(outputs, str) else tuple(outputs)
         rig = list(camera) if isinstance(camera, (list, tuple)) else None
         if (rig is None and camera._plain and self._direct_ok and trajectory is None and not motion
@@ -184,6 +185,7 @@ class Player:
         frames given).  motion moves named instances a frame as glsplay
         --motion; flow goes from each frame to the next (none on the
         last)."""
+        self._open()
         words = (outputs,) if isinstance(outputs, str) else tuple(outputs)
         rig = list(camera) if isinstance(camera, (list, tuple)) else None
         with _Run(self._bundle, self._args, rig if rig is not None else [camera], words, trajectory, motion,
