@@ -186,8 +186,10 @@ int glscene_play_camera_text(glscene_play *r, const char *name, const char *text
  * every file the run's arguments would write for frame `frame` (of the
  * trajectory, or --frame's number without one), for each camera, as an
  * array with the values the file holds (docs/api.md "Every output as
- * arrays").  The same plan, passes and arrays as glscene_play_run's; -o
- * is not needed, and nothing is written or printed.  NULL with e (every
+ * arrays").  The same plan, passes and arrays as glscene_play_run's;
+ * nothing is written or printed, and what only a run writing files does
+ * (-o, --explain, --resume, --shard, --write-calib, --progress, --frames)
+ * has no effect.  NULL with e (every
  * message of the run, without "glsplay: error: ") on failure. */
 typedef struct glscene_result glscene_result;
 glscene_result *glscene_play_render(glscene_play *r, uint64_t frame, glscene_error *e);

@@ -95,7 +95,9 @@ static void messages(const char *text, glscene_error *e, glscene_play *r)
         }
         p += len + (nl != NULL);
     }
-    gls_play_fail(r, e, -1, "%s", b.len ? (const char *)b.data : "the run failed and said nothing");
+    if (gls_buf_reserve(&b, 1) == 0) /* a C string */
+        b.data[b.len] = 0;
+    gls_play_fail(r, e, -1, "%s", b.len && b.cap > b.len ? (const char *)b.data : "the run failed and said nothing");
     free(b.data);
 }
 
@@ -115,6 +117,28 @@ glscene_result *glscene_play_render(glscene_play *r, uint64_t frame, glscene_err
     if (!res) {
         gls_play_fail(r, e, -1, "out of memory");
         return NULL;
+    }
+    /* a frame the trajectory has, said in the caller's words (the run
+     * would speak of --frames, which the caller did not give) */
+    if (r->o.trajectory) {
+        long long n = glscene_play_trajectory_frames(r, NULL, 0, e);
+        uint64_t *f = n > 0 ? malloc((size_t)n * sizeof *f) : NULL;
+        long long k = n > 0 && f ? glscene_play_trajectory_frames(r, f, (size_t)n, e) : -1;
+        int has = 0;
+        for (long long i = 0; i < k && !has; i++)
+            has = f[i] == frame;
+        if (k > 0 && !has)
+            gls_play_fail(r, e, -1, "%s has no frame %llu (its frames: %llu to %llu, %lld rows)", r->o.trajectory,
+                          (unsigned long long)frame, (unsigned long long)f[0], (unsigned long long)f[k - 1], k);
+        else if (n == 0)
+            gls_play_fail(r, e, -1, "%s has no frame %llu (no rows)", r->o.trajectory, (unsigned long long)frame);
+        else if (n > 0 && !f)
+            gls_play_fail(r, e, -1, "out of memory");
+        free(f);
+        if (n < 0 || !has) {
+            free(res);
+            return NULL;
+        }
     }
     res->sink.take = take;
     /* the run's options for one frame into the sink: on this thread, no
@@ -143,9 +167,8 @@ glscene_result *glscene_play_render(glscene_play *r, uint64_t frame, glscene_err
     if (out)
         fclose(out);
     free(said);
-    if (rc == 0 && res->n == 0) /* a frame outside the trajectory's rows */
-        gls_play_fail(r, e, -1, "frame %llu is not a frame of the trajectory %s", (unsigned long long)frame,
-                      o.trajectory ? o.trajectory : "");
+    if (rc == 0 && res->n == 0) /* checked above: cannot happen */
+        gls_play_fail(r, e, -1, "frame %llu: nothing was rendered", (unsigned long long)frame);
     else if (rc)
         messages(rc < 0 ? "out of memory" : text, e, r);
     free(text);
@@ -202,7 +225,10 @@ int glscene_result_array(const glscene_result *res, size_t cam, const char *name
         }
         gls_buf_printf(&have, "%s%s", k ? ", " : "", c->arr[k].key);
     }
-    int rc = gls_api_fail(e, "camera %s has no array '%s' (it has: %s)", c->name, name, have.len ? (const char *)have.data : "none");
+    if (gls_buf_reserve(&have, 1) == 0) /* a C string */
+        have.data[have.len] = 0;
+    int rc = gls_api_fail(e, "camera %s has no array '%s' (it has: %s)", c->name, name,
+                          have.len && have.cap > have.len ? (const char *)have.data : "none");
     free(have.data);
     return rc;
 }

@@ -178,3 +178,15 @@ with glscene.Player(bundle) as p:
     result("python_error_move_then_run", got.startswith("move() posed mover, which a render of"), got)
     p.move("mover")
     result("python_move_back_then_run", sorted(p.render(cam, outputs="boxes")) == ["boxes", "boxes_json"])
+
+# a trajectory: its frames listed by sequence, a frame it has not said in
+# the caller's words (not the --frames the run was given)
+traj = os.path.join(TMP, "traj.txt")
+with open(traj, "w") as f:
+    f.writelines("%d %g 1 0 0 0 1 0 0 0 1 0 0 %g\n" % (k, 0.1 * k, -0.5 * k) for k in (3, 4, 6))
+with glscene.Player(bundle) as p:
+    seq = [(k, o["depth"][24 * 0 + 60, 80]) for k, o in p.sequence(cam, traj, outputs="depth")]
+    good, got = raises(lambda: p.render(cam, outputs="depth", frame=5, trajectory=traj),
+                       "%s has no frame 5 (its frames: 3 to 6, 3 rows)" % traj)
+result("python_sequence_frames", [k for k, _ in seq] == [3, 4, 6] and seq[0][1] > seq[1][1] > seq[2][1], repr(seq))
+result("python_error_frame_not_in_trajectory", good, got)
