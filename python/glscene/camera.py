@@ -56,15 +56,16 @@ class Camera:
         self._name, self._path, self._text, self._c, self._plain = name, path, text, pinhole, False
 
     @classmethod
-    def from_file(cls, path: Union[str, os.PathLike], name: Optional[str] = None) -> "Camera":
+    def from_file(cls, path: Union[str, os.PathLike]) -> "Camera":
         """A camera file (.cam keys, or OpenCV YAML with distortion or
         fisheye, sensor and exposure keys), as glsplay --camera reads it:
         its pose in the world for a single frame, relative to the rig with
-        a trajectory.  name: the file's name without its directory and
-        extension, as glsplay names its output directory."""
+        a trajectory.  Its name is the file's without its directory and
+        extension, as glsplay names its output directory (from_text names
+        a camera as you like)."""
         cam = cls.__new__(cls)
         path = os.fspath(path)
-        cam._init(name if name is not None else os.path.splitext(os.path.basename(path))[0], path, None, None)
+        cam._init(os.path.splitext(os.path.basename(path))[0], path, None, None)
         return cam
 
     @classmethod
