@@ -8,7 +8,7 @@ every file of every camera, decoded (cv2 for the PNGs, 16-bit included,
 and the PFMs, numpy for .npy, .flo and the PLY, the CSV, TXT and JSON
 parsed), with the library's array of the same name, value for value: a
 stereo rig with every word a single frame has, a trajectory with --motion
-(flow, boxes), a lens camera from OpenCV YAML, a lit scene, sensor noise.
+(flow, boxes) and with exposure effects, a lens camera from OpenCV YAML, a lit scene, sensor noise.
 Prints "ok NAME" / "FAIL NAME: why"."""
 import glob
 import json
@@ -127,6 +127,15 @@ glscene.compile(os.path.join(TMP, "Flow.scene"), [os.path.join(BUILD, "scenelib.
 compare("library_trajectory_motion_flow", fb, [os.path.join(TMP, "cam.cam")],
         ["image", "depth", "flow", "boxes", "instance"], frames=(0, 1, 2),
         trajectory=os.path.join(TMP, "trajectory.txt"), motion={"mover": os.path.join(TMP, "mover.txt")})
+
+# exposure effects along it: motion blur and a rolling shutter, depth of field
+with open(os.path.join(TMP, "cam.cam")) as f:
+    rig_cam = f.read()
+with open(os.path.join(TMP, "blur.cam"), "w") as f:
+    f.write(rig_cam + "shutter 0.5\nline_delay 0.002\naperture 0.05\nfocus 8\nexposure_samples 4\n")
+compare("library_trajectory_exposure_effects", fb, [os.path.join(TMP, "blur.cam")],
+        ["image", "depth", "instance", "boxes", "landmarks"], frames=(1,), trajectory=os.path.join(TMP, "trajectory.txt"),
+        motion={"mover": os.path.join(TMP, "mover.txt")}, player=["--aa", "2"])
 
 # a lens camera from OpenCV YAML (cv2.FileStorage), and a fisheye
 left = glscene.Camera.from_file(LR[0])
