@@ -1,4 +1,5 @@
-/* Encoding and writing one camera frame's files (frame_files.h). */
+/* Encoding and writing one camera frame's files (frame_files.h), or
+ * handing each file's array to a sink (the library's result). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,7 +2,10 @@
  * pixels read back or accumulated, the paths, and the frame record.  Run,
  * it removes the old record, encodes and writes each file atomically
  * (outputs.h, atomic_write.h), then writes the record (frame_record.h),
- * so the record exists only once every file of the frame is complete. */
+ * so the record exists only once every file of the frame is complete.
+ * With a sink (libglscene's glscene_play_render) it hands the sink each
+ * file's array instead, the arrays the encoders make, and writes
+ * nothing. */
 #ifndef GLS_FRAME_FILES_H
 #define GLS_FRAME_FILES_H
 
