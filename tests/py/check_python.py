@@ -190,3 +190,15 @@ with glscene.Player(bundle) as p:
                        "%s has no frame 5 (its frames: 3 to 6, 3 rows)" % traj)
 result("python_sequence_frames", [k for k, _ in seq] == [3, 4, 6] and seq[0][1] > seq[1][1] > seq[2][1], repr(seq))
 result("python_error_frame_not_in_trajectory", good, got)
+
+# sensor keys by name through from_opencv (R as a 3x3, the noise keyed by
+# the camera's name and frame): the same image as the camera file's
+sf = glscene.Camera.from_file("examples/demo/left_sensor.cam")
+sn = glscene.Camera.from_opencv(lc.K, None, lc.R, lc.T, size=(640, 480), near=0.1, far=500.0, name="left_sensor",
+                                keys={"vignetting": "cos4", "gain": 1.2, "shot_noise": 300, "read_noise": 0.01,
+                                      "noise_seed": 1})
+with glscene.Player(demo) as p:
+    a, b = (p.render(c, outputs="image", frame=3)["image"] for c in (sf, sn))
+    c0 = p.render(sf, outputs="image", frame=4)["image"]
+result("python_from_opencv_sensor_keys", np.array_equal(a, b) and not np.array_equal(a, c0),
+       "differs in %d values" % np.count_nonzero(a != b))
