@@ -433,7 +433,7 @@ INSTALL_LIB := $(DESTDIR)$(PREFIX)/lib
 INSTALL_PY := $(INSTALL_LIB)/python3/dist-packages/glscene
 GLSCENE_SO := libglscene.so.$(GLSCENE_VERSION)
 MAN_PAGES := $(TOOLS:$(B)/%=docs/man/%.1)
-install: $(TOOLS) $(SCENELIB) $(MAN_PAGES) $(GLSCENE_LIBS) lib/glscene.pc.in python/glscene/__init__.py
+install: $(TOOLS) $(SCENELIB) $(MAN_PAGES) $(GLSCENE_LIBS) lib/glscene.pc.in $(wildcard python/glscene/*.py)
 	install -d $(INSTALL_BIN) $(INSTALL_SHARE) $(INSTALL_MAN) $(INSTALL_INC) $(INSTALL_LIB)/pkgconfig $(INSTALL_PY)
 	install -m 755 $(TOOLS) $(INSTALL_BIN)/
 	install -m 644 $(B)/scenelib.glsb $(INSTALL_SHARE)/scenelib.glsb
@@ -445,7 +445,7 @@ install: $(TOOLS) $(SCENELIB) $(MAN_PAGES) $(GLSCENE_LIBS) lib/glscene.pc.in pyt
 	ln -sf $(GLSCENE_SONAME) $(INSTALL_LIB)/libglscene.so
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(GLSCENE_VERSION)|' \
 	    -e 's|@LIBS_PRIVATE@|$(strip $(LDLIBS) $(GL_LIBS))|' lib/glscene.pc.in >$(INSTALL_LIB)/pkgconfig/glscene.pc
-	install -m 644 python/glscene/__init__.py $(INSTALL_PY)/
+	install -m 644 $(wildcard python/glscene/*.py) $(INSTALL_PY)/
 uninstall:
 	rm -f $(TOOLS:$(B)/%=$(INSTALL_BIN)/%) $(INSTALL_SHARE)/scenelib.glsb $(MAN_PAGES:docs/man/%=$(INSTALL_MAN)/%)
 	rm -f $(INSTALL_INC)/glscene.h $(INSTALL_LIB)/libglscene.a $(INSTALL_LIB)/$(GLSCENE_SO) \

@@ -175,6 +175,69 @@ int glscene_play_run(glscene_play *r, FILE *out, FILE *errs);
 /* The whole message of r's last failing call ("" if none). */
 const char *glscene_play_message(const glscene_play *r);
 
+/* A camera from its file's text (.cam keys or OpenCV YAML, spec/camera.md)
+ * instead of a path, as --camera takes a file: name names it (its output
+ * directory for glscene_play_run, its place in a result; a path's name
+ * is the file's without the directory and extension).  Messages locate
+ * the text's errors as "NAME:line:col".  0, or -1 with e. */
+int glscene_play_camera_text(glscene_play *r, const char *name, const char *text, glscene_error *e);
+
+/* One frame of the run into a result the library owns, instead of files:
+ * every file the run's arguments would write for frame `frame` (of the
+ * trajectory, or --frame's number without one), for each camera, as an
+ * array with the values the file holds (docs/api.md "Every output as
+ * arrays").  The same plan, passes and arrays as glscene_play_run's;
+ * nothing is written or printed, and what only a run writing files does
+ * (-o, --explain, --resume, --shard, --write-calib, --progress, --frames)
+ * has no effect.  NULL with e (every
+ * message of the run, without "glsplay: error: ") on failure. */
+typedef struct glscene_result glscene_result;
+glscene_result *glscene_play_render(glscene_play *r, uint64_t frame, glscene_error *e);
+
+/* The frame numbers of the run's --trajectory, in its order, into
+ * frames[0..cap) (cap 0: only counted); returns how many it has, or -1
+ * with e (no trajectory, a file that cannot be read, a bad row). */
+long long glscene_play_trajectory_frames(glscene_play *r, uint64_t *frames, size_t cap, glscene_error *e);
+
+/* An array's samples: unsigned 8, 16 bits, float32 (host order), or the
+ * text of a CSV, TXT or JSON file (NUL-terminated beyond its bytes), or a
+ * file's bytes (the points' PLY). */
+typedef enum {
+    GLSCENE_U8 = 1,
+    GLSCENE_U16 = 2,
+    GLSCENE_F32 = 3,
+    GLSCENE_TEXT = 4,
+    GLSCENE_BYTES = 5
+} glscene_dtype;
+
+/* One output of one camera: dims[0] rows (top first) x dims[1] columns
+ * x dims[2] channels (ndim 3; ndim 2: one channel), row-major; text and
+ * bytes: ndim 1, dims[0] = bytes.  data lives as long as the result. */
+typedef struct {
+    glscene_dtype dtype;
+    uint32_t ndim;
+    size_t dims[3];
+    const void *data;
+    size_t bytes;
+} glscene_array;
+
+/* The cameras of a result, in the run's order, and the name of each. */
+size_t glscene_result_cameras(const glscene_result *res);
+const char *glscene_result_camera(const glscene_result *res, size_t cam);
+/* The names of camera cam's arrays, k < glscene_result_count (NULL
+ * beyond): the output words, with the files' own names where a word
+ * writes several (flow: "flow" u v float32, "flow_kitti" the PNG's
+ * codes, "flowmask"; boxes: "boxes" the KITTI text, "boxes_json";
+ * instance and class: "instances" the JSON table). */
+size_t glscene_result_count(const glscene_result *res, size_t cam);
+const char *glscene_result_name(const glscene_result *res, size_t cam, size_t k);
+/* Camera cam's array `name` into *out.  0, or -1 with e when there is
+ * no such camera or array (the message lists the result's). */
+int glscene_result_array(const glscene_result *res, size_t cam, const char *name, glscene_array *out,
+                         glscene_error *e);
+/* Free a result and its arrays; NULL: nothing. */
+void glscene_result_free(glscene_result *res);
+
 #ifdef __cplusplus
 }
 #endif

@@ -65,6 +65,7 @@ void glscene_play_free(glscene_play *r)
         free(r->strs[i]);
     free(r->strs);
     free(r->cams);
+    free(r->texts);
     free(r->mots);
     free(r->msg);
     free(r);
@@ -115,11 +116,11 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
     if (r->frames && !o->trajectory) {
         return gls_play_fail(r, e, -1, "--frames selects frames of a --trajectory; for a single render use --frame N");
     }
-    if (!o->explain && !o->outdir)
+    if (!o->explain && !o->outdir && !r->rendering)
         return gls_play_fail(r, e, -1, "no output directory given (-o OUTDIR), and no --explain");
     if (o->write_calib && !o->outdir)
         return gls_play_fail(r, e, -1, "--write-calib writes into the output directory: give -o OUTDIR");
-    if (o->outdir && o->ncameras == 0)
+    if ((o->outdir || r->rendering) && o->ncameras == 0)
         return gls_play_fail(r, e, -1, "no camera given (--camera CAM)");
     /* what the runtime refuses from the options alone (two cameras for
        disparity, their output names, ...): usage errors too */
@@ -147,4 +148,14 @@ int glscene_play_run(glscene_play *r, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: note: --outputs mask is now called edges (the word mask will mean object masks); "
                       "mask_F.png is written as before\n");
     return gls_play(&r->o, out, errs);
+}
+
+int glscene_play_camera_text(glscene_play *r, const char *name, const char *text, glscene_error *e)
+{
+    if (!r || !name || !text)
+        return gls_api_fail(e, "glscene_play_camera_text: a NULL run, name or text");
+    if (!name[0])
+        return gls_play_fail(r, e, -1, "a camera's text needs a name");
+    r->checked = 0;
+    return gls_play_add_camera(r, e, name, text) ? -1 : 0;
 }

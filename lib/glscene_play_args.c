@@ -271,16 +271,27 @@ static void set_float_format(glscene_play *r, unsigned long long i)
     r->o.float_format = format[i];
 }
 
+int gls_play_add_camera(glscene_play *r, glscene_error *e, const char *path, const char *text)
+{
+    /* the texts beside the paths, one a camera */
+    const char *t = text ? gls_play_keep(r, e, text) : NULL;
+    if ((text && !t) || gls_grow(&r->texts, &r->texts_cap, r->o.ncameras + 1, sizeof *r->texts))
+        return text && !t ? -1 : gls_play_fail(r, e, -2, "out of memory");
+    r->texts[r->o.ncameras] = t;
+    if (add_string(r, e, &r->cams, &r->o.ncameras, &r->cams_cap, path))
+        return -1;
+    r->o.cameras = r->cams;
+    r->o.camera_texts = r->texts;
+    return 0;
+}
+
 /* The options with their own messages or more than a value to store. */
 static int take_camera(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)
 {
     (void)op;
     if (!next)
         return gls_play_fail(r, e, -1, "%s needs a camera file", a);
-    if (add_string(r, e, &r->cams, &r->o.ncameras, &r->cams_cap, next))
-        return -2;
-    r->o.cameras = r->cams;
-    return 2;
+    return gls_play_add_camera(r, e, next, NULL) ? -2 : 2;
 }
 
 static int take_output(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)

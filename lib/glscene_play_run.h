@@ -12,10 +12,13 @@ struct glscene_play {
     size_t nstrs, strs_cap;
     const char **cams, **mots; /* o.cameras, o.motions                  */
     size_t cams_cap, mots_cap;
+    const char **texts;  /* o.camera_texts: one a camera, NULL for a file */
+    size_t texts_cap;
     int frames;          /* --frames given (needs --trajectory)         */
     double subpixel;     /* --subpixel A, 0: not given                  */
     int have_aa, have_samples;
     int checked;         /* glscene_play_check passed since the last arg */
+    int rendering;       /* checked for glscene_play_render: no -o needed */
     char *msg;           /* the last failure's whole message            */
 };
 
@@ -23,6 +26,9 @@ struct glscene_play {
  * fits in e; returns rc. */
 __attribute__((format(printf, 4, 5))) int gls_play_fail(glscene_play *r, glscene_error *e, int rc, const char *fmt,
                                                           ...);
+/* Add a camera: a file's path (text NULL), or a name and a camera file's
+ * text.  0, or -1 with e (out of memory). */
+int gls_play_add_camera(glscene_play *r, glscene_error *e, const char *path, const char *text);
 /* A copy of s that lives as long as r; NULL (with e) when out of memory. */
 char *gls_play_keep(glscene_play *r, glscene_error *e, const char *s);
 #endif

@@ -1,6 +1,7 @@
 /* .flo and KITTI flow PNG encoders (out_flow.h). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "gt_flow.h"
 #include "le.h"
 #include "out_flow.h"
@@ -45,18 +46,24 @@ int gls_flow_kitti_check(const float *uv, const uint8_t *mask, uint32_t w, uint3
     return 0;
 }
 
-int gls_encode_flow_kitti(const float *uv, const uint8_t *mask, uint32_t w, uint32_t h, gls_buf *out)
+void gls_flow_kitti_codes(const float *uv, const uint8_t *mask, size_t n, uint16_t *rgb)
 {
-    size_t n = (size_t)w * h;
-    uint16_t *rgb = calloc(n ? 3 * n : 1, sizeof *rgb);
-    if (!rgb)
-        return -1;
+    memset(rgb, 0, 3 * n * sizeof *rgb);
     for (size_t i = 0; i < n; i++)
         if (mask[i] == GLS_FLOW_VISIBLE) {
             rgb[3 * i] = (uint16_t)kitti_sample(uv[2 * i]);
             rgb[3 * i + 1] = (uint16_t)kitti_sample(uv[2 * i + 1]);
             rgb[3 * i + 2] = 1;
         }
+}
+
+int gls_encode_flow_kitti(const float *uv, const uint8_t *mask, uint32_t w, uint32_t h, gls_buf *out)
+{
+    size_t n = (size_t)w * h;
+    uint16_t *rgb = calloc(n ? 3 * n : 1, sizeof *rgb);
+    if (!rgb)
+        return -1;
+    gls_flow_kitti_codes(uv, mask, n, rgb);
     int rc = gls_encode_png16(rgb, w, h, out);
     free(rgb);
     return rc;

@@ -20,6 +20,8 @@ int gls_encode_flo(const float *uv, uint32_t w, uint32_t h, gls_buf *out);
 int gls_flow_kitti_check(const float *uv, const uint8_t *mask, uint32_t w, uint32_t h, uint32_t *x, uint32_t *y,
                          float *u, float *v);
 
+/* The PNG's samples, 3 a pixel, n pixels (the library's flow_kitti array). */
+void gls_flow_kitti_codes(const float *uv, const uint8_t *mask, size_t n, uint16_t *rgb);
 /* KITTI flow PNG (16-bit RGB, as the devkit's flow_read reads it): R =
  * u * 64 + 2^15, G = v * 64 + 2^15 rounded to the nearest, B = 1 on
  * visible pixels (mask GLS_FLOW_VISIBLE), 0 0 0 on every other pixel.

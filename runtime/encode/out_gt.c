@@ -7,6 +7,14 @@
 /* The id of a pass value (scene instance + 1, 0: none). */
 static uint32_t id_of(const gls_gt_table *t, uint32_t v) { return v && v <= t->ninst ? t->id[v - 1] : 0; }
 
+void gls_ids16(const uint32_t *inst, const gls_gt_table *t, int klass, size_t n, uint16_t *px)
+{
+    for (size_t i = 0; i < n; i++) {
+        uint32_t id = id_of(t, inst[i]);
+        px[i] = (uint16_t)(klass && id ? t->class_id[id - 1] : id);
+    }
+}
+
 int gls_encode_ids_png(const uint32_t *inst, const gls_gt_table *t, int klass, uint32_t w, uint32_t h,
                        gls_buf *out)
 {
@@ -14,10 +22,7 @@ int gls_encode_ids_png(const uint32_t *inst, const gls_gt_table *t, int klass, u
     uint16_t *px = malloc((n ? n : 1) * sizeof *px);
     if (!px)
         return -1;
-    for (size_t i = 0; i < n; i++) {
-        uint32_t id = id_of(t, inst[i]);
-        px[i] = (uint16_t)(klass && id ? t->class_id[id - 1] : id);
-    }
+    gls_ids16(inst, t, klass, n, px);
     int rc = gls_encode_png16_gray(px, w, h, out);
     free(px);
     return rc;

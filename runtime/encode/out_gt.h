@@ -14,6 +14,8 @@
 int gls_encode_ids_png(const uint32_t *inst, const gls_gt_table *t, int klass, uint32_t w, uint32_t h,
                        gls_buf *out);
 
+/* The PNG's samples, n pixels (the library's instance and class arrays). */
+void gls_ids16(const uint32_t *inst, const gls_gt_table *t, int klass, size_t n, uint16_t *px);
 /* instances_F.json: the frame, camera, image size, every instance with
  * pixels (id, path, name if named, object, class, class_id, pixels) and
  * the class table. */

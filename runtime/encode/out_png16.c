@@ -26,6 +26,12 @@ int gls_scaled16_check(const float *v, size_t n, double scale, size_t *bad)
     return 0;
 }
 
+void gls_scaled16_codes(const float *v, size_t n, double scale, uint16_t *code)
+{
+    for (size_t i = 0; i < n; i++)
+        code[i] = (uint16_t)code_of(v[i], scale);
+}
+
 int gls_encode_scaled16(const float *v, uint32_t w, uint32_t h, double scale, gls_buf *out, size_t *bad)
 {
     size_t n = (size_t)w * h;
@@ -35,8 +41,7 @@ int gls_encode_scaled16(const float *v, uint32_t w, uint32_t h, double scale, gl
     uint16_t *code = malloc((n ? n : 1) * sizeof *code);
     if (!code)
         return -1;
-    for (size_t i = 0; i < n; i++)
-        code[i] = (uint16_t)code_of(v[i], scale);
+    gls_scaled16_codes(v, n, scale, code);
     rc = gls_encode_png16_gray(code, w, h, out);
     free(code);
     return rc;

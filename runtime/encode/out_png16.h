@@ -20,6 +20,9 @@ enum { GLS_SCALED16_OVER = 1, GLS_SCALED16_ZERO = 2 };
  * bytes are added then. */
 int gls_encode_scaled16(const float *v, uint32_t w, uint32_t h, double scale, gls_buf *out, size_t *bad);
 
+/* The codes themselves, the PNG's samples (the library's depth16 and
+ * disparity16 arrays): for values gls_scaled16_check passed. */
+void gls_scaled16_codes(const float *v, size_t n, double scale, uint16_t *code);
 /* The same verdict without encoding: 0, GLS_SCALED16_OVER or
  * GLS_SCALED16_ZERO with *bad (the player checks before it writes any
  * file of the frame). */

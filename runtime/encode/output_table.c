@@ -4,7 +4,7 @@
 #include "output_table.h"
 
 const gls_output_kind gls_output_kinds[GLS_OUT_KINDS] = {
-#define X(id, word, stem, ext, needs, with, listed, what) {GLS_OUT_##id, word, stem, ext, needs, with, listed, what},
+#define X(id, word, stem, ext, needs, with, listed, what, key) {GLS_OUT_##id, word, stem, ext, needs, with, listed, what, key},
     GLS_OUTPUTS(X)
 #undef X
 };

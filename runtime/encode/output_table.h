@@ -26,65 +26,68 @@ enum {
 
 /* The outputs, one row per kind of file a camera frame writes, in the
  * order they are written (spec/outputs.md):
- *   X(ID, WORD, STEM, EXT, NEEDS, WITH, LISTED, WHAT)
+ *   X(ID, WORD, STEM, EXT, NEEDS, WITH, LISTED, WHAT, KEY)
  * ID: GLS_OUT_ID, the file's bit; WORD: the --outputs word that writes it
  * (a word with several files has a row each; NULL: written with the words
  * of WITH); STEM and EXT: the file OUTDIR/CAMERA/STEM_FRAME.EXT (EXT NULL:
  * the float format, .pfm or .npy); NEEDS: GLS_NEED_* bits; LISTED: --help
  * and messages list the word (mask, edges' old name, is taken for one
  * release but not listed); WHAT: what the file holds, as --explain's
- * "files:" line says it.  Everything else follows from the rows: the
+ * "files:" line says it; KEY: the name the library's result gives the
+ * file's array (glscene_result_array, include/glscene.h: the stem, or
+ * the stem and what sets it apart where two files share one; flow is
+ * the u v floats the .flo holds).  Everything else follows from the rows: the
  * bits, the words and what each writes, the groups below, the file names,
  * the frame record's outputs line, the plan's passes.  A new output is a
  * row here and its encoder (frame_files.c). */
 #define GLS_OUTPUTS(X)                                                                                              \
     X(IMAGE, "image", "image", "png", GLS_NEED_COLOUR, 0, 1,                                                        \
-      "the image")                                                                                                  \
+      "the image", "image")                                                                                         \
     X(DEPTH, "depth", "depth", NULL, GLS_NEED_Z, 0, 1,                                                              \
-      "Zc, float32")                                                                                                \
+      "Zc, float32", "depth")                                                                                       \
     X(POINTS, "points", "points", "ply", GLS_NEED_Z | GLS_NEED_RGBA, 0, 1,                                          \
-      "the surface at each pixel centre, world frame, double")                                                      \
+      "the surface at each pixel centre, world frame, double", "points")                                            \
     X(EDGES, "edges", "edges", "png", GLS_NEED_COLOUR | GLS_NEED_MIXED, 0, 1,                                       \
-      "255 where the samples of a pixel differ")                                                                    \
+      "255 where the samples of a pixel differ", "edges")                                                           \
     X(EDGES_AS_MASK, "mask", "mask", "png", GLS_NEED_COLOUR | GLS_NEED_MIXED, 0, 0,                                 \
-      "edges under its old name")                                                                                   \
+      "edges under its old name", "mask")                                                                           \
     X(DISPARITY, "disparity", "disparity", NULL, GLS_NEED_Z, 0, 1,                                                  \
-      "fx B / Zc, float32")                                                                                         \
+      "fx B / Zc, float32", "disparity")                                                                            \
     X(DISPARITY16, "disparity16", "disparity16", "png", GLS_NEED_Z, 0, 1,                                           \
-      "KITTI disparity, d * 256")                                                                                   \
+      "KITTI disparity, d * 256", "disparity16")                                                                    \
     X(DEPTH16, "depth16", "depth16", "png", GLS_NEED_Z, 0, 1,                                                       \
-      "Zc * the depth scale")                                                                                       \
+      "Zc * the depth scale", "depth16")                                                                            \
     X(LANDMARKS, "landmarks", "landmarks", "csv", GLS_NEED_Z, 0, 1,                                                 \
-      "the scene's marks projected, visible or not")                                                                \
+      "the scene's marks projected, visible or not", "landmarks")                                                   \
     X(INSTANCE, "instance", "instance", "png", GLS_NEED_IDS, 0, 1,                                                  \
-      "instance ids, 16-bit")                                                                                       \
+      "instance ids, 16-bit", "instance")                                                                           \
     X(CLASS, "class", "class", "png", GLS_NEED_IDS, 0, 1,                                                           \
-      "class ids, 16-bit")                                                                                          \
+      "class ids, 16-bit", "class")                                                                                 \
     X(INSTANCES_JSON, NULL, "instances", "json", GLS_NEED_IDS, GLS_OUT_INSTANCE | GLS_OUT_CLASS, 0,                 \
-      "the table of instance and class ids")                                                                        \
+      "the table of instance and class ids", "instances")                                                           \
     X(COCO, "coco", "coco", "json", GLS_NEED_IDS, 0, 1,                                                             \
-      "COCO annotations, run-length masks")                                                                         \
+      "COCO annotations, run-length masks", "coco")                                                                 \
     X(NORMALS, "normals", "normals", NULL, GLS_NEED_NORMALS, 0, 1,                                                  \
-      "world normals, 3 x float32")                                                                                 \
+      "world normals, 3 x float32", "normals")                                                                      \
     X(FLOW, "flow", "flow", "png", GLS_NEED_IDS | GLS_NEED_NEXT, 0, 1,                                              \
-      "KITTI flow to the next frame")                                                                               \
+      "KITTI flow to the next frame", "flow_kitti")                                                                 \
     X(FLOW_FLO, "flow", "flow", "flo", GLS_NEED_IDS | GLS_NEED_NEXT, 0, 1,                                          \
-      "Middlebury flow to the next frame")                                                                          \
+      "Middlebury flow to the next frame", "flow")                                                                  \
     X(FLOW_MASK, "flow", "flowmask", "png", GLS_NEED_IDS | GLS_NEED_NEXT, 0, 1,                                     \
-      "visible, occluded, out of view")                                                                             \
+      "visible, occluded, out of view", "flowmask")                                                                 \
     X(BOXES, "boxes", "boxes", "txt", GLS_NEED_IDS | GLS_NEED_ALONE, 0, 1,                                          \
-      "KITTI object labels")                                                                                        \
+      "KITTI object labels", "boxes")                                                                               \
     X(BOXES_JSON, "boxes", "boxes", "json", GLS_NEED_IDS | GLS_NEED_ALONE, 0, 1,                                    \
-      "the boxes as JSON")
+      "the boxes as JSON", "boxes_json")
 
 enum {
-#define X(id, word, stem, ext, needs, with, listed, what) GLS_OUT_I_##id,
+#define X(id, word, stem, ext, needs, with, listed, what, key) GLS_OUT_I_##id,
     GLS_OUTPUTS(X)
 #undef X
         GLS_OUT_KINDS
 };
 enum {
-#define X(id, word, stem, ext, needs, with, listed, what) GLS_OUT_##id = 1u << GLS_OUT_I_##id,
+#define X(id, word, stem, ext, needs, with, listed, what, key) GLS_OUT_##id = 1u << GLS_OUT_I_##id,
     GLS_OUTPUTS(X)
 #undef X
 };
@@ -95,7 +98,7 @@ _Static_assert(GLS_OUT_KINDS <= 32, "one bit an output kind in an unsigned");
  * ids as well), the files of flow and of boxes */
 #define GLS_OUT_EDGE_MAPS (GLS_OUT_EDGES | GLS_OUT_EDGES_AS_MASK)
 #define GLS_OUT_DISPARITIES (GLS_OUT_DISPARITY | GLS_OUT_DISPARITY16)
-#define GLS_OUT_IF_Z_(id, word, stem, ext, needs, with, listed, what) | (((needs) & GLS_NEED_Z) ? GLS_OUT_##id : 0u)
+#define GLS_OUT_IF_Z_(id, word, stem, ext, needs, with, listed, what, key) | (((needs) & GLS_NEED_Z) ? GLS_OUT_##id : 0u)
 #define GLS_OUT_FROM_Z (0u GLS_OUTPUTS(GLS_OUT_IF_Z_))
 #define GLS_OUT_IDS (GLS_OUT_INSTANCE | GLS_OUT_CLASS | GLS_OUT_INSTANCES_JSON | GLS_OUT_COCO)
 #define GLS_OUT_FLOW_ALL (GLS_OUT_FLOW | GLS_OUT_FLOW_FLO | GLS_OUT_FLOW_MASK)
@@ -111,6 +114,7 @@ typedef struct {
     unsigned with;     /* written when any of these is asked            */
     int listed;        /* --help and messages list the word             */
     const char *what;  /* what the file holds (--explain)               */
+    const char *key;   /* its array's name in the library's result      */
 } gls_output_kind;
 extern const gls_output_kind gls_output_kinds[GLS_OUT_KINDS];
 

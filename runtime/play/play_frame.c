@@ -248,13 +248,15 @@ static int frame_submit(session *s, const gls_camera *c, const char *name, uint3
     f->depth_scale = o->depth_scale > 0 ? o->depth_scale : GLS_DEPTH_SCALE_KITTI;
     f->buffer_bytes = cf->fp.total;
     f->json = s->json;
-    int too_long = gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
-                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, &cf->fp, c, name, frame, s->inputs);
+    f->sink = o->sink;
+    int too_long = !o->sink && (gls_frame_record_path(f->record, sizeof f->record, o->outdir, name, frame) ||
+                   gls_frame_record_text(f->record_text, sizeof f->record_text, o, &cf->fp, c, name, frame, s->inputs));
     /* one file a kind at most: files[] has room for every kind */
     for (size_t k = 0; k < GLS_OUT_KINDS && !too_long; k++)
         if (cf->fp.outputs & gls_output_kinds[k].bit) {
             f->files[f->nfiles].bit = gls_output_kinds[k].bit;
-            too_long = play_output_file(f->files[f->nfiles++].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
+            too_long = !o->sink && play_output_file(f->files[f->nfiles].path, GLS_FRAME_PATH, o, name, k, frame) != 0;
+            f->nfiles++;
         }
     int rc = -1;
     if (too_long) {

@@ -70,7 +70,10 @@ static int run_load_cameras(run *u)
     }
     for (size_t i = 0; i < o->ncameras; i++) {
         gls_camera *c = &u->cams[i];
-        if (gls_camera_load(o->cameras[i], o->trajectory ? GLS_POSE_RIG : GLS_POSE_WORLD, errs, c, err, sizeof err)) {
+        gls_pose use = o->trajectory ? GLS_POSE_RIG : GLS_POSE_WORLD;
+        const char *text = o->camera_texts ? o->camera_texts[i] : NULL;
+        if (text ? gls_camera_parse(text, strlen(text), o->cameras[i], use, errs, c, err, sizeof err)
+                 : gls_camera_load(o->cameras[i], use, errs, c, err, sizeof err)) {
             fprintf(errs, "%s\n", err);
             return 1;
         }
@@ -286,7 +289,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if (o->explain)
         run_explain(&u, out);
-    if (!o->outdir) {
+    if (!o->outdir && !o->sink) {
         rc = 0;
         goto out;
     }
@@ -303,7 +306,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
                                  &scan.mine, &scan.complete))
             goto out;
     }
-    if (run_make_dirs(&u) || run_start(&u))
+    if ((!o->sink && run_make_dirs(&u)) || run_start(&u))
         goto out;
     u.json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
     u.json.cameras = o->ncameras;
@@ -319,7 +322,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     /* after the render and its files: every frame in the range was read
      * and checked */
-    if (rc == 0 && o->write_calib)
+    if (rc == 0 && o->write_calib && !o->sink)
         rc = gls_calib_write(o, o->trajectory ? &u.ms.traj : NULL, u.cams, (const char *const *)u.names, errs);
 out:
     run_free(&u, rc);

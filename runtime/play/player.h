@@ -22,6 +22,10 @@ typedef struct {
     const char *bundle;          /* path of the .glsb                    */
     const char *const *cameras;  /* camera file paths                    */
     size_t ncameras;
+    const char *const *camera_texts; /* NULL; or per camera NULL (read the
+                                    file) or the camera file's text, which
+                                    cameras[i] then names (the library's
+                                    cameras built from numbers)         */
     const char *outdir;          /* NULL: nothing is rendered            */
     unsigned outputs;            /* GLS_OUT_* bits                       */
     uint32_t width, height;      /* --size override, 0 = the camera's    */
@@ -64,6 +68,12 @@ typedef struct {
                                     counted as they run (frame_plan.h),
                                     for the tests that hold the run to
                                     its plan                            */
+    struct gls_frame_sink *sink; /* NULL: files are written under outdir;
+                                    else each camera frame's arrays go to
+                                    it (frame_files.h) and nothing is
+                                    written: no directory, record or
+                                    calibration file (the library's
+                                    glscene_play_render)                */
     int bands_whole;             /* 0; tests only (glsplay never sets it):
                                     each band of rows of a rolling
                                     shutter draws and reads back the

@@ -1,4 +1,5 @@
-/* Encoding and writing one camera frame's files (frame_files.h). */
+/* Encoding and writing one camera frame's files (frame_files.h), or
+ * handing each file's array to a sink (the library's result). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -130,6 +131,106 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
     }
 }
 
+/* An array of rows x cols x ch samples of type t, uninitialised; NULL
+ * when out of memory. */
+static void *array_new(gls_frame_array *a, gls_arr_type t, const gls_camera *c, uint32_t ch)
+{
+    static const size_t size[] = {0, 1, 2, 4};
+    a->type = t;
+    a->ndim = ch > 1 ? 3 : 2;
+    a->dims[0] = c->height, a->dims[1] = c->width, a->dims[2] = ch;
+    a->bytes = (size_t)c->width * c->height * ch * size[t];
+    return a->data = malloc(a->bytes ? a->bytes : 1);
+}
+
+/* A copy of v's rows x cols x ch samples. */
+static int array_copy(gls_frame_array *a, gls_arr_type t, const gls_camera *c, uint32_t ch, const void *v)
+{
+    if (!array_new(a, t, c, ch))
+        return -1;
+    memcpy(a->data, v, a->bytes);
+    return 0;
+}
+
+int gls_frame_array_make(const gls_frame_files *f, unsigned bit, const float *disp, gls_frame_array *a)
+{
+    const gls_camera *c = &f->cam;
+    size_t n = (size_t)c->width * c->height;
+    memset(a, 0, sizeof *a);
+    switch (bit) {
+    case GLS_OUT_IMAGE: {
+        gls_arr_type t = f->image_format == GLS_IMG_PNG16 ? GLS_ARR_U16
+                         : f->image_format == GLS_IMG_PFM ? GLS_ARR_F32 : GLS_ARR_U8;
+        if (f->image_mosaic || t != GLS_ARR_U8) /* the image as the encoder takes it */
+            return array_copy(a, t, c, f->image_mosaic ? 1 : 3, f->image);
+        const uint8_t *rgba = f->image ? f->image : f->rgba; /* the PNG drops alpha */
+        uint8_t *rgb = array_new(a, t, c, 3);
+        for (size_t i = 0; rgb && i < n; i++)
+            memcpy(rgb + 3 * i, rgba + 4 * i, 3);
+        return rgb ? 0 : -1;
+    }
+    case GLS_OUT_DEPTH:
+        return array_copy(a, GLS_ARR_F32, c, 1, f->z);
+    case GLS_OUT_DISPARITY:
+        return array_copy(a, GLS_ARR_F32, c, 1, disp);
+    case GLS_OUT_NORMALS:
+        return array_copy(a, GLS_ARR_F32, c, 3, f->normal);
+    case GLS_OUT_FLOW_FLO:
+        return array_copy(a, GLS_ARR_F32, c, 2, f->flow);
+    case GLS_OUT_FLOW_MASK:
+        return array_copy(a, GLS_ARR_U8, c, 1, f->flowmask);
+    case GLS_OUT_EDGES:
+    case GLS_OUT_EDGES_AS_MASK:
+        return array_copy(a, GLS_ARR_U8, c, 1, f->mask);
+    case GLS_OUT_DISPARITY16: /* checked by check_16 */
+    case GLS_OUT_DEPTH16:
+        if (!array_new(a, GLS_ARR_U16, c, 1))
+            return -1;
+        gls_scaled16_codes(bit == GLS_OUT_DEPTH16 ? f->z : disp, n, bit == GLS_OUT_DEPTH16 ? f->depth_scale : 256.0,
+                           a->data);
+        return 0;
+    case GLS_OUT_INSTANCE:
+    case GLS_OUT_CLASS:
+        if (!array_new(a, GLS_ARR_U16, c, 1))
+            return -1;
+        gls_ids16(f->gt_inst, f->gt, bit == GLS_OUT_CLASS, n, a->data);
+        return 0;
+    case GLS_OUT_FLOW:
+        if (!array_new(a, GLS_ARR_U16, c, 3))
+            return -1;
+        gls_flow_kitti_codes(f->flow, f->flowmask, n, a->data);
+        return 0;
+    default: { /* the records and tables: the file's own text (bytes: the PLY) */
+        gls_buf buf = {0};
+        if (encode(f, bit, disp, &buf) || gls_buf_reserve(&buf, 1)) {
+            free(buf.data);
+            return -1;
+        }
+        buf.data[buf.len] = 0; /* text ends with a NUL beyond its bytes */
+        a->type = bit == GLS_OUT_POINTS ? GLS_ARR_BYTES : GLS_ARR_TEXT;
+        a->ndim = 1;
+        a->dims[0] = a->bytes = buf.len;
+        a->data = buf.data;
+        return 0;
+    }
+    }
+}
+
+/* The frame's arrays to f->sink, in the files' order, instead of files. */
+static int run_sink(gls_frame_files *f, const float *disp, char *err, size_t errlen)
+{
+    for (size_t k = 0; k < f->nfiles; k++) {
+        gls_frame_array a;
+        if (gls_frame_array_make(f, f->files[k].bit, disp, &a)) {
+            gls_frame_oom_message(err, errlen, f->name, f->cam.width, f->cam.height, f->buffer_bytes);
+            return -1;
+        }
+        if (f->sink->take(f->sink, f->name, f->frame, f->files[k].bit, &a, err, errlen))
+            return -1;
+    }
+    return 0;
+}
+
 static int run(gls_write_job *job, char *err, size_t errlen)
 {
     gls_frame_files *f = (gls_frame_files *)job;
@@ -153,6 +254,10 @@ static int run(gls_write_job *job, char *err, size_t errlen)
         if ((bit & (GLS_OUT_DISPARITY16 | GLS_OUT_DEPTH16)) &&
             check_16(f, bit, bit == GLS_OUT_DISPARITY16 ? disp : f->z, err, errlen))
             goto out;
+    }
+    if (f->sink) {
+        rc = run_sink(f, disp, err, errlen);
+        goto out;
     }
     /* The frame is incomplete from the first file rewritten until the
      * last is written: no record meanwhile (frame_record.h). */

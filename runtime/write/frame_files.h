@@ -2,7 +2,10 @@
  * pixels read back or accumulated, the paths, and the frame record.  Run,
  * it removes the old record, encodes and writes each file atomically
  * (outputs.h, atomic_write.h), then writes the record (frame_record.h),
- * so the record exists only once every file of the frame is complete. */
+ * so the record exists only once every file of the frame is complete.
+ * With a sink (libglscene's glscene_play_render) it hands the sink each
+ * file's array instead, the arrays the encoders make, and writes
+ * nothing. */
 #ifndef GLS_FRAME_FILES_H
 #define GLS_FRAME_FILES_H
 
@@ -16,6 +19,31 @@
 #include "progress_json.h"
 
 #define GLS_FRAME_PATH 4096
+
+/* One file of a camera frame as the array its encoder makes (the
+ * library's result, glscene_result_array): the pixels top row first,
+ * dims[0] rows, dims[1] columns, dims[2] channels (ndim 2: one), in
+ * the sample type the file holds (the 16-bit PNGs' codes, ids and flow
+ * included); the text of the CSV, TXT and JSON files; the bytes of the
+ * PLY.  data is malloc'd and the taker's. */
+typedef enum { GLS_ARR_U8 = 1, GLS_ARR_U16 = 2, GLS_ARR_F32 = 3, GLS_ARR_TEXT = 4, GLS_ARR_BYTES = 5 } gls_arr_type;
+typedef struct {
+    gls_arr_type type;
+    uint32_t ndim;       /* 2 or 3; 1 for text and bytes (dims[0] bytes) */
+    size_t dims[3];
+    void *data;
+    size_t bytes;
+} gls_frame_array;
+
+/* Where a camera frame's arrays go instead of its files (gls_play_opts'
+ * sink, player.h): take is called once a file the frame plan writes, in
+ * the table's order, from the thread that runs the writer's jobs; it
+ * owns a->data from then on.  0, or -1 with err. */
+typedef struct gls_frame_sink gls_frame_sink;
+struct gls_frame_sink {
+    int (*take)(gls_frame_sink *s, const char *camera, uint32_t frame, unsigned bit, gls_frame_array *a, char *err,
+                size_t errlen);
+};
 
 typedef struct {
     gls_write_job job; /* first: the writer sees this */
@@ -55,10 +83,17 @@ typedef struct {
     char record[GLS_FRAME_PATH], record_text[1024];
     /* --progress json: told once the record is written (NULL: not) */
     gls_progress_json *json;
+    /* NULL: the files are written; else each file's array goes here and
+     * nothing is written (no record, no progress) */
+    gls_frame_sink *sink;
 } gls_frame_files;
 
 /* A zeroed job with its run and destroy set, or NULL. */
 gls_frame_files *gls_frame_files_new(void);
+
+/* File bit of f as the array its encoder makes (above; the disparity
+ * disp made by the job).  0, or -1 when out of memory. */
+int gls_frame_array_make(const gls_frame_files *f, unsigned bit, const float *disp, gls_frame_array *a);
 
 /* The line said when a camera frame's buffers cannot be had. */
 void gls_frame_oom_message(char *buf, size_t len, const char *name, uint32_t w, uint32_t h, uint64_t bytes);

@@ -35,6 +35,9 @@ cat >"$tmp/want" <<EOF2
 .$PREFIX/lib/libglscene.so.0.1.0
 .$PREFIX/lib/pkgconfig/glscene.pc
 .$PREFIX/lib/python3/dist-packages/glscene/__init__.py
+.$PREFIX/lib/python3/dist-packages/glscene/_lib.py
+.$PREFIX/lib/python3/dist-packages/glscene/camera.py
+.$PREFIX/lib/python3/dist-packages/glscene/player.py
 .$PREFIX/share/glscene/scenelib.glsb
 .$PREFIX/share/man/man1/glsc.1
 .$PREFIX/share/man/man1/glsdis.1

@@ -5,7 +5,12 @@ Compiles a wall with a named tile in front of it, renders it through a
 turned and moved camera and checks the depth against the camera model in
 numpy; checks ids, a moved instance, the image against glsplay's PNG of
 the demo (same camera, --aa, background), the depth against glsplay's
-PFM, and that errors raise glscene.Error with the library's message.
+PFM, and that errors raise glscene.Error with the library's message;
+that a camera by numbers (glscene_render) gives the arrays a file's
+camera (a run of the player) gives, a rig a list of dicts with the
+records' dtypes, scene text compiles, and the run's errors (an output word,
+a camera's text, flow without a trajectory, a closed player, move() before
+a run) come back as glscene.Error.
 Prints "ok NAME" / "FAIL NAME: why"."""
 import os
 import subprocess
@@ -52,7 +57,7 @@ player = glscene.Player(bundle)
 out = player.render(cam, outputs=("depth", "instance", "normals"))
 z, ids = out["depth"], out["instance"]
 result("python_outputs_asked_for", sorted(out) == ["depth", "instance", "normals"] and z.dtype == np.float32
-       and z.shape == (H, W) and ids.dtype == np.uint32 and out["normals"].shape == (H, W, 3))
+       and z.shape == (H, W) and ids.dtype == np.uint16 and out["normals"].shape == (H, W, 3))
 
 # the wall's depth from the model: pixel (u, v) -> ray d = K^-1 (u, v, 1)
 # in the camera, P = R^T (Zc d - T) in the world, P_z = 10
@@ -117,3 +122,83 @@ pfm = cv2.imread(os.path.join(TMP, "play", "left", "depth_000000.pfm"), cv2.IMRE
 result("python_image_equals_glsplay_png", png is not None and np.array_equal(o["image"], png[..., ::-1]),
        "differs in %d values" % (np.count_nonzero(o["image"] != png[..., ::-1]) if png is not None else -1))
 result("python_depth_equals_glsplay_pfm", pfm is not None and np.array_equal(o["depth"], pfm))
+
+# the same camera by numbers goes through glscene_render: the same arrays
+# as the run's (a file's camera); the instance ids as the run's, uint16
+lc = glscene.Camera.from_file(left)
+byn = glscene.Camera(lc.width, lc.height, lc.K[0, 0], lc.K[1, 1], lc.K[0, 2], lc.K[1, 2], R=lc.R, T=lc.T,
+                     near=lc.near, far=lc.far, name="left")
+with glscene.Player(demo, aa=4, background=(0.55, 0.7, 0.9)) as p:
+    d = p.render(byn, outputs=("image", "depth", "instance", "normals"))
+    f = p.render(lc, outputs=("image", "depth", "instance", "normals"))
+result("python_numbers_camera_equals_file_run",
+       all(np.array_equal(d[k], f[k], equal_nan=True) and d[k].dtype == f[k].dtype
+           for k in ("image", "depth", "instance", "normals")),
+       ", ".join("%s %s %s" % (k, d[k].dtype, f[k].dtype) for k in d))
+
+# a rig gives a list of dicts, a camera one dict; the records' types
+right = glscene.Camera.from_file("examples/demo/right.cam")
+with glscene.Player(demo) as p:
+    rig = p.render([lc, right], outputs=["disparity", "boxes", "landmarks", "points"])
+    one = p.render(lc, outputs="depth")
+result("python_rig_list_camera_dict", isinstance(rig, list) and len(rig) == 2 and isinstance(one, dict)
+       and sorted(one) == ["depth"] and sorted(rig[1]) == ["boxes", "boxes_json", "disparity", "landmarks", "points"]
+       and rig[0]["boxes"].dtype == glscene.BOX_DTYPE and rig[0]["landmarks"].dtype == glscene.LANDMARK_DTYPE
+       and rig[0]["points"].dtype == glscene.POINT_DTYPE and rig[0]["disparity"].dtype == np.float32,
+       repr((type(rig), sorted(rig[1]) if isinstance(rig, list) else None)))
+
+# errors: the library's messages as glscene.Error
+with glscene.Player(demo) as p:
+    good, got = raises(lambda: p.render(lc, outputs=["depht"]), "--outputs takes a comma-separated list of: "
+                       "image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, "
+                       "coco, normals, flow, boxes (not 'depht'); did you mean 'depth'?")
+    result("python_error_output_word", good, got)
+    good, got = raises(lambda: p.render(glscene.Camera.from_text("width 64\nheight 48\nfx -1\n", name="broken")),
+                       "")
+    result("python_error_camera_text_located", got.startswith("broken:3:") and ": error: " in got, got)
+    good, got = raises(lambda: p.render(lc, outputs="flow"), "--outputs flow needs a --trajectory: the flow goes "
+                       "from each frame to the next")
+    result("python_error_flow_needs_trajectory", good, got)
+    good, got = raises(lambda: p.render([lc, right], outputs="image_float"), "")
+    result("python_error_image_float_of_a_run", got.startswith("image_float is the float image of a single"), got)
+good, got = raises(lambda: p.render(lc), "the player is closed")
+result("python_error_closed", good, got)
+good, got = raises(lambda: glscene.compile("color(1, 0, 0;\n", out=os.path.join(TMP, "t.glsb")), "")
+result("python_compile_text_error", got.startswith("<scene text>:1:") and ": error: " in got, got)
+t = glscene.compile("color(1, 0, 0);\npoly { vert(-1, -1, 5); vert(1, -1, 5); vert(0, 1, 5); }\n",
+                    out=os.path.join(TMP, "t.glsb"))
+with glscene.Player(t) as p:
+    z = p.render(glscene.Camera(64, 48, 50, 50, 31.5, 23.5), outputs="depth")["depth"]
+result("python_compile_text", t == os.path.join(TMP, "t.glsb") and abs(z[24, 32] - 5.0) <= 5.0 * 2e-7, str(z[24, 32]))
+# move() reaches glscene_render's frames only: a run refuses rather than
+# render without the move
+with glscene.Player(bundle) as p:
+    p.move("mover", np.eye(3), [0, 0, 3])
+    good, got = raises(lambda: p.render(cam, outputs="boxes"), "")
+    result("python_error_move_then_run", got.startswith("move() posed mover, which a render of"), got)
+    p.move("mover")
+    result("python_move_back_then_run", sorted(p.render(cam, outputs="boxes")) == ["boxes", "boxes_json"])
+
+# a trajectory: its frames listed by sequence, a frame it has not said in
+# the caller's words (not the --frames the run was given)
+traj = os.path.join(TMP, "traj.txt")
+with open(traj, "w") as f:
+    f.writelines("%d %g 1 0 0 0 1 0 0 0 1 0 0 %g\n" % (k, 0.1 * k, -0.5 * k) for k in (3, 4, 6))
+with glscene.Player(bundle) as p:
+    seq = [(k, o["depth"][24 * 0 + 60, 80]) for k, o in p.sequence(cam, traj, outputs="depth")]
+    good, got = raises(lambda: p.render(cam, outputs="depth", frame=5, trajectory=traj),
+                       "%s has no frame 5 (its frames: 3 to 6, 3 rows)" % traj)
+result("python_sequence_frames", [k for k, _ in seq] == [3, 4, 6] and seq[0][1] > seq[1][1] > seq[2][1], repr(seq))
+result("python_error_frame_not_in_trajectory", good, got)
+
+# sensor keys by name through from_opencv (R as a 3x3, the noise keyed by
+# the camera's name and frame): the same image as the camera file's
+sf = glscene.Camera.from_file("examples/demo/left_sensor.cam")
+sn = glscene.Camera.from_opencv(lc.K, None, lc.R, lc.T, size=(640, 480), near=0.1, far=500.0, name="left_sensor",
+                                keys={"vignetting": "cos4", "gain": 1.2, "shot_noise": 300, "read_noise": 0.01,
+                                      "noise_seed": 1})
+with glscene.Player(demo) as p:
+    a, b = (p.render(c, outputs="image", frame=3)["image"] for c in (sf, sn))
+    c0 = p.render(sf, outputs="image", frame=4)["image"]
+result("python_from_opencv_sensor_keys", np.array_equal(a, b) and not np.array_equal(a, c0),
+       "differs in %d values" % np.count_nonzero(a != b))

@@ -295,6 +295,73 @@ static void test_glscene_play(void)
     }
 }
 
+/* One frame into a result (glscene_play_render): a camera given as
+ * text, every array glsplay's files would hold, the names and types, and
+ * the errors (a camera's text located by its name, no such array, the
+ * checks of a run without -o). */
+static void test_glscene_play_render(void)
+{
+    glscene_error e;
+    glscene_play *r = glscene_play_new();
+    if (!r)
+        return;
+    CHECK(glscene_play_arg(r, bundle, NULL, &e) == 1);
+    CHECK(glscene_play_arg(r, "--outputs", "depth,disparity16,instance,boxes", &e) == 2);
+    CHECK(glscene_play_render(r, 0, &e) == NULL);
+    CHECK_STR(e.message, "no camera given (--camera CAM)");
+    static const char cam[] = "width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\n"
+                              "near 0.1\nfar 100\n";
+    CHECK(glscene_play_camera_text(r, "p", cam, &e) == 0);
+    /* disparity needs the rectified pair: a second camera 0.5 to the right */
+    CHECK(glscene_play_render(r, 0, &e) == NULL);
+    CHECK_MSG(strstr(e.message, "two cameras") != NULL, "%s", e.message);
+    CHECK(glscene_play_camera_text(r, "q", "width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\n"
+                                   "R 1 0 0 0 1 0 0 0 1\nT -0.5 0 0\nnear 0.1\nfar 100\n", &e) == 0);
+    glscene_result *res = glscene_play_render(r, 0, &e);
+    CHECK_MSG(res != NULL, "%s", e.message);
+    if (res) {
+        CHECK(glscene_result_cameras(res) == 2);
+        CHECK_STR(glscene_result_camera(res, 0), "p");
+        CHECK_STR(glscene_result_camera(res, 1), "q");
+        CHECK(glscene_result_camera(res, 2) == NULL);
+        /* the table's order: depth, disparity16, instance, instances, boxes, boxes_json */
+        static const char *const names[] = {"depth", "disparity16", "instance", "instances", "boxes", "boxes_json"};
+        CHECK(glscene_result_count(res, 0) == 6);
+        for (size_t k = 0; k < 6; k++)
+            CHECK_STR(glscene_result_name(res, 0, k), names[k]);
+        CHECK(glscene_result_name(res, 0, 6) == NULL);
+        glscene_array a;
+        CHECK_MSG(glscene_result_array(res, 0, "depth", &a, &e) == 0, "%s", e.message);
+        CHECK(a.dtype == GLSCENE_F32 && a.ndim == 2 && a.dims[0] == H && a.dims[1] == W && a.bytes == W * H * 4);
+        size_t mid = (size_t)24 * W + 32;
+        CHECK_NEAR(((const float *)a.data)[mid], 5.0, 5.0 * 2e-7);
+        /* KITTI's disparity of the tile: fx B / Z * 256 = 50 * 0.5 / 5 * 256 */
+        CHECK(glscene_result_array(res, 0, "disparity16", &a, &e) == 0);
+        CHECK(a.dtype == GLSCENE_U16 && ((const uint16_t *)a.data)[mid] == 1280);
+        CHECK(glscene_result_array(res, 0, "instance", &a, &e) == 0);
+        CHECK(a.dtype == GLSCENE_U16 && ((const uint16_t *)a.data)[0] != ((const uint16_t *)a.data)[mid]);
+        CHECK(glscene_result_array(res, 0, "boxes", &a, &e) == 0);
+        CHECK(a.dtype == GLSCENE_TEXT && a.ndim == 1 && a.dims[0] == a.bytes && strlen(a.data) == a.bytes);
+        CHECK(glscene_result_array(res, 0, "normals", &a, &e) == -1);
+        CHECK_STR(e.message, "camera p has no array 'normals' (it has: depth, disparity16, instance, instances, "
+                             "boxes, boxes_json)");
+        CHECK(glscene_result_array(res, 2, "depth", &a, &e) == -1);
+        CHECK_STR(e.message, "the result has 2 cameras; there is no camera 2");
+        glscene_result_free(res);
+    }
+    glscene_play_free(r);
+    /* a camera's text with a mistake: located by its name */
+    r = glscene_play_new();
+    CHECK(glscene_play_arg(r, bundle, NULL, &e) == 1);
+    CHECK(glscene_play_camera_text(r, "bad", "width 64\nheight 48\nfx -1\n", &e) == 0);
+    CHECK(glscene_play_render(r, 0, &e) == NULL);
+    CHECK_MSG(strncmp(e.message, "bad:3:", 6) == 0 && strstr(e.message, "error: "), "%s", e.message);
+    CHECK(glscene_play_trajectory_frames(r, NULL, 0, &e) == -1);
+    CHECK_STR(e.message, "the run has no --trajectory");
+    glscene_play_free(r);
+    glscene_result_free(NULL);
+}
+
 int main(void)
 {
     make_scene();
@@ -304,6 +371,7 @@ int main(void)
     RUN(test_glscene_aa);
     RUN(test_glscene_errors);
     RUN(test_glscene_play);
+    RUN(test_glscene_play_render);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     if (system(cmd)) {
