@@ -9,7 +9,8 @@
 #
 # With CI=true (or GLS_FULL=1), also:
 #   - the same suite against a clang ASan+UBSan build (build-asan), lines
-#     prefixed "asan:";
+#     prefixed "asan:", but for the scripts marked "# sanitizers: not
+#     rerun" (they check the sources, the docs or the build itself);
 #   - every fuzz target replays its corpus and regressions, then fuzzes for
 #     GLS_FUZZ_SECONDS (default 60) under ASan+UBSan (tests/fuzz/run.sh),
 #     GLS_FUZZ_JOBS (default 2) targets at a time;
@@ -41,6 +42,12 @@ suite() {
     done
     for t in tests/e2e/*.sh; do
         [ -f "$t" ] && [ "$t" != tests/e2e/lib.sh ] || continue
+        # a script about the sources, the docs or the build itself runs
+        # no sanitized code: the normal suite's run is the whole of it
+        if [ "$GLS_SANITIZED" = 1 ] && grep -q '^# sanitizers: not rerun' "$t"; then
+            echo "# not rerun under the sanitizers: $t"
+            continue
+        fi
         echo "== $t"
         t0=$(date +%s.%N)
         GLS_BIN=$1 sh "$t" 2>&1

@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # docs/ARCHITECTURE.md stays true as the code changes (issue 12): every
 # source, header, script or spec file it names in backquotes (`name.c`,
 # `runtime/render/render.c`, `spec/bundle.md`, ...) exists in the tree, by its

@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # The measured figures live in docs/benchmarks.md (issue 29): every
 # `make bench-NAME` writes its output into the block after
 # <!-- bench: NAME --> there (tools/bench_md.sh), and no benchmark writes

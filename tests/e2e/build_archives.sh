@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # The layers' static archives hold exactly the objects of their current
 # sources: an archive is written from scratch, so the object of a source
 # that was deleted or moved to another layer does not stay inside it (and

@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # The layering is enforced by the build (docs/ARCHITECTURE.md, "Layers"):
 # each layer's objects are compiled with the include paths of the layers it
 # may see and no others, so a file that includes a header across the rule

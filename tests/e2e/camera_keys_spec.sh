@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # spec/camera.md "File format"'s table of keys is the parser's: the keys
 # its rows name (the first column, in backquotes) are exactly those of
 # runtime/camera/camera.c's key_name table (the sensor's keys have their own

@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # Files stay small and functions short, or say why (docs/ARCHITECTURE.md
 # "Sizes", issue 27 item 6): a source file of the layers (base, format,
 # compiler, runtime's rooms, lib, roads) over 500 lines has "Over 500

@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # No switch of a test is read from the environment on a production path
 # (issue 27 item 5): the tools' and the library's code (base, format,
 # compiler, runtime, lib, apps, roads) reads only the variables a user sets

@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # The GL entry points beyond GL 1.1 are listed once (GLS_GLEXT in
 # runtime/gl/glcalls.h) and loaded once, by the renderer (runtime/gl/glcalls.c):
 # no other file of the runtime or the library names a glext.h PFN type or
