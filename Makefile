@@ -162,6 +162,7 @@ SEES_test_camera := runtime
 SEES_test_player := runtime
 SEES_test_plan_matrix := runtime
 SEES_test_instances := runtime
+SEES_test_pack := runtime
 SEES_test_occlusion := runtime
 SEES_test_outputs := runtime
 SEES_test_writer := runtime

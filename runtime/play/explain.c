@@ -1,5 +1,6 @@
 /* glsplay --explain: the rendering plan, derived from the bundle's
  * feature bits (which the reader has checked against the content). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "numfmt.h"
@@ -394,7 +395,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
             b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
     fprintf(out, "geometry: %u unique triangles in %u chunks (cells of %g units, double anchors), %u state batches",
-            s->nverts / 3, s->nchunks, GLS_SCENE_CELL, s->nbatches);
+            s->nverts / 3, s->nchunks, ldexp(GLS_SCENE_CELL, (int)s->cell_level), s->nbatches);
     if (s->dropped)
         fprintf(out, ", %llu triangles dropped (a vertex beyond 2^50 units from the origin, or at infinity)", (unsigned long long)s->dropped);
     fprintf(out, "\n");

@@ -872,7 +872,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         snprintf(err, errlen, "%s", w.limit ? w.limit : "out of memory while building the scene");
         goto out;
     }
-    gls_pack_sort(w.tris, w.ntri);
+    s->cell_level = gls_pack_sort(w.tris, w.ntri, GLS_SCENE_CHUNK_BUDGET);
 
     s->features = b->features;
     vertex_layout(&w, s);

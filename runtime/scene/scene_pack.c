@@ -14,6 +14,17 @@ static int key_cmp(const gls_drawkey *a, const gls_drawkey *b)
     return memcmp(a->rgba, b->rgba, 4);
 }
 
+/* Cell c's index among cells 2^level times as large: floor(c / 2^level)
+ * (a right shift of a negative number is the implementation's choice). */
+static int64_t coarse(int64_t c, unsigned level)
+{
+    return c >= 0 ? c >> level : -((-(c + 1)) >> level) - 1;
+}
+
+/* The drawing order: proto, key, cell of the chosen size (sort_level),
+ * then the GLS_SCENE_CELL cell within it, Morton order in that, emission
+ * order.  At level 0 the two cells are one. */
+static unsigned sort_level;
 static int tri_cmp(const void *pa, const void *pb)
 {
     const gls_pack_tri *a = pa, *b = pb;
@@ -22,6 +33,11 @@ static int tri_cmp(const void *pa, const void *pb)
     int k = key_cmp(&a->key, &b->key);
     if (k)
         return k;
+    for (int j = 0; sort_level && j < 3; j++) {
+        int64_t ca = coarse(a->cell[j], sort_level), cb = coarse(b->cell[j], sort_level);
+        if (ca != cb)
+            return ca < cb ? -1 : 1;
+    }
     for (int j = 0; j < 3; j++)
         if (a->cell[j] != b->cell[j])
             return a->cell[j] < b->cell[j] ? -1 : 1;
@@ -43,8 +59,18 @@ static int item_cmp(const void *pa, const void *pb)
     return a->chunk < b->chunk ? -1 : a->chunk > b->chunk;
 }
 
+/* Are a and b in one cell of level `level`? */
+static int same_cell(const gls_pack_tri *a, const gls_pack_tri *b, unsigned level)
+{
+    for (int j = 0; j < 3; j++)
+        if (coarse(a->cell[j], level) != coarse(b->cell[j], level))
+            return 0;
+    return 1;
+}
+
 int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
 {
+    double cell = ldexp(GLS_SCENE_CELL, (int)s->cell_level);
     s->verts = malloc(w->ntri ? w->ntri * 3 * s->stride : 1);
     s->chunks = malloc((w->ntri ? w->ntri : 1) * sizeof *s->chunks);
     s->exact = malloc((w->ntri ? w->ntri : 1) * 9 * sizeof *s->exact);
@@ -60,7 +86,7 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
         const gls_pack_tri *t = &w->tris[i];
         gls_proto *pr = &s->protos[t->proto];
         int new_proto = i == 0 || w->tris[i - 1].proto != t->proto;
-        if (!ch || new_proto || key_cmp(&ch->key, &t->key) || memcmp(w->tris[i - 1].cell, t->cell, sizeof t->cell)) {
+        if (!ch || new_proto || key_cmp(&ch->key, &t->key) || !same_cell(&w->tris[i - 1], t, s->cell_level)) {
             if (new_proto)
                 pr->first_chunk = s->nchunks;
             pr->nchunks++;
@@ -70,7 +96,7 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             ch->count = 0;
             ch->maxoff = 0;
             for (int j = 0; j < 3; j++) {
-                ch->anchor[j] = ((double)t->cell[j] + 0.5) * GLS_SCENE_CELL;
+                ch->anchor[j] = ((double)coarse(t->cell[j], s->cell_level) + 0.5) * cell;
                 ch->lo[j] = INFINITY, ch->hi[j] = -INFINITY;
             }
         }
@@ -135,8 +161,42 @@ int gls_pack_items(gls_scene *s)
     return 0;
 }
 
-void gls_pack_sort(gls_pack_tri *t, size_t n)
+/* Sort t into the drawing order of level `level`; how many chunks it
+ * makes (runs of one proto, key and cell of that level). */
+static size_t sort_count(gls_pack_tri *t, size_t n, unsigned level)
 {
+    sort_level = level;
     if (n) /* qsort(NULL, 0) is undefined */
         qsort(t, n, sizeof *t, tri_cmp);
+    size_t runs = 0;
+    for (size_t i = 0; i < n; i++)
+        runs += i == 0 || t[i - 1].proto != t[i].proto || key_cmp(&t[i - 1].key, &t[i].key) ||
+                !same_cell(&t[i - 1], &t[i], level);
+    return runs;
+}
+
+unsigned gls_pack_sort(gls_pack_tri *t, size_t n, size_t budget)
+{
+    size_t at0 = sort_count(t, n, 0);
+    if (at0 <= budget)
+        return 0; /* the common case: one sort, cells of GLS_SCENE_CELL */
+    /* The count falls (or stays) as the level rises, each cell the union
+     * of eight of the level below; at the top level the box of every
+     * vertex (GLS_SCENE_MAX_COORD) spans two cells an axis, so its count
+     * is the least there is: at most eight a proto and key.  Aim for the
+     * budget, or that least count where the protos and keys alone exceed
+     * it; the smallest level that reaches the aim, by bisection. */
+    size_t aim = sort_count(t, n, GLS_PACK_MAX_LEVEL);
+    if (aim < budget)
+        aim = budget;
+    unsigned lo = 0, hi = GLS_PACK_MAX_LEVEL; /* count(lo) > aim >= count(hi) */
+    while (hi - lo > 1) {
+        unsigned mid = (lo + hi) / 2;
+        if (sort_count(t, n, mid) <= aim)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    sort_count(t, n, hi);
+    return hi;
 }
