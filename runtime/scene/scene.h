@@ -68,6 +68,10 @@ typedef struct {
     double maxoff;         /* largest |vertex - anchor| (any axis)        */
     gls_drawkey key;
     uint32_t first, count; /* vertex range in gls_scene.verts             */
+    float area;            /* its triangles' area, summed, in the proto's
+                              frame: occlusion culling's model of how much
+                              of the image the chunk covers (occlusion.c);
+                              a float, in the struct's padding            */
 } gls_chunk;
 
 /* A box in a proto's frame (scene_test_boxes.c). */

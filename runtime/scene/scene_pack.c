@@ -59,6 +59,16 @@ static int item_cmp(const void *pa, const void *pb)
     return a->chunk < b->chunk ? -1 : a->chunk > b->chunk;
 }
 
+/* Area of the triangle of corners p[0..2], p[3..5], p[6..8]. */
+static double tri_area(const double *p)
+{
+    double e1[3], e2[3];
+    for (int j = 0; j < 3; j++)
+        e1[j] = p[3 + j] - p[j], e2[j] = p[6 + j] - p[j];
+    double x = e1[1] * e2[2] - e1[2] * e2[1], y = e1[2] * e2[0] - e1[0] * e2[2], z = e1[0] * e2[1] - e1[1] * e2[0];
+    return 0.5 * sqrt(x * x + y * y + z * z);
+}
+
 /* Are a and b in one cell of level `level`? */
 static int same_cell(const gls_pack_tri *a, const gls_pack_tri *b, unsigned level)
 {
@@ -95,6 +105,7 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             ch->first = (uint32_t)(i * 3);
             ch->count = 0;
             ch->maxoff = 0;
+            ch->area = 0;
             for (int j = 0; j < 3; j++) {
                 ch->anchor[j] = ((double)coarse(t->cell[j], s->cell_level) + 0.5) * cell;
                 ch->lo[j] = INFINITY, ch->hi[j] = -INFINITY;
@@ -125,6 +136,7 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             }
         }
         ch->count += 3;
+        ch->area += (float)tri_area(w->wpos + 9 * (size_t)t->idx);
     }
     return 0;
 }
