@@ -173,23 +173,56 @@ int gls_pack_items(gls_scene *s)
     return 0;
 }
 
-/* Sort t into the drawing order of level `level`; how many chunks it
- * makes (runs of one proto, key and cell of that level). */
-static size_t sort_count(gls_pack_tri *t, size_t n, unsigned level)
+/* Sort t into the drawing order of level `level`. */
+static void sort_level_order(gls_pack_tri *t, size_t n, unsigned level)
 {
     sort_level = level;
     if (n) /* qsort(NULL, 0) is undefined */
         qsort(t, n, sizeof *t, tri_cmp);
-    size_t runs = 0;
-    for (size_t i = 0; i < n; i++)
-        runs += i == 0 || t[i - 1].proto != t[i].proto || key_cmp(&t[i - 1].key, &t[i].key) ||
-                !same_cell(&t[i - 1], &t[i], level);
-    return runs;
+}
+
+/* Do a and b fall in one chunk at level `level`? */
+static int same_chunk(const gls_pack_tri *a, const gls_pack_tri *b, unsigned level)
+{
+    return a->proto == b->proto && !key_cmp(&a->key, &b->key) && same_cell(a, b, level);
+}
+
+static uint64_t mix(uint64_t h, uint64_t v)
+{
+    h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    return h * 0xff51afd7ed558ccdull;
+}
+
+/* How many chunks t (in any order) makes at level `level`: its distinct
+ * (proto, key, cell) triples, counted in a hash table of slots (a power
+ * of two above 2n, UINT32_MAX: empty) rather than by sorting, so that
+ * trying a level costs one pass. */
+static size_t count_level(const gls_pack_tri *t, size_t n, unsigned level, uint32_t *slot, size_t nslots)
+{
+    memset(slot, 0xff, nslots * sizeof *slot);
+    size_t distinct = 0;
+    for (size_t i = 0; i < n; i++) {
+        const gls_pack_tri *a = &t[i];
+        uint64_t h = mix(mix(a->proto, a->key.texture), (uint64_t)a->key.mode << 32 | (uint64_t)a->key.rgba[0] << 24 |
+                                                          (uint64_t)a->key.rgba[1] << 16 | (uint64_t)a->key.rgba[2] << 8 |
+                                                          a->key.rgba[3]);
+        for (int j = 0; j < 3; j++)
+            h = mix(h, (uint64_t)coarse(a->cell[j], level));
+        size_t k = (size_t)(h >> 20) & (nslots - 1);
+        while (slot[k] != UINT32_MAX && !same_chunk(&t[slot[k]], a, level))
+            k = (k + 1) & (nslots - 1);
+        if (slot[k] == UINT32_MAX)
+            slot[k] = (uint32_t)i, distinct++;
+    }
+    return distinct;
 }
 
 unsigned gls_pack_sort(gls_pack_tri *t, size_t n, size_t budget)
 {
-    size_t at0 = sort_count(t, n, 0);
+    sort_level_order(t, n, 0);
+    size_t at0 = 0;
+    for (size_t i = 0; i < n && at0 <= budget; i++)
+        at0 += i == 0 || !same_chunk(&t[i - 1], &t[i], 0);
     if (at0 <= budget)
         return 0; /* the common case: one sort, cells of GLS_SCENE_CELL */
     /* The count falls (or stays) as the level rises, each cell the union
@@ -197,18 +230,27 @@ unsigned gls_pack_sort(gls_pack_tri *t, size_t n, size_t budget)
      * vertex (GLS_SCENE_MAX_COORD) spans two cells an axis, so its count
      * is the least there is: at most eight a proto and key.  Aim for the
      * budget, or that least count where the protos and keys alone exceed
-     * it; the smallest level that reaches the aim, by bisection. */
-    size_t aim = sort_count(t, n, GLS_PACK_MAX_LEVEL);
+     * it; the smallest level that reaches the aim, by bisection, each try
+     * a pass over a hash table; then one sort in that level's order.  (n
+     * is below 2^28, GLS_SCENE_MAX_VERTS / 3, so indices fit 32 bits.) */
+    size_t nslots = 1;
+    while (nslots < 2 * n)
+        nslots *= 2;
+    uint32_t *slot = malloc(nslots * sizeof *slot);
+    if (!slot)
+        return 0; /* out of memory: cells of GLS_SCENE_CELL, as sorted */
+    size_t aim = count_level(t, n, GLS_PACK_MAX_LEVEL, slot, nslots);
     if (aim < budget)
         aim = budget;
     unsigned lo = 0, hi = GLS_PACK_MAX_LEVEL; /* count(lo) > aim >= count(hi) */
     while (hi - lo > 1) {
         unsigned mid = (lo + hi) / 2;
-        if (sort_count(t, n, mid) <= aim)
+        if (count_level(t, n, mid, slot, nslots) <= aim)
             hi = mid;
         else
             lo = mid;
     }
-    sort_count(t, n, hi);
+    free(slot);
+    sort_level_order(t, n, hi);
     return hi;
 }
