@@ -119,11 +119,16 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             memcpy(s->exact + (i * 3 + (size_t)k) * 3, p, 3 * sizeof *p);
             for (int j = 0; j < 3; j++) {
                 off[j] = (float)(p[j] - ch->anchor[j]);
-                if (fabs(p[j] - ch->anchor[j]) > ch->maxoff)
-                    ch->maxoff = fabs(p[j] - ch->anchor[j]);
-                ch->lo[j] = fmin(ch->lo[j], p[j]), ch->hi[j] = fmax(ch->hi[j], p[j]);
-                pr->lo[j] = fmin(pr->lo[j], p[j]), pr->hi[j] = fmax(pr->hi[j], p[j]);
-                s->lo[j] = fmin(s->lo[j], p[j]), s->hi[j] = fmax(s->hi[j], p[j]);
+                double d = fabs(p[j] - ch->anchor[j]);
+                if (d > ch->maxoff)
+                    ch->maxoff = d;
+                /* positions are finite (the walk drops the rest): plain
+                 * comparisons, not fmin's calls; the protos' and the
+                 * scene's boxes are the chunks', merged below */
+                if (p[j] < ch->lo[j])
+                    ch->lo[j] = p[j];
+                if (p[j] > ch->hi[j])
+                    ch->hi[j] = p[j];
             }
             memcpy(v, off, sizeof off);
             if (s->has_color)
@@ -137,6 +142,14 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
         }
         ch->count += 3;
         ch->area += (float)tri_area(w->wpos + 9 * (size_t)t->idx);
+    }
+    for (size_t p = 0; p < s->nprotos; p++) {
+        gls_proto *pr = &s->protos[p];
+        for (uint32_t k = pr->first_chunk; k < pr->first_chunk + pr->nchunks; k++)
+            for (int j = 0; j < 3; j++) {
+                pr->lo[j] = fmin(pr->lo[j], s->chunks[k].lo[j]), pr->hi[j] = fmax(pr->hi[j], s->chunks[k].hi[j]);
+                s->lo[j] = fmin(s->lo[j], s->chunks[k].lo[j]), s->hi[j] = fmax(s->hi[j], s->chunks[k].hi[j]);
+            }
     }
     return 0;
 }
