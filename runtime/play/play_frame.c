@@ -11,6 +11,7 @@
 #include "gt_pass.h"
 #include "lens_truth.h"
 #include "play_int.h"
+#include "progress_line.h"
 #include "sensor_image.h"
 
 /* Say why a camera frame failed.  An earlier frame's files may still be
@@ -329,6 +330,8 @@ int play_camera(session *s, const gls_camera *c, const char *name, uint32_t fram
     gls_plan_inputs pin = {o->outputs, o->image_format, s->plan, s->moving};
     gls_frame_plan_make(&cf.fp, &pin, c, s->next != NULL);
     const gls_frame_plan *fp = &cf.fp;
+    if (s->times && !s->times->plan)
+        s->times->plan = gls_now();
     gls_frame_counts *cnt = s->counts;
     if (cnt)
         memset(cnt, 0, sizeof *cnt), cnt->frames = 1;
@@ -356,8 +359,11 @@ int play_camera(session *s, const gls_camera *c, const char *name, uint32_t fram
     cf.bands.whole = o->bands_whole != 0;
     if (frame_buffers(&cf, cnt, n))
         goto out;
-    if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)) ||
-        frame_image(s, c, name, frame, &cf) || frame_boxes_flow(s, c, frame, &cf, msg, sizeof msg) ||
+    if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)))
+        goto out;
+    if (s->times && !s->times->draw)
+        s->times->draw = gls_now(); /* drawn and read back */
+    if (frame_image(s, c, name, frame, &cf) || frame_boxes_flow(s, c, frame, &cf, msg, sizeof msg) ||
         frame_submit(s, c, name, frame, &cf, msg, sizeof msg))
         goto out;
     play_view_done(s);

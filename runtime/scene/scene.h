@@ -211,6 +211,9 @@ typedef struct {
     uint32_t nmarknames;
     int moving;            /* some instance has a motion (gls_scene_move)  */
     uint64_t dropped;      /* triangles with a vertex at infinity (w = 0) */
+    double pack_seconds;   /* the packing's time (scene_pack.h: sort,
+                              chunks, test boxes, items), for glsplay
+                              --times; never in an output              */
     int no_cull;           /* 1: gls_scene_cull marks everything visible:
                               only for measuring what culling saves
                               (bench/instances_bench --no-cull); 0 after

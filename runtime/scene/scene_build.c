@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "buf.h"
+#include "progress_line.h"
 #include "scene.h"
 #include "scene_marks.h"
 #include "scene_pack.h"
@@ -872,6 +873,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         snprintf(err, errlen, "%s", w.limit ? w.limit : "out of memory while building the scene");
         goto out;
     }
+    double t_pack = gls_now();
     s->cell_level = gls_pack_sort(w.tris, w.ntri, GLS_SCENE_CHUNK_BUDGET);
 
     s->features = b->features;
@@ -887,6 +889,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         made = gls_scene_test_boxes(s);
     if (!made)
         made = gls_pack_items(s);
+    s->pack_seconds = gls_now() - t_pack;
     if (!made)
         made = gls_markwalk_finish(&w.marks, s);
     if (made) {
