@@ -16,7 +16,9 @@
 #     PLAY_REPS runs (default 5), the programs interleaved run by run (a
 #     shared machine's load comes and goes within seconds; the fastest run
 #     is the least disturbed); wall-clock seconds, and the CPU seconds
-#     (user + system) of the same runs.
+#     (user + system) of the same runs.  PLAY_BEFORE=PATH: another
+#     glsplay (an earlier build) timed in the same rounds, one camera and
+#     20, for a before-and-after line.
 B=${1:-build}
 . bench/lib.sh
 REPS=${PLAY_REPS:-5}
@@ -58,6 +60,10 @@ while [ $i -le "$REPS" ]; do
     timed p20 $PLAY "$t/cloud.glsb" $cams --outputs image -o "$t/o"
     timed aa1 $PLAY "$t/cloud.glsb" --camera "$t/cam_00.cam" --outputs image --aa 1 -o "$t/o"
     timed aa4 $PLAY "$t/cloud.glsb" --camera "$t/cam_00.cam" --outputs image --aa 4 -o "$t/o"
+    if [ -n "$PLAY_BEFORE" ]; then
+        timed b1 "$PLAY_BEFORE" "$t/cloud.glsb" --camera "$t/cam_00.cam" --outputs image -o "$t/o"
+        timed b20 "$PLAY_BEFORE" "$t/cloud.glsb" $cams --outputs image -o "$t/o"
+    fi
     i=$((i + 1))
 done
 tl=$($PLAY "$t/cloud.glsb" --camera "$t/cam_00.cam" --outputs image -o "$t/o" --times 2>&1 >/dev/null)
@@ -87,6 +93,7 @@ p=$(run $B/bench/play_bench) || exit 1
     echo "  one camera: floor $(best f1) s (CPU $(bestcpu f1) s), glsplay $(best p1) s (CPU $(bestcpu p1) s): $(ratio "$(best p1)" "$(best f1)")x the floor (CPU $(ratio "$(bestcpu p1)" "$(bestcpu f1)")x)"
     echo "  20 cameras: floor $(best f20) s (CPU $(bestcpu f20) s), glsplay $(best p20) s (CPU $(bestcpu p20) s): $(ratio "$(best p20)" "$(best f20)")x the floor (CPU $(ratio "$(bestcpu p20)" "$(bestcpu f20)")x)"
     echo "  minor page faults, one camera: glsplay $(faults p1), floor $(faults f1)"
+    [ -n "$PLAY_BEFORE" ] && echo "  before (PLAY_BEFORE=$PLAY_BEFORE): one camera $(best b1) s (CPU $(bestcpu b1) s, $(faults b1) minor faults): $(ratio "$(best b1)" "$(best f1)")x the floor; 20 cameras $(best b20) s (CPU $(bestcpu b20) s): $(ratio "$(best b20)" "$(best f20)")x"
     echo "  glsplay --times, one camera: $(echo "$tl" | sed 's/^glsplay: times: //')"
     echo "  16 lattice samples (--aa 4) against one pass (--aa 1), one camera: $(best aa4) s against $(best aa1) s: $(ratio "$(best aa4)" "$(best aa1)")x (CPU $(ratio "$(bestcpu aa4)" "$(bestcpu aa1)")x)"
     echo "  draw items a frame: at most $items of the scene's $allitems over the 20 cameras' first frames"
