@@ -168,7 +168,7 @@ static int grow_tris(walker *w, size_t need)
 {
     if (w->ntri + need <= w->tcap)
         return 0;
-    /* four arrays of one capacity: grown by the largest element's rule */
+    /* arrays of one capacity: grown by the largest element's rule */
     size_t cap = gls_grow_cap(w->tcap, w->ntri + need, 9 * sizeof *w->wpos);
     tri *t = cap ? gls_resize(w->tris, cap, sizeof *t) : NULL;
     if (t)
@@ -176,14 +176,24 @@ static int grow_tris(walker *w, size_t need)
     double *p = cap ? gls_resize(w->wpos, cap, 9 * sizeof *p) : NULL;
     if (p)
         w->wpos = p;
-    uint8_t *c = cap ? gls_resize(w->wcol, cap, 12) : NULL;
-    if (c)
-        w->wcol = c;
-    float *x = cap ? gls_resize(w->wtc, cap, 6 * sizeof *x) : NULL;
-    if (x)
-        w->wtc = x;
-    if (!t || !p || !c || !x)
+    if (!t || !p)
         return -1;
+    /* colours and texture coordinates only where the vertices carry
+     * them (vertex_layout): otherwise nothing reads them, and a scattered
+     * scene of 100,000 untextured triangles wrote 2.4 MB of texture
+     * coordinates that were never read (issue 30's page faults) */
+    if (w->has_color) {
+        uint8_t *c = gls_resize(w->wcol, cap, 12);
+        if (!c)
+            return -1;
+        w->wcol = c;
+    }
+    if (w->has_texcoord) {
+        float *x = gls_resize(w->wtc, cap, 6 * sizeof *x);
+        if (!x)
+            return -1;
+        w->wtc = x;
+    }
     if (w->lit) { /* normals and specular state only where they are used */
         float *n = gls_resize(w->wnrm, cap, 9 * sizeof *n);
         if (n)
@@ -319,8 +329,10 @@ static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const state 
     t->zorder = cell_zorder(a->p, t->cell);
     for (int k = 0; k < 3; k++) {
         memcpy(w->wpos + 9 * i + 3 * k, v[k]->p, 3 * sizeof(double));
-        memcpy(w->wcol + 12 * i + 4 * k, v[k]->c, 4);
-        memcpy(w->wtc + 6 * i + 2 * k, v[k]->st, 2 * sizeof(float));
+        if (w->has_color)
+            memcpy(w->wcol + 12 * i + 4 * k, v[k]->c, 4);
+        if (w->has_texcoord)
+            memcpy(w->wtc + 6 * i + 2 * k, v[k]->st, 2 * sizeof(float));
     }
     if (w->lit) {
         tri_normals(in, v, w->wnrm + 9 * i);
