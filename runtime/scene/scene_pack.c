@@ -206,15 +206,26 @@ static uint64_t mix(uint64_t h, uint64_t v)
     return h * 0xff51afd7ed558ccdull;
 }
 
-/* How many chunks t (in any order) makes at level `level`: its distinct
- * (proto, key, cell) triples, counted in a hash table of slots (a power
- * of two above 2n, UINT32_MAX: empty) rather than by sorting, so that
- * trying a level costs one pass. */
-static size_t count_level(const gls_pack_tri *t, size_t n, unsigned level, uint32_t *slot, size_t nslots)
+/* How many chunks t (in any order) makes at level `level`, counted up to
+ * cap + 1 (a count above cap is cap + 1): its distinct (proto, key, cell)
+ * triples, in a hash table of slots (UINT32_MAX: empty) rather than by
+ * sorting, so that trying a level costs one pass, and only as large as
+ * the count it can reach (a scene of millions of triangles within the
+ * budget needs a table of twice the budget, not of its triangles).  -1
+ * when out of memory. */
+static long long count_level(const gls_pack_tri *t, size_t n, unsigned level, size_t cap)
 {
+    if (cap > n)
+        cap = n; /* there are at most n */
+    size_t nslots = 2;
+    while (nslots < 2 * (cap + 1))
+        nslots *= 2;
+    uint32_t *slot = malloc(nslots * sizeof *slot);
+    if (!slot)
+        return -1;
     memset(slot, 0xff, nslots * sizeof *slot);
     size_t distinct = 0;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < n && distinct <= cap; i++) {
         const gls_pack_tri *a = &t[i];
         uint64_t h = mix(mix(a->proto, a->key.texture), (uint64_t)a->key.mode << 32 | (uint64_t)a->key.rgba[0] << 24 |
                                                           (uint64_t)a->key.rgba[1] << 16 | (uint64_t)a->key.rgba[2] << 8 |
@@ -227,43 +238,51 @@ static size_t count_level(const gls_pack_tri *t, size_t n, unsigned level, uint3
         if (slot[k] == UINT32_MAX)
             slot[k] = (uint32_t)i, distinct++;
     }
-    return distinct;
+    free(slot);
+    return (long long)distinct;
 }
 
 unsigned gls_pack_sort(gls_pack_tri *t, size_t n, size_t budget)
 {
-    sort_level_order(t, n, 0);
-    size_t at0 = 0;
-    for (size_t i = 0; i < n && at0 <= budget; i++)
-        at0 += i == 0 || !same_chunk(&t[i - 1], &t[i], 0);
-    if (at0 <= budget)
-        return 0; /* the common case: one sort, cells of GLS_SCENE_CELL */
+    /* the common case: within the budget at GLS_SCENE_CELL, one sort (a
+     * pass counting at most budget + 1 chunks decides it; n <= budget
+     * needs none).  n is below 2^28 (GLS_SCENE_MAX_VERTS / 3): indices
+     * fit 32 bits */
+    long long at0 = n <= budget ? 0 : count_level(t, n, 0, budget);
+    if (at0 < 0 || (size_t)at0 <= budget) { /* out of memory: as sorted */
+        sort_level_order(t, n, 0);
+        return 0;
+    }
     /* The count falls (or stays) as the level rises, each cell the union
      * of eight of the level below; at the top level the box of every
      * vertex (GLS_SCENE_MAX_COORD) spans two cells an axis, so its count
      * is the least there is: at most eight a proto and key.  Aim for the
      * budget, or that least count where the protos and keys alone exceed
      * it; the smallest level that reaches the aim, by bisection, each try
-     * a pass over a hash table; then one sort in that level's order.  (n
-     * is below 2^28, GLS_SCENE_MAX_VERTS / 3, so indices fit 32 bits.) */
-    size_t nslots = 1;
-    while (nslots < 2 * n)
-        nslots *= 2;
-    uint32_t *slot = malloc(nslots * sizeof *slot);
-    if (!slot)
-        return 0; /* out of memory: cells of GLS_SCENE_CELL, as sorted */
-    size_t aim = count_level(t, n, GLS_PACK_MAX_LEVEL, slot, nslots);
-    if (aim < budget)
-        aim = budget;
+     * a pass; then one sort, in that level's order.  Out of memory: cells
+     * of GLS_SCENE_CELL. */
+    long long least = count_level(t, n, GLS_PACK_MAX_LEVEL, budget);
+    if (least > (long long)budget)
+        least = count_level(t, n, GLS_PACK_MAX_LEVEL, n);
     unsigned lo = 0, hi = GLS_PACK_MAX_LEVEL; /* count(lo) > aim >= count(hi) */
-    while (hi - lo > 1) {
+    size_t aim = least > (long long)budget ? (size_t)least : budget;
+    if (least > (long long)budget) { /* level 0 may reach that aim */
+        long long c = count_level(t, n, 0, aim);
+        if (c >= 0 && (size_t)c <= aim)
+            least = -1; /* then level 0: no bisection */
+    }
+    while (least >= 0 && hi - lo > 1) { /* least < 0: level 0 */
         unsigned mid = (lo + hi) / 2;
-        if (count_level(t, n, mid, slot, nslots) <= aim)
+        long long c = count_level(t, n, mid, aim);
+        if (c < 0)
+            least = -1;
+        else if ((size_t)c <= aim)
             hi = mid;
         else
             lo = mid;
     }
-    free(slot);
+    if (least < 0)
+        hi = 0;
     sort_level_order(t, n, hi);
     return hi;
 }

@@ -220,6 +220,21 @@ static void test_pack_budget_scene(void)
     gls_bundle_free(b);
 }
 
+/* More keys than the budget, each in one cell already: level 0 makes
+ * as few chunks as any level, so the cells stay at GLS_SCENE_CELL. */
+static void test_pack_budget_keys_one_cell(void)
+{
+    size_t n = 20000;
+    gls_pack_tri *t = malloc(n * sizeof *t);
+    for (size_t i = 0; i < n; i++) {
+        uint32_t k = (uint32_t)(i % 5000);
+        tri_at(&t[i], i, k, (int64_t)(k % 17) * 1000, (int64_t)(k / 17) * 1000, 0);
+    }
+    CHECK(distinct(t, n, 0) == 5000);
+    CHECK(gls_pack_sort(t, n, 4096) == 0);
+    free(t);
+}
+
 int main(void)
 {
     RUN(test_pack_budget_scattered);
@@ -227,6 +242,7 @@ int main(void)
     RUN(test_pack_budget_single_cell);
     RUN(test_pack_budget_edge);
     RUN(test_pack_budget_keys);
+    RUN(test_pack_budget_keys_one_cell);
     RUN(test_pack_budget_scene);
     CHECK_EXIT();
 }
