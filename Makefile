@@ -162,6 +162,7 @@ SEES_test_camera := runtime
 SEES_test_player := runtime
 SEES_test_plan_matrix := runtime
 SEES_test_instances := runtime
+SEES_test_pack := runtime
 SEES_test_occlusion := runtime
 SEES_test_outputs := runtime
 SEES_test_writer := runtime
@@ -474,8 +475,9 @@ BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_bench) $(LDLIBS) $(GL_LIBS)
 
-# bench-play (runtime owner): player vs a minimal one-VBO floor, same context.
-bench-play: $(B)/bench/play_floor $(B)/bench/play_bench
+# bench-play (runtime owner): player vs a minimal one-VBO floor, same
+# context; issue 30's whole-process targets on its scattered scene.
+bench-play: $(B)/bench/play_floor $(B)/bench/play_bench $(B)/glsplay
 	@mkdir -p $(B)/bench && sh bench/play.sh $(B) >$(B)/bench/play.txt; st=$$?; cat $(B)/bench/play.txt; exit $$st
 	@$(BENCH_MD) play $(B)/bench/play.txt
 

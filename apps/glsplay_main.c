@@ -53,6 +53,8 @@ static const char usage_text[] =
     "                         NAME/calib_F.yml (OpenCV), calib_F.json per frame;\n"
     "                         calib.txt (KITTI) and NAME/camera_info.yaml (ROS)\n"
     "  --explain              print the rendering plan; without -o, render nothing\n"
+    "  --times                at the end, the run's time line on stderr: load, build\n"
+    "                         (pack), GL context, upload, plan, first draw, write\n"
     "  --background R,G,B     colour where no surface is, components 0..1 (default 0,0,0)\n"
     "  --occlusion M          occlusion culling: auto (default: when many boxes overlap\n"
     "                         in the view), on or off; the images are the same\n"

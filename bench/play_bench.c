@@ -8,13 +8,54 @@
  *        play_bench --write DIR     write the scene for glsplay instead:
  *                                   DIR/terrain.glsb, DIR/rig.cam (pose rig,
  *                                   the identity) and DIR/trajectory.txt (the
- *                                   camera path), for make bench-backends */
+ *                                   camera path), for make bench-backends
+ *        play_bench --write-cloud DIR  write issue 30's scattered scene
+ *                                   (cloud_scene.h): DIR/cloud.glsb and
+ *                                   DIR/cam_00.cam .. cam_19.cam */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "player_scene.h"
 #include "play_bundle.h"
+#include "cloud_scene.h"
+
+/* Issue 30's scattered scene (cloud_scene.h) as glsplay's inputs:
+ * DIR/cloud.glsb and DIR/cam_K.cam for each of its cameras. */
+static int write_cloud(const char *dir)
+{
+    char path[4096];
+    double *p = malloc(9 * sizeof *p * CL_NTRI);
+    float *rgb = malloc(9 * sizeof *rgb * CL_NTRI);
+    if (!p || !rgb)
+        return -1;
+    cl_triangles(p, rgb);
+    tb t;
+    tb_init(&t);
+    tb_object(&t, "cloud", 1);
+    for (int k = 0; k < CL_NTRI; k++) {
+        gls_vec4 v[3];
+        gls_rgba c[3];
+        for (int q = 0; q < 3; q++) {
+            const double *x = p + 9 * k + 3 * q;
+            const float *f = rgb + 9 * k + 3 * q;
+            v[q] = (gls_vec4){x[0], x[1], x[2], 1};
+            c[q] = (gls_rgba){f[0], f[1], f[2], 1};
+        }
+        tb_prim4(&t, GLS_PRIM_POLY, 3, v, c, NULL);
+    }
+    free(p), free(rgb);
+    gls_bundle *b = tb_finish(&t);
+    snprintf(path, sizeof path, "%s/cloud.glsb", dir);
+    int bad = tb_write(b, path);
+    gls_bundle_free(b);
+    for (int k = 0; k < CL_NCAM && !bad; k++) {
+        gls_camera c = cl_camera(k);
+        snprintf(path, sizeof path, "%s/cam_%02d.cam", dir, k);
+        bad = tb_write_camera(&c, path);
+    }
+    return bad ? -1 : 0;
+}
 
 /* The scene, a rig camera and the camera path as glsplay's inputs. */
 static int write_inputs(const char *dir)
@@ -52,6 +93,13 @@ int main(int argc, char **argv)
 {
     char err[256];
     gls_backend backend = GLS_BACKEND_AUTO;
+    if (argc == 3 && strcmp(argv[1], "--write-cloud") == 0) {
+        if (write_cloud(argv[2])) {
+            fprintf(stderr, "play_bench: cannot write to %s\n", argv[2]);
+            return 1;
+        }
+        return 0;
+    }
     if (argc == 3 && strcmp(argv[1], "--write") == 0) {
         if (write_inputs(argv[2])) {
             fprintf(stderr, "play_bench: cannot write to %s\n", argv[2]);
@@ -62,7 +110,7 @@ int main(int argc, char **argv)
     if (argc == 3 && strcmp(argv[1], "--backend") == 0 && gls_backend_parse(argv[2], &backend) == 0)
         argc -= 2;
     if (argc != 1) {
-        fprintf(stderr, "usage: play_bench [--backend B] | --write DIR\n");
+        fprintf(stderr, "usage: play_bench [--backend B] | --write DIR | --write-cloud DIR\n");
         return 2;
     }
     gls_glctx *ctx = gls_glctx_create(backend, err, sizeof err);

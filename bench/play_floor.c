@@ -5,7 +5,12 @@
  * player could skip, in the order that draws fastest.  Prints "floor FPS".
  * With --random, the same triangles in bench/random_order.h's order (what
  * a floor that draws triangles as given makes of instances_bench's
- * random-order scene). */
+ * random-order scene).
+ * With --cloud N DIR: issue 30's floor for a whole process: issue 30's
+ * scattered scene (cloud_scene.h) in one vertex buffer, cameras 0..N-1
+ * each drawn once, its colour read back and written as
+ * DIR/image_K.png (the player's PNG encoder, rows top first); make
+ * bench-play times the whole process. */
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include "glcalls.h"
@@ -15,6 +20,8 @@
 #include <string.h>
 #include <time.h>
 #include "glctx.h"
+#include "cloud_scene.h"
+#include "outputs.h"
 #include "play_scene.h"
 #include "random_order.h"
 #include "render.h"
@@ -39,12 +46,66 @@ static void put_vertex(vert *v, int i, int j)
     v->c[3] = 255;
 }
 
+/* The cloud's triangles as float vertices in v (3 * CL_NTRI). */
+static int cloud_vertices(vert *v)
+{
+    double *p = malloc(9 * sizeof *p * CL_NTRI);
+    float *rgb = malloc(9 * sizeof *rgb * CL_NTRI);
+    if (!p || !rgb)
+        return -1;
+    cl_triangles(p, rgb);
+    for (size_t k = 0; k < 3 * (size_t)CL_NTRI; k++) {
+        for (int a = 0; a < 3; a++) {
+            v[k].p[a] = (float)p[3 * k + a];
+            v[k].c[a] = (uint8_t)lrint(rgb[3 * k + a] * 255.0);
+        }
+        v[k].c[3] = 255;
+    }
+    free(p), free(rgb);
+    return 0;
+}
+
+/* Draw camera c's view of the nv vertices bound, read its colour back into
+ * rgba (rows top first) and write it as PNG to path. */
+static int cloud_frame(const gls_camera *c, size_t nv, uint8_t *rgba, uint8_t *row, const char *path)
+{
+    double P[16], MV[16], zero[3] = {0, 0, 0};
+    float m[16];
+    gls_camera_projection(c, 0, 0, P);
+    gls_mat_to_gl(P, m);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(m);
+    gls_camera_modelview(c, zero, MV);
+    gls_mat_to_gl(MV, m);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(m);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDrawArrays(GL_TRIANGLES, 0, (GLsizei)nv);
+    glReadPixels(0, 0, CL_W, CL_H, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    size_t rb = 4 * (size_t)CL_W;
+    for (int y = 0; y < CL_H / 2; y++) {
+        memcpy(row, rgba + y * rb, rb);
+        memcpy(rgba + y * rb, rgba + (CL_H - 1 - y) * rb, rb);
+        memcpy(rgba + (CL_H - 1 - y) * rb, row, rb);
+    }
+    gls_buf png = {0};
+    FILE *f = NULL;
+    int bad = gls_encode_png(rgba, CL_W, CL_H, &png) || !(f = fopen(path, "wb")) ||
+              fwrite(png.data, 1, png.len, f) != png.len;
+    if (f && fclose(f))
+        bad = 1;
+    free(png.data);
+    return bad ? -1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     char err[256];
     int random = argc == 2 && strcmp(argv[1], "--random") == 0;
-    if (argc > 1 && !random) {
-        fprintf(stderr, "usage: play_floor [--random]\n");
+    int cloud = argc == 4 && strcmp(argv[1], "--cloud") == 0;
+    int ncam = cloud ? atoi(argv[2]) : 0;
+    if ((argc > 1 && !random && !cloud) || (cloud && (ncam < 1 || ncam > CL_NCAM))) {
+        fprintf(stderr, "usage: play_floor [--random | --cloud N DIR]\n");
         return 2;
     }
     gls_glctx *ctx = gls_glctx_create(GLS_BACKEND_AUTO, err, sizeof err);
@@ -62,8 +123,10 @@ int main(int argc, char **argv)
     LOAD(PFNGLGENBUFFERSPROC, glGenBuffers);
     LOAD(PFNGLBINDBUFFERPROC, glBindBuffer);
     LOAD(PFNGLBUFFERDATAPROC, glBufferData);
-    size_t nv = (size_t)PS_N * PS_N * 6, k = 0;
+    size_t nv = cloud ? 3 * (size_t)CL_NTRI : (size_t)PS_N * PS_N * 6, k = 0;
     vert *v = malloc(nv * sizeof *v);
+    if (!v || (cloud && cloud_vertices(v)))
+        return 1;
     /* Quads in 32 x 32 blocks rather than row by row: llvmpipe bins
      * spatially coherent triangles faster (measured on this bench: row
      * order 52 fps, 32-blocks 63 fps), and a floor must be the fastest
@@ -80,7 +143,7 @@ int main(int argc, char **argv)
             put_vertex(&v[k++], i, j);
         }
     free(order);
-    for (int bi = 0; !random && bi < PS_N; bi += blk)
+    for (int bi = 0; !random && !cloud && bi < PS_N; bi += blk)
     for (int bj = 0; bj < PS_N; bj += blk)
     for (int i = bi; i < bi + blk && i < PS_N; i++)
         for (int j = bj; j < bj + blk && j < PS_N; j++) {
@@ -93,12 +156,12 @@ int main(int argc, char **argv)
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glGenRenderbuffers(2, rb);
     glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, PS_W, PS_H);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, cloud ? CL_W : PS_W, cloud ? CL_H : PS_H);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
     glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, PS_W, PS_H);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, cloud ? CL_W : PS_W, cloud ? CL_H : PS_H);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
-    glViewport(0, 0, PS_W, PS_H);
+    glViewport(0, 0, cloud ? CL_W : PS_W, cloud ? CL_H : PS_H);
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glClearDepth(0);
     glDepthFunc(GL_GREATER);
@@ -111,6 +174,21 @@ int main(int argc, char **argv)
     glEnableClientState(GL_COLOR_ARRAY);
     glVertexPointer(3, GL_FLOAT, sizeof *v, (void *)0);
     glColorPointer(4, GL_UNSIGNED_BYTE, sizeof *v, (void *)offsetof(vert, c));
+    if (cloud) {
+        uint8_t *img = malloc((size_t)CL_W * CL_H * 4), *row = malloc(4 * (size_t)CL_W);
+        char path[4096];
+        int bad = !img || !row;
+        for (int c = 0; c < ncam && !bad; c++) {
+            gls_camera cam = cl_camera(c);
+            snprintf(path, sizeof path, "%s/image_%02d.png", argv[3], c);
+            bad = cloud_frame(&cam, nv, img, row, path);
+        }
+        free(img), free(row), free(v);
+        gls_glctx_destroy(ctx);
+        if (bad)
+            fprintf(stderr, "play_floor: cannot write to %s\n", argv[3]);
+        return bad;
+    }
     uint8_t *rgba = malloc((size_t)PS_W * PS_H * 4);
     float *depth = malloc((size_t)PS_W * PS_H * 4);
     struct timespec t0, t1;

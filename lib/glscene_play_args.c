@@ -167,7 +167,7 @@ struct option {
     size_t flag;             /* take_flag: offsetof the int set to 1     */
 };
 
-/* --explain, --write-calib, --resume, --flatten */
+/* --explain, --times, --write-calib, --resume, --flatten */
 static int take_flag(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)
 {
     (void)a, (void)next, (void)e;
@@ -414,6 +414,7 @@ static const option options[] = {
     VALUE("--depth-scale", "a positive number, kitti (256) or tum (5000)", read_depth_scale),
     CHOICE("--float-format", float_format_words, 2, set_float_format),
     FLAG("--explain", explain),
+    FLAG("--times", times),
     FLAG("--write-calib", write_calib),
     FLAG("--resume", resume),
     FLAG("--flatten", flatten),

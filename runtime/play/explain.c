@@ -1,5 +1,6 @@
 /* glsplay --explain: the rendering plan, derived from the bundle's
  * feature bits (which the reader has checked against the content). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "numfmt.h"
@@ -75,15 +76,15 @@ static void explain_occlusion(FILE *out, gls_occlusion *occ, const gls_scene *s,
             first += occ->occluder[i];
         fprintf(out, "    occlusion culling: %u units tested in occlusion queries (%u triangles of their test boxes' "
                      "front faces), nearest first, after %u draw items drawn untested (boxes over the image %.1f "
-                     "times)\n",
-                occ->ntested, occ->box_verts / 3, first, occ->overdraw);
+                     "times, the geometry %.1f by the model)\n",
+                occ->ntested, occ->box_verts / 3, first, occ->overdraw, occ->depth);
     } else if (rc == 0) {
-        fprintf(out, "    occlusion culling: not used (%s%s; boxes over the image %.1f times, %u boxes, %llu vertices; "
-                     "auto needs %.0f, %u and %u)\n",
+        fprintf(out, "    occlusion culling: not used (%s%s; boxes over the image %.1f times, the geometry %.1f by the "
+                     "model, %u boxes, %llu vertices; auto needs %.0f, %.0f, %u and %u)\n",
                 o->occlusion == GLS_OCCLUSION_AUTO ? "auto" : "nothing to test",
-                o->occlusion == GLS_OCCLUSION_AUTO ? ", too little to gain" : "", occ->overdraw, occ->nunits,
-                (unsigned long long)occ->total_verts, GLS_OCCLUSION_MIN_OVERDRAW, GLS_OCCLUSION_MIN_UNITS,
-                GLS_OCCLUSION_MIN_VERTS);
+                o->occlusion == GLS_OCCLUSION_AUTO ? ", too little to gain" : "", occ->overdraw, occ->depth,
+                occ->nunits, (unsigned long long)occ->total_verts, GLS_OCCLUSION_MIN_OVERDRAW,
+                GLS_OCCLUSION_MIN_DEPTH, GLS_OCCLUSION_MIN_UNITS, GLS_OCCLUSION_MIN_VERTS);
     } else {
         fprintf(out, "    occlusion culling: out of memory, not used\n");
     }
@@ -394,7 +395,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     fprintf(out, "plan for %s: top object '%s', %u objects, %u textures, %u positions\n", bundle_path,
             b->objects[b->top].name, b->nobjects, b->ntextures, b->npos);
     fprintf(out, "geometry: %u unique triangles in %u chunks (cells of %g units, double anchors), %u state batches",
-            s->nverts / 3, s->nchunks, GLS_SCENE_CELL, s->nbatches);
+            s->nverts / 3, s->nchunks, ldexp(GLS_SCENE_CELL, (int)s->cell_level), s->nbatches);
     if (s->dropped)
         fprintf(out, ", %llu triangles dropped (a vertex beyond 2^50 units from the origin, or at infinity)", (unsigned long long)s->dropped);
     fprintf(out, "\n");

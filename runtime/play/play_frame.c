@@ -11,6 +11,7 @@
 #include "gt_pass.h"
 #include "lens_truth.h"
 #include "play_int.h"
+#include "progress_line.h"
 #include "sensor_image.h"
 
 /* Say why a camera frame failed.  An earlier frame's files may still be
@@ -57,6 +58,22 @@ typedef struct {
     void *img;             /* the image in its file's format, when not rgba  */
     gls_accum acc;
 } cam_frame;
+
+/* The buffers of n pixels cf's plan asks for (colour, depth, ids,
+ * normals, the truth pass's depth), counted in cnt when not NULL: the one
+ * place both the player's frame and the library's make them.  0, or -1
+ * when out of memory (cam_frame_free frees what was made). */
+static int frame_buffers(cam_frame *cf, gls_frame_counts *cnt, size_t n)
+{
+    const gls_frame_plan *fp = &cf->fp;
+    if ((fp->rgba && !(cf->rgba = frame_alloc(cnt, GLS_BUF_RGBA, n * 4))) ||
+        (fp->z && !(cf->z = frame_alloc(cnt, GLS_BUF_DEPTH, n * sizeof *cf->z))) ||
+        (fp->ids && !(cf->gt_ids = frame_alloc(cnt, GLS_BUF_IDS, n * sizeof *cf->gt_ids))) ||
+        (fp->normals && !(cf->normal = frame_alloc(cnt, GLS_BUF_NORMALS, n * 3 * sizeof *cf->normal))) ||
+        (fp->truth_z && !(cf->gt_z = frame_alloc(cnt, GLS_BUF_TRUTH_DEPTH, n * sizeof *cf->gt_z))))
+        return -1;
+    return 0;
+}
 
 static void cam_frame_free(cam_frame *cf)
 {
@@ -315,6 +332,8 @@ int play_camera(session *s, const gls_camera *c, const char *name, uint32_t fram
     gls_plan_inputs pin = {o->outputs, o->image_format, s->plan, s->moving};
     gls_frame_plan_make(&cf.fp, &pin, c, s->next != NULL);
     const gls_frame_plan *fp = &cf.fp;
+    if (s->times && !s->times->plan)
+        s->times->plan = gls_now();
     gls_frame_counts *cnt = s->counts;
     if (cnt)
         memset(cnt, 0, sizeof *cnt), cnt->frames = 1;
@@ -340,14 +359,13 @@ int play_camera(session *s, const gls_camera *c, const char *name, uint32_t fram
      * whole image when a test asks (gls_play_opts' bands_whole) */
     cf.bands.rows = fp->ex.rolling ? gls_exposure_band_rows(r, c, &fp->ex, play_pose_at, s) : c->height;
     cf.bands.whole = o->bands_whole != 0;
-    if ((fp->rgba && !(cf.rgba = frame_alloc(cnt, GLS_BUF_RGBA, n * 4))) ||
-        (fp->z && !(cf.z = frame_alloc(cnt, GLS_BUF_DEPTH, n * sizeof *cf.z))) ||
-        (fp->ids && !(cf.gt_ids = frame_alloc(cnt, GLS_BUF_IDS, n * sizeof *cf.gt_ids))) ||
-        (fp->normals && !(cf.normal = frame_alloc(cnt, GLS_BUF_NORMALS, n * 3 * sizeof *cf.normal))) ||
-        (fp->truth_z && !(cf.gt_z = frame_alloc(cnt, GLS_BUF_TRUTH_DEPTH, n * sizeof *cf.gt_z))))
+    if (frame_buffers(&cf, cnt, n))
         goto out;
-    if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)) ||
-        frame_image(s, c, name, frame, &cf) || frame_boxes_flow(s, c, frame, &cf, msg, sizeof msg) ||
+    if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)))
+        goto out;
+    if (s->times && !s->times->draw)
+        s->times->draw = gls_now(); /* drawn and read back */
+    if (frame_image(s, c, name, frame, &cf) || frame_boxes_flow(s, c, frame, &cf, msg, sizeof msg) ||
         frame_submit(s, c, name, frame, &cf, msg, sizeof msg))
         goto out;
     play_view_done(s);
@@ -385,9 +403,7 @@ int gls_play_frame(gls_renderer *r, const gls_scene *scene, const gls_aa_plan *p
     const gls_frame_plan *fp = &cf.fp;
     cf.bands.rows = c->height;
     int rc = -1;
-    if ((fp->rgba && !(cf.rgba = malloc(n * 4))) || (fp->z && !(cf.z = malloc(n * sizeof *cf.z))) ||
-        (fp->ids && !(cf.gt_ids = malloc(n * sizeof *cf.gt_ids))) ||
-        (fp->normals && !(cf.normal = malloc(n * 3 * sizeof *cf.normal))))
+    if (frame_buffers(&cf, NULL, n))
         goto out;
     if (frame_centre_truth(&s, c, &cf, msg, msglen) || (fp->aa && frame_colour(&s, c, &cf, msg, msglen)))
         goto out;

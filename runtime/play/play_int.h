@@ -22,6 +22,7 @@
 #include "exposure.h"
 #include "frame_writer.h"
 #include "out_boxes.h"
+#include "play_times.h"
 #include "gt_flow.h"
 #include "gt_table.h"
 #include "motion.h"
@@ -78,6 +79,8 @@ typedef struct {
     const char *inputs;         /* the frame records' inputs digest     */
     gls_frame_counts *counts;   /* what the last camera frame did, counted
                                    (NULL: not counted; o->counts)      */
+    gls_play_times *times;      /* --times: the marks (NULL: not asked);
+                                   the first frame marks plan and draw  */
 } session;
 
 /* What play_scan_trajectory found, before anything was created or written. */

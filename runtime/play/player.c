@@ -41,6 +41,7 @@ typedef struct {
     size_t *made;         /* per camera: what gls_mkdir_p_made made         */
     gls_progress_json json;
     int started;          /* rendering began: --progress json ends with a line */
+    gls_play_times times; /* --times: the marks                        */
 } run;
 
 /* "glsplay: error: out of memory"; 1. */
@@ -59,6 +60,7 @@ static int run_load_cameras(run *u)
     char err[1024];
     gls_error gerr;
     u->b = gls_bundle_read_file(o->bundle, &gerr);
+    u->times.load = gls_now();
     if (!u->b) {
         fprintf(errs, "glsplay: error: %s\n", gerr.msg); /* the message names the file */
         return 1;
@@ -104,6 +106,7 @@ static int run_load_scene(run *u)
         fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, err);
         return 1;
     }
+    u->times.build = gls_now(), u->times.pack = u->scene.pack_seconds;
     if (play_motion_load(o, &u->ms, errs) || (!o->trajectory && play_motion_check(&u->ms, o->frame, errs)))
         return 1;
     if (o->trajectory && gls_traj_load(o->trajectory, &u->ms.traj, err, sizeof err)) {
@@ -261,6 +264,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     run u;
     memset(&u, 0, sizeof u);
     u.o = o, u.errs = errs, u.ms.scene = &u.scene;
+    u.times.start = gls_now();
     u.cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *u.cams);
     u.names = calloc(o->ncameras ? o->ncameras : 1, sizeof *u.names);
     gls_aa_opts aao = o->aa;
@@ -287,6 +291,7 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
         fprintf(errs, "glsplay: error: %s\n", err);
         goto out;
     }
+    u.times.context = gls_now();
     if (o->explain)
         run_explain(&u, out);
     if (!o->outdir && !o->sink) {
@@ -308,18 +313,23 @@ int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if ((!o->sink && run_make_dirs(&u)) || run_start(&u))
         goto out;
+    u.times.upload = gls_now();
     u.json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
     u.json.cameras = o->ncameras;
     u.json.t0 = gls_now();
     session ses = {o,          &u.ms,   &u.scene,       &u.plan, u.r,  u.wr,    &u.json,     errs,
                    o->ncameras, 0,      u.json.t0,      0,       u.baseline, &u.gt, NULL,     NULL,
-                   &u.moves,   &u.box_names, o->frame,  NULL,    u.ms.moving, NULL, inputs,   o->counts};
+                   &u.moves,   &u.box_names, o->frame,  NULL,    u.ms.moving, NULL, inputs,   o->counts,
+                   o->times ? &u.times : NULL};
     u.started = 1;
     rc = o->trajectory ? play_trajectory(&ses, u.cams, (const char *const *)u.names, &scan) : run_single(&u, &ses);
     if (rc == 0 && gls_writer_finish(u.wr, err, sizeof err)) {
         fprintf(errs, "%s\n", err);
         rc = 1;
     }
+    u.times.write = gls_now();
+    if (rc == 0 && o->times)
+        gls_play_times_print(errs, &u.times);
     /* after the render and its files: every frame in the range was read
      * and checked */
     if (rc == 0 && o->write_calib && !o->sink)

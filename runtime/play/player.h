@@ -30,6 +30,8 @@ typedef struct {
     unsigned outputs;            /* GLS_OUT_* bits                       */
     uint32_t width, height;      /* --size override, 0 = the camera's    */
     int explain;                 /* print the plan first                 */
+    int times;                   /* --times: the run's time line on
+                                    stderr at its end (play_times.c)    */
     uint32_t frame;              /* frame number in the file names, when
                                     there is no trajectory              */
     const char *trajectory;      /* NULL, or a trajectory file: render

@@ -115,7 +115,7 @@ static void make_units(gls_occlusion *o, const gls_scene *s)
                 o->phi[3 * u + j] = fmax(o->phi[3 * u + j], ch->hi[j]);
             }
         } else {
-            o->unit_first[u] = k, o->unit_n[u] = 1, o->unit_verts[u] = 0;
+            o->unit_first[u] = k, o->unit_n[u] = 1, o->unit_verts[u] = 0, o->unit_area[u] = 0;
             memcpy(o->lo + 3 * u, it->lo, sizeof it->lo);
             memcpy(o->hi + 3 * u, it->hi, sizeof it->hi);
             memcpy(o->plo + 3 * u, ch->lo, sizeof ch->lo);
@@ -123,23 +123,42 @@ static void make_units(gls_occlusion *o, const gls_scene *s)
             o->nunits++;
         }
         o->unit_verts[u] += ch->count;
+        double sc = s->inst[it->inst].scale;
+        o->unit_area[u] += (double)ch->area * sc * sc;
     }
 }
 
 /* The units' boxes' projected areas (bounding rectangles within the
- * image) over the image's: an upper bound on how often a pixel is drawn
- * over, and so on what occlusion can save. */
-static double overdraw(const gls_occlusion *o, const gls_camera *c)
+ * image) over the image's (o->overdraw): an upper bound on how often a
+ * pixel is drawn over, and so on what occlusion can save.  And the
+ * model of the geometry's own depth complexity (o->depth): each unit's
+ * triangles' area (under its instance's scale, squared) seen at the
+ * camera depth of its box's centre, facing the camera at a random
+ * angle (half the area on average), at most its box's projected area;
+ * summed over the image's.  Boxes that are mostly empty (scattered
+ * triangles, sparse ribs) cover the image many times over while the
+ * geometry covers it about once: then the first units drawn hide
+ * nothing, whatever the boxes' overlap (occlusion.h). */
+static void overdraw(gls_occlusion *o, const gls_camera *c)
 {
-    double area = 0, W = c->width, H = c->height;
+    double area = 0, geo = 0, W = c->width, H = c->height;
     for (uint32_t u = 0; u < o->nunits; u++) {
         double b[4];
         gls_box_image_bounds(c, o->lo + 3 * u, o->hi + 3 * u, b);
         double w = fmin(b[2], W) - fmax(b[0], 0), h = fmin(b[3], H) - fmax(b[1], 0);
-        if (w > 0 && h > 0)
-            area += w * h;
+        if (!(w > 0 && h > 0))
+            continue;
+        area += w * h;
+        double m[3], z = c->T[2];
+        for (int j = 0; j < 3; j++)
+            m[j] = 0.5 * (o->lo[3 * u + j] + o->hi[3 * u + j]);
+        for (int j = 0; j < 3; j++)
+            z += c->R[6 + j] * m[j];
+        double g = z > c->near ? 0.5 * o->unit_area[u] * c->fx * c->fy / (z * z) : INFINITY;
+        geo += fmin(g, w * h);
     }
-    return area / (W * H);
+    o->overdraw = area / (W * H);
+    o->depth = geo / (W * H);
 }
 
 static int grow(gls_occlusion *o, uint32_t n)
@@ -147,9 +166,10 @@ static int grow(gls_occlusion *o, uint32_t n)
     if (o->cap >= n)
         return 0;
     free(o->occluder), free(o->tested), free(o->key), free(o->items);
-    free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
+    free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->unit_area), free(o->lo), free(o->hi);
     free(o->plo), free(o->phi), free(o->box_first), free(o->box_n), free(o->utested);
     o->occluder = malloc(n);
+    o->unit_area = malloc(n * sizeof *o->unit_area);
     o->utested = malloc(n);
     o->box_first = malloc(n * sizeof *o->box_first);
     o->box_n = malloc(n * sizeof *o->box_n);
@@ -165,7 +185,7 @@ static int grow(gls_occlusion *o, uint32_t n)
     o->phi = malloc(3 * n * sizeof *o->phi);
     o->cap = n;
     if (!o->occluder || !o->tested || !o->key || !o->items || !o->unit_first || !o->unit_n ||
-        !o->unit_verts || !o->lo || !o->hi || !o->plo || !o->phi || !o->box_first || !o->box_n || !o->utested) {
+        !o->unit_verts || !o->unit_area || !o->lo || !o->hi || !o->plo || !o->phi || !o->box_first || !o->box_n || !o->utested) {
         o->cap = 0;
         return -1;
     }
@@ -237,7 +257,7 @@ static void mark_unit(const gls_occlusion *o, uint32_t u, uint8_t *m)
 int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scene *s, const gls_camera *c,
                        const double C[3], const uint8_t *vis)
 {
-    o->ntested = 0, o->nunits = 0, o->nitems_in = 0, o->overdraw = 0, o->total_verts = 0;
+    o->ntested = 0, o->nunits = 0, o->nitems_in = 0, o->overdraw = 0, o->depth = 0, o->total_verts = 0;
     if (grow(o, s->nitems ? s->nitems : 1))
         return -1;
     /* the drawing order: the kept items by the distance from C to their
@@ -263,9 +283,10 @@ int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scen
     o->total_verts = total;
     if (mode == GLS_OCCLUSION_OFF || n < 2)
         return 0;
-    o->overdraw = overdraw(o, c);
+    overdraw(o, c);
     if (mode == GLS_OCCLUSION_AUTO &&
-        (total < GLS_OCCLUSION_MIN_VERTS || n < GLS_OCCLUSION_MIN_UNITS || o->overdraw < GLS_OCCLUSION_MIN_OVERDRAW))
+        (total < GLS_OCCLUSION_MIN_VERTS || n < GLS_OCCLUSION_MIN_UNITS || o->overdraw < GLS_OCCLUSION_MIN_OVERDRAW ||
+         o->depth < GLS_OCCLUSION_MIN_DEPTH))
         return 0;
     /* the nearest units, at least one, up to the share of the vertices:
      * drawn untested, first */
@@ -320,7 +341,7 @@ int gls_occlusion_plan(gls_occlusion *o, gls_occlusion_mode mode, const gls_scen
 void gls_occlusion_free(gls_occlusion *o)
 {
     free(o->occluder), free(o->tested), free(o->key), free(o->boxes), free(o->items);
-    free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->lo), free(o->hi);
+    free(o->unit_first), free(o->unit_n), free(o->unit_verts), free(o->unit_area), free(o->lo), free(o->hi);
     free(o->plo), free(o->phi), free(o->box_first), free(o->box_n), free(o->utested);
     memset(o, 0, sizeof *o);
 }

@@ -16,7 +16,9 @@
  * Why chunks: GL works in float.  A vertex 1e7 units from the origin has a
  * float spacing of 1 unit, so coordinates cannot go to GL as they are.
  * Each chunk holds the triangles of one GLS_SCENE_CELL-sized cube of its
- * proto's space; its anchor is the cube's centre, so offsets stay below
+ * proto's space (a cube 2^cell_level times as large when the triangles
+ * are so scattered that more than GLS_SCENE_CHUNK_BUDGET chunks would
+ * draw them); its anchor is the cube's centre, so offsets stay below
  * about one cell (float error <= 2^-24 * offset).  Per frame the renderer
  * forms each drawn (instance, chunk) item's modelview in double,
  * camera-relative (camera.h: R * (W * anchor) + T, the large terms
@@ -24,7 +26,8 @@
  * closer to the camera than their size are re-anchored at the camera
  * centre each frame (render.c).  Anchors are multiples of the cell size
  * plus half a cell, so translating a whole scene (and its camera) by a
- * multiple of the cell size changes no float that GL sees.
+ * multiple of the cell size (GLS_SCENE_CELL * 2^cell_level) changes no
+ * float that GL sees.
  */
 #ifndef GLS_SCENE_H
 #define GLS_SCENE_H
@@ -36,6 +39,13 @@
 /* Edge of a chunk cell in scene units: a power of two, so anchors and
  * cell indices are exact in binary floating point. */
 #define GLS_SCENE_CELL 64.0
+/* Chunks a scene's protos make at most, where their protos and drawing
+ * states allow (scene_pack.h gls_pack_sort): past it, cells grow by
+ * powers of two.  A scene drawn as one instance draws at most this many
+ * items a frame; instances multiply their protos' chunks, and are culled
+ * whole first (scene_cull.c).  4,096: issue 30's budget of a few thousand
+ * draws a frame. */
+#define GLS_SCENE_CHUNK_BUDGET 4096u
 /* Sub-cells per axis of a cell, for the drawing order within it
  * (scene_build.c cell_zorder): 10 bits per axis, a 30-bit Morton code. */
 #define GLS_SCENE_SUBCELLS 1024.0
@@ -58,6 +68,10 @@ typedef struct {
     double maxoff;         /* largest |vertex - anchor| (any axis)        */
     gls_drawkey key;
     uint32_t first, count; /* vertex range in gls_scene.verts             */
+    float area;            /* its triangles' area, summed, in the proto's
+                              frame: occlusion culling's model of how much
+                              of the image the chunk covers (occlusion.c);
+                              a float, in the struct's padding            */
 } gls_chunk;
 
 /* A box in a proto's frame (scene_test_boxes.c). */
@@ -178,6 +192,8 @@ typedef struct {
                               frame, for re-anchoring near the camera     */
     uint32_t nverts;
     gls_chunk *chunks;     /* per proto, sorted by key, then cell        */
+    unsigned cell_level;   /* the chunks' cells are GLS_SCENE_CELL *
+                              2^cell_level units (scene_pack.h)           */
     uint32_t nchunks;
     uint32_t nbatches;     /* distinct draw keys                          */
     gls_proto *protos;
@@ -195,6 +211,9 @@ typedef struct {
     uint32_t nmarknames;
     int moving;            /* some instance has a motion (gls_scene_move)  */
     uint64_t dropped;      /* triangles with a vertex at infinity (w = 0) */
+    double pack_seconds;   /* the packing's time (scene_pack.h: sort,
+                              chunks, test boxes, items), for glsplay
+                              --times; never in an output              */
     int no_cull;           /* 1: gls_scene_cull marks everything visible:
                               only for measuring what culling saves
                               (bench/instances_bench --no-cull); 0 after

@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "buf.h"
+#include "progress_line.h"
 #include "scene.h"
 #include "scene_marks.h"
 #include "scene_pack.h"
@@ -167,7 +168,7 @@ static int grow_tris(walker *w, size_t need)
 {
     if (w->ntri + need <= w->tcap)
         return 0;
-    /* four arrays of one capacity: grown by the largest element's rule */
+    /* arrays of one capacity: grown by the largest element's rule */
     size_t cap = gls_grow_cap(w->tcap, w->ntri + need, 9 * sizeof *w->wpos);
     tri *t = cap ? gls_resize(w->tris, cap, sizeof *t) : NULL;
     if (t)
@@ -175,14 +176,24 @@ static int grow_tris(walker *w, size_t need)
     double *p = cap ? gls_resize(w->wpos, cap, 9 * sizeof *p) : NULL;
     if (p)
         w->wpos = p;
-    uint8_t *c = cap ? gls_resize(w->wcol, cap, 12) : NULL;
-    if (c)
-        w->wcol = c;
-    float *x = cap ? gls_resize(w->wtc, cap, 6 * sizeof *x) : NULL;
-    if (x)
-        w->wtc = x;
-    if (!t || !p || !c || !x)
+    if (!t || !p)
         return -1;
+    /* colours and texture coordinates only where the vertices carry
+     * them (vertex_layout): otherwise nothing reads them, and a scattered
+     * scene of 100,000 untextured triangles wrote 2.4 MB of texture
+     * coordinates that were never read (issue 30's page faults) */
+    if (w->has_color) {
+        uint8_t *c = gls_resize(w->wcol, cap, 12);
+        if (!c)
+            return -1;
+        w->wcol = c;
+    }
+    if (w->has_texcoord) {
+        float *x = gls_resize(w->wtc, cap, 6 * sizeof *x);
+        if (!x)
+            return -1;
+        w->wtc = x;
+    }
     if (w->lit) { /* normals and specular state only where they are used */
         float *n = gls_resize(w->wnrm, cap, 9 * sizeof *n);
         if (n)
@@ -318,8 +329,10 @@ static void emit(walker *w, uint32_t proto, const gls_drawkey *key, const state 
     t->zorder = cell_zorder(a->p, t->cell);
     for (int k = 0; k < 3; k++) {
         memcpy(w->wpos + 9 * i + 3 * k, v[k]->p, 3 * sizeof(double));
-        memcpy(w->wcol + 12 * i + 4 * k, v[k]->c, 4);
-        memcpy(w->wtc + 6 * i + 2 * k, v[k]->st, 2 * sizeof(float));
+        if (w->has_color)
+            memcpy(w->wcol + 12 * i + 4 * k, v[k]->c, 4);
+        if (w->has_texcoord)
+            memcpy(w->wtc + 6 * i + 2 * k, v[k]->st, 2 * sizeof(float));
     }
     if (w->lit) {
         tri_normals(in, v, w->wnrm + 9 * i);
@@ -872,7 +885,8 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         snprintf(err, errlen, "%s", w.limit ? w.limit : "out of memory while building the scene");
         goto out;
     }
-    gls_pack_sort(w.tris, w.ntri);
+    double t_pack = gls_now();
+    s->cell_level = gls_pack_sort(w.tris, w.ntri, GLS_SCENE_CHUNK_BUDGET);
 
     s->features = b->features;
     vertex_layout(&w, s);
@@ -887,6 +901,7 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
         made = gls_scene_test_boxes(s);
     if (!made)
         made = gls_pack_items(s);
+    s->pack_seconds = gls_now() - t_pack;
     if (!made)
         made = gls_markwalk_finish(&w.marks, s);
     if (made) {

@@ -14,6 +14,17 @@ static int key_cmp(const gls_drawkey *a, const gls_drawkey *b)
     return memcmp(a->rgba, b->rgba, 4);
 }
 
+/* Cell c's index among cells 2^level times as large: floor(c / 2^level)
+ * (a right shift of a negative number is the implementation's choice). */
+static int64_t coarse(int64_t c, unsigned level)
+{
+    return c >= 0 ? c >> level : -((-(c + 1)) >> level) - 1;
+}
+
+/* The drawing order: proto, key, cell of the chosen size (sort_level),
+ * then the GLS_SCENE_CELL cell within it, Morton order in that, emission
+ * order.  At level 0 the two cells are one. */
+static unsigned sort_level;
 static int tri_cmp(const void *pa, const void *pb)
 {
     const gls_pack_tri *a = pa, *b = pb;
@@ -22,6 +33,11 @@ static int tri_cmp(const void *pa, const void *pb)
     int k = key_cmp(&a->key, &b->key);
     if (k)
         return k;
+    for (int j = 0; sort_level && j < 3; j++) {
+        int64_t ca = coarse(a->cell[j], sort_level), cb = coarse(b->cell[j], sort_level);
+        if (ca != cb)
+            return ca < cb ? -1 : 1;
+    }
     for (int j = 0; j < 3; j++)
         if (a->cell[j] != b->cell[j])
             return a->cell[j] < b->cell[j] ? -1 : 1;
@@ -43,8 +59,28 @@ static int item_cmp(const void *pa, const void *pb)
     return a->chunk < b->chunk ? -1 : a->chunk > b->chunk;
 }
 
+/* Area of the triangle of corners p[0..2], p[3..5], p[6..8]. */
+static double tri_area(const double *p)
+{
+    double e1[3], e2[3];
+    for (int j = 0; j < 3; j++)
+        e1[j] = p[3 + j] - p[j], e2[j] = p[6 + j] - p[j];
+    double x = e1[1] * e2[2] - e1[2] * e2[1], y = e1[2] * e2[0] - e1[0] * e2[2], z = e1[0] * e2[1] - e1[1] * e2[0];
+    return 0.5 * sqrt(x * x + y * y + z * z);
+}
+
+/* Are a and b in one cell of level `level`? */
+static int same_cell(const gls_pack_tri *a, const gls_pack_tri *b, unsigned level)
+{
+    for (int j = 0; j < 3; j++)
+        if (coarse(a->cell[j], level) != coarse(b->cell[j], level))
+            return 0;
+    return 1;
+}
+
 int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
 {
+    double cell = ldexp(GLS_SCENE_CELL, (int)s->cell_level);
     s->verts = malloc(w->ntri ? w->ntri * 3 * s->stride : 1);
     s->chunks = malloc((w->ntri ? w->ntri : 1) * sizeof *s->chunks);
     s->exact = malloc((w->ntri ? w->ntri : 1) * 9 * sizeof *s->exact);
@@ -60,7 +96,7 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
         const gls_pack_tri *t = &w->tris[i];
         gls_proto *pr = &s->protos[t->proto];
         int new_proto = i == 0 || w->tris[i - 1].proto != t->proto;
-        if (!ch || new_proto || key_cmp(&ch->key, &t->key) || memcmp(w->tris[i - 1].cell, t->cell, sizeof t->cell)) {
+        if (!ch || new_proto || key_cmp(&ch->key, &t->key) || !same_cell(&w->tris[i - 1], t, s->cell_level)) {
             if (new_proto)
                 pr->first_chunk = s->nchunks;
             pr->nchunks++;
@@ -69,8 +105,9 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             ch->first = (uint32_t)(i * 3);
             ch->count = 0;
             ch->maxoff = 0;
+            ch->area = 0;
             for (int j = 0; j < 3; j++) {
-                ch->anchor[j] = ((double)t->cell[j] + 0.5) * GLS_SCENE_CELL;
+                ch->anchor[j] = ((double)coarse(t->cell[j], s->cell_level) + 0.5) * cell;
                 ch->lo[j] = INFINITY, ch->hi[j] = -INFINITY;
             }
         }
@@ -82,11 +119,16 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             memcpy(s->exact + (i * 3 + (size_t)k) * 3, p, 3 * sizeof *p);
             for (int j = 0; j < 3; j++) {
                 off[j] = (float)(p[j] - ch->anchor[j]);
-                if (fabs(p[j] - ch->anchor[j]) > ch->maxoff)
-                    ch->maxoff = fabs(p[j] - ch->anchor[j]);
-                ch->lo[j] = fmin(ch->lo[j], p[j]), ch->hi[j] = fmax(ch->hi[j], p[j]);
-                pr->lo[j] = fmin(pr->lo[j], p[j]), pr->hi[j] = fmax(pr->hi[j], p[j]);
-                s->lo[j] = fmin(s->lo[j], p[j]), s->hi[j] = fmax(s->hi[j], p[j]);
+                double d = fabs(p[j] - ch->anchor[j]);
+                if (d > ch->maxoff)
+                    ch->maxoff = d;
+                /* positions are finite (the walk drops the rest): plain
+                 * comparisons, not fmin's calls; the protos' and the
+                 * scene's boxes are the chunks', merged below */
+                if (p[j] < ch->lo[j])
+                    ch->lo[j] = p[j];
+                if (p[j] > ch->hi[j])
+                    ch->hi[j] = p[j];
             }
             memcpy(v, off, sizeof off);
             if (s->has_color)
@@ -99,6 +141,15 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             }
         }
         ch->count += 3;
+        ch->area += (float)tri_area(w->wpos + 9 * (size_t)t->idx);
+    }
+    for (size_t p = 0; p < s->nprotos; p++) {
+        gls_proto *pr = &s->protos[p];
+        for (uint32_t k = pr->first_chunk; k < pr->first_chunk + pr->nchunks; k++)
+            for (int j = 0; j < 3; j++) {
+                pr->lo[j] = fmin(pr->lo[j], s->chunks[k].lo[j]), pr->hi[j] = fmax(pr->hi[j], s->chunks[k].hi[j]);
+                s->lo[j] = fmin(s->lo[j], s->chunks[k].lo[j]), s->hi[j] = fmax(s->hi[j], s->chunks[k].hi[j]);
+            }
     }
     return 0;
 }
@@ -135,8 +186,103 @@ int gls_pack_items(gls_scene *s)
     return 0;
 }
 
-void gls_pack_sort(gls_pack_tri *t, size_t n)
+/* Sort t into the drawing order of level `level`. */
+static void sort_level_order(gls_pack_tri *t, size_t n, unsigned level)
 {
+    sort_level = level;
     if (n) /* qsort(NULL, 0) is undefined */
         qsort(t, n, sizeof *t, tri_cmp);
+}
+
+/* Do a and b fall in one chunk at level `level`? */
+static int same_chunk(const gls_pack_tri *a, const gls_pack_tri *b, unsigned level)
+{
+    return a->proto == b->proto && !key_cmp(&a->key, &b->key) && same_cell(a, b, level);
+}
+
+static uint64_t mix(uint64_t h, uint64_t v)
+{
+    h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    return h * 0xff51afd7ed558ccdull;
+}
+
+/* How many chunks t (in any order) makes at level `level`, counted up to
+ * cap + 1 (a count above cap is cap + 1): its distinct (proto, key, cell)
+ * triples, in a hash table of slots (UINT32_MAX: empty) rather than by
+ * sorting, so that trying a level costs one pass, and only as large as
+ * the count it can reach (a scene of millions of triangles within the
+ * budget needs a table of twice the budget, not of its triangles).  -1
+ * when out of memory. */
+static long long count_level(const gls_pack_tri *t, size_t n, unsigned level, size_t cap)
+{
+    if (cap > n)
+        cap = n; /* there are at most n */
+    size_t nslots = 2;
+    while (nslots < 2 * (cap + 1))
+        nslots *= 2;
+    uint32_t *slot = malloc(nslots * sizeof *slot);
+    if (!slot)
+        return -1;
+    memset(slot, 0xff, nslots * sizeof *slot);
+    size_t distinct = 0;
+    for (size_t i = 0; i < n && distinct <= cap; i++) {
+        const gls_pack_tri *a = &t[i];
+        uint64_t h = mix(mix(a->proto, a->key.texture), (uint64_t)a->key.mode << 32 | (uint64_t)a->key.rgba[0] << 24 |
+                                                          (uint64_t)a->key.rgba[1] << 16 | (uint64_t)a->key.rgba[2] << 8 |
+                                                          a->key.rgba[3]);
+        for (int j = 0; j < 3; j++)
+            h = mix(h, (uint64_t)coarse(a->cell[j], level));
+        size_t k = (size_t)(h >> 20) & (nslots - 1);
+        while (slot[k] != UINT32_MAX && !same_chunk(&t[slot[k]], a, level))
+            k = (k + 1) & (nslots - 1);
+        if (slot[k] == UINT32_MAX)
+            slot[k] = (uint32_t)i, distinct++;
+    }
+    free(slot);
+    return (long long)distinct;
+}
+
+unsigned gls_pack_sort(gls_pack_tri *t, size_t n, size_t budget)
+{
+    /* the common case: within the budget at GLS_SCENE_CELL, one sort (a
+     * pass counting at most budget + 1 chunks decides it; n <= budget
+     * needs none).  n is below 2^28 (GLS_SCENE_MAX_VERTS / 3): indices
+     * fit 32 bits */
+    long long at0 = n <= budget ? 0 : count_level(t, n, 0, budget);
+    if (at0 < 0 || (size_t)at0 <= budget) { /* out of memory: as sorted */
+        sort_level_order(t, n, 0);
+        return 0;
+    }
+    /* The count falls (or stays) as the level rises, each cell the union
+     * of eight of the level below; at the top level the box of every
+     * vertex (GLS_SCENE_MAX_COORD) spans two cells an axis, so its count
+     * is the least there is: at most eight a proto and key.  Aim for the
+     * budget, or that least count where the protos and keys alone exceed
+     * it; the smallest level that reaches the aim, by bisection, each try
+     * a pass; then one sort, in that level's order.  Out of memory: cells
+     * of GLS_SCENE_CELL. */
+    long long least = count_level(t, n, GLS_PACK_MAX_LEVEL, budget);
+    if (least > (long long)budget)
+        least = count_level(t, n, GLS_PACK_MAX_LEVEL, n);
+    unsigned lo = 0, hi = GLS_PACK_MAX_LEVEL; /* count(lo) > aim >= count(hi) */
+    size_t aim = least > (long long)budget ? (size_t)least : budget;
+    if (least > (long long)budget) { /* level 0 may reach that aim */
+        long long c = count_level(t, n, 0, aim);
+        if (c >= 0 && (size_t)c <= aim)
+            least = -1; /* then level 0: no bisection */
+    }
+    while (least >= 0 && hi - lo > 1) { /* least < 0: level 0 */
+        unsigned mid = (lo + hi) / 2;
+        long long c = count_level(t, n, mid, aim);
+        if (c < 0)
+            least = -1;
+        else if ((size_t)c <= aim)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    if (least < 0)
+        hi = 0;
+    sort_level_order(t, n, hi);
+    return hi;
 }

@@ -32,12 +32,26 @@ typedef struct {
     const float *wtc, *wnrm, *wspec;
 } gls_pack_input;
 
-/* Sort triangles into drawing order: proto, key, cell, Morton order in
- * the cell, emission order. */
-void gls_pack_sort(gls_pack_tri *t, size_t n);
+/* The largest cell level: cells of GLS_SCENE_CELL * 2^45 = 2^51 units,
+ * so that every vertex within GLS_SCENE_MAX_COORD (2^50) of the origin is
+ * in one of the two cells of each axis around it. */
+#define GLS_PACK_MAX_LEVEL 45u
+
+/* Sort triangles into drawing order and choose the size of the chunks'
+ * cells: GLS_SCENE_CELL * 2^level, the smallest such that the triangles
+ * make at most `budget` chunks (runs of one proto, key and cell), or, when
+ * their protos and keys alone make more, as few as any level makes.  The
+ * order: proto, key, cell of that size, the GLS_SCENE_CELL cell within it,
+ * Morton order in that, emission order.  Returns the level: 0 whenever the
+ * GLS_SCENE_CELL cells are within the budget (then one sort, and the
+ * order and chunks are those of cells of GLS_SCENE_CELL).  Why a count:
+ * scattered triangles (a particle field, a terrain over kilometres, the
+ * random bench scene) fill one cell each, a draw each; the budget bounds
+ * the draws, whatever the distribution. */
+unsigned gls_pack_sort(gls_pack_tri *t, size_t n, size_t budget);
 /* Chunks, vertices and the protos' and scene's boxes from the sorted
- * triangles (s's layout, protos and instances set).  0, or -1 when out of
- * memory. */
+ * triangles (s's layout, protos and instances set, s->cell_level the level
+ * gls_pack_sort chose).  0, or -1 when out of memory. */
 int gls_pack_chunks(const gls_pack_input *w, gls_scene *s);
 /* Items of every instance with geometry, sorted into drawing order.  0,
  * -1 when out of memory, -2 when there would be more than

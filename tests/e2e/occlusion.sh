@@ -64,9 +64,9 @@ fi
 "$B/glsplay" "$t/o.glsb" --camera "$CAM" --occlusion off --explain >"$t/off.txt" 2>&1
 "$B/glsc" -I examples/demo -I "$B/textures" -o "$t/demo.glsb" examples/demo/Demo.scene &&
     "$B/glsplay" "$t/demo.glsb" --camera "$CAM" --explain >"$t/auto.txt" 2>&1
-if grep -q '^    occlusion culling: [0-9]* units tested in occlusion queries ([0-9]* triangles of their test boxes'"'"' front faces), nearest first, after [0-9]* draw items drawn untested (boxes over the image [0-9.]* times)$' "$t/on.txt" &&
+if grep -q '^    occlusion culling: [0-9]* units tested in occlusion queries ([0-9]* triangles of their test boxes'"'"' front faces), nearest first, after [0-9]* draw items drawn untested (boxes over the image [0-9.]* times, the geometry [0-9.]* by the model)$' "$t/on.txt" &&
     grep -qx '    occlusion culling: off (--occlusion off)' "$t/off.txt" &&
-    grep -q '^    occlusion culling: not used (auto, too little to gain; boxes over the image [0-9.]* times, [0-9]* boxes, [0-9]* vertices; auto needs 4, 256 and 200000)$' "$t/auto.txt"; then
+    grep -q '^    occlusion culling: not used (auto, too little to gain; boxes over the image [0-9.]* times, the geometry [0-9.]* by the model, [0-9]* boxes, [0-9]* vertices; auto needs 4, 2, 256 and 200000)$' "$t/auto.txt"; then
     ok occlusion_explain
 else
     fail occlusion_explain "$(grep 'occlusion' "$t/on.txt" "$t/off.txt" "$t/auto.txt" | head -c 600)"

@@ -481,6 +481,127 @@ static void test_tie_order(void)
     gls_bundle_free(b);
 }
 
+/* Occlusion culling's decision under AUTO (occlusion.h
+ * GLS_OCCLUSION_MIN_DEPTH): scene s seen by c, the plan under AUTO and
+ * ON, and what ON hides when drawn; the plan's figures in *o. */
+static int decide(const gls_bundle *b, gls_scene *s, const gls_camera *c, gls_occlusion *o, int *on,
+                  uint32_t *hidden)
+{
+    char err[256];
+    double C[3];
+    gls_camera_centre(c, C);
+    int aut = gls_occlusion_plan(o, GLS_OCCLUSION_AUTO, s, c, C, NULL);
+    *on = gls_occlusion_plan(o, GLS_OCCLUSION_ON, s, c, C, NULL);
+    gls_occlusion_plan(o, GLS_OCCLUSION_AUTO, s, c, C, NULL);
+    *hidden = 0;
+    gls_renderer *r = gls_renderer_create(ctx, b, s, err, sizeof err);
+    if (r && gls_renderer_set_size(r, c->width, c->height, err, sizeof err) == 0) {
+        gls_renderer_set_occlusion(r, GLS_OCCLUSION_ON);
+        gls_render_pass(r, c, 0, 0);
+        *hidden = gls_render_occluded(r);
+    }
+    gls_renderer_destroy(r);
+    return aut;
+}
+
+/* Where occlusion cannot help: 100,000 small triangles scattered over
+ * four clouds 2,500 units across (each a proto of ~1,000 chunks, 4,000
+ * draw items), seen from outside.  The boxes overlap (over the image
+ * several times), there are hundreds of units and 300,000 vertices: the
+ * rule before issue 30 tested them.  But the triangles cover the image
+ * a fraction of once, so nothing drawn first hides a box: AUTO must not
+ * test, and testing (ON) hides almost nothing. */
+static void test_auto_scattered(void)
+{
+    tb t;
+    tb_init(&t);
+    uint32_t cl = tb_object(&t, "cloud", 0);
+    uint64_t x = 12345;
+    for (int k = 0; k < 25000; k++) {
+        double p[3];
+        for (int j = 0; j < 3; j++) {
+            x = x * 6364136223846793005ull + 1442695040888963407ull;
+            p[j] = (double)(x >> 40) / (double)(1 << 24) * 2500 - 1250;
+        }
+        tb_color(&t, (k % 7) / 6.0, (k % 5) / 4.0, (k % 3) / 2.0, 1);
+        double tri[3][3] = {{p[0], p[1], p[2]}, {p[0] + 18, p[1] + 3, p[2]}, {p[0] + 4, p[1] + 17, p[2] + 6}};
+        tb_poly(&t, 3, tri);
+    }
+    tb_object(&t, "top", 1);
+    for (int k = 0; k < 4; k++) {
+        tb_op0(&t, GLS_OP_PUSH);
+        tb_trans(&t, k & 1 ? 1300 : -1300, k & 2 ? 1300 : -1300, 4250);
+        tb_call(&t, cl);
+        tb_op0(&t, GLS_OP_POP);
+    }
+    gls_bundle *b = tb_finish(&t);
+    static const double I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    double T0[3] = {0, 0, 0};
+    gls_camera c = tb_camera(320, 240, 200, 200, 159.5, 119.5, 0, I3, T0, 0.5, 100000);
+    gls_scene s;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    gls_occlusion o;
+    memset(&o, 0, sizeof o);
+    int on;
+    uint32_t hidden;
+    int aut = decide(b, &s, &c, &o, &on, &hidden);
+    printf("  scattered: %u items, %u units, %llu vertices, boxes over the image %.1f times, geometry's depth %.2f; "
+           "auto %d; on hides %u\n",
+           s.nitems, o.nunits, (unsigned long long)o.total_verts, o.overdraw, o.depth, aut, hidden);
+    /* the rule before: it would have tested */
+    CHECK(o.overdraw >= GLS_OCCLUSION_MIN_OVERDRAW && o.nunits >= GLS_OCCLUSION_MIN_UNITS &&
+          o.total_verts >= GLS_OCCLUSION_MIN_VERTS);
+    CHECK(on == 1 && hidden < s.nitems / 50);
+    CHECK(o.depth < GLS_OCCLUSION_MIN_DEPTH);
+    CHECK(aut == 0);
+    gls_occlusion_free(&o);
+    gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
+/* Where it helps: a wall in front of a forest of 900 trees (30 x 30):
+ * AUTO tests, and the tests hide most of the items. */
+static void test_auto_wall_forest(void)
+{
+    tb t;
+    tb_init(&t);
+    uint32_t tr = tb_object(&t, "fir", 0);
+    tree(&t);
+    tb_object(&t, "top", 1);
+    tb_color(&t, 0.5, 0.5, 0.5, 1);
+    double wall[4][3] = {{-30, -30, 10}, {30, -30, 10}, {30, 30, 10}, {-30, 30, 10}};
+    tb_poly(&t, 4, wall);
+    for (int i = 0; i < 30; i++)
+        for (int j = 0; j < 30; j++) {
+            tb_color(&t, 0.1, 0.3 + 0.02 * i, 0.1 + 0.02 * j, 1);
+            tb_op0(&t, GLS_OP_PUSH);
+            tb_trans(&t, 6.0 * (i - 15), -4, 20 + 6.0 * j);
+            tb_call(&t, tr);
+            tb_op0(&t, GLS_OP_POP);
+        }
+    gls_bundle *b = tb_finish(&t);
+    static const double I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    double T0[3] = {0, 0, 0};
+    gls_camera c = tb_camera(320, 240, 200, 200, 159.5, 119.5, 0, I3, T0, 0.5, 1000);
+    gls_scene s;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    gls_occlusion o;
+    memset(&o, 0, sizeof o);
+    int on;
+    uint32_t hidden;
+    int aut = decide(b, &s, &c, &o, &on, &hidden);
+    printf("  wall and forest: %u items, %u units, %llu vertices, boxes over the image %.1f times, geometry's depth "
+           "%.2f; auto %d; on hides %u\n",
+           s.nitems, o.nunits, (unsigned long long)o.total_verts, o.overdraw, o.depth, aut, hidden);
+    CHECK(o.depth >= GLS_OCCLUSION_MIN_DEPTH);
+    CHECK(aut == 1 && hidden > s.nitems / 2);
+    gls_occlusion_free(&o);
+    gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
 int main(void)
 {
     RUN(test_box_margin);
@@ -489,6 +610,8 @@ int main(void)
     ctx = tb_glctx(GLS_BACKEND_AUTO, "occlusion");
     RUN(test_same_image);
     RUN(test_tie_order);
+    RUN(test_auto_scattered);
+    RUN(test_auto_wall_forest);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
 }
