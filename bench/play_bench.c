@@ -11,7 +11,8 @@
  *                                   camera path), for make bench-backends
  *        play_bench --write-cloud DIR  write issue 30's scattered scene
  *                                   (cloud_scene.h): DIR/cloud.glsb and
- *                                   DIR/cam_00.cam .. cam_19.cam */
+ *                                   DIR/cam_00.cam .. cam_19.cam, and
+ *                                   DIR/cloud.pov (POV-Ray, camera 0) */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +20,43 @@
 #include "player_scene.h"
 #include "play_bundle.h"
 #include "cloud_scene.h"
+
+/* The same triangles for POV-Ray 3.7 (make bench-play's comparison):
+ * DIR/cloud.pov, seen by camera 0.  The vertices are taken into that
+ * camera's frame (x right, y down, z forward) and y is turned up, which
+ * is POV-Ray's left-handed camera at the origin looking along +z: up 1 is
+ * the image's height, right W/H its width, direction fy/H.  One mesh2,
+ * POV-Ray's fastest form, and each triangle one flat colour (its first
+ * corner's; glsplay interpolates three): the cheaper case for POV-Ray. */
+static int write_cloud_pov(const char *dir, const double *p, const float *rgb)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/cloud.pov", dir);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    gls_camera c = cl_camera(0);
+    fprintf(f, "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\nbackground { rgb 0 }\n");
+    fprintf(f, "camera { perspective location <0, 0, 0> up <0, 1, 0> right <%.17g, 0, 0> direction <0, 0, %.17g> }\n",
+            (double)c.width / c.height, c.fy / c.height);
+    fprintf(f, "mesh2 {\n vertex_vectors { %d", 3 * CL_NTRI);
+    for (int k = 0; k < 3 * CL_NTRI; k++) {
+        const double *x = p + 3 * k;
+        double q[3];
+        for (int i = 0; i < 3; i++)
+            q[i] = c.R[3 * i] * x[0] + c.R[3 * i + 1] * x[1] + c.R[3 * i + 2] * x[2] + c.T[i];
+        fprintf(f, ",\n<%.9g, %.9g, %.9g>", q[0], -q[1], q[2]);
+    }
+    fprintf(f, " }\n texture_list { %d", CL_NTRI);
+    for (int k = 0; k < CL_NTRI; k++)
+        fprintf(f, ",\ntexture { pigment { rgb <%.6g, %.6g, %.6g> } finish { emission 1 diffuse 0 } }", rgb[9 * k],
+                rgb[9 * k + 1], rgb[9 * k + 2]);
+    fprintf(f, " }\n face_indices { %d", CL_NTRI);
+    for (int k = 0; k < CL_NTRI; k++)
+        fprintf(f, ",\n<%d, %d, %d>, %d", 3 * k, 3 * k + 1, 3 * k + 2, k);
+    fprintf(f, " }\n}\n");
+    return fclose(f) ? -1 : 0;
+}
 
 /* Issue 30's scattered scene (cloud_scene.h) as glsplay's inputs:
  * DIR/cloud.glsb and DIR/cam_K.cam for each of its cameras. */
@@ -44,6 +82,7 @@ static int write_cloud(const char *dir)
         }
         tb_prim4(&t, GLS_PRIM_POLY, 3, v, c, NULL);
     }
+    int pov = write_cloud_pov(dir, p, rgb);
     free(p), free(rgb);
     gls_bundle *b = tb_finish(&t);
     snprintf(path, sizeof path, "%s/cloud.glsb", dir);
@@ -54,7 +93,7 @@ static int write_cloud(const char *dir)
         snprintf(path, sizeof path, "%s/cam_%02d.cam", dir, k);
         bad = tb_write_camera(&c, path);
     }
-    return bad ? -1 : 0;
+    return bad || pov ? -1 : 0;
 }
 
 /* The scene, a rig camera and the camera path as glsplay's inputs. */
