@@ -190,7 +190,13 @@ int glscene_play_camera_text(glscene_play *r, const char *name, const char *text
  * nothing is written or printed, and what only a run writing files does
  * (-o, --explain, --resume, --shard, --write-calib, --progress, --frames)
  * has no effect.  NULL with e (every
- * message of the run, without "glsplay: error: ") on failure. */
+ * message of the run, without "glsplay: error: ") on failure.
+ * The run stays open in r between calls: the first begins it (reads the
+ * bundle, camera files, trajectory and motions, makes a GL context,
+ * uploads the scene) and the next render in it; glscene_play_arg or
+ * glscene_play_camera_text after a render, a failed render, or
+ * glscene_play_free closes it.  Its GL context belongs to the thread of
+ * the first call: render and free r there. */
 typedef struct glscene_result glscene_result;
 glscene_result *glscene_play_render(glscene_play *r, uint64_t frame, glscene_error *e);
 

@@ -43,6 +43,12 @@ char *gls_play_keep(glscene_play *r, glscene_error *e, const char *s)
     return c;
 }
 
+void gls_play_close_run(glscene_play *r)
+{
+    gls_play_end(r->run, 0);
+    r->run = NULL;
+}
+
 glscene_play *glscene_play_new(void)
 {
     glscene_play *r = calloc(1, sizeof *r);
@@ -61,6 +67,7 @@ void glscene_play_free(glscene_play *r)
 {
     if (!r)
         return;
+    gls_play_close_run(r); /* before the strings its options name */
     for (size_t i = 0; i < r->nstrs; i++)
         free(r->strs[i]);
     free(r->strs);
@@ -157,5 +164,6 @@ int glscene_play_camera_text(glscene_play *r, const char *name, const char *text
     if (!name[0])
         return gls_play_fail(r, e, -1, "a camera's text needs a name");
     r->checked = 0;
+    gls_play_close_run(r); /* another camera: the open run has not got it */
     return gls_play_add_camera(r, e, name, text) ? -1 : 0;
 }

@@ -447,6 +447,7 @@ int glscene_play_arg(glscene_play *r, const char *a, const char *next, glscene_e
         return -2;
     }
     r->checked = 0;
+    gls_play_close_run(r); /* a setting changes: the next render begins again */
     const option *op = find_option(a);
     if (op)
         return op->take(r, op, a, next, e);

@@ -20,7 +20,15 @@ struct glscene_play {
     int checked;         /* glscene_play_check passed since the last arg */
     int rendering;       /* checked for glscene_play_render: no -o needed */
     char *msg;           /* the last failure's whole message            */
+    /* glscene_play_render's open run (player.h gls_play_begin): kept
+     * while the settings stay the same, so the frames after the first
+     * reuse its bundle, context and uploaded scene; closed by a change
+     * of setting (gls_play_close_run), a failed render, or the free */
+    gls_play_run *run;
 };
+
+/* End the open run, if any: the next glscene_play_render begins again. */
+void gls_play_close_run(glscene_play *r);
 
 /* Keep the whole message in r->msg (glscene_play_message) and as much as
  * fits in e; returns rc. */

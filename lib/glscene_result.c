@@ -3,7 +3,10 @@
  * (runtime/play/player.c) with its checks, plan and passes, except that
  * each camera frame's files go to a sink (gls_play_opts' sink,
  * frame_files.h) as the arrays their encoders make, and nothing is
- * written.  The messages the run would print come back in e. */
+ * written.  The run is begun at the first render (gls_play_begin) and
+ * kept open in the glscene_play for the next frames (gls_play_render_frame)
+ * until a setting changes (gls_play_close_run).  The messages the run
+ * would print come back in e. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -141,32 +144,44 @@ glscene_result *glscene_play_render(glscene_play *r, uint64_t frame, glscene_err
         }
     }
     res->sink.take = take;
-    /* the run's options for one frame into the sink: on this thread, no
-     * progress, no plan printed, nothing resumed */
-    gls_play_opts o = r->o;
-    o.sink = &res->sink;
-    o.outdir = NULL;
-    o.explain = 0, o.resume = 0, o.write_calib = 0;
-    o.progress = GLS_PROGRESS_OFF;
-    o.writer_threads = 0;
-    o.shard.index = 0, o.shard.count = 1;
-    if (o.trajectory)
-        o.frame_first = frame, o.frame_end = frame + 1;
-    else if (frame > UINT32_MAX) {
+    if (!r->o.trajectory && frame > UINT32_MAX) {
         gls_play_fail(r, e, -1, "frame %llu is over the largest frame number, %u", (unsigned long long)frame,
                       UINT32_MAX);
         goto fail;
-    } else
-        o.frame = (uint32_t)frame;
-    char *text = NULL, *said = NULL;
-    size_t len = 0, saidlen = 0;
-    FILE *errs = open_memstream(&text, &len), *out = open_memstream(&said, &saidlen);
-    int rc = errs && out ? gls_play(&o, out, errs) : -1;
+    }
+    char *text = NULL;
+    size_t len = 0;
+    FILE *errs = open_memstream(&text, &len);
+    int rc = errs ? 0 : -1;
+    if (rc == 0 && !r->run) {
+        /* the run's options for frames into a sink: on this thread, no
+         * progress, no plan printed, nothing resumed; begun at this frame
+         * (the range its scan checks), and kept open for the next */
+        gls_play_opts o = r->o;
+        o.sink = &res->sink;
+        o.outdir = NULL;
+        o.explain = 0, o.resume = 0, o.write_calib = 0;
+        o.progress = GLS_PROGRESS_OFF;
+        o.writer_threads = 0;
+        o.shard.index = 0, o.shard.count = 1;
+        if (o.trajectory)
+            o.frame_first = frame, o.frame_end = frame + 1;
+        else
+            o.frame = (uint32_t)frame;
+        char *said = NULL;
+        size_t saidlen = 0;
+        FILE *out = open_memstream(&said, &saidlen);
+        rc = out ? gls_play_begin(&o, out, errs, &r->run) : -1;
+        if (out)
+            fclose(out);
+        free(said);
+    }
+    if (rc == 0)
+        rc = gls_play_render_frame(r->run, frame, &res->sink, errs);
+    if (rc) /* the writer keeps its first failure: the next render begins again */
+        gls_play_close_run(r);
     if (errs)
         fclose(errs);
-    if (out)
-        fclose(out);
-    free(said);
     if (rc == 0 && res->n == 0) /* checked above: cannot happen */
         gls_play_fail(r, e, -1, "frame %llu: nothing was rendered", (unsigned long long)frame);
     else if (rc)

@@ -3,7 +3,9 @@ frame or a trajectory's frames, into numpy arrays keyed by glsplay's output
 words.  Each render is a run of the library's player (glscene_play_render,
 include/glscene.h): the same options, plan, passes and arrays as glsplay's
 files; what is done here is turning the library's arrays into numpy's and
-its text into records."""
+its text into records.  The player keeps the run of its last settings open
+(the library keeps its bundle, GL context and uploaded scene across
+frames), so a sequence or repeated renders load the scene once."""
 import csv
 import ctypes
 import io
@@ -85,12 +87,18 @@ class Player:
     pattern="lattice"|"grid"|"stratified", backend="auto"|"egl"|"osmesa",
     background=(r, g, b) in 0..1, seed=0, options=[more glsplay
     arguments, e.g. "--image-format", "png16"]).  A context manager; close()
-    frees it.  Use it from the thread that made it."""
+    frees it.  Use it from the thread that made it.
+
+    A render or sequence of the player's run keeps that run open: the next
+    one with the same cameras, outputs, trajectory, motion and options
+    (and their files unchanged) renders in it without loading the scene
+    again; other settings close it and begin theirs."""
 
     def __init__(self, bundle: Union[str, os.PathLike], aa: int = 1, pattern: str = "lattice",
                  backend: str = "auto", background: Sequence[float] = (0.0, 0.0, 0.0), seed: int = 0,
                  options: Sequence[str] = ()):
         self._p = None
+        self._run, self._run_key = None, None
         if backend not in _BACKENDS:
             raise ValueError("backend must be one of %s, got %r" % (", ".join(_BACKENDS), backend))
         if pattern not in _PATTERNS:
@@ -111,7 +119,9 @@ class Player:
         self._direct_ok = not options
 
     def close(self) -> None:
-        """Free the scene and its GL context (also when collected)."""
+        """Free the scene, the open run and their GL contexts (also when
+        collected)."""
+        self._drop_run()
         if self._p:
             _lib.glscene_close(self._p)
             self._p = None
@@ -129,6 +139,24 @@ class Player:
         if not self._p:
             raise Error("the player is closed")
         return self._p
+
+    def _drop_run(self):
+        run, self._run, self._run_key = getattr(self, "_run", None), None, None
+        if run is not None:
+            run.close()
+
+    def _run_for(self, cameras, words, trajectory, motion, options) -> "_Run":
+        """The open run of these settings: the last one if they are the
+        same (its files unchanged since it began, which is when the
+        library reads them), else a new one in its place."""
+        key = (tuple(_camera_key(c) for c in cameras), words, _file_key(trajectory),
+               tuple(sorted((str(k), _file_key(v)) for k, v in (motion or {}).items())),
+               tuple(str(x) for x in options), _file_key(self._bundle))
+        if self._run is None or self._run_key != key:
+            self._drop_run()
+            self._run = _Run(self._bundle, self._args, cameras, words, trajectory, motion, options)
+            self._run_key = key
+        return self._run
 
     def render(self, camera: Rig, outputs: Union[str, Sequence[str]] = ("image", "depth"), frame: int = 0,
                trajectory: Optional[Union[str, os.PathLike]] = None,
@@ -171,9 +199,7 @@ class Player:
         if self._moved:
             raise Error("move() posed %s, which a render of a rig, a file's camera, a trajectory or these outputs "
                         "does not see; give motion={name: file} instead" % ", ".join(sorted(self._moved)))
-        with _Run(self._bundle, self._args, rig if rig is not None else [camera], words, trajectory, motion,
-                  options) as run:
-            res = run.render(frame)
+        res = self._run_for(rig if rig is not None else [camera], words, trajectory, motion, options).render(frame)
         return res if rig is not None else res[0]
 
     def sequence(self, camera: Rig, trajectory: Union[str, os.PathLike],
@@ -187,12 +213,13 @@ class Player:
         last)."""
         self._open()
         words = (outputs,) if isinstance(outputs, str) else tuple(outputs)
-        rig = list(camera) if isinstance(camera, (list, tuple)) else None
-        with _Run(self._bundle, self._args, rig if rig is not None else [camera], words, trajectory, motion,
-                  options) as run:
-            for f in (frames if frames is not None else run.frames()):
-                res = run.render(f)
-                yield int(f), (res if rig is not None else res[0])
+        cams = list(camera) if isinstance(camera, (list, tuple)) else [camera]
+        run = self._run_for(cams, words, trajectory, motion, options)
+        for f in (frames if frames is not None else run.frames()):
+            # the open run, unless a render between two frames changed the
+            # player's settings: then the sequence's begins again
+            res = self._run_for(cams, words, trajectory, motion, options).render(f)
+            yield int(f), (res if isinstance(camera, (list, tuple)) else res[0])
 
     def _render_direct(self, camera: Camera, words) -> Outputs:
         h, w = camera.height, camera.width
@@ -227,6 +254,25 @@ class Player:
     @property
     def instance_count(self) -> int:
         return _lib.glscene_instance_count(self._open())
+
+
+def _file_key(path) -> Optional[Tuple[str, int, int]]:
+    """A file as a run's settings see it: its path, and its size and time
+    of change, so that a file rewritten since a run began begins another."""
+    if path is None:
+        return None
+    p = os.fspath(path)
+    try:
+        st = os.stat(p)
+        return (p, st.st_size, st.st_mtime_ns)
+    except OSError:
+        return (p, -1, -1)  # the run says what is wrong with it
+
+
+def _camera_key(c):
+    if not isinstance(c, Camera):
+        raise TypeError("a camera or a list of cameras, got %r" % (c,))
+    return ("text", c.name, c.text) if c.text is not None else ("file", _file_key(c.path))
 
 
 class _Run:

@@ -4,7 +4,9 @@
  *
  * This file is the order of a run: its state in one run struct, and its
  * steps (load the cameras, the scene, explain, make the directories,
- * start the renderer and the writer, render, free).  The player's other
+ * start the renderer and the writer, render, free), grouped as begin,
+ * frames, end so that a run can stay open across frames (player.h
+ * gls_play_begin; the library's glscene_play_render).  The player's other
  * jobs are its family's, which share play_int.h: the frames of a
  * trajectory (play_sequence.c), one camera frame (play_frame.c), its
  * passes (play_passes.c) and flow (play_flow.c), the --motion set
@@ -21,9 +23,14 @@
 #include "progress.h"
 
 /* One run's state, loaded and checked before anything is drawn, freed
- * by run_free whatever happened. */
-typedef struct {
-    const gls_play_opts *o;
+ * by run_free whatever happened.  A run stays open across frames
+ * (gls_play_begin, player.h): what does not depend on the frame is here,
+ * made once; the per-frame step sets the frame in its copy of the
+ * options and renders through the session. */
+struct gls_play_run {
+    gls_play_opts opts;   /* o's copy: the frame step sets its frame, its
+                             --frames range and its sink                */
+    const gls_play_opts *o; /* &opts                                    */
     FILE *errs;
     gls_camera *cams;
     char **names;
@@ -41,8 +48,14 @@ typedef struct {
     size_t *made;         /* per camera: what gls_mkdir_p_made made         */
     gls_progress_json json;
     int started;          /* rendering began: --progress json ends with a line */
+    int rendering;        /* begun to render (an outdir or a sink): the
+                             renderer, the writer and ses exist          */
+    char inputs[17];      /* the frame records' inputs digest           */
+    traj_scan scan;       /* the trajectory's frames o's range holds     */
+    session ses;          /* what each frame renders with               */
     gls_play_times times; /* --times: the marks                        */
-} run;
+};
+typedef struct gls_play_run run;
 
 /* "glsplay: error: out of memory"; 1. */
 static int oom(FILE *errs)
@@ -232,6 +245,10 @@ static void run_free(run *u, int rc)
     /* after the writer, whose last jobs may still say their frames */
     if (u->started)
         gls_progress_json_end(&u->json, rc == 0, gls_now());
+    /* the renderer frees GL objects: in its own context, which another
+     * run or player of this thread may have made not current */
+    if (u->ctx && u->r)
+        gls_glctx_make_current(u->ctx);
     gls_renderer_destroy(u->r);
     gls_glctx_destroy(u->ctx);
     /* after the writer's last file: the directories made, last camera
@@ -254,87 +271,172 @@ static void run_free(run *u, int rc)
     free(u->cams);
 }
 
-/* The order of a run: check the options, load and check every input,
- * explain, scan the trajectory, make the directories, then render and
- * write each frame and camera, and the calibration files last. */
-int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
+/* The order of a run up to its first frame: check the options, load and
+ * check every input, explain, scan the trajectory, make the directories,
+ * start the renderer and the writer.  0, or the exit status after the
+ * message; u is freed by run_free either way. */
+static int run_begin(run *u, const gls_play_opts *o, FILE *out, FILE *errs)
 {
     char err[1024];
-    int rc = 1;
-    run u;
-    memset(&u, 0, sizeof u);
-    u.o = o, u.errs = errs, u.ms.scene = &u.scene;
-    u.times.start = gls_now();
-    u.cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *u.cams);
-    u.names = calloc(o->ncameras ? o->ncameras : 1, sizeof *u.names);
+    u->times.start = gls_now();
+    u->opts = *o;
+    o = u->o = &u->opts;
+    u->errs = errs, u->ms.scene = &u->scene;
+    u->cams = calloc(o->ncameras ? o->ncameras : 1, sizeof *u->cams);
+    u->names = calloc(o->ncameras ? o->ncameras : 1, sizeof *u->names);
     gls_aa_opts aao = o->aa;
     if (aao.n == 0)
         aao.n = 1;
     if (gls_play_check_options(o, err, sizeof err)) {
         fprintf(errs, "glsplay: error: %s\n", err);
-        rc = 2;
-        goto out;
+        return 2;
     }
-    if (gls_aa_plan_init(&u.plan, &aao, err, sizeof err)) { /* checked: cannot fail */
+    if (gls_aa_plan_init(&u->plan, &aao, err, sizeof err)) { /* checked: cannot fail */
         fprintf(errs, "glsplay: error: %s\n", err);
-        goto out;
+        return 1;
     }
-    if (!u.cams || !u.names) {
-        oom(errs);
-        goto out;
-    }
-    if (run_load_cameras(&u) || run_load_scene(&u))
-        goto out;
+    if (!u->cams || !u->names)
+        return oom(errs);
+    if (run_load_cameras(u) || run_load_scene(u))
+        return 1;
     /* the context before the plan, which reports it */
-    u.ctx = gls_glctx_create(o->backend, err, sizeof err);
-    if (!u.ctx) {
+    u->ctx = gls_glctx_create(o->backend, err, sizeof err);
+    if (!u->ctx) {
         fprintf(errs, "glsplay: error: %s\n", err);
-        goto out;
+        return 1;
     }
-    u.times.context = gls_now();
+    u->times.context = gls_now();
     if (o->explain)
-        run_explain(&u, out);
-    if (!o->outdir && !o->sink) {
-        rc = 0;
-        goto out;
-    }
-    char inputs[17];
-    gls_frame_inputs(o, o->trajectory ? &u.ms.traj : NULL, inputs);
+        run_explain(u, out);
+    if (!o->outdir && !o->sink)
+        return 0;
+    gls_frame_inputs(o, o->trajectory ? &u->ms.traj : NULL, u->inputs);
     /* The whole trajectory is read and checked (with --resume, the frames
      * already complete counted) before anything is created: a bad row
      * leaves no empty directory behind. */
-    traj_scan scan = {0, 0, 0, UINT64_MAX};
+    u->scan = (traj_scan){0, 0, 0, UINT64_MAX};
     if (o->trajectory) {
         if (o->outputs & GLS_OUT_FLOW_ALL)
-            scan.last = play_trajectory_last_frame(&u.ms);
-        if (play_scan_trajectory(o, &u.plan, &u.ms, u.cams, (const char *const *)u.names, inputs, scan.last, errs, &scan.inrange,
-                                 &scan.mine, &scan.complete))
-            goto out;
+            u->scan.last = play_trajectory_last_frame(&u->ms);
+        if (play_scan_trajectory(o, &u->plan, &u->ms, u->cams, (const char *const *)u->names, u->inputs,
+                                 u->scan.last, errs, &u->scan.inrange, &u->scan.mine, &u->scan.complete))
+            return 1;
     }
-    if ((!o->sink && run_make_dirs(&u)) || run_start(&u))
-        goto out;
-    u.times.upload = gls_now();
-    u.json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
-    u.json.cameras = o->ncameras;
-    u.json.t0 = gls_now();
-    session ses = {o,          &u.ms,   &u.scene,       &u.plan, u.r,  u.wr,    &u.json,     errs,
-                   o->ncameras, 0,      u.json.t0,      0,       u.baseline, &u.gt, NULL,     NULL,
-                   &u.moves,   &u.box_names, o->frame,  NULL,    u.ms.moving, NULL, inputs,   o->counts,
-                   o->times ? &u.times : NULL};
-    u.started = 1;
-    rc = o->trajectory ? play_trajectory(&ses, u.cams, (const char *const *)u.names, &scan) : run_single(&u, &ses);
-    if (rc == 0 && gls_writer_finish(u.wr, err, sizeof err)) {
+    if ((!o->sink && run_make_dirs(u)) || run_start(u))
+        return 1;
+    u->times.upload = gls_now();
+    u->json.f = o->progress == GLS_PROGRESS_JSON ? errs : NULL;
+    u->json.cameras = o->ncameras;
+    u->json.t0 = gls_now();
+    session ses = {o,          &u->ms,  &u->scene,     &u->plan, u->r,  u->wr,    &u->json,    errs,
+                   o->ncameras, 0,      u->json.t0,    0,        u->baseline, &u->gt, NULL,    NULL,
+                   &u->moves,  &u->box_names, o->frame, NULL,    u->ms.moving, NULL, u->inputs, o->counts,
+                   o->times ? &u->times : NULL};
+    u->ses = ses;
+    u->rendering = 1;
+    return 0;
+}
+
+int gls_play_begin(const gls_play_opts *o, FILE *out, FILE *errs, gls_play_run **runp)
+{
+    run *u = calloc(1, sizeof *u);
+    *runp = NULL;
+    if (!u)
+        return oom(errs);
+    int rc = run_begin(u, o, out, errs);
+    if (rc)
+        return gls_play_end(u, rc);
+    *runp = u;
+    return 0;
+}
+
+int gls_play_render_frame(gls_play_run *u, uint64_t frame, struct gls_frame_sink *sink, FILE *errs)
+{
+    gls_play_opts *o = &u->opts;
+    const char *const *names = (const char *const *)u->names;
+    char err[1024];
+    if (!u->rendering || !o->sink || !sink) { /* a caller's mistake: said all the same */
+        fprintf(errs, "glsplay: error: the run was begun without a sink: it renders no frame into one\n");
+        return 1;
+    }
+    u->errs = u->ses.errs = errs;
+    o->sink = sink;
+    /* this thread's current context may be another run's or player's */
+    if (gls_glctx_make_current(u->ctx)) {
+        fprintf(errs, "glsplay: error: cannot make the run's GL context current on this thread (a run renders "
+                      "on the thread that began it)\n");
+        return 1;
+    }
+    /* a fresh session's per-frame state, as a run of this frame alone */
+    u->ses.views = o->ncameras, u->ses.views_done = 0, u->ses.estimated = 0;
+    u->ses.t0 = gls_now();
+    u->ses.next = NULL, u->ses.rel = NULL, u->ses.rel_now = NULL;
+    int rc;
+    if (o->trajectory) {
+        /* the frame as --frames F:F+1, scanned as such (the begin's scan
+         * covered the range it was begun with) */
+        if (o->frame_first != frame || o->frame_end != frame + 1) {
+            o->frame_first = frame, o->frame_end = frame + 1;
+            if (play_scan_trajectory(o, &u->plan, &u->ms, u->cams, names, u->inputs, u->scan.last, errs,
+                                     &u->scan.inrange, &u->scan.mine, &u->scan.complete))
+                return 1;
+        }
+        rc = play_trajectory(&u->ses, u->cams, names, &u->scan);
+    } else {
+        if (frame > UINT32_MAX) {
+            fprintf(errs, "glsplay: error: frame %llu is over the largest frame number, %u\n",
+                    (unsigned long long)frame, UINT32_MAX);
+            return 1;
+        }
+        /* the begin checked the motions and exposures at its frame */
+        if (frame != o->frame &&
+            (play_motion_check(&u->ms, frame, errs) ||
+             play_exposure_check(&u->ms, u->cams, names, o->ncameras, frame, errs)))
+            return 1;
+        o->frame = (uint32_t)frame;
+        u->ses.frame_now = frame;
+        rc = run_single(u, &u->ses);
+    }
+    if (rc == 0 && gls_writer_finish(u->wr, err, sizeof err)) {
         fprintf(errs, "%s\n", err);
         rc = 1;
     }
-    u.times.write = gls_now();
+    return rc;
+}
+
+int gls_play_end(gls_play_run *u, int rc)
+{
+    if (u) {
+        run_free(u, rc);
+        free(u);
+    }
+    return rc;
+}
+
+/* The order of a run: begin (check, load, explain, scan, make the
+ * directories, start), then render and write each frame and camera, and
+ * the calibration files last. */
+int gls_play(const gls_play_opts *o, FILE *out, FILE *errs)
+{
+    char err[1024];
+    run *u = NULL;
+    int rc = gls_play_begin(o, out, errs, &u);
+    if (rc || !u->rendering)
+        return gls_play_end(u, rc);
+    o = u->o;
+    u->started = 1;
+    rc = o->trajectory ? play_trajectory(&u->ses, u->cams, (const char *const *)u->names, &u->scan)
+                       : run_single(u, &u->ses);
+    if (rc == 0 && gls_writer_finish(u->wr, err, sizeof err)) {
+        fprintf(errs, "%s\n", err);
+        rc = 1;
+    }
+    u->times.write = gls_now();
     if (rc == 0 && o->times)
-        gls_play_times_print(errs, &u.times);
+        gls_play_times_print(errs, &u->times);
     /* after the render and its files: every frame in the range was read
      * and checked */
     if (rc == 0 && o->write_calib && !o->sink)
-        rc = gls_calib_write(o, o->trajectory ? &u.ms.traj : NULL, u.cams, (const char *const *)u.names, errs);
-out:
-    run_free(&u, rc);
-    return rc;
+        rc = gls_calib_write(o, o->trajectory ? &u->ms.traj : NULL, u->cams, (const char *const *)u->names, errs);
+    return gls_play_end(u, rc);
 }

@@ -116,6 +116,33 @@ void gls_play_frame_free(gls_play_frame_result *res);
  * usage error of gls_play_check_options (which it runs first). */
 int gls_play(const gls_play_opts *o, FILE *out, FILE *errs);
 
+/* gls_play in three steps, so that a run stays open across frames (the
+ * library's glscene_play_render): gls_play is begin, its frames, end.
+ *
+ * gls_play_begin does everything that does not depend on the frame: the
+ * checks, the bundle, the cameras, the scene, the motions and the
+ * trajectory (read once), the GL context (made current on this thread),
+ * --explain, the scan of o's range of the trajectory, the directories
+ * (without a sink), the renderer with the scene uploaded, the writer.  0
+ * with *run (o is copied; its strings must outlive the run), or the exit
+ * status after the message with *run NULL.  A run begun with neither
+ * outdir nor sink renders nothing (--explain alone).
+ *
+ * gls_play_render_frame renders frame F of a run begun with a sink into
+ * sink (which replaces o's): the trajectory's row F as --frames F:F+1
+ * would (its flow to the next row, its motions and sub-frame poses), or
+ * the single frame numbered F; messages to errs.  It makes the run's GL
+ * context current first: call it from the thread that began the run.  0,
+ * or 1 after the message; after a failure, end the run (the writer keeps
+ * its first failure).
+ *
+ * gls_play_end frees the run (NULL is fine), its context last; returns
+ * rc. */
+typedef struct gls_play_run gls_play_run;
+int gls_play_begin(const gls_play_opts *o, FILE *out, FILE *errs, gls_play_run **run);
+int gls_play_render_frame(gls_play_run *run, uint64_t frame, struct gls_frame_sink *sink, FILE *errs);
+int gls_play_end(gls_play_run *run, int rc);
+
 /* Print the plan (explain.c): the GL backend and context, which GL
  * effects are on and why, passes, anti-aliasing, read-backs.  cams/names
  * may be empty (n = 0); o gives the outputs, the anti-aliasing, the image

@@ -8,7 +8,8 @@ every file of every camera, decoded (cv2 for the PNGs, 16-bit included,
 and the PFMs, numpy for .npy, .flo and the PLY, the CSV, TXT and JSON
 parsed), with the library's array of the same name, value for value: a
 stereo rig with every word a single frame has, a trajectory with --motion
-(flow, boxes) and with exposure effects, a lens camera from OpenCV YAML, a lit scene, sensor noise.
+(flow, boxes) and with exposure effects, a lens camera from OpenCV YAML, a lit scene, sensor noise;
+and a sequence's frames rendered in one run kept open against fresh runs.
 Prints "ok NAME" / "FAIL NAME: why"."""
 import glob
 import json
@@ -127,6 +128,32 @@ glscene.compile(os.path.join(TMP, "Flow.scene"), [os.path.join(BUILD, "scenelib.
 compare("library_trajectory_motion_flow", fb, [os.path.join(TMP, "cam.cam")],
         ["image", "depth", "flow", "boxes", "instance"], frames=(0, 1, 2),
         trajectory=os.path.join(TMP, "trajectory.txt"), motion={"mover": os.path.join(TMP, "mover.txt")})
+
+
+
+def kept_against_fresh(case, bundle, cams, words, frames, trajectory, motion):
+    """The frames of one player's sequence, rendered in one run kept open
+    (one glscene_play, which loads the scene once), against each frame
+    rendered by a fresh player: the same arrays."""
+    rig = [glscene.Camera.from_file(c) for c in cams]
+    with glscene.Player(bundle) as pl:
+        kept, runs = [], set()
+        for f, got in pl.sequence(rig, trajectory, outputs=words, motion=motion, frames=frames):
+            kept.append(got)
+            runs.add(getattr(pl, "_run", None))
+    bad = [] if len(runs) == 1 and None not in runs else ["the frames' runs: %r" % (runs,)]
+    for f, k in zip(frames, kept):
+        with glscene.Player(bundle) as pl:
+            fresh = pl.render(rig, outputs=words, frame=f, trajectory=trajectory, motion=motion)
+        for cam, a, b in zip(rig, k, fresh):
+            if set(a) != set(b) or not all(same(b[w], a[w]) for w in a):
+                bad.append("%s frame %d" % (cam.name, f))
+    result(case, not bad, "differ: " + ", ".join(bad))
+
+
+kept_against_fresh("library_kept_run_frames_same_as_fresh", fb, [os.path.join(TMP, "cam.cam")],
+                   ["image", "depth", "flow", "boxes", "instance", "landmarks"], (0, 1, 2),
+                   os.path.join(TMP, "trajectory.txt"), {"mover": os.path.join(TMP, "mover.txt")})
 
 # exposure effects along it: motion blur and a rolling shutter, depth of field
 with open(os.path.join(TMP, "cam.cam")) as f:

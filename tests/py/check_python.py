@@ -191,6 +191,30 @@ with glscene.Player(bundle) as p:
 result("python_sequence_frames", [k for k, _ in seq] == [3, 4, 6] and seq[0][1] > seq[1][1] > seq[2][1], repr(seq))
 result("python_error_frame_not_in_trajectory", good, got)
 
+# the player keeps its settings' run open (one glscene_play, which the
+# library keeps open: test_glscene's test_glscene_play_render_keeps_run):
+# a sequence's frames and a render after it with the same settings render
+# in it; other outputs begin another; a trajectory rewritten since the
+# run began begins another, which reads it
+with glscene.Player(bundle) as p:
+    runs = []
+    for k, o in p.sequence(cam, traj, outputs="depth"):
+        runs.append(getattr(p, "_run", None))
+        if k == 3:
+            d3 = o["depth"]
+    again = p.render(cam, outputs="depth", frame=3, trajectory=traj)["depth"]
+    runs.append(getattr(p, "_run", None))
+    result("python_player_keeps_run", len(runs) == 4 and runs[0] is not None and all(r is runs[0] for r in runs)
+           and np.array_equal(again, d3, equal_nan=True), repr(runs))
+    p.render(cam, outputs="instance", frame=3, trajectory=traj)
+    other = getattr(p, "_run", None)
+    d3 = p.render(cam, outputs="depth", frame=3, trajectory=traj)["depth"]  # its run, then the file rewritten
+    with open(traj, "w") as f:  # frame 3 moved 1 further back, the file longer
+        f.writelines("%d %g 1 0 0 0 1 0 0 0 1 0 0 %g\n" % (k, 0.1 * k, -0.5 * k - 1.0) for k in (3, 4, 6))
+    moved = p.render(cam, outputs="depth", frame=3, trajectory=traj)["depth"]
+    result("python_other_settings_begin_a_run", other is not None and other is not runs[0])
+    result("python_rewritten_file_begins_a_run", not np.array_equal(moved, d3, equal_nan=True))
+
 # sensor keys by name through from_opencv (R as a 3x3, the noise keyed by
 # the camera's name and frame): the same image as the camera file's
 sf = glscene.Camera.from_file("examples/demo/left_sensor.cam")

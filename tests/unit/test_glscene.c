@@ -362,6 +362,70 @@ static void test_glscene_play_render(void)
     glscene_result_free(NULL);
 }
 
+/* The depth array of frame f of r (a result freed here); NULL on failure. */
+static float *render_depth(glscene_play *r, uint64_t f)
+{
+    glscene_error e;
+    glscene_result *res = glscene_play_render(r, f, &e);
+    CHECK_MSG(res != NULL, "frame %llu: %s", (unsigned long long)f, e.message);
+    glscene_array a;
+    float *z = NULL;
+    if (res && glscene_result_array(res, 0, "depth", &a, &e) == 0 && (z = malloc(a.bytes)))
+        memcpy(z, a.data, a.bytes);
+    glscene_result_free(res);
+    return z;
+}
+
+static glscene_play *depth_run(void)
+{
+    glscene_error e;
+    glscene_play *r = glscene_play_new();
+    if (r) {
+        CHECK(glscene_play_arg(r, bundle, NULL, &e) == 1);
+        CHECK(glscene_play_arg(r, "--outputs", "depth", &e) == 2);
+        CHECK(glscene_play_camera_text(r, "p", "width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\n"
+                                       "R 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\n", &e) == 0);
+    }
+    return r;
+}
+
+/* glscene_play_render keeps its run open across frames: the bundle is
+ * read once, when the run begins, so frames 1 and 2 render with the
+ * bundle gone (a run reopened per frame would fail to read it), the same
+ * arrays as fresh runs; a setting changed after a render begins the run
+ * again, which reads the bundle again. */
+static void test_glscene_play_render_keeps_run(void)
+{
+    char moved[160];
+    snprintf(moved, sizeof moved, "%s.away", bundle);
+    glscene_error e;
+    glscene_play *r = depth_run();
+    if (!r)
+        return;
+    float *kept[3] = {render_depth(r, 0), NULL, NULL};
+    CHECK(rename(bundle, moved) == 0);
+    kept[1] = render_depth(r, 1);
+    kept[2] = render_depth(r, 2);
+    /* a setting: the next render begins again, and the bundle is gone */
+    CHECK(glscene_play_arg(r, "--background", "0,0,1", &e) == 2);
+    CHECK(glscene_play_render(r, 3, &e) == NULL);
+    CHECK_MSG(strstr(e.message, "wall.glsb") != NULL, "%s", e.message);
+    CHECK(rename(moved, bundle) == 0);
+    /* a failed render closed nothing it needs: the next begins and renders */
+    float *again = render_depth(r, 3);
+    CHECK(again != NULL);
+    free(again);
+    glscene_play_free(r);
+    for (int f = 0; f < 3; f++) {
+        glscene_play *fresh = depth_run();
+        float *z = fresh ? render_depth(fresh, (uint64_t)f) : NULL;
+        CHECK_MSG(z && kept[f] && memcmp(z, kept[f], (size_t)W * H * sizeof *z) == 0, "frame %d", f);
+        free(z);
+        free(kept[f]);
+        glscene_play_free(fresh);
+    }
+}
+
 int main(void)
 {
     make_scene();
@@ -372,6 +436,7 @@ int main(void)
     RUN(test_glscene_errors);
     RUN(test_glscene_play);
     RUN(test_glscene_play_render);
+    RUN(test_glscene_play_render_keeps_run);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     if (system(cmd)) {
