@@ -87,6 +87,8 @@ static const char usage_text[] =
     "                         SLURM_ARRAY_TASK_ID, _COUNT (and _MIN, _STEP)\n"
     "anti-aliasing (spec/antialiasing.md):\n"
     "  --aa N                 NxN samples per pixel, N in 1..4096 (default 1: one pass)\n"
+    "  --aa exact             no samples: each pixel the exact visible areas times their\n"
+    "                         colours (pinhole, flat and vertex colours; CPU, double)\n"
     "  --samples M            M samples per pixel, M in 1..16777216 (lattice: any M;\n"
     "                         grid and stratified: a square)\n"
     "  --subpixel A           the N whose sample step is at most A pixels (A as 1/256 or\n"

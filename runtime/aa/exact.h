@@ -76,12 +76,13 @@ typedef struct {
     double C[3];        /* camera centre in world coordinates               */
     double fx, fy, cx, cy, skew;
     double znear;       /* > 0: triangles are clipped at Zc = znear in 3-D  */
+    double zfar;        /* > znear: and at Zc = zfar (as GL clips); 0: not */
 } gls_exact_pinhole;
 
 /* World triangle p (3 points) to image triangles, clipped at the near
- * plane before projecting: writes 0, 1 or 2 triangles to out (id and rgba
- * copied from proto) and returns how many. */
+ * (and far) plane before projecting: writes 0 to 3 triangles to out (id
+ * and rgba copied from proto) and returns how many. */
 int gls_exact_project(const gls_exact_pinhole *cam, const double p[3][3], const gls_exact_tri *proto,
-                      gls_exact_tri out[2]);
+                      gls_exact_tri out[3]);
 
 #endif

@@ -4,6 +4,7 @@
  * plane and 1/Zc of what is left stays affine in the image; projecting
  * first would send a vertex behind the camera through infinity.  All in
  * double, the camera centre subtracted first. */
+#include <string.h>
 #include "exact_int.h"
 
 static void to_camera(const gls_exact_pinhole *c, const double p[3], double q[3])
@@ -20,28 +21,36 @@ static void project(const gls_exact_pinhole *c, const double q[3], double *u, do
     *v = c->fy * q[1] / q[2] + c->cy;
 }
 
-int gls_exact_project(const gls_exact_pinhole *cam, const double p[3][3], const gls_exact_tri *proto,
-                      gls_exact_tri out[2])
+/* Sutherland-Hodgman of polygon in[0..n) against side * (Zc - z) >= 0 */
+static int clip_z(const double in[][3], int n, double z, double side, double out[][3])
 {
-    double q[3][3], poly[4][3];
-    int n = 0;
+    int m = 0;
+    for (int k = 0; k < n; k++) {
+        const double *a = in[k], *b = in[(k + 1) % n];
+        int ina = side * (a[2] - z) >= 0, inb = side * (b[2] - z) >= 0;
+        if (ina)
+            memcpy(out[m++], a, 3 * sizeof *a);
+        if (ina != inb) {
+            double s = (z - a[2]) / (b[2] - a[2]);
+            for (int r = 0; r < 3; r++)
+                out[m][r] = a[r] + s * (b[r] - a[r]);
+            out[m++][2] = z;
+        }
+    }
+    return m;
+}
+
+int gls_exact_project(const gls_exact_pinhole *cam, const double p[3][3], const gls_exact_tri *proto,
+                      gls_exact_tri out[3])
+{
+    double q[3][3], poly[4][3], poly2[5][3];
     for (int k = 0; k < 3; k++)
         to_camera(cam, p[k], q[k]);
-    /* Sutherland-Hodgman against Zc >= znear: 0, 3 or 4 vertices */
-    for (int k = 0; k < 3; k++) {
-        const double *a = q[k], *b = q[(k + 1) % 3];
-        int ina = a[2] >= cam->znear, inb = b[2] >= cam->znear;
-        if (ina)
-            for (int r = 0; r < 3; r++)
-                poly[n][r] = a[r];
-        n += ina;
-        if (ina != inb) {
-            double s = (cam->znear - a[2]) / (b[2] - a[2]);
-            for (int r = 0; r < 3; r++)
-                poly[n][r] = a[r] + s * (b[r] - a[r]);
-            poly[n][2] = cam->znear;
-            n++;
-        }
+    int n = clip_z((const double(*)[3])q, 3, cam->znear, 1, poly);
+    const double(*v)[3] = (const double(*)[3])poly;
+    if (n >= 3 && cam->zfar > cam->znear) {
+        n = clip_z(v, n, cam->zfar, -1, poly2);
+        v = (const double(*)[3])poly2;
     }
     if (n < 3)
         return 0;
@@ -49,7 +58,7 @@ int gls_exact_project(const gls_exact_pinhole *cam, const double p[3][3], const 
         out[t] = *proto;
         int idx[3] = {0, t + 1, t + 2};
         for (int k = 0; k < 3; k++)
-            project(cam, poly[idx[k]], &out[t].x[k], &out[t].y[k], &out[t].iz[k]);
+            project(cam, v[idx[k]], &out[t].x[k], &out[t].y[k], &out[t].iz[k]);
     }
     return n - 2;
 }

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "distort_exposure.h"
+#include "exact_scene.h"
 #include "exposure_landmarks.h"
 #include "frame_files.h"
 #include "frame_record.h"
@@ -55,6 +56,7 @@ typedef struct {
     gls_box *boxes;
     size_t nboxes;
     void *img;             /* the image in its file's format, when not rgba  */
+    float *exact;          /* exact coverage's image, RGBA float            */
     gls_accum acc;
 } cam_frame;
 
@@ -65,6 +67,7 @@ static void cam_frame_free(cam_frame *cf)
     free(cf->rgba);
     free(cf->z);
     free(cf->img);
+    free(cf->exact);
     free(cf->mask);
     free(cf->normal);
     free(cf->flow);
@@ -160,6 +163,24 @@ static int frame_colour(session *s, const gls_camera *c, cam_frame *cf, char *ms
     return rc;
 }
 
+/* The exact pass (exact_scene.h): the scene's triangles projected in
+ * double, each pixel the exact areas of what is visible in it times their
+ * colours, the background the rest.  0, or -1 when out of memory. */
+static int frame_exact(session *s, const gls_camera *c, cam_frame *cf)
+{
+    size_t n = (size_t)c->width * c->height;
+    gls_exact_geom g;
+    float bg[4] = {s->o->background[0], s->o->background[1], s->o->background[2], 1};
+    if (!(cf->exact = frame_alloc(s->counts, GLS_BUF_EXACT, n * 4 * sizeof *cf->exact)))
+        return -1;
+    if (s->counts)
+        s->counts->passes[GLS_PASS_I_EXACT]++;
+    int rc = gls_exact_geom_make(&g, s->scene, c) ||
+             gls_exact_image(g.t, g.n, (int)c->width, (int)c->height, bg, gls_exact_geom_shade, &g, cf->exact);
+    gls_exact_geom_free(&g);
+    return rc ? -1 : 0;
+}
+
 /* The image in its file's format (through the sensor effects when the
  * camera asks for them: sensor.h, never on ground truth) and the edges
  * map.  0, or -1 when out of memory. */
@@ -182,7 +203,13 @@ static int frame_image(session *s, const gls_camera *c, const char *name, uint32
                     : o->image_format == GLS_IMG_PFM ? 3 * sizeof(float) : 4;
         if (!(cf->img = frame_alloc(cnt, GLS_BUF_IMAGE, n * px)))
             return -1;
-        if (o->image_format == GLS_IMG_PNG16 && aa)
+        if (cf->exact && o->image_format == GLS_IMG_PNG16)
+            gls_exact_rgb16(cf->exact, n, cf->img);
+        else if (cf->exact && o->image_format == GLS_IMG_PFM)
+            gls_exact_rgbf(cf->exact, n, cf->img);
+        else if (cf->exact)
+            gls_exact_rgba8(cf->exact, n, cf->img);
+        else if (o->image_format == GLS_IMG_PNG16 && aa)
             gls_accum_rgb16(&cf->acc, cf->img);
         else if (o->image_format == GLS_IMG_PNG16)
             gls_rgba8_to_rgb16(cf->rgba, n, cf->img);
@@ -345,7 +372,7 @@ int play_camera(session *s, const gls_camera *c, const char *name, uint32_t fram
         (fp->truth_z && !(cf.gt_z = frame_alloc(cnt, GLS_BUF_TRUTH_DEPTH, n * sizeof *cf.gt_z))))
         goto out;
     if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)) ||
-        frame_image(s, c, name, frame, &cf) || frame_boxes_flow(s, c, frame, &cf, msg, sizeof msg) ||
+        (fp->exact && frame_exact(s, c, &cf)) || frame_image(s, c, name, frame, &cf) || frame_boxes_flow(s, c, frame, &cf, msg, sizeof msg) ||
         frame_submit(s, c, name, frame, &cf, msg, sizeof msg))
         goto out;
     play_view_done(s);

@@ -16,6 +16,7 @@
 #include "calib_write.h"
 #include "frame_record.h"
 #include "mkdirs.h"
+#include "exact_scene.h"
 #include "play_int.h"
 #include "player.h"
 #include "progress.h"
@@ -99,6 +100,12 @@ static int run_load_scene(run *u)
     char err[1024];
     if ((o->flatten ? gls_scene_flatten : gls_scene_load)(u->b, &u->scene, err, sizeof err)) {
         fprintf(errs, "glsplay: error: %s: %s\n", o->bundle, err);
+        return 1;
+    }
+    const char *why = u->plan.o.exact ? gls_exact_scene_unsupported(&u->scene) : NULL;
+    if (why) {
+        fprintf(errs, "glsplay: error: %s: --aa exact draws flat and vertex colours only, not %s; leave out --aa "
+                      "exact (sampled anti-aliasing draws it)\n", o->bundle, why);
         return 1;
     }
     if (play_motion_load(o, &u->ms, errs) || (!o->trajectory && play_motion_check(&u->ms, o->frame, errs)))

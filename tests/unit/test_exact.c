@@ -303,7 +303,7 @@ static void test_exact_interpenetrating(void)
     CHECK_MSG(worst_sum <= 1e-12, "worst sum %g", worst_sum);
 }
 
-static const gls_exact_pinhole cam0 = {{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, 8, 8, 7.5, 7.5, 0, 1};
+static const gls_exact_pinhole cam0 = {{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, 8, 8, 7.5, 7.5, 0, 1, 0};
 
 /* A triangle crossing the near plane, clipped in 3-D: one vertex in front
  * (the cut leaves a triangle, here with dyadic cut points) gives the image
@@ -311,7 +311,7 @@ static const gls_exact_pinhole cam0 = {{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, 8
  * counted once over the two halves. */
 static void test_exact_near_plane(void)
 {
-    gls_exact_tri proto = tri(0, 0, 0, 0, 0, 0, 0), out[2], cut[2];
+    gls_exact_tri proto = tri(0, 0, 0, 0, 0, 0, 0), out[3], cut[3];
     double p[3][3] = {{-1, 0.5, -1}, {1, 0.5, -1}, {0, 0.5, 3}};
     double q[3][3] = {{-0.5, 0.5, 1}, {0.5, 0.5, 1}, {0, 0.5, 3}};
     CHECK(gls_exact_project(&cam0, p, &proto, out) == 1);
@@ -353,7 +353,7 @@ static void test_exact_far_offset(void)
     for (int pass = 0; pass < 2; pass++) {
         gls_exact_pinhole cam = cam0;
         cam.R[0] = 0.8, cam.R[2] = 0.6, cam.R[6] = -0.6, cam.R[8] = 0.8; /* turned about y */
-        gls_exact_tri t[24];
+        gls_exact_tri t[36];
         size_t n = 0;
         double s = pass ? 1 : 0;
         rng = 12345; /* the same triangles both times */
