@@ -52,6 +52,7 @@ typedef struct {
     double x[3], y[3];
     exact_line e[3];
     exact_plane z;
+    double xmin, xmax, ymin, ymax; /* its bounding box                  */
     int i0, i1, j0, j1; /* pixels whose square meets its bounding box     */
 } exact_prep;
 

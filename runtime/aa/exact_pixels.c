@@ -145,6 +145,9 @@ static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, doub
         if (c[u].zmax < c[t].zmin)
             break; /* this one and all after it are behind everywhere */
         const exact_prep *U = &w->prep[c[u].tri];
+        /* boxes apart (within the square): U hides nothing of T */
+        if (U->xmin >= T->xmax || U->xmax <= T->xmin || U->ymin >= T->ymax || U->ymax <= T->ymin)
+            continue;
         int nl = 0;
         if (!c[u].inside)
             for (int k = 0; k < 3; k++)

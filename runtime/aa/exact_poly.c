@@ -49,6 +49,7 @@ int exact_prep_tri(const gls_exact_tri *t, int w, int h, exact_prep *p)
     }
     double xmin = fmin(p->x[0], fmin(p->x[1], p->x[2])), xmax = fmax(p->x[0], fmax(p->x[1], p->x[2]));
     double ymin = fmin(p->y[0], fmin(p->y[1], p->y[2])), ymax = fmax(p->y[0], fmax(p->y[1], p->y[2]));
+    p->xmin = xmin, p->xmax = xmax, p->ymin = ymin, p->ymax = ymax;
     if (xmax + 0.5 < 0 || ymax + 0.5 < 0 || xmin - 0.5 > w - 1 || ymin - 0.5 > h - 1)
         return 0;
     p->i0 = clamp_px(ceil(xmin - 0.5), w), p->i1 = clamp_px(floor(xmax + 0.5), w);
