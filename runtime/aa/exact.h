@@ -67,6 +67,22 @@ typedef void (*gls_exact_shade_fn)(void *user, const gls_exact_tri *t, size_t i,
 int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
                     void *user, float *rgba);
 
+/* Coverage (spec/outputs.md "Coverage"): per pixel the exact visible
+ * area of each id, the GLS_EXACT_COVER_K largest, largest first (ties:
+ * the smaller id), the unused slots id 0 area 0; ids 0 are not counted
+ * (the background's). */
+#define GLS_EXACT_COVER_K 4
+typedef struct {
+    uint32_t id;
+    float area;
+} gls_exact_cover;
+
+/* gls_exact_image (rgba NULL: no colour) that also writes cover (NULL:
+ * none; w * h * GLS_EXACT_COVER_K entries), each triangle's id mapped
+ * through idmap (NULL: the id as it is). */
+int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
+                     void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover);
+
 /* A pinhole camera (spec/camera.md "Conventions"): world to camera
  * Pc = R (Pw - C), the camera looks along +Z, x right, y down; then
  * u = (fx Xc + skew Yc) / Zc + cx, v = fy Yc / Zc + cy.  All double: a

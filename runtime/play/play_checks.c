@@ -22,6 +22,12 @@ int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen)
         aao.n = 1;
     if (gls_aa_plan_init(&plan, &aao, msg, msglen))
         return -1;
+    /* coverage is exact coverage's (glscene_play_check says it first, as
+     * a usage error; this holds it for gls_play's other callers) */
+    if ((o->outputs & GLS_OUT_COVERAGE) && !o->aa.exact) {
+        snprintf(msg, msglen, "--outputs coverage needs --aa exact (exact areas, no samples)");
+        return -1;
+    }
     /* OUTDIR/NAME, NAME the camera file's name without its extension */
     for (size_t i = 0; i < o->ncameras; i++) {
         char *name = play_camera_name(o->cameras[i]);

@@ -57,6 +57,7 @@ typedef struct {
     size_t nboxes;
     void *img;             /* the image in its file's format, when not rgba  */
     float *exact;          /* exact coverage's image, RGBA float            */
+    gls_exact_cover *cover; /* exact coverage's areas per instance          */
     gls_accum acc;
 } cam_frame;
 
@@ -68,6 +69,7 @@ static void cam_frame_free(cam_frame *cf)
     free(cf->z);
     free(cf->img);
     free(cf->exact);
+    free(cf->cover);
     free(cf->mask);
     free(cf->normal);
     free(cf->flow);
@@ -171,12 +173,16 @@ static int frame_exact(session *s, const gls_camera *c, cam_frame *cf)
     size_t n = (size_t)c->width * c->height;
     gls_exact_geom g;
     float bg[4] = {s->o->background[0], s->o->background[1], s->o->background[2], 1};
-    if (!(cf->exact = frame_alloc(s->counts, GLS_BUF_EXACT, n * 4 * sizeof *cf->exact)))
+    if ((cf->fp.bytes[GLS_BUF_EXACT] && !(cf->exact = frame_alloc(s->counts, GLS_BUF_EXACT, n * 4 * sizeof *cf->exact))) ||
+        (cf->fp.cover && !(cf->cover = frame_alloc(s->counts, GLS_BUF_COVER, n * GLS_EXACT_COVER_K * sizeof *cf->cover))))
         return -1;
     if (s->counts)
         s->counts->passes[GLS_PASS_I_EXACT]++;
+    /* coverage's ids: the instance ids of the run (gt_table.h) */
+    const uint16_t *idmap = s->gt ? s->gt->id : NULL;
     int rc = gls_exact_geom_make(&g, s->scene, c) ||
-             gls_exact_image(g.t, g.n, (int)c->width, (int)c->height, bg, gls_exact_geom_shade, &g, cf->exact);
+             gls_exact_render(g.t, g.n, (int)c->width, (int)c->height, bg, gls_exact_geom_shade, &g, idmap, cf->exact,
+                              cf->cover);
     gls_exact_geom_free(&g);
     return rc ? -1 : 0;
 }
@@ -299,7 +305,8 @@ static int frame_submit(session *s, const gls_camera *c, const char *name, uint3
     if ((cf->fp.outputs & GLS_OUT_POINTS) && band < c->height &&
         !(f->row_pose = gls_exposure_row_poses(c, band, play_pose_at, s)))
         goto fail;
-    f->rgba = cf->rgba, f->z = cf->z, f->image = cf->img, f->mask = cf->mask;
+    f->rgba = cf->rgba, f->z = cf->z, f->image = cf->img, f->mask = cf->mask, f->cover = cf->cover;
+    cf->cover = NULL;
     /* the writer needs the ids only for the id images and tables */
     int ids = (cf->fp.outputs & GLS_OUT_IDS) != 0;
     f->gt_inst = ids ? cf->gt_ids : NULL, f->normal = cf->normal, f->gt = s->gt;

@@ -117,8 +117,9 @@ static int run_load_scene(run *u)
     if (play_exposure_setup(o, &u->ms, u->cams, names, &u->plan, errs) ||
         (!o->trajectory && play_exposure_check(&u->ms, u->cams, names, o->ncameras, o->frame, errs)))
         return 1;
-    if (o->outputs & GLS_OUT_IDS) {
-        /* the ids of the whole run, from the bundle's object names */
+    if (o->outputs & (GLS_OUT_IDS | GLS_OUT_COVERAGE)) {
+        /* the ids of the whole run, from the bundle's object names (the
+         * instance image's, and coverage's) */
         uint32_t count;
         int k = gls_gt_table_build(&u->gt, u->b, &u->scene, &count);
         if (k == 1) {

@@ -113,3 +113,47 @@ grep -q "^  frame plan: passes samples$" "$t/plan4" && ok exact_last_aa_wins || 
 "$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --aa exact --outputs image -o "$t/rec" 2>/dev/null
 rec=$t/rec/c/.frame_000000.done
 [ -f "$rec" ] && grep -qx "aa exact" "$rec" && ok exact_frame_record || fail exact_frame_record "$(cat "$rec" 2>/dev/null)"
+# coverage: two instances, one partly in front of the other, white on black;
+# ids as the instance image's, areas summing to 1, and the white one's
+# areas the exact image's
+mkdir -p "$t/lib"
+echo 'color(1, 1, 1); poly { vert(-1.25, -0.5, 5); vert(0.75, -0.75, 5); vert(1.0, 1.25, 5); vert(-1.0, 1.5, 5); }' >"$t/lib/A.scene"
+echo 'color(0, 0, 0); poly { vert(-0.3, -0.2, 4); vert(0.6, -0.1, 4); vert(0.2, 0.7, 4); }' >"$t/lib/B.scene"
+printf 'call("A");\ncall("B");\n' >"$t/Two.scene"
+if "$B/glsc" -I "$t/lib" -o "$t/two.glsb" "$t/Two.scene" 2>"$t/err"; then
+    "$PLAY" "$t/two.glsb" --camera "$t/c.cam" --aa exact --image-format pfm --outputs image,coverage,instance \
+        -o "$t/cov" 2>"$t/err" || fail exact_coverage_render "$(cat "$t/err")"
+    $PY - "$t" <<'PYEOF'
+import sys, csv, cv2, numpy as np
+t = sys.argv[1]
+def res(name, cond, why=''):
+    print(('ok ' if cond else 'FAIL ') + name + ('' if cond else ': ' + why))
+rows = list(csv.reader(open(t + '/cov/c/coverage_000000.csv')))
+img = cv2.imread(t + '/cov/c/image_000000.pfm', cv2.IMREAD_UNCHANGED)[:, :, 0]
+inst = cv2.imread(t + '/cov/c/instance_000000.png', cv2.IMREAD_UNCHANGED)
+sums, per = {}, {}
+for x, y, i, a in rows[1:]:
+    k = (int(y), int(x))
+    sums[k] = sums.get(k, 0) + float(a)
+    per.setdefault(k, {})[int(i)] = float(a)
+worst = max(abs(v - 1) for v in sums.values()) if sums else 1
+res('exact_coverage_sums_to_1', rows[0] == ['x', 'y', 'id', 'area'] and len(sums) > 100 and worst <= 1e-6,
+    'worst |sum - 1| %g over %d pixels' % (worst, len(sums)))
+# ids: every pixel whose centre the instance image gives to an instance
+# lists that instance
+ids = set(int(i) for _, _, i, _ in rows[1:]) - {0}
+bad = [(j, i) for j, i in zip(*np.nonzero(inst)) if int(inst[j, i]) not in per.get((j, i), {})]
+res('exact_coverage_ids', ids == set(np.unique(inst)) - {0} and not bad, 'ids %s, %d pixels missing their id' % (ids, len(bad)))
+# the white instance's area is the image's value (black instance, black background)
+white = min(ids)  # A is called first: the smaller id
+d = max(abs(img[j, i] - per.get((j, i), {}).get(white, 0)) for j in range(img.shape[0]) for i in range(img.shape[1]))
+res('exact_coverage_matches_image', d <= 1e-6, 'max difference %g' % d)
+PYEOF
+else
+    fail exact_coverage_compile "$(cat "$t/err")"
+fi
+# coverage without --aa exact: a usage error
+"$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --outputs coverage -o "$t/nc" 2>"$t/err"
+rc=$?
+[ $rc -eq 2 ] && grep -q "^glsplay: error: --outputs coverage needs --aa exact" "$t/err" && ok exact_coverage_needs_exact ||
+    fail exact_coverage_needs_exact "exit $rc: $(cat "$t/err")"

@@ -125,6 +125,8 @@ static double ref_halfplane(double a, double b, double c)
     if (aa < 1e-6 * ab)
         return fmin(1, fmax(0, c / ab + 0.5));
     double p = 0.5 * (aa + ab), m = 0.5 * (aa - ab);
+    if (c >= p || c <= -p) /* the line misses the square */
+        return c > 0;
     return (ramp2(c + p) - ramp2(c + m) - ramp2(c - m) + ramp2(c - p)) / (2 * aa * ab);
 }
 
@@ -401,6 +403,44 @@ static void test_exact_image_flat(void)
     CHECK_NEAR(rgba[0], 0, 0);
 }
 
+/* Coverage: areas summed per id (two triangles of one id), the K largest
+ * largest first (ties: the smaller id), ids mapped, 0 not counted. */
+static void test_exact_coverage(void)
+{
+    /* a pixel-sized square of id 7 (two triangles) in pixel (1, 1), its
+     * left half under a nearer rectangle of id 2 (two triangles) */
+    gls_exact_tri t[9];
+    t[0] = tri(0.5, 0.5, 1.5, 0.5, 1.5, 1.5, 0.5), t[1] = tri(0.5, 0.5, 1.5, 1.5, 0.5, 1.5, 0.5);
+    t[0].id = t[1].id = 7;
+    t[2] = tri(0.5, 0.5, 1.0, 0.5, 1.0, 1.5, 1), t[3] = tri(0.5, 0.5, 1.0, 1.5, 0.5, 1.5, 1);
+    t[2].id = t[3].id = 2;
+    /* pixel (2, 1): five nested right triangles 0.1 .. 0.5 wide, the
+     * smaller nearer: each shows 0.05 of the pixel; ids 10..14 */
+    for (int k = 0; k < 5; k++)
+        t[4 + k] = tri(1.5, 0.5, 1.5, 1.5, 1.5 + 0.1 * (k + 1), 0.5, 6 - k), t[4 + k].id = (uint32_t)(10 + k);
+    gls_exact_cover cov[3 * 3 * GLS_EXACT_COVER_K];
+    float bg[4] = {0, 0, 0, 0};
+    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, NULL, NULL, cov) == 0);
+    const gls_exact_cover *p = cov + (1 * 3 + 1) * GLS_EXACT_COVER_K;
+    CHECK(p[0].id == 2 && p[1].id == 7 && p[2].id == 0);
+    CHECK_NEAR(p[0].area, 0.5, 1e-7);
+    CHECK_NEAR(p[1].area, 0.5, 1e-7);
+    p = cov + (1 * 3 + 2) * GLS_EXACT_COVER_K;
+    /* five ids of equal area up to rounding: four of them, each once */
+    unsigned seen = 0;
+    for (int k = 0; k < GLS_EXACT_COVER_K; k++) {
+        CHECK_MSG(p[k].id >= 10 && p[k].id <= 14 && !(seen & (1u << (p[k].id - 10))), "slot %d: id %u", k, p[k].id);
+        seen |= p[k].id >= 10 && p[k].id <= 14 ? 1u << (p[k].id - 10) : 0;
+        CHECK_NEAR(p[k].area, 0.05, 1e-7);
+    }
+    /* an id map: 7 -> 0 (not counted), 2 -> 9 */
+    uint16_t map[15] = {0};
+    map[2] = 9;
+    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, map, NULL, cov) == 0);
+    p = cov + (1 * 3 + 1) * GLS_EXACT_COVER_K;
+    CHECK(p[0].id == 9 && p[1].id == 0);
+}
+
 int main(void)
 {
     RUN(test_exact_area_vs_reference);
@@ -412,5 +452,6 @@ int main(void)
     RUN(test_exact_near_plane);
     RUN(test_exact_far_offset);
     RUN(test_exact_image_flat);
+    RUN(test_exact_coverage);
     CHECK_EXIT();
 }

@@ -217,13 +217,34 @@ static void test_plan_matrix(void)
                 run_case(bpath, traj, &cams[i], aas[a].n, aas[a].pattern, 0, &outs[k]);
                 runs++;
             }
-    /* exact coverage: a pinhole without effects (the others are refused) */
+    /* exact coverage: a pinhole without effects (the others are refused),
+     * and its coverage output */
+    static const out_case cover = {"image,coverage", GLS_OUT_IMAGE | GLS_OUT_COVERAGE},
+                          cover_only = {"coverage", GLS_OUT_COVERAGE};
     for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
         run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &outs[k]);
         runs++;
     }
+    run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &cover);
+    run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &cover_only);
+    runs += 2;
     printf("  %d runs: explain's passes, accumulator, buffers and files against the run's\n", runs);
     gls_bundle_free(b);
+}
+
+/* gls_play refuses coverage without exact coverage before drawing (its
+ * callers other than glsplay's arguments reach it too) */
+static void test_coverage_needs_exact(void)
+{
+    gls_play_opts o;
+    char msg[256] = "";
+    memset(&o, 0, sizeof o);
+    o.aa = gls_aa_defaults();
+    o.outputs = GLS_OUT_IMAGE | GLS_OUT_COVERAGE;
+    CHECK(gls_play_check_options(&o, msg, sizeof msg) == -1);
+    CHECK_STR(msg, "--outputs coverage needs --aa exact (exact areas, no samples)");
+    o.aa.exact = 1;
+    CHECK(gls_play_check_options(&o, msg, sizeof msg) == 0);
 }
 
 int main(void)
@@ -233,6 +254,7 @@ int main(void)
         return 1;
     }
     RUN(test_plan_matrix);
+    RUN(test_coverage_needs_exact);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)
