@@ -81,6 +81,20 @@ static int grow(void **p, size_t *cap, size_t need, size_t size)
  * lines l[0..nl) (their kept halves), into w->next; then swap. */
 static int subtract(exact_work *w, const exact_line *l, int nl)
 {
+    /* the common case, a region beyond one of its lines from every piece,
+     * changes nothing: no copy */
+    size_t k0 = 0;
+    for (; k0 < w->cur.np; k0++) {
+        const exact_pt *pv = w->cur.v + w->cur.start[k0];
+        size_t n = w->cur.start[k0 + 1] - w->cur.start[k0];
+        int apart = 0;
+        for (int m = 0; m < nl && !apart; m++)
+            apart = exact_line_side(pv, n, &l[m]) < 0;
+        if (!apart)
+            break;
+    }
+    if (k0 == w->cur.np)
+        return 0;
     exact_pieces_clear(&w->next);
     for (size_t k = 0; k < w->cur.np; k++) {
         size_t n = w->cur.start[k + 1] - w->cur.start[k];
@@ -215,6 +229,9 @@ static int band_cands(const exact_prep *p, const unsigned char *ok, size_t n, in
         for (size_t t = 0; t < n; t++) {
             if (!ok[t] || p[t].j1 < j0 || p[t].j0 > j1)
                 continue;
+            /* narrower than a pixel: covers none whole, nothing for pass 1 */
+            if (pass == 1 && (p[t].xmax - p[t].xmin < 1 || p[t].ymax - p[t].ymin < 1))
+                continue;
             int ja = p[t].j0 > j0 ? p[t].j0 : j0, jb = p[t].j1 < j1 ? p[t].j1 : j1;
             for (int j = ja; j <= jb; j++)
                 for (int i = p[t].i0; i <= p[t].i1; i++) {
@@ -240,7 +257,7 @@ static int band_cands(const exact_prep *p, const unsigned char *ok, size_t n, in
 static int run_bands(exact_work *wk, const unsigned char *ok, size_t n, int w, int h, gls_exact_pixel_fn fn,
                      void *user)
 {
-    size_t bandpx = (size_t)w * EXACT_BAND, nc = 0, capc = 0;
+    size_t bandpx = (size_t)w * EXACT_BAND, nc = 0, capc = 0, caps = 0;
     double *fmin = malloc(bandpx * sizeof *fmin);
     size_t *start = malloc((bandpx + 1) * sizeof *start);
     exact_cand *c = NULL, *sorted = NULL;
@@ -250,10 +267,10 @@ static int run_bands(exact_work *wk, const unsigned char *ok, size_t n, int w, i
         nc = 0;
         if ((rc = band_cands(wk->prep, ok, n, w, j0, j1, fmin, &c, &nc, &capc)) != 0)
             break;
-        /* counting sort of the candidates by pixel */
-        free(sorted);
-        sorted = malloc((nc ? nc : 1) * sizeof *sorted);
-        if (!sorted || grow((void **)&wk->frags, &wk->capf, nc + 1, sizeof *wk->frags)) {
+        /* counting sort of the candidates by pixel (buffers kept from band
+         * to band: no page faults for each) */
+        if (grow((void **)&sorted, &caps, nc + 1, sizeof *sorted) ||
+            grow((void **)&wk->frags, &wk->capf, nc + 1, sizeof *wk->frags)) {
             rc = -1;
             break;
         }
