@@ -345,6 +345,33 @@ static void test_exact_near_plane(void)
     cov_free(&c);
 }
 
+/* The far plane, as GL clips: a triangle from Zc 1 to 3 with far 2 keeps
+ * the quad in front of Zc = 2 (dyadic cut points), its projected area
+ * counted once over the pieces. */
+static void test_exact_far_plane(void)
+{
+    gls_exact_pinhole cam = cam0;
+    cam.znear = 0.5, cam.zfar = 2;
+    gls_exact_tri proto = tri(0, 0, 0, 0, 0, 0, 0), out[3];
+    double p[3][3] = {{-1, 0.5, 1}, {1, 0.5, 1}, {0, 0.5, 3}};
+    int m = gls_exact_project(&cam, p, &proto, out);
+    CHECK(m == 2);
+    double Q[4][3] = {{-1, 0.5, 1}, {1, 0.5, 1}, {0.5, 0.5, 2}, {-0.5, 0.5, 2}}, u[4], v[4], area = 0;
+    for (int k = 0; k < 4; k++)
+        u[k] = 8 * Q[k][0] / Q[k][2] + 7.5, v[k] = 8 * Q[k][1] / Q[k][2] + 7.5;
+    for (int k = 0; k < 4; k++)
+        area += 0.5 * (u[k] * v[(k + 1) % 4] - u[(k + 1) % 4] * v[k]);
+    cov c = run(out, (size_t)m, 16, 16);
+    double sum = 0;
+    for (int k = 0; k < 256; k++)
+        sum += c.cover[k];
+    CHECK_MSG(fabs(sum - fabs(area)) <= 1e-12, "sum %.17g area %.17g", sum, fabs(area));
+    /* entirely beyond the far plane: nothing */
+    double q[3][3] = {{-1, 0.5, 3}, {1, 0.5, 3}, {0, 0.5, 4}};
+    CHECK(gls_exact_project(&cam, q, &proto, out) == 0);
+    cov_free(&c);
+}
+
 /* The same scene 1e7 units from the origin (vertices and camera moved
  * together; coordinates dyadic, so the move is exact): the same image. */
 static void test_exact_far_offset(void)
@@ -450,6 +477,7 @@ int main(void)
     RUN(test_exact_sliver);
     RUN(test_exact_interpenetrating);
     RUN(test_exact_near_plane);
+    RUN(test_exact_far_plane);
     RUN(test_exact_far_offset);
     RUN(test_exact_image_flat);
     RUN(test_exact_coverage);
