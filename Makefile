@@ -127,7 +127,7 @@ UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(B)/tests/%)
 # The helper programs (benchmarks, image tools, fuzz seed writer): built by
 # `make test` too, so that every program compiles and its dependencies are
 # tracked like the rest.
-PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
+PROGRAMS := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/aa_exact $(B)/bench/instances_bench $(B)/bench/png_bench $(B)/depth2png $(B)/pnghalf \
             $(B)/road_montage $(B)/rawseed $(B)/distort_project $(B)/glsplay_bands_whole
 
 .PHONY: gallery-truth gallery-effects gallery-road gl-backend-check all deps install uninstall test check demo demo-render demo-examples gallery clean bench-compile bench-play bench-instances fuzz-build bench-aa bench-backends bench-encode bench-scaling units programs spec-road-keys bench-distortion bench-effects bench-gpu
@@ -175,6 +175,7 @@ SEES_test_gt_pass := runtime
 SEES_test_gt_table := runtime
 SEES_test_lighting := runtime
 SEES_test_lens_truth := runtime
+SEES_test_exact := runtime
 SEES_test_sensor := runtime
 SEES_test_road_geo := roads
 SEES_test_road_nurbs := roads
@@ -471,7 +472,7 @@ clean:
 # (tests/unit/player_scene.h); test_aa shares bench/aa_scene.h.
 INC_bench := -Ibench -Itests/unit $(INC_runtime)
 LIB_bench := $(LIB_runtime)
-BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/instances_bench $(B)/bench/png_bench
+BENCH_BIN := $(B)/bench/play_floor $(B)/bench/play_bench $(B)/bench/aa_bench $(B)/bench/aa_exact $(B)/bench/instances_bench $(B)/bench/png_bench
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(LIB_bench)
 	$(CC) $(LDFLAGS) $< -o $@ $(LIB_bench) $(LDLIBS) $(GL_LIBS)
 
@@ -533,7 +534,7 @@ bench-gpu: $(TOOLS) $(SCENELIB) $(B)/bench/play_floor $(B)/bench/play_bench $(B)
 
 # bench-aa (runtime owner): cost and edge accuracy of anti-aliasing.
 # the plot needs gnuplot (gnuplot-nox), which bench/aa.sh installs if missing.
-bench-aa: $(B)/bench/aa_bench $(TOOLS) $(SCENELIB)
+bench-aa: $(B)/bench/aa_bench $(B)/bench/aa_exact $(TOOLS) $(SCENELIB)
 	@sh bench/aa.sh $(B)
 	@$(BENCH_MD) aa $(B)/bench/aa.txt
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;

@@ -186,6 +186,16 @@ static int take_uint(glscene_play *r, const option *op, const char *a, const cha
     return 2;
 }
 
+/* --aa: N, or exact (exact coverage, spec/antialiasing.md) */
+static int take_aa(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)
+{
+    if (next && strcmp(next, "exact") == 0) {
+        r->o.aa.exact = 1, r->have_aa = 1;
+        return 2;
+    }
+    return take_uint(r, op, a, next, e);
+}
+
 /* A value op->read reads */
 static int take_value(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)
 {
@@ -205,7 +215,7 @@ static int take_choice(glscene_play *r, const option *op, const char *a, const c
     return 2;
 }
 
-static void set_aa(glscene_play *r, unsigned long long v) { r->o.aa.n = (uint32_t)v, r->have_aa = 1; }
+static void set_aa(glscene_play *r, unsigned long long v) { r->o.aa.n = (uint32_t)v, r->o.aa.exact = 0, r->have_aa = 1; }
 static void set_samples(glscene_play *r, unsigned long long v) { r->o.aa.samples = v, r->have_samples = 1; }
 static void set_aa_memory(glscene_play *r, unsigned long long v) { r->o.aa_memory = (uint64_t)v << 20; }
 static void set_seed(glscene_play *r, unsigned long long v) { r->o.aa.seed = v; }
@@ -398,7 +408,7 @@ static const option options[] = {
     OWN("-o", "--output", take_output, 0),
     OWN("--outputs", NULL, take_outputs, 0),
     VALUE("--size", "WxH with both in 1..16384", read_size),
-    UINT("--aa", "N in 1..4096", 1, GLS_AA_MAX_N, set_aa),
+    {"--aa", NULL, take_aa, 0, "N in 1..4096", 1, GLS_AA_MAX_N, set_aa, NULL, NULL, 0, 0, 0},
     UINT("--samples", "M in 1..16777216", 1, GLS_AA_MAX_SAMPLES, set_samples),
     UINT("--aa-memory", "MB in 16..1048576", 16, 1048576, set_aa_memory),
     VALUE("--subpixel", "an accuracy in pixels, 0 < A <= 1 (e.g. 1/256)", read_subpixel),

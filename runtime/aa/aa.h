@@ -39,6 +39,10 @@ typedef struct {
     double sigma;           /* Gaussian sigma in pixels (> 0)              */
     gls_aa_pattern pattern;
     uint64_t seed;          /* stratified jitter seed                      */
+    int exact;              /* exact coverage instead of samples (exact.h,
+                               spec/antialiasing.md "Exact coverage"): the
+                               plan is then one sample's, the frame plan
+                               runs the exact pass                        */
 } gls_aa_opts;
 
 typedef struct {

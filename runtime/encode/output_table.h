@@ -21,7 +21,8 @@ enum {
     GLS_NEED_IDS = 16,
     GLS_NEED_NORMALS = 32,
     GLS_NEED_NEXT = 64,
-    GLS_NEED_ALONE = 128
+    GLS_NEED_ALONE = 128,
+    GLS_NEED_COVER = 256 /* exact coverage's areas per id (--aa exact) */
 };
 
 /* The outputs, one row per kind of file a camera frame writes, in the
@@ -78,7 +79,9 @@ enum {
     X(BOXES, "boxes", "boxes", "txt", GLS_NEED_IDS | GLS_NEED_ALONE, 0, 1,                                          \
       "KITTI object labels", "boxes")                                                                               \
     X(BOXES_JSON, "boxes", "boxes", "json", GLS_NEED_IDS | GLS_NEED_ALONE, 0, 1,                                    \
-      "the boxes as JSON", "boxes_json")
+      "the boxes as JSON", "boxes_json")                                                                            \
+    X(COVERAGE, "coverage", "coverage", "csv", GLS_NEED_COVER, 0, 1,                                                \
+      "each instance's exact visible area in each pixel (--aa exact)", "coverage")
 
 enum {
 #define X(id, word, stem, ext, needs, with, listed, what, key) GLS_OUT_I_##id,

@@ -3,6 +3,7 @@
 #include <string.h>
 #include "aa_onepass.h"
 #include "distort.h"
+#include "exact.h"
 #include "frame_plan.h"
 #include "units.h"
 
@@ -32,14 +33,16 @@ static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls
     int colour = (need & GLS_NEED_COLOUR) != 0;
     fp->ex = gls_exposure_of(c, in->moving);
     fp->effects = gls_exposure_on(&fp->ex) && colour;
-    fp->aa = (in->aa->count > 1 || fp->effects) && colour;
+    fp->cover = in->aa->o.exact && (need & GLS_NEED_COVER);
+    fp->exact = in->aa->o.exact && (colour || fp->cover);
+    fp->aa = (in->aa->count > 1 || fp->effects) && colour && !fp->exact;
     fp->lens = gls_distort_on(c);
     fp->weighted = gls_aa_weighted(in->aa);
     fp->fine = gls_aa_fine_ok(in->aa);
     /* the centre pass: the image when it is not anti-aliased, and what
      * comes from the geometry at each pixel centre, never averaged across
      * an edge (depth, points and their colours, disparity, landmarks) */
-    fp->rgba = (!fp->aa && colour) || (need & GLS_NEED_RGBA);
+    fp->rgba = (!fp->aa && !(fp->exact && colour) && colour) || (need & GLS_NEED_RGBA);
     fp->z = (need & GLS_NEED_Z) != 0;
     fp->flow = (need & GLS_NEED_NEXT) != 0;
     fp->boxes = (need & GLS_NEED_ALONE) != 0;
@@ -55,6 +58,8 @@ static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls
      * scene's motion (exposure.h), so the plan has no count of them */
     if (fp->aa)
         fp->passes |= fp->effects ? GLS_PASS_EXPOSURE : GLS_PASS_SAMPLES;
+    if (fp->exact)
+        fp->passes |= GLS_PASS_EXACT;
     if (fp->lens && (fp->passes & (GLS_PASS_CENTRE | GLS_PASS_TRUTH | GLS_PASS_SAMPLES | GLS_PASS_EXPOSURE)))
         fp->passes |= GLS_PASS_LENS;
     if (fp->flow)
@@ -65,7 +70,7 @@ static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls
         fp->image = GLS_IMAGE_NONE;
     else if (c->sensor.on)
         fp->image = GLS_IMAGE_SENSOR;
-    else if (fp->aa || in->image_format != GLS_IMG_PNG8)
+    else if (fp->aa || fp->exact || in->image_format != GLS_IMG_PNG8)
         fp->image = GLS_IMAGE_CONVERTED;
     else
         fp->image = GLS_IMAGE_CENTRE;
@@ -92,6 +97,8 @@ static void plan_buffers(gls_frame_plan *fp, const gls_plan_inputs *in, const gl
     b[GLS_BUF_NORMALS] = fp->normals ? 12 * n : 0;
     b[GLS_BUF_TRUTH_DEPTH] = fp->truth_z ? 4 * n : 0;
     b[GLS_BUF_ACCUM] = fp->aa ? (fp->weighted ? 32 : 16) * n + (uint64_t)c->width * 4 * (fp->weighted ? 8 : 2) : 0;
+    b[GLS_BUF_EXACT] = fp->exact && (fp->outputs & GLS_OUT_IMAGE) ? 16 * n : 0;
+    b[GLS_BUF_COVER] = fp->cover ? 8 * GLS_EXACT_COVER_K * n : 0;
     b[GLS_BUF_MIXED] = fp->aa && (out & GLS_OUT_EDGE_MAPS) ? 5 * n : 0; /* GLS_NEED_MIXED */
     b[GLS_BUF_IMAGE] = image_bytes(fp, in, c) * n;
     /* the sensor's linear intensities: a buffer of their own under a
@@ -133,7 +140,10 @@ void gls_frame_plan_explain(FILE *out, const gls_frame_plan *fp, const gls_aa_pl
         if (fp->passes & (1u << k))
             fprintf(out, " %s", gls_pass_word[k]);
     fprintf(out, "%s\n", fp->passes ? "" : " none");
-    if (!fp->aa)
+    if (fp->exact)
+        fprintf(out, "  exact coverage: each pixel the exact areas of what is visible in it (box filter, double "
+                     "precision, CPU); no samples, no accumulator\n");
+    else if (!fp->aa)
         fprintf(out, "  passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0); no accumulator\n");
     else
         fprintf(out, "  accumulator: %llu samples per pixel (%s)\n",

@@ -28,6 +28,8 @@
     X(TRUTH, "truth", "the ground-truth pass at the pixel centres: instance ids, normals, the depth flow starts "  \
                       "from")                                                                                       \
     X(SAMPLES, "samples", "the anti-aliasing samples, summed into the accumulator")                                 \
+    X(EXACT, "exact", "exact coverage (--aa exact): the triangles projected in double on the CPU, each pixel the "  \
+                      "exact visible areas times their colours, no samples")                                        \
     X(EXPOSURE, "exposure", "the samples at each sub-frame time, lens point and band of rows (motion blur, "        \
                             "rolling shutter, depth of field); with a rolling shutter the centre and truth passes " \
                             "too run once per band of rows, the bands chosen per frame from the scene's motion")   \
@@ -59,6 +61,8 @@ enum {
     X(NORMALS, "normals", "the ground-truth pass's normals, 3 x float32")                             \
     X(TRUTH_DEPTH, "truth depth", "the ground-truth pass's depth flow starts from, float32")           \
     X(ACCUM, "accumulator", "the anti-aliasing sums, 4 channels")                                     \
+    X(EXACT, "exact colour", "exact coverage's image, RGBA float32")                                  \
+    X(COVER, "coverage", "exact coverage's areas per instance, 4 x (id, float32)")                    \
     X(MIXED, "mixed", "each pixel's first sample and whether its samples differ (edges)")             \
     X(IMAGE, "image", "the image in its file's format")                                               \
     X(LINEAR, "linear", "the linear intensities the sensor effects work on, 3 x float32")             \
@@ -101,6 +105,9 @@ typedef struct {
     gls_exposure ex;       /* motion blur, rolling shutter, depth of field  */
     int effects;           /* exposure effects act on the image             */
     int aa;                /* the image comes from the accumulator          */
+    int exact;             /* the image or the coverage comes from exact
+                              coverage                                     */
+    int cover;             /* exact coverage's areas per instance           */
     int lens;              /* drawn undistorted and read through the lens   */
     int weighted;          /* the accumulator's weights (Gaussian): 64-bit  */
     int fine;              /* the samples are one fine framebuffer's pixels */

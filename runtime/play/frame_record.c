@@ -77,7 +77,9 @@ int gls_frame_record_text(char *buf, size_t len, const gls_play_opts *o, const g
     if (onepass)
         snprintf(mem, sizeof mem, " memory %llu",
                  (unsigned long long)(o->aa_memory ? o->aa_memory : GLS_AA_DEFAULT_MEMORY));
-    if (m == 1 || !fp->aa)
+    if (fp->exact) /* exact coverage: another image than one sample's */
+        snprintf(aa, sizeof aa, "exact");
+    else if (m == 1 || !fp->aa)
         snprintf(aa, sizeof aa, "1");
     else
         snprintf(aa, sizeof aa, "%llu %s%s%s %s %llu%s", (unsigned long long)m,

@@ -22,6 +22,12 @@ int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen)
         aao.n = 1;
     if (gls_aa_plan_init(&plan, &aao, msg, msglen))
         return -1;
+    /* coverage is exact coverage's (glscene_play_check says it first, as
+     * a usage error; this holds it for gls_play's other callers) */
+    if ((o->outputs & GLS_OUT_COVERAGE) && !o->aa.exact) {
+        snprintf(msg, msglen, "--outputs coverage needs --aa exact (exact areas, no samples)");
+        return -1;
+    }
     /* OUTDIR/NAME, NAME the camera file's name without its extension */
     for (size_t i = 0; i < o->ncameras; i++) {
         char *name = play_camera_name(o->cameras[i]);
@@ -116,6 +122,23 @@ int play_lens_check(const gls_camera *c, const char *path, const gls_aa_plan *pl
     return 0;
 }
 
+/* --aa exact projects through a pinhole at one instant onto the image
+ * as it is (spec/antialiasing.md "Exact coverage in glsplay"): a lens,
+ * the exposure's effects and the sensor's are refused.  0, or -1 after a
+ * message. */
+int play_exact_camera_check(const gls_camera *c, const gls_exposure *e, const char *name, FILE *errs)
+{
+    const char *why = gls_distort_on(c)      ? "a lens model (distortion)"
+                      : gls_exposure_on(e)   ? "exposure effects (shutter, line_delay or aperture)"
+                      : c->sensor.on         ? "sensor effects"
+                                             : NULL;
+    if (!why)
+        return 0;
+    fprintf(errs, "glsplay: error: camera %s: --aa exact needs a pinhole camera without %s; leave out --aa exact "
+                  "(sampled anti-aliasing draws it) or those keys\n", name, why);
+    return -1;
+}
+
 /* The effects of every camera, before anything is drawn: a note for a
  * shutter or line_delay with nothing moving (no effect), the
  * accumulator's range, and the trajectory read whole when a camera needs
@@ -134,6 +157,8 @@ int play_exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_camera
                                                                   : "line_delay has");
         gls_exposure e = gls_exposure_of(c, ms->moving);
         char why[300];
+        if (plan->o.exact && play_exact_camera_check(c, &e, names[i], errs))
+            return 1;
         if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
             gls_exposure_fits(&e, plan, why, sizeof why)) {
             fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);

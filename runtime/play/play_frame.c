@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "distort_exposure.h"
+#include "exact_scene.h"
 #include "exposure_landmarks.h"
 #include "frame_files.h"
 #include "frame_record.h"
@@ -56,6 +57,8 @@ typedef struct {
     gls_box *boxes;
     size_t nboxes;
     void *img;             /* the image in its file's format, when not rgba  */
+    float *exact;          /* exact coverage's image, RGBA float            */
+    gls_exact_cover *cover; /* exact coverage's areas per instance          */
     gls_accum acc;
 } cam_frame;
 
@@ -82,6 +85,8 @@ static void cam_frame_free(cam_frame *cf)
     free(cf->rgba);
     free(cf->z);
     free(cf->img);
+    free(cf->exact);
+    free(cf->cover);
     free(cf->mask);
     free(cf->normal);
     free(cf->flow);
@@ -177,6 +182,28 @@ static int frame_colour(session *s, const gls_camera *c, cam_frame *cf, char *ms
     return rc;
 }
 
+/* The exact pass (exact_scene.h): the scene's triangles projected in
+ * double, each pixel the exact areas of what is visible in it times their
+ * colours, the background the rest.  0, or -1 when out of memory. */
+static int frame_exact(session *s, const gls_camera *c, cam_frame *cf)
+{
+    size_t n = (size_t)c->width * c->height;
+    gls_exact_geom g;
+    float bg[4] = {s->o->background[0], s->o->background[1], s->o->background[2], 1};
+    if ((cf->fp.bytes[GLS_BUF_EXACT] && !(cf->exact = frame_alloc(s->counts, GLS_BUF_EXACT, n * 4 * sizeof *cf->exact))) ||
+        (cf->fp.cover && !(cf->cover = frame_alloc(s->counts, GLS_BUF_COVER, n * GLS_EXACT_COVER_K * sizeof *cf->cover))))
+        return -1;
+    if (s->counts)
+        s->counts->passes[GLS_PASS_I_EXACT]++;
+    /* coverage's ids: the instance ids of the run (gt_table.h) */
+    const uint16_t *idmap = s->gt ? s->gt->id : NULL;
+    int rc = gls_exact_geom_make(&g, s->scene, c) ||
+             gls_exact_render(g.t, g.n, (int)c->width, (int)c->height, bg, gls_exact_geom_shade, &g, idmap, cf->exact,
+                              cf->cover);
+    gls_exact_geom_free(&g);
+    return rc ? -1 : 0;
+}
+
 /* The image in its file's format (through the sensor effects when the
  * camera asks for them: sensor.h, never on ground truth) and the edges
  * map.  0, or -1 when out of memory. */
@@ -199,7 +226,13 @@ static int frame_image(session *s, const gls_camera *c, const char *name, uint32
                     : o->image_format == GLS_IMG_PFM ? 3 * sizeof(float) : 4;
         if (!(cf->img = frame_alloc(cnt, GLS_BUF_IMAGE, n * px)))
             return -1;
-        if (o->image_format == GLS_IMG_PNG16 && aa)
+        if (cf->exact && o->image_format == GLS_IMG_PNG16)
+            gls_exact_rgb16(cf->exact, n, cf->img);
+        else if (cf->exact && o->image_format == GLS_IMG_PFM)
+            gls_exact_rgbf(cf->exact, n, cf->img);
+        else if (cf->exact)
+            gls_exact_rgba8(cf->exact, n, cf->img);
+        else if (o->image_format == GLS_IMG_PNG16 && aa)
             gls_accum_rgb16(&cf->acc, cf->img);
         else if (o->image_format == GLS_IMG_PNG16)
             gls_rgba8_to_rgb16(cf->rgba, n, cf->img);
@@ -291,7 +324,8 @@ static int frame_submit(session *s, const gls_camera *c, const char *name, uint3
     if ((cf->fp.outputs & GLS_OUT_POINTS) && band < c->height &&
         !(f->row_pose = gls_exposure_row_poses(c, band, play_pose_at, s)))
         goto fail;
-    f->rgba = cf->rgba, f->z = cf->z, f->image = cf->img, f->mask = cf->mask;
+    f->rgba = cf->rgba, f->z = cf->z, f->image = cf->img, f->mask = cf->mask, f->cover = cf->cover;
+    cf->cover = NULL;
     /* the writer needs the ids only for the id images and tables */
     int ids = (cf->fp.outputs & GLS_OUT_IDS) != 0;
     f->gt_inst = ids ? cf->gt_ids : NULL, f->normal = cf->normal, f->gt = s->gt;
@@ -361,7 +395,8 @@ int play_camera(session *s, const gls_camera *c, const char *name, uint32_t fram
     cf.bands.whole = o->bands_whole != 0;
     if (frame_buffers(&cf, cnt, n))
         goto out;
-    if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)))
+    if (frame_centre_truth(s, c, &cf, msg, sizeof msg) || (fp->aa && frame_colour(s, c, &cf, msg, sizeof msg)) ||
+        (fp->exact && frame_exact(s, c, &cf)))
         goto out;
     if (s->times && !s->times->draw)
         s->times->draw = gls_now(); /* drawn and read back */

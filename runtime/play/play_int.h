@@ -104,6 +104,7 @@ void play_motion_free(motion_set *ms);
 int play_rectified_check(const gls_play_opts *o, const gls_camera *cams, const char *const *names, double *B,
                          FILE *errs);
 int play_lens_outputs_check(const gls_play_opts *o, const gls_camera *c, const char *path, FILE *errs);
+int play_exact_camera_check(const gls_camera *c, const gls_exposure *e, const char *name, FILE *errs);
 int play_lens_check(const gls_camera *c, const char *path, const gls_aa_plan *plan, FILE *errs);
 int play_exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_camera *cams, const char *const *names,
                         const gls_aa_plan *plan, FILE *errs);

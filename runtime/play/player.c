@@ -18,6 +18,7 @@
 #include "calib_write.h"
 #include "frame_record.h"
 #include "mkdirs.h"
+#include "exact_scene.h"
 #include "play_int.h"
 #include "player.h"
 #include "progress.h"
@@ -120,6 +121,12 @@ static int run_load_scene(run *u)
         return 1;
     }
     u->times.build = gls_now(), u->times.pack = u->scene.pack_seconds;
+    const char *why = u->plan.o.exact ? gls_exact_scene_unsupported(&u->scene) : NULL;
+    if (why) {
+        fprintf(errs, "glsplay: error: %s: --aa exact draws flat and vertex colours only, not %s; leave out --aa "
+                      "exact (sampled anti-aliasing draws it)\n", o->bundle, why);
+        return 1;
+    }
     if (play_motion_load(o, &u->ms, errs) || (!o->trajectory && play_motion_check(&u->ms, o->frame, errs)))
         return 1;
     if (o->trajectory && gls_traj_load(o->trajectory, &u->ms.traj, err, sizeof err)) {
@@ -129,8 +136,9 @@ static int run_load_scene(run *u)
     if (play_exposure_setup(o, &u->ms, u->cams, names, &u->plan, errs) ||
         (!o->trajectory && play_exposure_check(&u->ms, u->cams, names, o->ncameras, o->frame, errs)))
         return 1;
-    if (o->outputs & GLS_OUT_IDS) {
-        /* the ids of the whole run, from the bundle's object names */
+    if (o->outputs & (GLS_OUT_IDS | GLS_OUT_COVERAGE)) {
+        /* the ids of the whole run, from the bundle's object names (the
+         * instance image's, and coverage's) */
         uint32_t count;
         int k = gls_gt_table_build(&u->gt, u->b, &u->scene, &count);
         if (k == 1) {

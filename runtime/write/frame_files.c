@@ -9,6 +9,7 @@
 #include "frame_files.h"
 #include "numfmt.h"
 #include "out_disparity.h"
+#include "out_coverage.h"
 #include "out_flow.h"
 #include "out_gt.h"
 #include "out_npy.h"
@@ -126,6 +127,8 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
         return gls_encode_boxes_kitti(f->boxes, f->nboxes, f->box_names, buf);
     case GLS_OUT_BOXES_JSON:
         return gls_encode_boxes_json(f->boxes, f->nboxes, f->box_names, c, f->name, f->frame, buf);
+    case GLS_OUT_COVERAGE:
+        return gls_encode_coverage_csv(f->cover, c->width, c->height, buf);
     default: /* edges, and the same map as mask */
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -303,6 +306,7 @@ static void destroy(gls_write_job *job)
     free(f->flow);
     free(f->flowmask);
     free(f->boxes);
+    free(f->cover);
     free(f);
 }
 

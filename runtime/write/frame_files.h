@@ -11,6 +11,7 @@
 
 #include <stdint.h>
 #include "camera.h"
+#include "exact.h"
 #include "gt_landmarks.h"
 #include "frame_writer.h"
 #include "gt_table.h"
@@ -74,6 +75,7 @@ typedef struct {
     uint32_t *gt_inst;
     float *normal;
     const gls_gt_table *gt;
+    gls_exact_cover *cover; /* --outputs coverage (exact.h), or NULL */
     uint64_t buffer_bytes; /* for the out-of-memory message */
     size_t nfiles;
     struct {

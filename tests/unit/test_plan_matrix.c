@@ -60,20 +60,20 @@ typedef struct {
 /* One run: explain and render camera c with options aa (n, pattern) and
  * outputs; compare. */
 static void run_case(const char *bpath, const char *traj, const cam_case *cc, uint32_t n, gls_aa_pattern pattern,
-                     const out_case *oc)
+                     int exact, const out_case *oc)
 {
     char cpath[512], outdir[512], label[256];
     snprintf(cpath, sizeof cpath, "%s/%s.cam", dir, cc->name);
     snprintf(outdir, sizeof outdir, "%s/out", dir);
-    snprintf(label, sizeof label, "camera %s, --aa %u %s, outputs %s", cc->name, n, gls_aa_pattern_name(pattern),
-             oc->name);
+    snprintf(label, sizeof label, "camera %s, --aa %u %s%s, outputs %s", cc->name, n, gls_aa_pattern_name(pattern),
+             exact ? " exact" : "", oc->name);
     const char *cams[1] = {cpath};
     gls_frame_counts counts;
     gls_play_opts o;
     memset(&o, 0, sizeof o);
     o.bundle = bpath, o.cameras = cams, o.ncameras = 1, o.outdir = outdir, o.outputs = oc->outputs;
     o.aa = gls_aa_defaults();
-    o.aa.n = n, o.aa.pattern = pattern;
+    o.aa.n = n, o.aa.pattern = pattern, o.aa.exact = exact;
     o.trajectory = traj;
     o.frame_first = 1, o.frame_end = 2; /* frame 1: rows on both sides (the shutter's span, flow) */
     o.explain = 1;
@@ -114,17 +114,21 @@ static void run_case(const char *bpath, const char *traj, const cam_case *cc, ui
     for (int k = 0; k < GLS_BUF_COUNT; k++) {
         if (k == GLS_BUF_DISPARITY || k == GLS_BUF_CODES16 || k == GLS_BUF_ENCODE)
             continue; /* the writer's */
-        char bytes[32], item[96];
+        char bytes[32], item[96], item2[96];
         sum += counts.bytes[k];
         gls_fmt_bytes(bytes, sizeof bytes, counts.bytes[k]);
-        snprintf(item, sizeof item, " %s %s", gls_buffer_word[k], bytes);
+        /* a buffer's words follow the line's colon or a comma: "colour"
+         * is not "exact colour" */
+        snprintf(item, sizeof item, ": %s %s", gls_buffer_word[k], bytes);
+        snprintf(item2, sizeof item2, ", %s %s", gls_buffer_word[k], bytes);
         if (counts.bytes[k])
-            CHECK_MSG(strstr(line, item) != NULL, "%s: the run allocated %s of %s: %s", label, bytes,
+            CHECK_MSG(strstr(line, item) || strstr(line, item2), "%s: the run allocated %s of %s: %s", label, bytes,
                       gls_buffer_word[k], line);
-        snprintf(item, sizeof item, " %s ", gls_buffer_word[k]);
+        snprintf(item, sizeof item, ": %s ", gls_buffer_word[k]);
+        snprintf(item2, sizeof item2, ", %s ", gls_buffer_word[k]);
         if (!counts.bytes[k])
-            CHECK_MSG(strstr(line, item) == NULL, "%s: explain names %s, the run allocated none: %s", label,
-                      gls_buffer_word[k], line);
+            CHECK_MSG(!strstr(line, item) && !strstr(line, item2), "%s: explain names %s, the run allocated none: %s",
+                      label, gls_buffer_word[k], line);
     }
     unsigned long long total = 0, writer = 0;
     const char *at = strstr(line, " in all (");
@@ -210,11 +214,37 @@ static void test_plan_matrix(void)
     for (size_t a = 0; a < sizeof aas / sizeof aas[0]; a++)
         for (size_t i = 0; i < sizeof cams / sizeof cams[0]; i++)
             for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
-                run_case(bpath, traj, &cams[i], aas[a].n, aas[a].pattern, &outs[k]);
+                run_case(bpath, traj, &cams[i], aas[a].n, aas[a].pattern, 0, &outs[k]);
                 runs++;
             }
+    /* exact coverage: a pinhole without effects (the others are refused),
+     * and its coverage output */
+    static const out_case cover = {"image,coverage", GLS_OUT_IMAGE | GLS_OUT_COVERAGE},
+                          cover_only = {"coverage", GLS_OUT_COVERAGE};
+    for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
+        run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &outs[k]);
+        runs++;
+    }
+    run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &cover);
+    run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &cover_only);
+    runs += 2;
     printf("  %d runs: explain's passes, accumulator, buffers and files against the run's\n", runs);
     gls_bundle_free(b);
+}
+
+/* gls_play refuses coverage without exact coverage before drawing (its
+ * callers other than glsplay's arguments reach it too) */
+static void test_coverage_needs_exact(void)
+{
+    gls_play_opts o;
+    char msg[256] = "";
+    memset(&o, 0, sizeof o);
+    o.aa = gls_aa_defaults();
+    o.outputs = GLS_OUT_IMAGE | GLS_OUT_COVERAGE;
+    CHECK(gls_play_check_options(&o, msg, sizeof msg) == -1);
+    CHECK_STR(msg, "--outputs coverage needs --aa exact (exact areas, no samples)");
+    o.aa.exact = 1;
+    CHECK(gls_play_check_options(&o, msg, sizeof msg) == 0);
 }
 
 int main(void)
@@ -224,6 +254,7 @@ int main(void)
         return 1;
     }
     RUN(test_plan_matrix);
+    RUN(test_coverage_needs_exact);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)

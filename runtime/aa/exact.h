@@ -1,0 +1,104 @@
+/* Exact coverage (spec/antialiasing.md "Exact coverage", issue 28): every
+ * pixel the exact area of what is visible in it, for triangles, in double,
+ * with no sampling and no GL.
+ *
+ * Coordinates are the camera model's image coordinates (spec/camera.md):
+ * pixel centres at integers, so pixel (i, j) is the square
+ * [i - 0.5, i + 0.5] x [j - 0.5, j + 0.5].  Each triangle carries 1/Zc at
+ * its vertices; for a planar triangle under a pinhole 1/Zc is affine in
+ * image coordinates, so the plane through the three values is its depth
+ * everywhere and two triangles' equal-depth line is straight.
+ *
+ * Method (Catmull 1978, with the area arithmetic of font rasterisers):
+ * the pixels no edge crosses take the one surface that covers them; in a
+ * pixel an edge crosses, each candidate triangle is clipped against the
+ * pixel square in pixel-local coordinates and every other candidate that is
+ * nearer over part of it is cut away (its triangle intersected with the
+ * half-plane where it is nearer), leaving disjoint convex pieces whose
+ * areas are exact up to rounding.  Shared edges are clipped with one
+ * canonical orientation, so neighbours cancel (exact_int.h).  The files:
+ * exact_poly.c the convex polygon arithmetic, exact_pixels.c the pixels
+ * and their candidates, exact_image.c colour, exact_project.c the 3-D
+ * triangle to image triangles. */
+#ifndef GLS_EXACT_H
+#define GLS_EXACT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    double x[3], y[3];  /* image position of the vertices (pixel centres at
+                           integers)                                      */
+    double iz[3];       /* 1/Zc at the vertices, > 0; larger is nearer     */
+    uint32_t id;        /* the surface's id, reported with its coverage    */
+    float rgba[4];      /* flat colour (gls_exact_image without a shader) */
+} gls_exact_tri;
+
+/* What one triangle shows in one pixel: the exact area (pixel units, the
+ * square is 1) of the part of it that is visible, and that part's
+ * centroid in image coordinates (the pixel centre where area is 0). */
+typedef struct {
+    size_t tri;         /* index into the caller's triangles              */
+    double area;
+    double cx, cy;
+} gls_exact_frag;
+
+/* Called once for every pixel of the image, rows top to bottom, with the
+ * triangles visible in it (n 0: none; the areas sum to at most 1, the rest
+ * is background).  The frags are valid during the call only. */
+typedef void (*gls_exact_pixel_fn)(void *user, int px, int py, const gls_exact_frag *f, size_t n);
+
+/* Visit the w x h image.  Ties (coplanar overlapping triangles): the lower
+ * index is in front.  Triangles of zero image area are skipped.  Memory is
+ * bounded by a band of rows and the candidates in it.  Returns 0, or -1
+ * when out of memory (fn may have been called for part of the image). */
+int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user);
+
+/* A region's colour: the colour of triangle t (index i) at image point
+ * (x, y), the centroid of what is visible of it in a pixel.  For colour
+ * affine in the image (flat, or interpolated linearly in screen space)
+ * that is the region's exact mean. */
+typedef void (*gls_exact_shade_fn)(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4]);
+
+/* The box-filtered image: rgba (w * h * 4 floats, row 0 at the top) =
+ * sum over each pixel's frags of area * colour(centroid) + (1 - sum of
+ * areas) * bg.  shade NULL: each triangle's flat rgba.  0, or -1 when out
+ * of memory. */
+int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
+                    void *user, float *rgba);
+
+/* Coverage (spec/outputs.md "Coverage"): per pixel the exact visible
+ * area of each id, the GLS_EXACT_COVER_K largest, largest first (ties:
+ * the smaller id), the unused slots id 0 area 0; ids 0 are not counted
+ * (the background's). */
+#define GLS_EXACT_COVER_K 4
+typedef struct {
+    uint32_t id;
+    float area;
+} gls_exact_cover;
+
+/* gls_exact_image (rgba NULL: no colour) that also writes cover (NULL:
+ * none; w * h * GLS_EXACT_COVER_K entries), each triangle's id mapped
+ * through idmap (NULL: the id as it is). */
+int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
+                     void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover);
+
+/* A pinhole camera (spec/camera.md "Conventions"): world to camera
+ * Pc = R (Pw - C), the camera looks along +Z, x right, y down; then
+ * u = (fx Xc + skew Yc) / Zc + cx, v = fy Yc / Zc + cy.  All double: a
+ * scene far from the origin loses nothing before the subtraction of C. */
+typedef struct {
+    double R[9];        /* row-major                                        */
+    double C[3];        /* camera centre in world coordinates               */
+    double fx, fy, cx, cy, skew;
+    double znear;       /* > 0: triangles are clipped at Zc = znear in 3-D  */
+    double zfar;        /* > znear: and at Zc = zfar (as GL clips); 0: not */
+} gls_exact_pinhole;
+
+/* World triangle p (3 points) to image triangles, clipped at the near
+ * (and far) plane before projecting: writes 0 to 3 triangles to out (id
+ * and rgba copied from proto) and returns how many. */
+int gls_exact_project(const gls_exact_pinhole *cam, const double p[3][3], const gls_exact_tri *proto,
+                      gls_exact_tri out[3]);
+
+#endif

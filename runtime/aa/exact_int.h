@@ -1,0 +1,79 @@
+/* Internal to the exact-coverage family (exact.h): exact_poly.c,
+ * exact_pixels.c, exact_image.c, exact_project.c.  Not for other rooms.
+ *
+ * Pixel-local coordinates: a pixel's work is done with the pixel centre
+ * subtracted (x - i, y - j), so that the square is [-0.5, 0.5]^2 whatever
+ * the image position and the arithmetic keeps its precision at 1e7 px as
+ * at 0.  Subtracting an integer near x is exact in double.
+ *
+ * Canonical lines.  A triangle edge is clipped with the line through its
+ * two endpoints taken in lexicographic order (x, then y), whichever
+ * triangle it belongs to, and a side sign (+1 or -1) says which half the
+ * triangle keeps; negating a value is exact, and a crossing point is
+ * computed from the segment's endpoints in lexicographic order too, so two
+ * triangles sharing an edge cut a pixel at bit-identical points and their
+ * areas add up to the covered area with no crack and no double count. */
+#ifndef GLS_EXACT_INT_H
+#define GLS_EXACT_INT_H
+
+#include <stddef.h>
+#include "exact.h"
+
+typedef struct {
+    double x, y;
+} exact_pt;
+
+/* f(p) = a (p.x - ox) + b (p.y - oy) + c; the kept half is s f > 0 (the
+ * line itself belongs to both halves).  Edges have c = 0 and their origin
+ * at the canonical first endpoint; depth lines have the origin at 0. */
+typedef struct {
+    double a, b, c, ox, oy;
+    double s;
+} exact_line;
+
+/* convex polygons, counter-clockwise, in one growable vertex pool: piece
+ * k is v[start[k]] .. v[start[k + 1] - 1] */
+typedef struct {
+    exact_pt *v;
+    size_t nv, capv;
+    size_t *start;      /* np + 1 entries once a piece is added           */
+    size_t np, capp;
+} exact_pieces;
+
+/* 1/Zc of a triangle over the image: z = z0 + a (x - x0) + b (y - y0) */
+typedef struct {
+    double a, b, x0, y0, z0;
+} exact_plane;
+
+/* A triangle ready for the pixels: counter-clockwise vertices, its three
+ * edges' canonical lines in image coordinates (origin at the canonical
+ * first endpoint), its depth plane, its pixel bounds. */
+typedef struct {
+    double x[3], y[3];
+    exact_line e[3];
+    exact_plane z;
+    double xmin, xmax, ymin, ymax; /* its bounding box                  */
+    int i0, i1, j0, j1; /* pixels whose square meets its bounding box     */
+} exact_prep;
+
+/* exact_poly.c */
+int exact_prep_tri(const gls_exact_tri *t, int w, int h, exact_prep *p);
+exact_line exact_line_local(const exact_line *l, double i, double j);
+exact_line exact_depth_line(const exact_plane *front, const exact_plane *back, double i, double j);
+double exact_plane_at(const exact_plane *z, double x, double y);
+void exact_pieces_clear(exact_pieces *p);
+void exact_pieces_free(exact_pieces *p);
+int exact_pieces_add(exact_pieces *p, const exact_pt *v, size_t n);
+/* split convex polygon v (n vertices) by l: the kept part to in (*nin),
+ * the rest to out (*nout); in and out hold n + 1 vertices */
+void exact_clip(const exact_pt *v, size_t n, const exact_line *l, exact_pt *in, size_t *nin, exact_pt *out,
+                size_t *nout);
+/* 1: v is all on the kept side of l (or on it), -1: all on the other, 0:
+ * l splits it */
+int exact_line_side(const exact_pt *v, size_t n, const exact_line *l);
+double exact_area(const exact_pt *v, size_t n, double *mx, double *my);
+
+/* exact_pixels.c: one pixel's candidates resolved into fragments */
+typedef struct exact_work exact_work;
+
+#endif

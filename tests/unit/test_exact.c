@@ -1,0 +1,485 @@
+/* Exact coverage (runtime/aa/exact.h, spec/antialiasing.md "Exact
+ * coverage"): the engine's per-pixel areas against independent
+ * computations.  The references here share no code with the engine: a
+ * triangle's area in a pixel square by integrating its vertical extent
+ * over x (piecewise linear between known breakpoints, so the midpoint rule
+ * is exact), and a half-plane's area in a square in closed form.  Long on
+ * purpose: a list of independent tests over one small rig. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "exact.h"
+
+/* ---- rig ------------------------------------------------------------- */
+
+typedef struct {
+    int w, h;
+    double *cover;      /* per pixel: sum of areas                         */
+    double *by_id;      /* per pixel and id 0..3: area                     */
+    size_t most;        /* most fragments in one pixel                     */
+} cov;
+
+static void cov_pixel(void *user, int px, int py, const gls_exact_frag *f, size_t n)
+{
+    cov *c = user;
+    size_t p = (size_t)py * c->w + px;
+    (void)f;
+    for (size_t k = 0; k < n; k++) {
+        c->cover[p] += f[k].area;
+        c->by_id[p * 4 + (f[k].tri & 3)] += f[k].area;
+    }
+    if (n > c->most)
+        c->most = n;
+}
+
+static cov run(const gls_exact_tri *t, size_t n, int w, int h)
+{
+    cov c = {w, h, calloc((size_t)w * h, sizeof(double)), calloc((size_t)w * h * 4, sizeof(double)), 0};
+    CHECK(gls_exact_visit(t, n, w, h, cov_pixel, &c) == 0);
+    return c;
+}
+
+static void cov_free(cov *c) { free(c->cover), free(c->by_id); }
+
+static gls_exact_tri tri(double x0, double y0, double x1, double y1, double x2, double y2, double iz)
+{
+    return (gls_exact_tri){{x0, x1, x2}, {y0, y1, y2}, {iz, iz, iz}, 0, {1, 1, 1, 1}};
+}
+
+static uint64_t rng = 88172645463325252ull;
+static double urand(void) /* [0, 1) */
+{
+    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+    return (double)(rng >> 11) / 9007199254740992.0;
+}
+
+/* ---- independent references ------------------------------------------ */
+
+/* The vertical extent of triangle (x[3], y[3]) at abscissa u: [lo, hi] */
+static int tri_span(const double *x, const double *y, double u, double *lo, double *hi)
+{
+    int n = 0;
+    *lo = INFINITY, *hi = -INFINITY;
+    for (int k = 0; k < 3; k++) {
+        double ax = x[k], ay = y[k], bx = x[(k + 1) % 3], by = y[(k + 1) % 3];
+        if ((u < ax && u < bx) || (u > ax && u > bx) || ax == bx)
+            continue;
+        double yy = ay + (by - ay) * (u - ax) / (bx - ax);
+        *lo = fmin(*lo, yy), *hi = fmax(*hi, yy), n++;
+    }
+    return n > 0;
+}
+
+static int dcmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Area of the triangle in the square [i-.5, i+.5] x [j-.5, j+.5]:
+ * integral over x of the clamped vertical extent.  It is linear between
+ * the breakpoints (vertices, square sides, edges meeting y = j +- .5), so
+ * the midpoint of each interval integrates it exactly. */
+static double ref_tri_area(const double *x, const double *y, int i, int j)
+{
+    double bp[32];
+    int nb = 0;
+    bp[nb++] = i - 0.5, bp[nb++] = i + 0.5;
+    for (int k = 0; k < 3; k++) {
+        bp[nb++] = x[k];
+        double ax = x[k], ay = y[k], bx = x[(k + 1) % 3], by = y[(k + 1) % 3];
+        for (int s = -1; s <= 1; s += 2) {
+            double yl = j + 0.5 * s;
+            if (ay != by && (yl - ay) * (yl - by) <= 0)
+                bp[nb++] = ax + (bx - ax) * (yl - ay) / (by - ay);
+        }
+    }
+    qsort(bp, nb, sizeof *bp, dcmp);
+    double a = 0;
+    for (int k = 0; k + 1 < nb; k++) {
+        double u0 = fmax(bp[k], i - 0.5), u1 = fmin(bp[k + 1], i + 0.5), lo, hi;
+        if (u1 <= u0)
+            continue;
+        if (tri_span(x, y, 0.5 * (u0 + u1), &lo, &hi)) {
+            double l = fmin(hi, j + 0.5) - fmax(lo, j - 0.5);
+            if (l > 0)
+                a += l * (u1 - u0);
+        }
+    }
+    return a;
+}
+
+/* Area of {a x + b y + c > 0} in the square [-.5, .5]^2, closed form:
+ * the square's area below a line is a box spline, sum of quadratic ramps
+ * at the four corner offsets. */
+static double ramp2(double t) { return t > 0 ? t * t : 0; }
+static double ref_halfplane(double a, double b, double c)
+{
+    double aa = fabs(a), ab = fabs(b);
+    /* nearly axis-aligned: the line crosses two opposite sides (or a
+     * corner region 1e-6 wide), where the area is linear in c exactly */
+    if (ab < 1e-6 * aa)
+        return fmin(1, fmax(0, c / aa + 0.5));
+    if (aa < 1e-6 * ab)
+        return fmin(1, fmax(0, c / ab + 0.5));
+    double p = 0.5 * (aa + ab), m = 0.5 * (aa - ab);
+    if (c >= p || c <= -p) /* the line misses the square */
+        return c > 0;
+    return (ramp2(c + p) - ramp2(c + m) - ramp2(c - m) + ramp2(c - p)) / (2 * aa * ab);
+}
+
+/* ---- tests ------------------------------------------------------------ */
+
+/* Random triangles: every pixel's area against the integrating reference,
+ * and the sum against the triangle's area. */
+static void test_exact_area_vs_reference(void)
+{
+    double worst = 0;
+    for (int r = 0; r < 200; r++) {
+        gls_exact_tri t = tri(urand() * 12 - 2, urand() * 12 - 2, urand() * 12 - 2, urand() * 12 - 2,
+                              urand() * 12 - 2, urand() * 12 - 2, 1);
+        cov c = run(&t, 1, 8, 8);
+        for (int j = 0; j < 8; j++)
+            for (int i = 0; i < 8; i++) {
+                double e = fabs(c.cover[j * 8 + i] - ref_tri_area(t.x, t.y, i, j));
+                worst = fmax(worst, e);
+            }
+        cov_free(&c);
+    }
+    printf("  random triangles: worst per-pixel difference %.3g\n", worst);
+    CHECK_MSG(worst <= 1e-12, "worst %g", worst);
+}
+
+/* A half-plane (a triangle whose other edges lie far outside) at every
+ * direction over [0, 180) in 0.05-degree steps, each at a random sub-pixel
+ * offset: every pixel against the closed form.  Also the per-row edge
+ * error (the row's sum minus the exact sum). */
+static void test_exact_halfplane_sweep(void)
+{
+    double worst = 0, worst_row = 0, worst_deg = 0;
+    const int W = 6;
+    for (int k = 0; k < 3600; k++) {
+        double th = k * 0.05 * M_PI / 180, nx = cos(th), ny = sin(th);
+        double px = 2.5 + urand(), py = 2.5 + urand(), L = 1e3;
+        /* inside: n . (x - p) > 0; counter-clockwise order is irrelevant */
+        gls_exact_tri t = tri(px - L * ny, py + L * nx, px + L * ny, py - L * nx, px + L * nx, py + L * ny, 1);
+        cov c = run(&t, 1, W, W);
+        for (int j = 0; j < W; j++) {
+            double row = 0;
+            for (int i = 0; i < W; i++) {
+                double ref = ref_halfplane(nx, ny, nx * (i - px) + ny * (j - py));
+                double e = fabs(c.cover[j * W + i] - ref);
+                row += c.cover[j * W + i] - ref;
+                if (e > worst)
+                    worst = e, worst_deg = k * 0.05;
+            }
+            worst_row = fmax(worst_row, fabs(row));
+        }
+        cov_free(&c);
+    }
+    printf("  half-plane sweep: worst per-pixel error %.3g (at %.2f deg), worst per-row %.3g px\n", worst, worst_deg,
+           worst_row);
+    CHECK_MSG(worst <= 1e-9, "worst %g at %g deg", worst, worst_deg);
+    CHECK_MSG(worst_row <= 1e-9, "worst row %g", worst_row);
+}
+
+/* 1000 triangles around a point: every pixel inside the fan's polygon
+ * covered exactly once, flat (coplanar neighbours) and as a cone (every
+ * neighbour at another slope). */
+static void fan(int cone)
+{
+    const int N = 1000, W = 48;
+    double cx = 24.3, cy = 23.7, R = 20;
+    gls_exact_tri *t = malloc(N * sizeof *t);
+    for (int k = 0; k < N; k++) {
+        double a0 = 2 * M_PI * k / N, a1 = 2 * M_PI * (k + 1) / N;
+        t[k] = tri(cx, cy, cx + R * cos(a0), cy + R * sin(a0), cx + R * cos(a1), cy + R * sin(a1), 0.5);
+        if (cone)
+            t[k].iz[0] = 1;
+        t[k].id = (uint32_t)k;
+    }
+    cov c = run(t, N, W, W);
+    double worst = 0, rin = R * cos(M_PI / N) - 1e-9;
+    int interior = 0;
+    for (int j = 0; j < W; j++)
+        for (int i = 0; i < W; i++) {
+            double dx = fabs(i - cx) + 0.5, dy = fabs(j - cy) + 0.5;
+            if (dx * dx + dy * dy >= rin * rin)
+                continue;
+            interior++;
+            worst = fmax(worst, fabs(c.cover[j * W + i] - 1));
+        }
+    printf("  fan (%s): %d interior pixels, worst |sum - 1| %.3g, most triangles in a pixel %zu\n",
+           cone ? "cone" : "flat", interior, worst, c.most);
+    CHECK(interior > 1000);
+    CHECK_MSG(worst <= 1e-12, "worst %g", worst);
+    cov_free(&c), free(t);
+}
+static void test_exact_fan(void) { fan(0), fan(1); }
+
+/* A T-junction: one triangle's edge meets two triangles' shared vertex at
+ * its midpoint: no crack, no double count. */
+static void test_exact_t_junction(void)
+{
+    double x0 = 1.37, y0 = 1.61, x1 = 14.81, y1 = 12.29;
+    double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
+    gls_exact_tri t[3] = {tri(x0, y0, x1, y0, x0, y1, 0.5), tri(x1, y0, x1, y1, mx, my, 0.5),
+                          tri(x1, y1, x0, y1, mx, my, 0.5)};
+    cov c = run(t, 3, 16, 16);
+    double worst = 0;
+    for (int j = 0; j < 16; j++)
+        for (int i = 0; i < 16; i++)
+            if (i - 0.5 >= x0 && i + 0.5 <= x1 && j - 0.5 >= y0 && j + 0.5 <= y1)
+                worst = fmax(worst, fabs(c.cover[j * 16 + i] - 1));
+    CHECK_MSG(worst <= 1e-12, "worst %g", worst);
+    cov_free(&c);
+}
+
+/* Slivers far thinner than a pixel (1e-6 and 1e-12 px) across 20
+ * pixels: per pixel against the reference, and the total against the
+ * sliver's area, both absolute: areas are summed in pixel-local
+ * coordinates, where a pixel's rounding is about 1e-16 of its area
+ * whatever the sliver's width. */
+static void test_exact_sliver(void)
+{
+    static const double widths[] = {1e-6, 1e-12};
+    for (int k = 0; k < 2; k++) {
+        double d = widths[k];
+        gls_exact_tri t = tri(0.3, 0.7, 19.1, 7.9, 19.1, 7.9 + d, 1);
+        /* a vertical side of height y2 - y1 (exact in double) at x 19.1 */
+        double area = 0.5 * (t.y[2] - t.y[1]) * (t.x[1] - t.x[0]);
+        cov c = run(&t, 1, 20, 10);
+        double sum = 0, worst = 0;
+        for (int j = 0; j < 10; j++)
+            for (int i = 0; i < 20; i++) {
+                sum += c.cover[j * 20 + i];
+                worst = fmax(worst, fabs(c.cover[j * 20 + i] - ref_tri_area(t.x, t.y, i, j)));
+            }
+        printf("  sliver %g px: total %.6g (exact %.6g), worst per-pixel %.3g\n", d, sum, area, worst);
+        CHECK_MSG(fabs(sum - area) <= 1e-14, "sum %.17g area %.17g", sum, area);
+        CHECK_MSG(worst <= 1e-13, "worst %g", worst);
+        cov_free(&c);
+    }
+}
+
+/* Two quads (two triangles each) passing through each other: each pixel's
+ * share of the first is the half-plane where its 1/Zc is larger, exactly;
+ * coverage sums to 1. */
+static void test_exact_interpenetrating(void)
+{
+    const int W = 12;
+    double worst = 0, worst_sum = 0;
+    for (int r = 0; r < 50; r++) {
+        /* planes iz = c + a x + b y; their difference's zero line is oblique */
+        double a1 = 0.01 * (urand() - 0.5), b1 = 0.01 * (urand() - 0.5), c1 = 0.5;
+        double a2 = 0.01 * (urand() - 0.5), b2 = 0.01 * (urand() - 0.5);
+        double xs = 3 + 6 * urand(), ys = 3 + 6 * urand();
+        double c2 = c1 + (a1 - a2) * xs + (b1 - b2) * ys; /* equal at (xs, ys) */
+        double X[4] = {-3, W + 3, W + 3, -3}, Y[4] = {-3, -3, W + 3, W + 3};
+        gls_exact_tri t[4];
+        for (int q = 0; q < 2; q++) {
+            double a = q ? a2 : a1, b = q ? b2 : b1, c = q ? c2 : c1;
+            int o[2][3] = {{0, 1, 2}, {0, 2, 3}};
+            for (int h = 0; h < 2; h++) {
+                gls_exact_tri *u = &t[2 * q + h];
+                *u = tri(X[o[h][0]], Y[o[h][0]], X[o[h][1]], Y[o[h][1]], X[o[h][2]], Y[o[h][2]], 0);
+                for (int v = 0; v < 3; v++)
+                    u->iz[v] = c + a * u->x[v] + b * u->y[v];
+            }
+        }
+        cov c = run(t, 4, W, W);
+        for (int j = 0; j < W; j++)
+            for (int i = 0; i < W; i++) {
+                size_t p = (size_t)j * W + i;
+                double first = c.by_id[p * 4 + 0] + c.by_id[p * 4 + 1];
+                double ref = ref_halfplane(a1 - a2, b1 - b2, (a1 - a2) * i + (b1 - b2) * j + c1 - c2);
+                worst = fmax(worst, fabs(first - ref));
+                worst_sum = fmax(worst_sum, fabs(c.cover[p] - 1));
+            }
+        cov_free(&c);
+    }
+    printf("  interpenetrating quads: worst per-pixel %.3g, worst |sum - 1| %.3g\n", worst, worst_sum);
+    CHECK_MSG(worst <= 1e-9, "worst %g", worst);
+    CHECK_MSG(worst_sum <= 1e-12, "worst sum %g", worst_sum);
+}
+
+static const gls_exact_pinhole cam0 = {{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, 8, 8, 7.5, 7.5, 0, 1, 0};
+
+/* A triangle crossing the near plane, clipped in 3-D: one vertex in front
+ * (the cut leaves a triangle, here with dyadic cut points) gives the image
+ * of the hand-cut triangle; two in front (a quad) give its projected area,
+ * counted once over the two halves. */
+static void test_exact_near_plane(void)
+{
+    gls_exact_tri proto = tri(0, 0, 0, 0, 0, 0, 0), out[3], cut[3];
+    double p[3][3] = {{-1, 0.5, -1}, {1, 0.5, -1}, {0, 0.5, 3}};
+    double q[3][3] = {{-0.5, 0.5, 1}, {0.5, 0.5, 1}, {0, 0.5, 3}};
+    CHECK(gls_exact_project(&cam0, p, &proto, out) == 1);
+    CHECK(gls_exact_project(&cam0, q, &proto, cut) == 1);
+    cov a = run(out, 1, 16, 16), b = run(cut, 1, 16, 16);
+    double worst = 0, sum = 0;
+    for (int k = 0; k < 256; k++)
+        worst = fmax(worst, fabs(a.cover[k] - b.cover[k])), sum += a.cover[k];
+    CHECK_MSG(worst <= 1e-12, "worst %g", worst);
+    CHECK(sum > 1);
+    cov_free(&a), cov_free(&b);
+    /* two vertices in front: (0, 0.5, 1) cut points at Z = 1 from (.., -1) */
+    double r[3][3] = {{-1, 0.5, 3}, {1, 0.5, 3}, {0, 0.5, -1}};
+    CHECK(gls_exact_project(&cam0, r, &proto, out) == 2);
+    /* the cut quad: (-1,.5,3) (1,.5,3) and the points at Z = 1 on the edges
+     * to (0,.5,-1): s = 1/2, (.5,.5,1) and (-.5,.5,1) */
+    double Q[4][3] = {{-1, 0.5, 3}, {1, 0.5, 3}, {0.5, 0.5, 1}, {-0.5, 0.5, 1}}, u[4], v[4], area = 0;
+    for (int k = 0; k < 4; k++)
+        u[k] = 8 * Q[k][0] / Q[k][2] + 7.5, v[k] = 8 * Q[k][1] / Q[k][2] + 7.5;
+    for (int k = 0; k < 4; k++)
+        area += 0.5 * (u[k] * v[(k + 1) % 4] - u[(k + 1) % 4] * v[k]);
+    cov c = run(out, 2, 16, 16);
+    sum = 0;
+    double most = 0;
+    for (int k = 0; k < 256; k++)
+        sum += c.cover[k], most = fmax(most, c.cover[k]);
+    CHECK_MSG(fabs(sum - fabs(area)) <= 1e-12, "sum %.17g area %.17g", sum, fabs(area));
+    CHECK(most <= 1 + 1e-12);
+    cov_free(&c);
+}
+
+/* The far plane, as GL clips: a triangle from Zc 1 to 3 with far 2 keeps
+ * the quad in front of Zc = 2 (dyadic cut points), its projected area
+ * counted once over the pieces. */
+static void test_exact_far_plane(void)
+{
+    gls_exact_pinhole cam = cam0;
+    cam.znear = 0.5, cam.zfar = 2;
+    gls_exact_tri proto = tri(0, 0, 0, 0, 0, 0, 0), out[3];
+    double p[3][3] = {{-1, 0.5, 1}, {1, 0.5, 1}, {0, 0.5, 3}};
+    int m = gls_exact_project(&cam, p, &proto, out);
+    CHECK(m == 2);
+    double Q[4][3] = {{-1, 0.5, 1}, {1, 0.5, 1}, {0.5, 0.5, 2}, {-0.5, 0.5, 2}}, u[4], v[4], area = 0;
+    for (int k = 0; k < 4; k++)
+        u[k] = 8 * Q[k][0] / Q[k][2] + 7.5, v[k] = 8 * Q[k][1] / Q[k][2] + 7.5;
+    for (int k = 0; k < 4; k++)
+        area += 0.5 * (u[k] * v[(k + 1) % 4] - u[(k + 1) % 4] * v[k]);
+    cov c = run(out, (size_t)m, 16, 16);
+    double sum = 0;
+    for (int k = 0; k < 256; k++)
+        sum += c.cover[k];
+    CHECK_MSG(fabs(sum - fabs(area)) <= 1e-12, "sum %.17g area %.17g", sum, fabs(area));
+    /* entirely beyond the far plane: nothing */
+    double q[3][3] = {{-1, 0.5, 3}, {1, 0.5, 3}, {0, 0.5, 4}};
+    CHECK(gls_exact_project(&cam, q, &proto, out) == 0);
+    cov_free(&c);
+}
+
+/* The same scene 1e7 units from the origin (vertices and camera moved
+ * together; coordinates dyadic, so the move is exact): the same image. */
+static void test_exact_far_offset(void)
+{
+    const double off[3] = {1e7, -1e7, 1e7};
+    double worst = 0;
+    static double first[256];
+    for (int pass = 0; pass < 2; pass++) {
+        gls_exact_pinhole cam = cam0;
+        cam.R[0] = 0.8, cam.R[2] = 0.6, cam.R[6] = -0.6, cam.R[8] = 0.8; /* turned about y */
+        gls_exact_tri t[36];
+        size_t n = 0;
+        double s = pass ? 1 : 0;
+        rng = 12345; /* the same triangles both times */
+        for (int k = 0; k < 3; k++)
+            cam.C[k] = s * off[k];
+        for (int r = 0; r < 12; r++) {
+            double p[3][3];
+            for (int v = 0; v < 3; v++)
+                for (int k = 0; k < 3; k++) /* multiples of 2^-16 in front of the camera */
+                    p[v][k] = s * off[k] + ldexp(floor((k == 2 ? 4 : 0) * 65536 + (urand() - 0.5) * 6 * 65536), -16);
+            gls_exact_tri proto = tri(0, 0, 0, 0, 0, 0, 0);
+            proto.id = (uint32_t)r;
+            n += (size_t)gls_exact_project(&cam, p, &proto, t + n);
+        }
+        cov c = run(t, n, 16, 16);
+        for (int k = 0; k < 256; k++) {
+            if (pass)
+                worst = fmax(worst, fabs(c.cover[k] - first[k]));
+            else
+                first[k] = c.cover[k];
+        }
+        if (!pass) {
+            double sum = 0;
+            for (int k = 0; k < 256; k++)
+                sum += c.cover[k];
+            CHECK(sum > 10);
+        }
+        cov_free(&c);
+    }
+    CHECK_MSG(worst == 0, "worst %g", worst);
+}
+
+/* Flat colours: the image is the area-weighted mix, background the rest. */
+static void test_exact_image_flat(void)
+{
+    gls_exact_tri t = tri(0.5, 0.5, 3.5, 0.5, 0.5, 3.5, 1);
+    float rgba[4 * 4 * 4], bg[4] = {0, 0, 0, 1};
+    t.rgba[0] = 1, t.rgba[1] = 0.5f, t.rgba[2] = 0, t.rgba[3] = 1;
+    CHECK(gls_exact_image(&t, 1, 4, 4, bg, NULL, NULL, rgba) == 0);
+    /* pixel (1, 1): fully inside; pixel (2, 2): exactly half (diagonal) */
+    CHECK_NEAR(rgba[(1 * 4 + 1) * 4 + 0], 1, 0);
+    CHECK_NEAR(rgba[(2 * 4 + 2) * 4 + 0], 0.5, 1e-7);
+    CHECK_NEAR(rgba[(2 * 4 + 2) * 4 + 1], 0.25, 1e-7);
+    CHECK_NEAR(rgba[(2 * 4 + 2) * 4 + 3], 1, 1e-7);
+    CHECK_NEAR(rgba[0], 0, 0);
+}
+
+/* Coverage: areas summed per id (two triangles of one id), the K largest
+ * largest first (ties: the smaller id), ids mapped, 0 not counted. */
+static void test_exact_coverage(void)
+{
+    /* a pixel-sized square of id 7 (two triangles) in pixel (1, 1), its
+     * left half under a nearer rectangle of id 2 (two triangles) */
+    gls_exact_tri t[9];
+    t[0] = tri(0.5, 0.5, 1.5, 0.5, 1.5, 1.5, 0.5), t[1] = tri(0.5, 0.5, 1.5, 1.5, 0.5, 1.5, 0.5);
+    t[0].id = t[1].id = 7;
+    t[2] = tri(0.5, 0.5, 1.0, 0.5, 1.0, 1.5, 1), t[3] = tri(0.5, 0.5, 1.0, 1.5, 0.5, 1.5, 1);
+    t[2].id = t[3].id = 2;
+    /* pixel (2, 1): five nested right triangles 0.1 .. 0.5 wide, the
+     * smaller nearer: each shows 0.05 of the pixel; ids 10..14 */
+    for (int k = 0; k < 5; k++)
+        t[4 + k] = tri(1.5, 0.5, 1.5, 1.5, 1.5 + 0.1 * (k + 1), 0.5, 6 - k), t[4 + k].id = (uint32_t)(10 + k);
+    gls_exact_cover cov[3 * 3 * GLS_EXACT_COVER_K];
+    float bg[4] = {0, 0, 0, 0};
+    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, NULL, NULL, cov) == 0);
+    const gls_exact_cover *p = cov + (1 * 3 + 1) * GLS_EXACT_COVER_K;
+    CHECK(p[0].id == 2 && p[1].id == 7 && p[2].id == 0);
+    CHECK_NEAR(p[0].area, 0.5, 1e-7);
+    CHECK_NEAR(p[1].area, 0.5, 1e-7);
+    p = cov + (1 * 3 + 2) * GLS_EXACT_COVER_K;
+    /* five ids of equal area up to rounding: four of them, each once */
+    unsigned seen = 0;
+    for (int k = 0; k < GLS_EXACT_COVER_K; k++) {
+        CHECK_MSG(p[k].id >= 10 && p[k].id <= 14 && !(seen & (1u << (p[k].id - 10))), "slot %d: id %u", k, p[k].id);
+        seen |= p[k].id >= 10 && p[k].id <= 14 ? 1u << (p[k].id - 10) : 0;
+        CHECK_NEAR(p[k].area, 0.05, 1e-7);
+    }
+    /* an id map: 7 -> 0 (not counted), 2 -> 9 */
+    uint16_t map[15] = {0};
+    map[2] = 9;
+    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, map, NULL, cov) == 0);
+    p = cov + (1 * 3 + 1) * GLS_EXACT_COVER_K;
+    CHECK(p[0].id == 9 && p[1].id == 0);
+}
+
+int main(void)
+{
+    RUN(test_exact_area_vs_reference);
+    RUN(test_exact_halfplane_sweep);
+    RUN(test_exact_fan);
+    RUN(test_exact_t_junction);
+    RUN(test_exact_sliver);
+    RUN(test_exact_interpenetrating);
+    RUN(test_exact_near_plane);
+    RUN(test_exact_far_plane);
+    RUN(test_exact_far_offset);
+    RUN(test_exact_image_flat);
+    RUN(test_exact_coverage);
+    CHECK_EXIT();
+}
