@@ -37,6 +37,8 @@ LANDMARK_DTYPE = np.dtype([("name", object), ("path", object), ("X", "f8"), ("Y"
 BOX_DTYPE = np.dtype([("type", object), ("truncated", "f8"), ("occluded", "i4"), ("alpha", "f8"),
                       ("bbox", "f8", (4,)), ("dimensions", "f8", (3,)), ("location", "f8", (3,)),
                       ("rotation_y", "f8")])
+# coverage (--aa exact): each instance's exact visible area in a pixel
+COVERAGE_DTYPE = np.dtype([("x", "<i4"), ("y", "<i4"), ("id", "<u2"), ("area", "<f8")])
 POINT_DTYPE = np.dtype([("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("red", "u1"), ("green", "u1"),
                         ("blue", "u1")])
 
@@ -59,6 +61,14 @@ def _boxes(text: str) -> np.ndarray:
     return out
 
 
+def _coverage(text: str) -> np.ndarray:
+    rows = list(csv.reader(io.StringIO(text)))[1:]
+    out = np.zeros(len(rows), dtype=COVERAGE_DTYPE)
+    for i, r in enumerate(rows):
+        out[i] = (int(r[0]), int(r[1]), int(r[2]), float(r[3]))
+    return out
+
+
 def _points(data: bytes) -> np.ndarray:
     end = data.index(b"end_header\n") + len(b"end_header\n")
     return np.frombuffer(data[end:], dtype=POINT_DTYPE).copy()
@@ -75,6 +85,8 @@ def _decode(name: str, a: _Array):
             return _landmarks(text)
         if name == "boxes":
             return _boxes(text)
+        if name == "coverage":
+            return _coverage(text)
         return json.loads(text) if name in ("coco", "instances", "boxes_json") else text
     dims = tuple(a.dims[:a.ndim])
     return np.frombuffer(raw, dtype=_DTYPES[a.dtype]).reshape(dims).copy()
@@ -83,7 +95,9 @@ def _decode(name: str, a: _Array):
 class Player:
     """A compiled scene (.glsb) ready to render.
 
-    Player(bundle, aa=N (N x N samples a pixel, glsplay --aa),
+    Player(bundle, aa=N (N x N samples a pixel, glsplay --aa) or "exact"
+    (the exact area of what is visible in each pixel: flat and vertex
+    colours through a pinhole; outputs may then include "coverage"),
     pattern="lattice"|"grid"|"stratified", backend="auto"|"egl"|"osmesa",
     background=(r, g, b) in 0..1, seed=0, options=[more glsplay
     arguments, e.g. "--image-format", "png16"]).  A context manager; close()
@@ -94,7 +108,7 @@ class Player:
     (and their files unchanged) renders in it without loading the scene
     again; other settings close it and begin theirs."""
 
-    def __init__(self, bundle: Union[str, os.PathLike], aa: int = 1, pattern: str = "lattice",
+    def __init__(self, bundle: Union[str, os.PathLike], aa: Union[int, str] = 1, pattern: str = "lattice",
                  backend: str = "auto", background: Sequence[float] = (0.0, 0.0, 0.0), seed: int = 0,
                  options: Sequence[str] = ()):
         self._p = None
@@ -104,19 +118,21 @@ class Player:
         if pattern not in _PATTERNS:
             raise ValueError("pattern must be one of %s, got %r" % (", ".join(_PATTERNS), pattern))
         self._bundle = os.fspath(bundle)
-        self._args = ["--aa", str(int(aa)), "--pattern", pattern, "--seed", str(int(seed)),
+        exact = aa == "exact"  # the run's --aa exact; glscene_render has no exact mode
+        self._args = ["--aa", "exact" if exact else str(int(aa)), "--pattern", pattern, "--seed", str(int(seed)),
                       "--background", ",".join(repr(float(x)) for x in background)]
         if backend != "auto":
             self._args += ["--backend", backend]
         self._args += [str(x) for x in options]
         self._moved = set()
-        o = _Options(_BACKENDS[backend], int(aa), _PATTERNS[pattern], int(seed), (ctypes.c_float * 3)(*background))
+        o = _Options(_BACKENDS[backend], 1 if exact else int(aa), _PATTERNS[pattern], int(seed),
+                     (ctypes.c_float * 3)(*background))
         err = _Error()
         p = _lib.glscene_open(_path(bundle), ctypes.byref(o), ctypes.byref(err))
         if not p:
             _raise(err)
         self._p = p
-        self._direct_ok = not options
+        self._direct_ok = not options and not exact
 
     def close(self) -> None:
         """Free the scene, the open run and their GL contexts (also when

@@ -170,6 +170,26 @@ t = glscene.compile("color(1, 0, 0);\npoly { vert(-1, -1, 5); vert(1, -1, 5); ve
 with glscene.Player(t) as p:
     z = p.render(glscene.Camera(64, 48, 50, 50, 31.5, 23.5), outputs="depth")["depth"]
 result("python_compile_text", t == os.path.join(TMP, "t.glsb") and abs(z[24, 32] - 5.0) <= 5.0 * 2e-7, str(z[24, 32]))
+# --aa exact from Python: the image is glsplay's --aa exact image, and
+# coverage sums to 1 over each pixel the triangle touches (the background
+# is id 0: its rest)
+tcam = os.path.join(TMP, "t.cam")
+with open(tcam, "w") as f:
+    f.write("width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\n")
+with glscene.Player(t, aa="exact") as p:
+    ex = p.render(glscene.Camera.from_file(tcam), outputs=["image", "coverage"])
+subprocess.run([os.path.join(BUILD, "glsplay"), t, "--camera", tcam, "--aa", "exact", "--outputs", "image",
+                "-o", os.path.join(TMP, "ex")], check=True)
+want = cv2.imread(os.path.join(TMP, "ex", "t", "image_000000.png"))[:, :, ::-1]
+cov = ex["coverage"]
+sums = np.zeros((48, 64))
+np.add.at(sums, (cov["y"], cov["x"]), cov["area"])
+touched = np.zeros((48, 64), bool)
+touched[cov["y"][cov["id"] > 0], cov["x"][cov["id"] > 0]] = True
+result("python_exact_image_and_coverage", cov.dtype == glscene.COVERAGE_DTYPE and np.array_equal(ex["image"], want)
+       and touched.sum() > 100 and np.abs(sums[touched] - 1).max() < 1e-9,
+       "%d pixels touched, worst |sum - 1| %g, image equal %s" % (touched.sum(), np.abs(sums[touched] - 1).max(),
+                                                                   np.array_equal(ex["image"], want)))
 # move() reaches glscene_render's frames only: a run refuses rather than
 # render without the move
 with glscene.Player(bundle) as p:
