@@ -22,20 +22,8 @@
 #include <string.h>
 #include <time.h>
 #include "exact.h"
+#include "halfplane_area.h"
 
-static double ramp2(double t) { return t > 0 ? t * t : 0; }
-static double halfplane(double a, double b, double c)
-{
-    double aa = fabs(a), ab = fabs(b);
-    if (ab < 1e-6 * aa)
-        return fmin(1, fmax(0, c / aa + 0.5));
-    if (aa < 1e-6 * ab)
-        return fmin(1, fmax(0, c / ab + 0.5));
-    double p = 0.5 * (aa + ab), m = 0.5 * (aa - ab);
-    if (c >= p || c <= -p) /* the line misses the square */
-        return c > 0;
-    return (ramp2(c + p) - ramp2(c + m) - ramp2(c - m) + ramp2(c - p)) / (2 * aa * ab);
-}
 
 #define W 12
 typedef struct {
@@ -80,7 +68,7 @@ static int run_dirs(const double *deg, long n, int offsets, const char *name)
                 double line = 0;
                 for (int i = 0; i < W; i++) {
                     int x = steep ? i : j, y = steep ? j : i;
-                    double e = m.cover[y * W + x] - halfplane(nx, ny, nx * (x - px) + ny * (y - py));
+                    double e = m.cover[y * W + x] - gls_halfplane_area(nx, ny, nx * (x - px) + ny * (y - py));
                     line += e, pixels++;
                     if (fabs(e) > worst)
                         worst = fabs(e), wdeg = deg[k];

@@ -11,6 +11,7 @@
 #include <string.h>
 #include "check.h"
 #include "exact.h"
+#include "halfplane_area.h"
 
 /* ---- rig ------------------------------------------------------------- */
 
@@ -111,24 +112,8 @@ static double ref_tri_area(const double *x, const double *y, int i, int j)
     return a;
 }
 
-/* Area of {a x + b y + c > 0} in the square [-.5, .5]^2, closed form:
- * the square's area below a line is a box spline, sum of quadratic ramps
- * at the four corner offsets. */
-static double ramp2(double t) { return t > 0 ? t * t : 0; }
-static double ref_halfplane(double a, double b, double c)
-{
-    double aa = fabs(a), ab = fabs(b);
-    /* nearly axis-aligned: the line crosses two opposite sides (or a
-     * corner region 1e-6 wide), where the area is linear in c exactly */
-    if (ab < 1e-6 * aa)
-        return fmin(1, fmax(0, c / aa + 0.5));
-    if (aa < 1e-6 * ab)
-        return fmin(1, fmax(0, c / ab + 0.5));
-    double p = 0.5 * (aa + ab), m = 0.5 * (aa - ab);
-    if (c >= p || c <= -p) /* the line misses the square */
-        return c > 0;
-    return (ramp2(c + p) - ramp2(c + m) - ramp2(c - m) + ramp2(c - p)) / (2 * aa * ab);
-}
+/* the closed-form area of a half-plane in the pixel square */
+#define ref_halfplane gls_halfplane_area
 
 /* ---- tests ------------------------------------------------------------ */
 
