@@ -5,6 +5,7 @@
  * px) and the union by the lengths per side adding up to the side's
  * length. */
 #include <math.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include "check.h"
@@ -208,11 +209,103 @@ static void test_edges_interpenetrating(void)
     CHECK_NEAR(on, 4.7 - 1.3, 1e-9);
 }
 
+static uint64_t rng = 88172645463325252ull;
+static double urand(void) /* [0, 1) */
+{
+    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+    return (double)(rng >> 11) / 9007199254740992.0;
+}
+
+/* the id in front at (x, y), by brute force over all triangles: each's
+ * 1/Zc by barycentric interpolation, the larger nearer, ties the lower
+ * index; 0 where none covers */
+static uint32_t id_at(const gls_exact_tri *t, size_t n, double x, double y)
+{
+    double best = -1;
+    uint32_t id = 0;
+    for (size_t k = 0; k < n; k++) {
+        const double *X = t[k].x, *Y = t[k].y;
+        double d = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+        double b1 = ((x - X[0]) * (Y[2] - Y[0]) - (y - Y[0]) * (X[2] - X[0])) / d;
+        double b2 = ((X[1] - X[0]) * (y - Y[0]) - (Y[1] - Y[0]) * (x - X[0])) / d;
+        double b0 = 1 - b1 - b2;
+        if (b0 < 0 || b1 < 0 || b2 < 0)
+            continue;
+        double z = b0 * t[k].iz[0] + b1 * t[k].iz[1] + b2 * t[k].iz[2];
+        if (z > best)
+            best = z, id = t[k].id;
+    }
+    return id;
+}
+
+/* Random tilted triangles of five ids passing through each other: every
+ * segment's ids are what a brute-force point query finds just beside its
+ * middle (1e-7 px off), and no segment has one id on both sides. */
+static void test_edges_random(void)
+{
+    static segs g;
+    gls_exact_tri t[40];
+    for (int k = 0; k < 40; k++) {
+        double cx = 2 + 12 * urand(), cy = 2 + 8 * urand();
+        for (int v = 0; v < 3; v++)
+            t[k].x[v] = cx + 6 * (urand() - 0.5), t[k].y[v] = cy + 6 * (urand() - 0.5), t[k].iz[v] = 1 + urand();
+        t[k].id = 1 + (uint32_t)(k % 5);
+    }
+    g.n = 0;
+    CHECK(gls_exact_edges(t, 40, 16, 12, NULL, collect, &g) == 0);
+    CHECK(g.n > 100 && g.n < sizeof g.s / sizeof g.s[0]);
+    size_t bad = 0, checked = 0;
+    for (size_t q = 0; q < g.n; q++) {
+        const gls_exact_seg *s = &g.s[q];
+        double dx = s->x1 - s->x0, dy = s->y1 - s->y0, l = hypot(dx, dy);
+        bad += s->left == s->right;
+        if (l < 1e-4)
+            continue;
+        double mx = 0.5 * (s->x0 + s->x1), my = 0.5 * (s->y0 + s->y1), nx = dy / l * 1e-7, ny = -dx / l * 1e-7;
+        uint32_t a = id_at(t, 40, mx + nx, my + ny), b = id_at(t, 40, mx - nx, my - ny);
+        checked++;
+        if (a != s->left || b != s->right) {
+            if (bad < 5)
+                printf("  segment (%.9g,%.9g)-(%.9g,%.9g): ids %u|%u, brute force %u|%u\n", s->x0, s->y0, s->x1, s->y1,
+                       s->left, s->right, a, b);
+            bad++;
+        }
+    }
+    CHECK_MSG(bad == 0, "%zu of %zu segments wrong", bad, checked);
+    /* and none missing: along random rows, every change of the brute-force
+     * id (bisected to 1e-11 px) lies on a segment */
+    size_t changes = 0, missing = 0;
+    for (int r = 0; r < 40; r++) {
+        double y = -0.4 + 11.8 * urand(), x = -0.45;
+        uint32_t prev = id_at(t, 40, x, y);
+        for (; x + 0.01 < 15.5; x += 0.01) {
+            uint32_t next = id_at(t, 40, x + 0.01, y);
+            if (next == prev)
+                continue;
+            double lo = x, hi = x + 0.01;
+            while (hi - lo > 1e-11) {
+                double m = 0.5 * (lo + hi);
+                if (id_at(t, 40, m, y) == prev)
+                    lo = m;
+                else
+                    hi = m;
+            }
+            int found = 0;
+            for (size_t q = 0; q < g.n && !found; q++)
+                found = dist_seg(lo, y, g.s[q].x0, g.s[q].y0, g.s[q].x1, g.s[q].y1) <= 1e-8;
+            changes++, missing += !found;
+            prev = next;
+        }
+    }
+    CHECK_MSG(changes > 50 && missing == 0, "%zu of %zu changes of id on no segment", missing, changes);
+}
+
 int main(void)
 {
     RUN(test_edges_square);
     RUN(test_edges_occluded);
     RUN(test_edges_shared);
     RUN(test_edges_interpenetrating);
+    RUN(test_edges_random);
     CHECK_EXIT();
 }
