@@ -176,6 +176,7 @@ SEES_test_gt_table := runtime
 SEES_test_lighting := runtime
 SEES_test_lens_truth := runtime
 SEES_test_exact := bench
+SEES_test_exact_edges := runtime
 SEES_test_sensor := runtime
 SEES_test_road_geo := roads
 SEES_test_road_nurbs := roads

@@ -94,8 +94,9 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
     /* exact coverage is the box filter's value, with no samples */
     if (o->aa.exact && o->aa.filter != GLS_AA_BOX)
         return gls_play_fail(r, e, -1, "--aa exact is the box filter's exact value; leave out --filter gauss");
-    if ((o->outputs & GLS_OUT_COVERAGE) && !o->aa.exact)
-        return gls_play_fail(r, e, -1, "--outputs coverage needs --aa exact (exact areas, no samples)");
+    if ((o->outputs & GLS_OUT_EXACT_ONLY) && !o->aa.exact)
+        return gls_play_fail(r, e, -1, "--outputs %s needs --aa exact (exact areas, no samples)",
+                             GLS_OUT_EXACT_WORD(o->outputs));
     if (r->have_samples && o->aa.pattern != GLS_AA_LATTICE) {
         unsigned long long root = (unsigned long long)sqrt((double)o->aa.samples);
         if (root * root != o->aa.samples) {

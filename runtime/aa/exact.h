@@ -83,6 +83,28 @@ typedef struct {
 int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
                      void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover);
 
+/* Edge segments (spec/outputs.md "Edge segments"): the visible edges of
+ * the image, from the same visibility as the areas (depth planes, ties to
+ * the lower index).  One segment is a maximal piece, inside one pixel's
+ * square, of a triangle edge or of two triangles' equal-depth line along
+ * which the surface in front on each side stays the same and the two
+ * ids differ; it runs from the line's lexicographically first end (x,
+ * then y) to the other, left and right as seen walking along it in the
+ * image (y down), id 0 the background.  Pieces on the image's border are
+ * left out; a piece on the border of two pixels is the right or lower
+ * pixel's. */
+typedef struct {
+    double x0, y0, x1, y1;
+    uint32_t left, right;
+} gls_exact_seg;
+typedef void (*gls_exact_seg_fn)(void *user, const gls_exact_seg *s);
+
+/* Visit the w x h image's segments, pixel by pixel, rows top to bottom,
+ * each triangle's id mapped through idmap (NULL: as it is).  0, or -1 when
+ * out of memory. */
+int gls_exact_edges(const gls_exact_tri *t, size_t n, int w, int h, const uint16_t *idmap, gls_exact_seg_fn fn,
+                    void *user);
+
 /* A pinhole camera (spec/camera.md "Conventions"): world to camera
  * Pc = R (Pw - C), the camera looks along +Z, x right, y down; then
  * u = (fx Xc + skew Yc) / Zc + cx, v = fy Yc / Zc + cy.  All double: a

@@ -1,5 +1,5 @@
 /* Internal to the exact-coverage family (exact.h): exact_poly.c,
- * exact_pixels.c, exact_image.c, exact_project.c.  Not for other rooms.
+ * exact_pixels.c, exact_image.c, exact_project.c, exact_edges.c.  Not for other rooms.
  *
  * Pixel-local coordinates: a pixel's work is done with the pixel centre
  * subtracted (x - i, y - j), so that the square is [-0.5, 0.5]^2 whatever
@@ -75,5 +75,20 @@ double exact_area(const exact_pt *v, size_t n, double *mx, double *my);
 
 /* exact_pixels.c: one pixel's candidates resolved into fragments */
 typedef struct exact_work exact_work;
+
+/* a triangle that may show in a pixel (nearer than the nearest triangle
+ * covering the pixel whole somewhere in it) */
+typedef struct {
+    size_t tri;         /* index into the caller's triangles and preps    */
+    size_t pix;         /* pixel in the band                              */
+    int inside;         /* the triangle covers the pixel's square whole   */
+    double zmin, zmax;  /* bounds of its 1/Zc over the square             */
+} exact_cand;
+
+/* gls_exact_visit's walk, handing each pixel's candidates (in no order)
+ * to fn instead of resolving them: exact_edges.c's way in.  fn returns 0,
+ * or -1 to stop (out of memory), which exact_visit_cands returns. */
+typedef int (*exact_cand_fn)(void *user, const exact_prep *p, const exact_cand *c, size_t nc, int i, int j);
+int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user);
 
 #endif

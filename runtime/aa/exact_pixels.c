@@ -23,13 +23,6 @@
 
 #define EXACT_BAND 16
 
-typedef struct {
-    size_t tri;         /* index into the caller's triangles and preps    */
-    size_t pix;         /* pixel in the band                              */
-    int inside;         /* the triangle covers the pixel's square whole   */
-    double zmin, zmax;  /* bounds of its 1/Zc over the square             */
-} exact_cand;
-
 struct exact_work {
     const exact_prep *prep;
     exact_pieces cur, next;
@@ -37,6 +30,8 @@ struct exact_work {
     size_t cap[3];
     gls_exact_frag *frags;
     size_t capf;
+    exact_cand_fn cands; /* exact_visit_cands: the candidates, no frags   */
+    void *cuser;
 };
 
 /* 1 the square of pixel (i, j) is inside, -1 outside, 0 crossed */
@@ -287,6 +282,11 @@ static int run_bands(exact_work *wk, const unsigned char *ok, size_t n, int w, i
         for (int j = j0; j <= j1 && rc == 0; j++)
             for (int i = 0; i < w; i++) {
                 size_t px = (size_t)(j - j0) * w + i, nf;
+                if (wk->cands) {
+                    if ((rc = wk->cands(wk->cuser, wk->prep, sorted + start[px], start[px + 1] - start[px], i, j)))
+                        break;
+                    continue;
+                }
                 if ((rc = resolve(wk, sorted + start[px], start[px + 1] - start[px], i, j, &nf)) != 0)
                     break;
                 fn(user, i, j, wk->frags, nf);
@@ -296,7 +296,8 @@ static int run_bands(exact_work *wk, const unsigned char *ok, size_t n, int w, i
     return rc;
 }
 
-int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
+static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
+                 exact_cand_fn cands)
 {
     if (w <= 0 || h <= 0)
         return 0;
@@ -307,10 +308,20 @@ int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pi
     if (p && ok) {
         for (size_t k = 0; k < n; k++)
             ok[k] = (unsigned char)exact_prep_tri(&t[k], w, h, &p[k]);
-        wk.prep = p;
+        wk.prep = p, wk.cands = cands, wk.cuser = user;
         rc = run_bands(&wk, ok, n, w, h, fn, user);
     }
     exact_pieces_free(&wk.cur), exact_pieces_free(&wk.next);
     free(wk.buf[0]), free(wk.buf[1]), free(wk.buf[2]), free(wk.frags), free(p), free(ok);
     return rc;
+}
+
+int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
+{
+    return visit(t, n, w, h, fn, user, NULL);
+}
+
+int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user)
+{
+    return visit(t, n, w, h, NULL, user, fn);
 }

@@ -22,7 +22,8 @@ enum {
     GLS_NEED_NORMALS = 32,
     GLS_NEED_NEXT = 64,
     GLS_NEED_ALONE = 128,
-    GLS_NEED_COVER = 256 /* exact coverage's areas per id (--aa exact) */
+    GLS_NEED_COVER = 256, /* exact coverage's areas per id (--aa exact) */
+    GLS_NEED_SEGS = 512   /* exact coverage's edge segments (--aa exact) */
 };
 
 /* The outputs, one row per kind of file a camera frame writes, in the
@@ -81,7 +82,9 @@ enum {
     X(BOXES_JSON, "boxes", "boxes", "json", GLS_NEED_IDS | GLS_NEED_ALONE, 0, 1,                                    \
       "the boxes as JSON", "boxes_json")                                                                            \
     X(COVERAGE, "coverage", "coverage", "csv", GLS_NEED_COVER, 0, 1,                                                \
-      "each instance's exact visible area in each pixel (--aa exact)", "coverage")
+      "each instance's exact visible area in each pixel (--aa exact)", "coverage")                                  \
+    X(EDGE_SEGMENTS, "edge_segments", "edge_segments", "csv", GLS_NEED_SEGS, 0, 1,                                  \
+      "the visible edges as exact sub-pixel segments, the instance on each side (--aa exact)", "edge_segments")
 
 enum {
 #define X(id, word, stem, ext, needs, with, listed, what, key) GLS_OUT_I_##id,
@@ -106,6 +109,10 @@ _Static_assert(GLS_OUT_KINDS <= 32, "one bit an output kind in an unsigned");
 #define GLS_OUT_IDS (GLS_OUT_INSTANCE | GLS_OUT_CLASS | GLS_OUT_INSTANCES_JSON | GLS_OUT_COCO)
 #define GLS_OUT_FLOW_ALL (GLS_OUT_FLOW | GLS_OUT_FLOW_FLO | GLS_OUT_FLOW_MASK)
 #define GLS_OUT_BOXES_ALL (GLS_OUT_BOXES | GLS_OUT_BOXES_JSON)
+/* the outputs only exact coverage makes (refused without --aa exact), and
+ * the word a refusal names: the first of them asked */
+#define GLS_OUT_EXACT_ONLY (GLS_OUT_COVERAGE | GLS_OUT_EDGE_SEGMENTS)
+#define GLS_OUT_EXACT_WORD(outputs) ((outputs) & GLS_OUT_COVERAGE ? "coverage" : "edge_segments")
 
 /* One row of the table, as data. */
 typedef struct {

@@ -34,7 +34,8 @@ static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls
     fp->ex = gls_exposure_of(c, in->moving);
     fp->effects = gls_exposure_on(&fp->ex) && colour;
     fp->cover = in->aa->o.exact && (need & GLS_NEED_COVER);
-    fp->exact = in->aa->o.exact && (colour || fp->cover);
+    fp->segs = in->aa->o.exact && (need & GLS_NEED_SEGS);
+    fp->exact = in->aa->o.exact && (colour || fp->cover || fp->segs);
     fp->aa = (in->aa->count > 1 || fp->effects) && colour && !fp->exact;
     fp->lens = gls_distort_on(c);
     fp->weighted = gls_aa_weighted(in->aa);

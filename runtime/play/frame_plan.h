@@ -108,6 +108,7 @@ typedef struct {
     int exact;             /* the image or the coverage comes from exact
                               coverage                                     */
     int cover;             /* exact coverage's areas per instance           */
+    int segs;              /* exact coverage's edge segments                */
     int lens;              /* drawn undistorted and read through the lens   */
     int weighted;          /* the accumulator's weights (Gaussian): 64-bit  */
     int fine;              /* the samples are one fine framebuffer's pixels */

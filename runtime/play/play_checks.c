@@ -24,8 +24,8 @@ int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen)
         return -1;
     /* coverage is exact coverage's (glscene_play_check says it first, as
      * a usage error; this holds it for gls_play's other callers) */
-    if ((o->outputs & GLS_OUT_COVERAGE) && !o->aa.exact) {
-        snprintf(msg, msglen, "--outputs coverage needs --aa exact (exact areas, no samples)");
+    if ((o->outputs & GLS_OUT_EXACT_ONLY) && !o->aa.exact) {
+        snprintf(msg, msglen, "--outputs %s needs --aa exact (exact areas, no samples)", GLS_OUT_EXACT_WORD(o->outputs));
         return -1;
     }
     /* OUTDIR/NAME, NAME the camera file's name without its extension */

@@ -59,6 +59,9 @@ typedef struct {
     void *img;             /* the image in its file's format, when not rgba  */
     float *exact;          /* exact coverage's image, RGBA float            */
     gls_exact_cover *cover; /* exact coverage's areas per instance          */
+    gls_exact_seg *segs;   /* exact coverage's edge segments, nsegs of them */
+    size_t nsegs, capsegs;
+    int segs_oom;
     gls_accum acc;
 } cam_frame;
 
@@ -87,6 +90,7 @@ static void cam_frame_free(cam_frame *cf)
     free(cf->img);
     free(cf->exact);
     free(cf->cover);
+    free(cf->segs);
     free(cf->mask);
     free(cf->normal);
     free(cf->flow);
@@ -182,6 +186,25 @@ static int frame_colour(session *s, const gls_camera *c, cam_frame *cf, char *ms
     return rc;
 }
 
+/* one edge segment into the frame's list (out of memory: noted, the
+ * pass fails after the walk) */
+static void keep_seg(void *user, const gls_exact_seg *g)
+{
+    cam_frame *cf = user;
+    if (cf->segs_oom)
+        return;
+    if (cf->nsegs == cf->capsegs) {
+        size_t c = cf->capsegs ? 2 * cf->capsegs : 1024;
+        gls_exact_seg *n = realloc(cf->segs, c * sizeof *n);
+        if (!n) {
+            cf->segs_oom = 1;
+            return;
+        }
+        cf->segs = n, cf->capsegs = c;
+    }
+    cf->segs[cf->nsegs++] = *g;
+}
+
 /* The exact pass (exact_scene.h): the scene's triangles projected in
  * double, each pixel the exact areas of what is visible in it times their
  * colours, the background the rest.  0, or -1 when out of memory. */
@@ -198,8 +221,10 @@ static int frame_exact(session *s, const gls_camera *c, cam_frame *cf)
     /* coverage's ids: the instance ids of the run (gt_table.h) */
     const uint16_t *idmap = s->gt ? s->gt->id : NULL;
     int rc = gls_exact_geom_make(&g, s->scene, c) ||
-             gls_exact_render(g.t, g.n, (int)c->width, (int)c->height, bg, gls_exact_geom_shade, &g, idmap, cf->exact,
-                              cf->cover);
+             ((cf->exact || cf->cover) && gls_exact_render(g.t, g.n, (int)c->width, (int)c->height, bg,
+                                                           gls_exact_geom_shade, &g, idmap, cf->exact, cf->cover)) ||
+             (cf->fp.segs && (gls_exact_edges(g.t, g.n, (int)c->width, (int)c->height, idmap, keep_seg, cf) ||
+                              cf->segs_oom));
     gls_exact_geom_free(&g);
     return rc ? -1 : 0;
 }
@@ -325,7 +350,8 @@ static int frame_submit(session *s, const gls_camera *c, const char *name, uint3
         !(f->row_pose = gls_exposure_row_poses(c, band, play_pose_at, s)))
         goto fail;
     f->rgba = cf->rgba, f->z = cf->z, f->image = cf->img, f->mask = cf->mask, f->cover = cf->cover;
-    cf->cover = NULL;
+    f->segs = cf->segs, f->nsegs = cf->nsegs;
+    cf->cover = NULL, cf->segs = NULL;
     /* the writer needs the ids only for the id images and tables */
     int ids = (cf->fp.outputs & GLS_OUT_IDS) != 0;
     f->gt_inst = ids ? cf->gt_ids : NULL, f->normal = cf->normal, f->gt = s->gt;

@@ -136,9 +136,9 @@ static int run_load_scene(run *u)
     if (play_exposure_setup(o, &u->ms, u->cams, names, &u->plan, errs) ||
         (!o->trajectory && play_exposure_check(&u->ms, u->cams, names, o->ncameras, o->frame, errs)))
         return 1;
-    if (o->outputs & (GLS_OUT_IDS | GLS_OUT_COVERAGE)) {
+    if (o->outputs & (GLS_OUT_IDS | GLS_OUT_EXACT_ONLY)) {
         /* the ids of the whole run, from the bundle's object names (the
-         * instance image's, and coverage's) */
+         * instance image's, coverage's and the edge segments') */
         uint32_t count;
         int k = gls_gt_table_build(&u->gt, u->b, &u->scene, &count);
         if (k == 1) {

@@ -10,6 +10,7 @@
 #include "numfmt.h"
 #include "out_disparity.h"
 #include "out_coverage.h"
+#include "out_edge_segments.h"
 #include "out_flow.h"
 #include "out_gt.h"
 #include "out_npy.h"
@@ -129,6 +130,8 @@ static int encode(const gls_frame_files *f, unsigned bit, const float *disp, gls
         return gls_encode_boxes_json(f->boxes, f->nboxes, f->box_names, c, f->name, f->frame, buf);
     case GLS_OUT_COVERAGE:
         return gls_encode_coverage_csv(f->cover, c->width, c->height, buf);
+    case GLS_OUT_EDGE_SEGMENTS:
+        return gls_encode_edge_segments_csv(f->segs, f->nsegs, buf);
     default: /* edges, and the same map as mask */
         return gls_encode_png_gray(f->mask, c->width, c->height, buf);
     }
@@ -307,6 +310,7 @@ static void destroy(gls_write_job *job)
     free(f->flowmask);
     free(f->boxes);
     free(f->cover);
+    free(f->segs);
     free(f);
 }
 

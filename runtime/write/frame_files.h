@@ -76,6 +76,8 @@ typedef struct {
     float *normal;
     const gls_gt_table *gt;
     gls_exact_cover *cover; /* --outputs coverage (exact.h), or NULL */
+    gls_exact_seg *segs;    /* --outputs edge_segments (exact.h), or NULL */
+    size_t nsegs;
     uint64_t buffer_bytes; /* for the out-of-memory message */
     size_t nfiles;
     struct {

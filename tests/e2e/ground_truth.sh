@@ -32,7 +32,7 @@ fi
 # an unknown word names every output there is
 "$BIN/glsplay" "$t/many65535.glsb" --camera "$t/c.cam" --outputs image,instanse -o "$t/u" >/dev/null 2>"$t/err"
 rc=$?
-want="glsplay: error: --outputs takes a comma-separated list of: image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, coverage (not 'instanse'); did you mean 'instance'? (try glsplay --help)"
+want="glsplay: error: --outputs takes a comma-separated list of: image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, coverage, edge_segments (not 'instanse'); did you mean 'instance'? (try glsplay --help)"
 if [ $rc -eq 2 ] && [ "$(cat "$t/err")" = "$want" ]; then
     ok gt_outputs_usage
 else

@@ -70,7 +70,7 @@ fi
 # an unknown output word
 "$BIN/glsplay" "$t/top.glsb" --camera "$t/cams/c.cam" --outputs image,landmark -o "$t/o3" >/dev/null 2>"$t/err"
 rc=$?
-if [ $rc -eq 2 ] && [ "$(cat "$t/err")" = "glsplay: error: --outputs takes a comma-separated list of: image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, coverage (not 'landmark'); did you mean 'landmarks'? (try glsplay --help)" ]; then
+if [ $rc -eq 2 ] && [ "$(cat "$t/err")" = "glsplay: error: --outputs takes a comma-separated list of: image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, coverage, edge_segments (not 'landmark'); did you mean 'landmarks'? (try glsplay --help)" ]; then
     ok landmarks_usage
 else
     fail landmarks_usage "exit $rc: $(cat "$t/err")"

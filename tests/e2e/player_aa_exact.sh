@@ -157,3 +157,53 @@ fi
 rc=$?
 [ $rc -eq 2 ] && grep -q "^glsplay: error: --outputs coverage needs --aa exact" "$t/err" && ok exact_coverage_needs_exact ||
     fail exact_coverage_needs_exact "exit $rc: $(cat "$t/err")"
+# edge_segments (spec/outputs.md "Edge segments"): the quadrilateral's
+# segments lie on its projected edges within 1e-6 px, the instance on the
+# inside and the background outside, and together they are its outline
+# clipped to the image (the diagonal between its two triangles is none)
+"$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --aa exact --outputs edge_segments,instance -o "$t/seg" 2>"$t/err" ||
+    fail exact_edge_segments_render "$(cat "$t/err")"
+$PY - "$t" <<'PYEOF'
+import sys, csv, math, cv2
+t = sys.argv[1]
+def res(name, cond, why=''):
+    print(('ok ' if cond else 'FAIL ') + name + ('' if cond else ': ' + why))
+rows = list(csv.reader(open(t + '/seg/c/edge_segments_000000.csv')))
+inst = cv2.imread(t + '/seg/c/instance_000000.png', cv2.IMREAD_UNCHANGED)
+P = [(-1.25, -0.5), (0.75, -0.75), (1.0, 1.25), (-1.0, 1.5)]
+poly = [(100 * x / 5 + 31.3, 100 * y / 5 + 23.6) for x, y in P]
+cx, cy = sum(p[0] for p in poly) / 4, sum(p[1] for p in poly) / 4
+qid = int(inst[int(round(cy)), int(round(cx))])
+def dist(x, y, a, b):  # from (x, y) to segment a-b
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    s = max(0, min(1, ((x - a[0]) * dx + (y - a[1]) * dy) / (dx * dx + dy * dy)))
+    return math.hypot(x - a[0] - s * dx, y - a[1] - s * dy)
+def clipped(a, b):  # length of a-b inside the image [-0.5, w - 0.5] x [-0.5, h - 0.5]
+    s0, s1 = 0.0, 1.0
+    for p, d, lo, hi in ((a[0], b[0] - a[0], -0.5, 63.5), (a[1], b[1] - a[1], -0.5, 47.5)):
+        if d == 0:
+            continue
+        u, v = sorted(((lo - p) / d, (hi - p) / d))
+        s0, s1 = max(s0, u), min(s1, v)
+    return max(0, s1 - s0) * math.hypot(b[0] - a[0], b[1] - a[1])
+worst, length, badids = 0, [0] * 4, 0
+for x0, y0, x1, y1, l, r in (map(float, row) for row in rows[1:]):
+    d = [max(dist(x0, y0, poly[k], poly[(k + 1) % 4]), dist(x1, y1, poly[k], poly[(k + 1) % 4])) for k in range(4)]
+    k = d.index(min(d))
+    worst = max(worst, d[k])
+    length[k] += math.hypot(x1 - x0, y1 - y0)
+    # the quad's centre on the left (image left normal (dy, -dx)): left is the quad
+    side = (cx - x0) * (y1 - y0) - (cy - y0) * (x1 - x0)
+    badids += (l, r) != ((qid, 0) if side > 0 else (0, qid))
+res('exact_edge_segments_on_edges', rows[0] == ['x0', 'y0', 'x1', 'y1', 'left_id', 'right_id'] and len(rows) > 20
+    and worst <= 1e-6, 'worst distance %g px over %d segments' % (worst, len(rows) - 1))
+res('exact_edge_segments_ids', qid != 0 and badids == 0, 'quad id %d, %d segments with wrong ids' % (qid, badids))
+want = [clipped(poly[k], poly[(k + 1) % 4]) for k in range(4)]
+d = max(abs(a - b) for a, b in zip(length, want))
+res('exact_edge_segments_outline', d <= 1e-6, 'lengths %s, want %s' % (length, want))
+PYEOF
+# edge_segments without --aa exact: a usage error
+"$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --outputs edge_segments -o "$t/ns" 2>"$t/err"
+rc=$?
+[ $rc -eq 2 ] && grep -q "^glsplay: error: --outputs edge_segments needs --aa exact" "$t/err" &&
+    [ ! -e "$t/ns" ] && ok exact_edge_segments_needs_exact || fail exact_edge_segments_needs_exact "exit $rc: $(cat "$t/err")"

@@ -135,7 +135,7 @@ exact player_usage_anisotropic 2 "glsplay: error: --anisotropic needs N in 1..16
 # given, and the likely typo (base/choice.h; issue 26)
 H=" (try glsplay --help)"
 U="$PLAY $t/proj.glsb --camera $t/proj.cam -o $t/u"
-OUTS="image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, coverage"
+OUTS="image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, coco, normals, flow, boxes, coverage, edge_segments"
 exact player_choice_progress_word 2 "glsplay: error: --progress takes one of: bar, json (not 'xml')$H" -- $U --progress xml
 exact player_choice_progress_equals 2 "glsplay: error: --progress takes one of: bar, json (not 'xml')$H" -- $U --progress=xml
 exact player_choice_progress_typo 2 "glsplay: error: --progress takes one of: bar, json (not 'jsno'); did you mean 'json'?$H" -- \

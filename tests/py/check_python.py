@@ -151,7 +151,7 @@ result("python_rig_list_camera_dict", isinstance(rig, list) and len(rig) == 2 an
 with glscene.Player(demo) as p:
     good, got = raises(lambda: p.render(lc, outputs=["depht"]), "--outputs takes a comma-separated list of: "
                        "image, depth, points, edges, disparity, disparity16, depth16, landmarks, instance, class, "
-                       "coco, normals, flow, boxes, coverage (not 'depht'); did you mean 'depth'?")
+                       "coco, normals, flow, boxes, coverage, edge_segments (not 'depht'); did you mean 'depth'?")
     result("python_error_output_word", good, got)
     good, got = raises(lambda: p.render(glscene.Camera.from_text("width 64\nheight 48\nfx -1\n", name="broken")),
                        "")

@@ -220,14 +220,18 @@ static void test_plan_matrix(void)
     /* exact coverage: a pinhole without effects (the others are refused),
      * and its coverage output */
     static const out_case cover = {"image,coverage", GLS_OUT_IMAGE | GLS_OUT_COVERAGE},
-                          cover_only = {"coverage", GLS_OUT_COVERAGE};
+                          cover_only = {"coverage", GLS_OUT_COVERAGE},
+                          segs = {"image,edge_segments", GLS_OUT_IMAGE | GLS_OUT_EDGE_SEGMENTS},
+                          segs_only = {"edge_segments", GLS_OUT_EDGE_SEGMENTS};
     for (size_t k = 0; k < sizeof outs / sizeof outs[0]; k++) {
         run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &outs[k]);
         runs++;
     }
     run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &cover);
     run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &cover_only);
-    runs += 2;
+    run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &segs);
+    run_case(bpath, traj, &cams[0], 1, GLS_AA_LATTICE, 1, &segs_only);
+    runs += 4;
     printf("  %d runs: explain's passes, accumulator, buffers and files against the run's\n", runs);
     gls_bundle_free(b);
 }
@@ -243,6 +247,13 @@ static void test_coverage_needs_exact(void)
     o.outputs = GLS_OUT_IMAGE | GLS_OUT_COVERAGE;
     CHECK(gls_play_check_options(&o, msg, sizeof msg) == -1);
     CHECK_STR(msg, "--outputs coverage needs --aa exact (exact areas, no samples)");
+    o.aa.exact = 1;
+    CHECK(gls_play_check_options(&o, msg, sizeof msg) == 0);
+    /* edge_segments likewise, named by itself */
+    o.aa.exact = 0;
+    o.outputs = GLS_OUT_IMAGE | GLS_OUT_EDGE_SEGMENTS;
+    CHECK(gls_play_check_options(&o, msg, sizeof msg) == -1);
+    CHECK_STR(msg, "--outputs edge_segments needs --aa exact (exact areas, no samples)");
     o.aa.exact = 1;
     CHECK(gls_play_check_options(&o, msg, sizeof msg) == 0);
 }
