@@ -25,9 +25,9 @@ from typing import Sequence, Union
 
 from ._lib import Error, _Error, _lib, _path, _raise
 from .camera import Camera
-from .player import BOX_DTYPE, COVERAGE_DTYPE, LANDMARK_DTYPE, POINT_DTYPE, Player
+from .player import BOX_DTYPE, COVERAGE_DTYPE, EDGE_SEGMENT_DTYPE, LANDMARK_DTYPE, POINT_DTYPE, Player
 
-__all__ = ["Error", "Camera", "Player", "compile", "version", "BOX_DTYPE", "COVERAGE_DTYPE", "LANDMARK_DTYPE", "POINT_DTYPE"]
+__all__ = ["Error", "Camera", "Player", "compile", "version", "BOX_DTYPE", "COVERAGE_DTYPE", "EDGE_SEGMENT_DTYPE", "LANDMARK_DTYPE", "POINT_DTYPE"]
 
 
 def version() -> str:

@@ -39,6 +39,10 @@ BOX_DTYPE = np.dtype([("type", object), ("truncated", "f8"), ("occluded", "i4"),
                       ("rotation_y", "f8")])
 # coverage (--aa exact): each instance's exact visible area in a pixel
 COVERAGE_DTYPE = np.dtype([("x", "<i4"), ("y", "<i4"), ("id", "<u2"), ("area", "<f8")])
+# edge_segments (--aa exact): a visible edge's piece, in pixel coordinates,
+# with the instance ids on its left and right
+EDGE_SEGMENT_DTYPE = np.dtype([("x0", "<f8"), ("y0", "<f8"), ("x1", "<f8"), ("y1", "<f8"), ("left", "<u2"),
+                               ("right", "<u2")])
 POINT_DTYPE = np.dtype([("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("red", "u1"), ("green", "u1"),
                         ("blue", "u1")])
 
@@ -69,6 +73,14 @@ def _coverage(text: str) -> np.ndarray:
     return out
 
 
+def _edge_segments(text: str) -> np.ndarray:
+    rows = list(csv.reader(io.StringIO(text)))[1:]
+    out = np.zeros(len(rows), dtype=EDGE_SEGMENT_DTYPE)
+    for i, r in enumerate(rows):
+        out[i] = (float(r[0]), float(r[1]), float(r[2]), float(r[3]), int(r[4]), int(r[5]))
+    return out
+
+
 def _points(data: bytes) -> np.ndarray:
     end = data.index(b"end_header\n") + len(b"end_header\n")
     return np.frombuffer(data[end:], dtype=POINT_DTYPE).copy()
@@ -87,6 +99,8 @@ def _decode(name: str, a: _Array):
             return _boxes(text)
         if name == "coverage":
             return _coverage(text)
+        if name == "edge_segments":
+            return _edge_segments(text)
         return json.loads(text) if name in ("coco", "instances", "boxes_json") else text
     dims = tuple(a.dims[:a.ndim])
     return np.frombuffer(raw, dtype=_DTYPES[a.dtype]).reshape(dims).copy()
@@ -97,7 +111,8 @@ class Player:
 
     Player(bundle, aa=N (N x N samples a pixel, glsplay --aa) or "exact"
     (the exact area of what is visible in each pixel: flat and vertex
-    colours through a pinhole; outputs may then include "coverage"),
+    colours through a pinhole; outputs may then include "coverage" and
+    "edge_segments"),
     pattern="lattice"|"grid"|"stratified", backend="auto"|"egl"|"osmesa",
     background=(r, g, b) in 0..1, seed=0, options=[more glsplay
     arguments, e.g. "--image-format", "png16"]).  A context manager; close()

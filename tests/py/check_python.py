@@ -177,7 +177,7 @@ tcam = os.path.join(TMP, "t.cam")
 with open(tcam, "w") as f:
     f.write("width 64\nheight 48\nfx 50\nfy 50\ncx 31.5\ncy 23.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\n")
 with glscene.Player(t, aa="exact") as p:
-    ex = p.render(glscene.Camera.from_file(tcam), outputs=["image", "coverage"])
+    ex = p.render(glscene.Camera.from_file(tcam), outputs=["image", "coverage", "edge_segments"])
 subprocess.run([os.path.join(BUILD, "glsplay"), t, "--camera", tcam, "--aa", "exact", "--outputs", "image",
                 "-o", os.path.join(TMP, "ex")], check=True)
 want = cv2.imread(os.path.join(TMP, "ex", "t", "image_000000.png"))[:, :, ::-1]
@@ -190,6 +190,30 @@ result("python_exact_image_and_coverage", cov.dtype == glscene.COVERAGE_DTYPE an
        and touched.sum() > 100 and np.abs(sums[touched] - 1).max() < 1e-9,
        "%d pixels touched, worst |sum - 1| %g, image equal %s" % (touched.sum(), np.abs(sums[touched] - 1).max(),
                                                                    np.array_equal(ex["image"], want)))
+# edge_segments: the triangle's three edges, projected: (-1,-1,5), (1,-1,5),
+# (0,1,5) through fx = fy = 50, (cx, cy) = (31.5, 23.5): each segment on one
+# of them within 1e-9 px, the triangle's id on one side and 0 on the other
+corners = [(31.5 + 10 * x, 23.5 + 10 * y) for x, y in ((-1, -1), (1, -1), (0, 1))]
+seg = ex["edge_segments"]
+
+
+def off_edges(s):
+    worst = np.inf
+    for k in range(3):
+        (ax, ay), (bx, by) = corners[k], corners[(k + 1) % 3]
+        n = np.hypot(bx - ax, by - ay)
+        d = max(abs((bx - ax) * (y - ay) - (by - ay) * (x - ax)) / n for x, y in ((s["x0"], s["y0"]), (s["x1"], s["y1"])))
+        worst = min(worst, d)
+    return worst
+
+
+worst = max(off_edges(s) for s in seg) if len(seg) else np.inf
+length = float(np.hypot(seg["x1"] - seg["x0"], seg["y1"] - seg["y0"]).sum())
+perimeter = sum(np.hypot(corners[(k + 1) % 3][0] - corners[k][0], corners[(k + 1) % 3][1] - corners[k][1]) for k in range(3))
+result("python_exact_edge_segments", seg.dtype == glscene.EDGE_SEGMENT_DTYPE and worst < 1e-9
+       and abs(length - perimeter) < 1e-6 and bool((np.minimum(seg["left"], seg["right"]) == 0).all())
+       and bool((np.maximum(seg["left"], seg["right"]) > 0).all()),
+       "%d segments, worst off an edge %g px, length %.9f of the perimeter %.9f" % (len(seg), worst, length, perimeter))
 # move() reaches glscene_render's frames only: a run refuses rather than
 # render without the move
 with glscene.Player(bundle) as p:
