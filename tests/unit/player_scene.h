@@ -104,21 +104,37 @@ static inline void tb_u1(tb *t, gls_opcode op, uint32_t v)
     tb_insn(t, op, NULL, u);
 }
 
+/* *p grown to hold need elements of size elem, doubling *cap: a bundle of
+ * many small primitives is not copied whole for each one (which, under
+ * ASan, whose realloc always moves, made test_pack take 90 s for 0.2). */
+static inline void *tb_grow(void *p, uint32_t *cap, uint64_t need, size_t elem)
+{
+    if (need <= *cap)
+        return p;
+    uint64_t c = *cap ? *cap : 256;
+    while (c < need)
+        c *= 2;
+    if (c > UINT32_MAX || !(p = realloc(p, (size_t)c * elem)))
+        tb_die("out of memory");
+    *cap = (uint32_t)c;
+    return p;
+}
+
 /* A primitive of n vertices (x, y, z, w), optional colours and texcoords. */
 static inline void tb_prim4(tb *t, gls_primkind kind, uint32_t n, const gls_vec4 *p, const gls_rgba *c, const gls_st *st)
 {
     gls_bundle *b = t->b;
     uint32_t u[5] = {(uint32_t)kind, n, b->npos, c ? b->ncol : GLS_NONE, st ? b->ntex : GLS_NONE};
-    b->pos = realloc(b->pos, (b->npos + n) * sizeof *b->pos);
+    b->pos = tb_grow(b->pos, &t->poscap, (uint64_t)b->npos + n, sizeof *b->pos);
     memcpy(b->pos + b->npos, p, n * sizeof *p);
     b->npos += n;
     if (c) {
-        b->col = realloc(b->col, (b->ncol + n) * sizeof *b->col);
+        b->col = tb_grow(b->col, &t->colcap, (uint64_t)b->ncol + n, sizeof *b->col);
         memcpy(b->col + b->ncol, c, n * sizeof *c);
         b->ncol += n;
     }
     if (st) {
-        b->tc = realloc(b->tc, (b->ntex + n) * sizeof *b->tc);
+        b->tc = tb_grow(b->tc, &t->tccap, (uint64_t)b->ntex + n, sizeof *b->tc);
         memcpy(b->tc + b->ntex, st, n * sizeof *st);
         b->ntex += n;
     }
