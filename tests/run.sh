@@ -25,22 +25,19 @@ log=$B/test.log
 # slowest are listed at the end, for whoever shortens the suite)
 took() { awk -v n="$1" -v a="$2" -v b="$(date +%s.%N)" 'BEGIN { printf "# took %.1f s %s\n", b - a, n }'; }
 
-# suite BUILD PREFIX: unit tests and e2e scripts against BUILD
+# suite BUILD: the unit tests and e2e scripts against BUILD, GLS_TEST_JOBS
+# at a time (default: the number of CPUs; 1 runs them one after another).
+# The tests share nothing but the build they read (each writes only under
+# its own temporary directory), so side by side they give the same lines;
+# each test's output is printed whole when it ends (tests/run_one.sh), so
+# the blocks come in the order the tests finish.  The e2e scripts go
+# first, those marked "# suite: long" (over a minute) before the others:
+# a long job started last would run alone at the end.
 suite() {
-    out=$(mktemp)
-    for t in "$1"/tests/*; do
-        [ -f "$t" ] && [ -x "$t" ] || continue # not the objects' directories
-        echo "== $t"
-        t0=$(date +%s.%N)
-        "$t" >"$out" 2>&1
-        rc=$?
-        took "$t" "$t0"
-        cat "$out"
-        if [ $rc -ne 0 ] && ! grep -q '^FAIL ' "$out"; then
-            echo "FAIL $(basename "$t"): exited with status $rc"
-        fi
-    done
-    for t in tests/e2e/*.sh; do
+    lock=$(mktemp)
+    : >"$lock.list"
+    # the scripts marked "# suite: long" first, then the rest
+    for t in $(grep -l '^# suite: long' tests/e2e/*.sh) $(grep -L '^# suite: long' tests/e2e/*.sh); do
         [ -f "$t" ] && [ "$t" != tests/e2e/lib.sh ] || continue
         # a script about the sources, the docs or the build itself runs
         # no sanitized code: the normal suite's run is the whole of it
@@ -48,14 +45,17 @@ suite() {
             echo "# not rerun under the sanitizers: $t"
             continue
         fi
-        echo "== $t"
-        t0=$(date +%s.%N)
-        GLS_BIN=$1 sh "$t" 2>&1
-        took "$t" "$t0"
+        echo "e2e $t" >>"$lock.list"
     done
-    rm -f "$out"
+    for t in "$1"/tests/*; do
+        [ -f "$t" ] && [ -x "$t" ] && echo "unit $t" # not the objects' directories
+    done >>"$lock.list"
+    xargs -P "$jobs" -L 1 sh tests/run_one.sh "$1" "$lock" <"$lock.list"
+    rm -f "$lock" "$lock.list"
 }
 
+jobs=${GLS_TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
+echo "# $jobs tests at a time (GLS_TEST_JOBS)" | tee -a "$log"
 suite "$B" | tee -a "$log"
 
 if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then

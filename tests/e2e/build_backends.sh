@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # The build works with either GL library absent (spec/backends.md): glsplay
 # is built in a temporary build directory with GLS_NO_EGL=1, then in the

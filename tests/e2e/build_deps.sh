@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # Dependency tracking of the build: for every header of the tree (and the
 # lexer and grammar sources), `make -n -W HEADER` must recompile exactly the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # sanitizers: not rerun (it checks the sources, the docs or the build, and runs no tool on an input)
 # The layering is enforced by the build (docs/ARCHITECTURE.md, "Layers"):
 # each layer's objects are compiled with the include paths of the layers it

@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # Sequences spread over processes (spec/road.md "Sharding"): glsplay
 # --shard I/N and --shard slurm, their usage errors (verbatim), GNU
 # Parallel for real (the union of 3 shards == one unsharded render, every

@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # Lens distortion (spec/camera.md "Lens distortion"): the model against
 # cv2.projectPoints / cv2.fisheye.projectPoints, rendered checkerboards
 # against OpenCV's corner detector and calibration (tests/py/check_distortion.py).

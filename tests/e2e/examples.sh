@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # End-to-end tests of the paper-figure examples (examples/*/, rendered by
 # examples/render.sh, `make demo`).  Prints "ok NAME" / "FAIL NAME: why"
 # and the measured figures ("# ..." lines).  Needs glsc, glsplay and

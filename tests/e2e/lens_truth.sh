@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # Ground truth through a lens (spec/outputs.md "Through a lens"): instance
 # ids, normals and landmarks of a distorted camera (tests/py/check_lens_truth.py,
 # against cv2), flow and boxes (tests/py/check_lens_flow_boxes.py; with a

@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # libglscene renders every output glsplay writes, with the same values
 # (docs/api.md "Every output as arrays"): tests/py/check_library_outputs.py
 # renders the same inputs with glsplay and with the library

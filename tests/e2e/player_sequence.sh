@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # glsplay over sequences: --trajectory, --frames, --resume, --frame,
 # --background; memory over 10,000 frames.  Prints ok/FAIL lines.
 . tests/e2e/lib.sh

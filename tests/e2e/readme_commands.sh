@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # Every command in README.md and in the guides of docs/ runs as written in
 # a fresh copy of the repository after `make demo`, and leaves that
 # checkout clean: outputs go only under out/ and build/, which git

@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # End-to-end tests of the scene library (scenelib/, scenelib/README.md).
 # Prints "ok NAME" / "FAIL NAME: why".  Needs the build products of `make`
 # in $GLS_BIN (default build): glsc, glsdis, glsplay, gen_textures,

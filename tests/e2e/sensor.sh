@@ -1,4 +1,5 @@
 #!/bin/sh
+# suite: long (tests/run.sh starts it first, so that it does not run alone at the end)
 # glsplay's sensor effects (spec/camera.md "Sensor effects"): the noise,
 # vignetting and Bayer mosaic against the model in tests/py/check_sensor.py;
 # --explain names each effect on, the key asking for it and its cost, and
