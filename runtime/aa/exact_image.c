@@ -1,10 +1,13 @@
 /* Exact coverage: the box-filtered colour image (exact.h,
  * gls_exact_image): each pixel the sum of its visible regions' exact areas
  * times their colours, the colour of a region its triangle's at the
- * region's centroid (exact for colour affine in the image), and the
- * uncovered rest the background's. */
+ * region's centroid (exact for colour affine in the image) or, for a
+ * sampled triangle (textured, lit), the mean of its colour at the
+ * pixel's lattice points in the region, and the uncovered rest the
+ * background's. */
 #include <stdlib.h>
 #include "exact_int.h"
+#include "lattice.h"
 
 typedef struct {
     const gls_exact_tri *t;
@@ -15,7 +18,67 @@ typedef struct {
     const uint16_t *idmap;
     gls_exact_cover *cover;
     int w;
+    double lx[GLS_EXACT_SHADE_M], ly[GLS_EXACT_SHADE_M]; /* the lattice
+                           points, pixel-local ([-0.5, 0.5)^2)           */
 } image_ctx;
+
+/* Which of the pixel's regions shows at pixel-local point (x, y): the
+ * frag whose triangle contains it and is nearest there (larger 1/Zc, ties
+ * the lower index, the walk's rule).  The frags are exactly the triangles
+ * visible in the pixel, so the one in front among them is the one in
+ * front among all.  n when none (background).  Points on a shared edge
+ * go to either side: a set of measure zero. */
+static size_t owner(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, double x, double y)
+{
+    size_t best = n;
+    double bz = 0;
+    for (size_t k = 0; k < n; k++) {
+        const gls_exact_tri *t = &c->t[f[k].tri];
+        double X[3], Y[3], e[3];
+        for (int q = 0; q < 3; q++)
+            X[q] = t->x[q] - px - x, Y[q] = t->y[q] - py - y;
+        for (int q = 0; q < 3; q++)
+            e[q] = X[(q + 1) % 3] * Y[(q + 2) % 3] - X[(q + 2) % 3] * Y[(q + 1) % 3];
+        double a = e[0] + e[1] + e[2];
+        if (a == 0 || (a > 0 ? e[0] < 0 || e[1] < 0 || e[2] < 0 : e[0] > 0 || e[1] > 0 || e[2] > 0))
+            continue;
+        /* e[q] / a: the point's barycentric weight of vertex q; 1/Zc is
+         * affine in the image */
+        double z = (e[0] * t->iz[0] + e[1] * t->iz[1] + e[2] * t->iz[2]) / a;
+        if (best == n || z > bz || (z == bz && f[k].tri < f[best].tri))
+            best = k, bz = z;
+    }
+    return best;
+}
+
+/* The colours of the pixel's sampled regions (f[k] with a sampled
+ * triangle): the mean of the shader at the lattice points each region
+ * owns, into col[k]; the centroid's where it owns none. */
+static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, float (*col)[4])
+{
+    double sum[64][4];
+    int cnt[64];
+    for (size_t k = 0; k < n; k++)
+        cnt[k] = 0, sum[k][0] = sum[k][1] = sum[k][2] = sum[k][3] = 0;
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(c, px, py, f, n, c->lx[m], c->ly[m]);
+        if (k == n || !c->t[f[k].tri].sampled)
+            continue;
+        float v[4];
+        c->shade(c->user, &c->t[f[k].tri], f[k].tri, px + c->lx[m], py + c->ly[m], v);
+        for (int q = 0; q < 4; q++)
+            sum[k][q] += v[q];
+        cnt[k]++;
+    }
+    for (size_t k = 0; k < n; k++)
+        if (c->t[f[k].tri].sampled) {
+            if (cnt[k])
+                for (int q = 0; q < 4; q++)
+                    col[k][q] = (float)(sum[k][q] / cnt[k]);
+            else
+                c->shade(c->user, &c->t[f[k].tri], f[k].tri, f[k].cx, f[k].cy, col[k]);
+        }
+}
 
 /* The pixel's areas summed per id (a pixel shows few ids: a list, on
  * the stack up to 32, else allocated), the K largest into out.  Out of
@@ -74,10 +137,22 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
         pixel_cover(c, f, n, c->cover + at * GLS_EXACT_COVER_K);
     if (!c->rgba)
         return;
+    /* sampled regions take the lattice mean when the pixel shows at most
+     * 64 regions (the points' owners are found among all of them); a
+     * pixel showing more keeps every centroid's colour */
+    float scol[64][4];
+    size_t ns = n <= 64 ? n : 0, any = 0;
+    for (size_t k = 0; k < ns; k++)
+        any |= c->t[f[k].tri].sampled;
+    if (any && c->shade)
+        sampled_colours(c, px, py, f, ns, scol);
     for (size_t k = 0; k < n; k++) {
         float col[4];
         const gls_exact_tri *t = &c->t[f[k].tri];
-        if (c->shade)
+        if (c->shade && k < ns && t->sampled && any)
+            for (int q = 0; q < 4; q++)
+                col[q] = scol[k][q];
+        else if (c->shade)
             c->shade(c->user, t, f[k].tri, f[k].cx, f[k].cy, col);
         else
             for (int q = 0; q < 4; q++)
@@ -102,6 +177,15 @@ int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float 
 int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
                      void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover)
 {
-    image_ctx c = {t, bg, shade, user, rgba, idmap, cover, w};
+    image_ctx c = {t, bg, shade, user, rgba, idmap, cover, w, {0}, {0}};
+    /* the lattice the sampled path uses at that count (lattice.c) */
+    gls_lattice l;
+    if (gls_lattice_choose(GLS_EXACT_SHADE_M, &l))
+        return -1;
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        int64_t x, y;
+        gls_lattice_point(&l, (uint64_t)m, &x, &y);
+        c.lx[m] = (double)x / (double)l.q - 0.5, c.ly[m] = (double)y / (double)l.q - 0.5;
+    }
     return gls_exact_visit(t, n, w, h, image_pixel, &c);
 }

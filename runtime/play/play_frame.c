@@ -220,7 +220,7 @@ static int frame_exact(session *s, const gls_camera *c, cam_frame *cf)
         s->counts->passes[GLS_PASS_I_EXACT]++;
     /* coverage's ids: the instance ids of the run (gt_table.h) */
     const uint16_t *idmap = s->gt ? s->gt->id : NULL;
-    int rc = gls_exact_geom_make(&g, s->scene, c) ||
+    int rc = gls_exact_geom_make(&g, s->scene, s->textures, c) ||
              ((cf->exact || cf->cover) && gls_exact_render(g.t, g.n, (int)c->width, (int)c->height, bg,
                                                            gls_exact_geom_shade, &g, idmap, cf->exact, cf->cover)) ||
              (cf->fp.segs && (gls_exact_edges(g.t, g.n, (int)c->width, (int)c->height, idmap, keep_seg, cf) ||

@@ -46,7 +46,7 @@ static void cov_free(cov *c) { free(c->cover), free(c->by_id); }
 
 static gls_exact_tri tri(double x0, double y0, double x1, double y1, double x2, double y2, double iz)
 {
-    return (gls_exact_tri){{x0, x1, x2}, {y0, y1, y2}, {iz, iz, iz}, 0, {1, 1, 1, 1}};
+    return (gls_exact_tri){{x0, x1, x2}, {y0, y1, y2}, {iz, iz, iz}, 0, {1, 1, 1, 1}, 0};
 }
 
 static uint64_t rng = 88172645463325252ull;
