@@ -67,6 +67,35 @@ for s in Coarse Fine; do
 done
 render Coarse && compare Coarse exact_texture_magnified_vs_65536 0.005 2e-4
 render Fine && compare Fine exact_texture_fine_vs_65536 0.006 5e-4
+# lit (lighting.c's shader on the CPU, in double): the same quadrilateral
+# with vertex normals spread about the view axis, a point light near it
+# (a highlight that saturates) and a directional one, specular; and lit
+# and textured with flat normals (turned to face the camera)
+cat >"$t/Lit.scene" <<'SCENE'
+ambient(0.1, 0.1, 0.15);
+light(point, 0.3, -0.4, 3, 1, 0.9, 0.8, 0.05);
+light(directional, 0.2, -0.3, -1, 0.3, 0.3, 0.3);
+color(0.8, 0.6, 0.4);
+specular(0.6, 0.6, 0.6, 30);
+poly { normal(-0.6, 0.2, -1); vert(-1.25, -0.5, 3.75); normal(0.5, 0.3, -1); vert(0.75, -0.75, 5.75);
+       normal(0.4, -0.5, -1); vert(1.0, 1.25, 6); normal(-0.5, -0.4, -1); vert(-1.0, 1.5, 4); }
+SCENE
+{ printf 'ambient(0.2, 0.2, 0.2);\nlight(point, 0.3, -0.4, 3, 1, 1, 1, 0.02);\n'; quad modulate 3; } >"$t/LitTex.scene"
+for s in Lit LitTex; do
+    "$B/glsc" -I "$t/lib" -o "$t/$s.glsb" "$t/$s.scene" 2>"$t/err" || { fail exact_shade_compile "$(cat "$t/err")"; exit 0; }
+done
+render Lit && compare Lit exact_lit_vs_65536 0.003 1e-4
+render LitTex && compare LitTex exact_lit_textured_vs_65536 0.006 3e-4
+# refused: shadows (a shadow map is a sampled depth image)
+printf 'shadows(256);\n' | cat - "$t/Lit.scene" >"$t/Shadow.scene"
+if "$B/glsc" -o "$t/shadow.glsb" "$t/Shadow.scene" 2>"$t/err"; then
+    "$PLAY" "$t/shadow.glsb" --camera "$t/c.cam" --aa exact -o "$t/sh" 2>"$t/err"
+    rc=$?
+    [ $rc -eq 1 ] && grep -q "^glsplay: error: .*shadow.glsb: --aa exact does not draw shadows" "$t/err" &&
+        [ ! -e "$t/sh" ] && ok exact_refuses_shadows || fail exact_refuses_shadows "exit $rc: $(cat "$t/err")"
+else
+    fail exact_refuses_shadows "$(cat "$t/err")"
+fi
 # refused: a texture with transparent texels (the alpha test cuts the
 # triangle's coverage at texel edges, which the walk does not know)
 mkdir -p "$t/alib/tx"
