@@ -32,12 +32,20 @@ typedef struct {
     double iz[3];       /* 1/Zc at the vertices, > 0; larger is nearer     */
     uint32_t id;        /* the surface's id, reported with its coverage    */
     float rgba[4];      /* flat colour (gls_exact_image without a shader) */
-    uint8_t sampled;    /* its shaded colour is not affine in the image
-                           (texture, lighting): a region's colour is the
-                           mean of the shader at the GLS_EXACT_SHADE_M
-                           lattice points of the pixel that fall in the
-                           region (gls_exact_shade_fn)                    */
+    uint8_t flags;      /* GLS_EXACT_SAMPLED, GLS_EXACT_HOLES             */
 } gls_exact_tri;
+
+/* Its shaded colour is not affine in the image (texture, lighting): a
+ * region's colour is the mean of the shader at the GLS_EXACT_SHADE_M
+ * lattice points of the pixel that fall in the region
+ * (gls_exact_shade_fn). */
+#define GLS_EXACT_SAMPLED 1u
+/* Alpha-tested (GL discards where the shader's alpha is under 0.5): it
+ * hides nothing in the walk (its regions overlap what is behind it), and
+ * a pixel it shows in is point-sampled at the GLS_EXACT_SHADE_M lattice
+ * points, each the nearest surface there whose alpha passes.  Areas and
+ * coverage are not exact there: gls_exact_image only. */
+#define GLS_EXACT_HOLES 2u
 
 /* The lattice points (lattice.h) per pixel at which a sampled triangle's
  * colour is averaged over a region: texture edges and highlights inside

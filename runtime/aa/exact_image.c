@@ -28,12 +28,15 @@ typedef struct {
  * visible in the pixel, so the one in front among them is the one in
  * front among all.  n when none (background).  Points on a shared edge
  * go to either side: a set of measure zero. */
-static size_t owner(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, double x, double y)
+static size_t owner(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, double x, double y,
+                    const unsigned char *skip)
 {
     size_t best = n;
     double bz = 0;
     for (size_t k = 0; k < n; k++) {
         const gls_exact_tri *t = &c->t[f[k].tri];
+        if (skip && skip[k])
+            continue;
         double X[3], Y[3], e[3];
         for (int q = 0; q < 3; q++)
             X[q] = t->x[q] - px - x, Y[q] = t->y[q] - py - y;
@@ -61,8 +64,8 @@ static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_
     for (size_t k = 0; k < n; k++)
         cnt[k] = 0, sum[k][0] = sum[k][1] = sum[k][2] = sum[k][3] = 0;
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(c, px, py, f, n, c->lx[m], c->ly[m]);
-        if (k == n || !c->t[f[k].tri].sampled)
+        size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(c, px, py, f, n, c->lx[m], c->ly[m], NULL);
+        if (k == n || !(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
             continue;
         float v[4];
         c->shade(c->user, &c->t[f[k].tri], f[k].tri, px + c->lx[m], py + c->ly[m], v);
@@ -71,7 +74,7 @@ static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_
         cnt[k]++;
     }
     for (size_t k = 0; k < n; k++)
-        if (c->t[f[k].tri].sampled) {
+        if ((c->t[f[k].tri].flags & GLS_EXACT_SAMPLED)) {
             if (cnt[k])
                 for (int q = 0; q < 4; q++)
                     col[k][q] = (float)(sum[k][q] / cnt[k]);
@@ -128,6 +131,37 @@ static void pixel_cover(const image_ctx *c, const gls_exact_frag *f, size_t n, g
         free(sa), free(si);
 }
 
+/* A pixel an alpha-tested triangle shows in (GLS_EXACT_HOLES; n <= 64):
+ * the mean over the lattice points of the nearest surface there whose
+ * alpha passes (GL's alpha test: at least 0.5), or the background. */
+static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, double acc[4])
+{
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        unsigned char skip[64] = {0};
+        double x = px + c->lx[m], y = py + c->ly[m];
+        float v[4];
+        for (;;) {
+            size_t k = owner(c, px, py, f, n, c->lx[m], c->ly[m], skip);
+            const gls_exact_tri *t = k < n ? &c->t[f[k].tri] : NULL;
+            if (!t) {
+                for (int q = 0; q < 4; q++)
+                    v[q] = c->bg[q];
+                break;
+            }
+            if (c->shade)
+                c->shade(c->user, t, f[k].tri, x, y, v);
+            else
+                for (int q = 0; q < 4; q++)
+                    v[q] = t->rgba[q];
+            if (!(t->flags & GLS_EXACT_HOLES) || v[3] >= 0.5f)
+                break;
+            skip[k] = 1;
+        }
+        for (int q = 0; q < 4; q++)
+            acc[q] += v[q] / GLS_EXACT_SHADE_M;
+    }
+}
+
 static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, size_t n)
 {
     image_ctx *c = user;
@@ -137,19 +171,29 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
         pixel_cover(c, f, n, c->cover + at * GLS_EXACT_COVER_K);
     if (!c->rgba)
         return;
+    int holes = 0;
+    for (size_t k = 0; k < n && n <= 64; k++)
+        holes |= (c->t[f[k].tri].flags & GLS_EXACT_HOLES) != 0;
+    if (holes) {
+        double acc[4] = {0, 0, 0, 0};
+        holes_pixel(c, px, py, f, n, acc);
+        for (int q = 0; q < 4; q++)
+            c->rgba[at * 4 + q] = (float)acc[q];
+        return;
+    }
     /* sampled regions take the lattice mean when the pixel shows at most
      * 64 regions (the points' owners are found among all of them); a
      * pixel showing more keeps every centroid's colour */
     float scol[64][4];
     size_t ns = n <= 64 ? n : 0, any = 0;
     for (size_t k = 0; k < ns; k++)
-        any |= c->t[f[k].tri].sampled;
+        any |= (c->t[f[k].tri].flags & GLS_EXACT_SAMPLED);
     if (any && c->shade)
         sampled_colours(c, px, py, f, ns, scol);
     for (size_t k = 0; k < n; k++) {
         float col[4];
         const gls_exact_tri *t = &c->t[f[k].tri];
-        if (c->shade && k < ns && t->sampled && any)
+        if (c->shade && k < ns && (t->flags & GLS_EXACT_SAMPLED) && any)
             for (int q = 0; q < 4; q++)
                 col[q] = scol[k][q];
         else if (c->shade)

@@ -8,13 +8,10 @@
 
 const char *gls_exact_scene_unsupported(const gls_scene *s)
 {
-    /* a shadow map is a sampled depth image, and an alpha-tested texel
-     * cuts the triangle's coverage at texel edges: neither is an area
-     * the walk knows */
+    /* a shadow map is a sampled depth image: its edges are no area the
+     * walk knows */
     if (s->lit && s->shadow_res)
         return "shadows (their maps are sampled depth images)";
-    if (s->features & GLS_FEAT_ALPHA_TEST)
-        return "a texture with transparent texels (the alpha test cuts coverage at texel edges)";
     return NULL;
 }
 
@@ -25,7 +22,7 @@ static void world_of(const double W[16], const double *p, double q[3])
 }
 
 static int add_tri(gls_exact_geom *g, const gls_exact_pinhole *cam, const double P[3][3], const float col[3][4],
-                   uint32_t id, uint32_t v, uint32_t chunk, int sampled)
+                   uint32_t id, uint32_t v, uint32_t chunk, unsigned flags)
 {
     if (g->n + 3 > g->cap) {
         size_t c = g->cap ? 2 * g->cap : 1024;
@@ -42,7 +39,7 @@ static int add_tri(gls_exact_geom *g, const gls_exact_pinhole *cam, const double
     gls_exact_tri proto;
     memset(&proto, 0, sizeof proto);
     proto.id = id;
-    proto.sampled = (uint8_t)sampled;
+    proto.flags = (uint8_t)flags;
     memcpy(proto.rgba, col[0], sizeof proto.rgba);
     int m = gls_exact_project(cam, P, &proto, g->t + g->n);
     gls_exact_vcol vc;
@@ -127,7 +124,16 @@ int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_texture
                     for (int e = 0; e < 4; e++)
                         col[q][e] = rgba[e] / 255.0f;
                 }
-                if (add_tri(g, &cam, P, col, i, v, ch, s->lit || k->key.texture != GLS_NONE))
+                /* GL's alpha test (render.c, on when the scene has
+                 * transparent texels) discards where alpha < 0.5: a
+                 * triangle with such a texture, or a vertex alpha under
+                 * 0.5, has holes */
+                unsigned fl = s->lit || k->key.texture != GLS_NONE ? GLS_EXACT_SAMPLED : 0;
+                if ((s->features & GLS_FEAT_ALPHA_TEST) &&
+                    ((k->key.texture != GLS_NONE && (textures[k->key.texture].flags & GLS_TEX_ALPHA_HOLES)) ||
+                     col[0][3] < 0.5f || col[1][3] < 0.5f || col[2][3] < 0.5f))
+                    fl |= GLS_EXACT_HOLES | GLS_EXACT_SAMPLED;
+                if (add_tri(g, &cam, P, col, i, v, ch, fl))
                     return -1;
             }
         }
@@ -247,7 +253,7 @@ void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, double x
 {
     const gls_exact_geom *g = user;
     const gls_exact_vcol *v = &g->v[i];
-    if (!t->sampled && !memcmp(v->rgba[0], v->rgba[1], sizeof v->rgba[0]) &&
+    if (!(t->flags & GLS_EXACT_SAMPLED) && !memcmp(v->rgba[0], v->rgba[1], sizeof v->rgba[0]) &&
         !memcmp(v->rgba[0], v->rgba[2], sizeof v->rgba[0])) {
         memcpy(rgba, t->rgba, 4 * sizeof *rgba); /* flat: exact */
         return;

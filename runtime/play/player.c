@@ -127,6 +127,14 @@ static int run_load_scene(run *u)
                       "anti-aliasing draws it)\n", o->bundle, why);
         return 1;
     }
+    /* alpha-tested triangles are point-sampled in the image (exact.h
+     * GLS_EXACT_HOLES): their areas are not exact, so nothing reports them */
+    if (u->plan.o.exact && (u->scene.features & GLS_FEAT_ALPHA_TEST) && (o->outputs & GLS_OUT_EXACT_ONLY)) {
+        fprintf(errs, "glsplay: error: %s: --outputs %s needs exact areas, and the scene has textures with "
+                      "transparent texels (alpha-tested, sampled in the image); leave out %s\n", o->bundle,
+                GLS_OUT_EXACT_WORD(o->outputs), GLS_OUT_EXACT_WORD(o->outputs));
+        return 1;
+    }
     if (play_motion_load(o, &u->ms, errs) || (!o->trajectory && play_motion_check(&u->ms, o->frame, errs)))
         return 1;
     if (o->trajectory && gls_traj_load(o->trajectory, &u->ms.traj, err, sizeof err)) {
