@@ -18,9 +18,20 @@ typedef struct {
     const uint16_t *idmap;
     gls_exact_cover *cover;
     int w;
+    int oom;            /* a pixel's scratch could not be allocated      */
     double lx[GLS_EXACT_SHADE_M], ly[GLS_EXACT_SHADE_M]; /* the lattice
                            points, pixel-local ([-0.5, 0.5)^2)           */
 } image_ctx;
+
+/* Per region of a pixel: its lattice points' colours summed and
+ * counted, whether the alpha test has dropped it at the current point,
+ * and its colour. */
+typedef struct region {
+    double sum[4];
+    int cnt;
+    unsigned char skip;
+    float col[4];
+} region;
 
 /* Which of the pixel's regions shows at pixel-local point (x, y): the
  * frag whose triangle contains it and is nearest there (larger 1/Zc, ties
@@ -29,13 +40,13 @@ typedef struct {
  * front among all.  n when none (background).  Points on a shared edge
  * go to either side: a set of measure zero. */
 static size_t owner(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, double x, double y,
-                    const unsigned char *skip)
+                    const region *skip)
 {
     size_t best = n;
     double bz = 0;
     for (size_t k = 0; k < n; k++) {
         const gls_exact_tri *t = &c->t[f[k].tri];
-        if (skip && skip[k])
+        if (skip && skip[k].skip)
             continue;
         double X[3], Y[3], e[3];
         for (int q = 0; q < 3; q++)
@@ -56,13 +67,11 @@ static size_t owner(const image_ctx *c, int px, int py, const gls_exact_frag *f,
 
 /* The colours of the pixel's sampled regions (f[k] with a sampled
  * triangle): the mean of the shader at the lattice points each region
- * owns, into col[k]; the centroid's where it owns none. */
-static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, float (*col)[4])
+ * owns, into r[k].col; the centroid's where it owns none. */
+static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r)
 {
-    double sum[64][4];
-    int cnt[64];
     for (size_t k = 0; k < n; k++)
-        cnt[k] = 0, sum[k][0] = sum[k][1] = sum[k][2] = sum[k][3] = 0;
+        r[k].cnt = 0, r[k].sum[0] = r[k].sum[1] = r[k].sum[2] = r[k].sum[3] = 0;
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
         size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(c, px, py, f, n, c->lx[m], c->ly[m], NULL);
         if (k == n || !(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
@@ -70,16 +79,16 @@ static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_
         float v[4];
         c->shade(c->user, &c->t[f[k].tri], f[k].tri, px + c->lx[m], py + c->ly[m], v);
         for (int q = 0; q < 4; q++)
-            sum[k][q] += v[q];
-        cnt[k]++;
+            r[k].sum[q] += v[q];
+        r[k].cnt++;
     }
     for (size_t k = 0; k < n; k++)
         if ((c->t[f[k].tri].flags & GLS_EXACT_SAMPLED)) {
-            if (cnt[k])
+            if (r[k].cnt)
                 for (int q = 0; q < 4; q++)
-                    col[k][q] = (float)(sum[k][q] / cnt[k]);
+                    r[k].col[q] = (float)(r[k].sum[q] / r[k].cnt);
             else
-                c->shade(c->user, &c->t[f[k].tri], f[k].tri, f[k].cx, f[k].cy, col[k]);
+                c->shade(c->user, &c->t[f[k].tri], f[k].tri, f[k].cx, f[k].cy, r[k].col);
         }
 }
 
@@ -131,17 +140,19 @@ static void pixel_cover(const image_ctx *c, const gls_exact_frag *f, size_t n, g
         free(sa), free(si);
 }
 
-/* A pixel an alpha-tested triangle shows in (GLS_EXACT_HOLES; n <= 64):
+/* A pixel an alpha-tested triangle shows in (GLS_EXACT_HOLES):
  * the mean over the lattice points of the nearest surface there whose
  * alpha passes (GL's alpha test: at least 0.5), or the background. */
-static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, double acc[4])
+static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r,
+                        double acc[4])
 {
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        unsigned char skip[64] = {0};
+        for (size_t k = 0; k < n; k++)
+            r[k].skip = 0;
         double x = px + c->lx[m], y = py + c->ly[m];
         float v[4];
         for (;;) {
-            size_t k = owner(c, px, py, f, n, c->lx[m], c->ly[m], skip);
+            size_t k = owner(c, px, py, f, n, c->lx[m], c->ly[m], r);
             const gls_exact_tri *t = k < n ? &c->t[f[k].tri] : NULL;
             if (!t) {
                 for (int q = 0; q < 4; q++)
@@ -155,7 +166,7 @@ static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag
                     v[q] = t->rgba[q];
             if (!(t->flags & GLS_EXACT_HOLES) || v[3] >= 0.5f)
                 break;
-            skip[k] = 1;
+            r[k].skip = 1;
         }
         for (int q = 0; q < 4; q++)
             acc[q] += v[q] / GLS_EXACT_SHADE_M;
@@ -171,31 +182,33 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
         pixel_cover(c, f, n, c->cover + at * GLS_EXACT_COVER_K);
     if (!c->rgba)
         return;
-    int holes = 0;
-    for (size_t k = 0; k < n && n <= 64; k++)
-        holes |= (c->t[f[k].tri].flags & GLS_EXACT_HOLES) != 0;
-    if (holes) {
-        double acc[4] = {0, 0, 0, 0};
-        holes_pixel(c, px, py, f, n, acc);
-        for (int q = 0; q < 4; q++)
-            c->rgba[at * 4 + q] = (float)acc[q];
+    int holes = 0, any = 0;
+    for (size_t k = 0; k < n; k++)
+        holes |= (c->t[f[k].tri].flags & GLS_EXACT_HOLES) != 0, any |= (c->t[f[k].tri].flags & GLS_EXACT_SAMPLED) != 0;
+    /* per region scratch: on the stack for up to 64 regions, else
+     * allocated (a far hillside's slivers put hundreds in a pixel) */
+    region stack_r[64], *r = stack_r;
+    if ((holes || (any && c->shade)) && n > 64 && !(r = malloc(n * sizeof *r))) {
+        c->oom = 1;
         return;
     }
-    /* sampled regions take the lattice mean when the pixel shows at most
-     * 64 regions (the points' owners are found among all of them); a
-     * pixel showing more keeps every centroid's colour */
-    float scol[64][4];
-    size_t ns = n <= 64 ? n : 0, any = 0;
-    for (size_t k = 0; k < ns; k++)
-        any |= (c->t[f[k].tri].flags & GLS_EXACT_SAMPLED);
+    if (holes) {
+        double h[4] = {0, 0, 0, 0};
+        holes_pixel(c, px, py, f, n, r, h);
+        for (int q = 0; q < 4; q++)
+            c->rgba[at * 4 + q] = (float)h[q];
+        if (r != stack_r)
+            free(r);
+        return;
+    }
     if (any && c->shade)
-        sampled_colours(c, px, py, f, ns, scol);
+        sampled_colours(c, px, py, f, n, r);
     for (size_t k = 0; k < n; k++) {
         float col[4];
         const gls_exact_tri *t = &c->t[f[k].tri];
-        if (c->shade && k < ns && (t->flags & GLS_EXACT_SAMPLED) && any)
+        if (c->shade && (t->flags & GLS_EXACT_SAMPLED))
             for (int q = 0; q < 4; q++)
-                col[q] = scol[k][q];
+                col[q] = r[k].col[q];
         else if (c->shade)
             c->shade(c->user, t, f[k].tri, f[k].cx, f[k].cy, col);
         else
@@ -210,6 +223,8 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
     float *o = c->rgba + at * 4;
     for (int q = 0; q < 4; q++)
         o[q] = (float)(acc[q] + rest * c->bg[q]);
+    if (r != stack_r)
+        free(r);
 }
 
 int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
@@ -221,7 +236,7 @@ int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float 
 int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
                      void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover)
 {
-    image_ctx c = {t, bg, shade, user, rgba, idmap, cover, w, {0}, {0}};
+    image_ctx c = {t, bg, shade, user, rgba, idmap, cover, w, 0, {0}, {0}};
     /* the lattice the sampled path uses at that count (lattice.c) */
     gls_lattice l;
     if (gls_lattice_choose(GLS_EXACT_SHADE_M, &l))
@@ -231,5 +246,5 @@ int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float
         gls_lattice_point(&l, (uint64_t)m, &x, &y);
         c.lx[m] = (double)x / (double)l.q - 0.5, c.ly[m] = (double)y / (double)l.q - 0.5;
     }
-    return gls_exact_visit(t, n, w, h, image_pixel, &c);
+    return gls_exact_visit(t, n, w, h, image_pixel, &c) || c.oom ? -1 : 0;
 }
