@@ -31,34 +31,56 @@ typedef struct region {
     int cnt;
     unsigned char skip;
     float col[4];
+    /* its triangle's edge functions and 1/Zc times twice its signed
+     * area, affine in the pixel-local point: v[0] + v[1] x + v[2] y */
+    double e[3][3], z[3], a;
 } region;
+
+/* The regions' edge functions in pixel (px, py): with a = X - x, b = Y - y
+ * (X, Y the vertex pixel-local), e_q = a_{q+1} b_{q+2} - a_{q+2} b_{q+1}
+ * is affine in (x, y) (the xy terms cancel), and so is sum e_q iz_q. */
+static void regions_prep(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r)
+{
+    for (size_t k = 0; k < n; k++) {
+        const gls_exact_tri *t = &c->t[f[k].tri];
+        double X[3], Y[3];
+        for (int q = 0; q < 3; q++)
+            X[q] = t->x[q] - px, Y[q] = t->y[q] - py;
+        r[k].a = 0, r[k].z[0] = r[k].z[1] = r[k].z[2] = 0;
+        for (int q = 0; q < 3; q++) {
+            int u = (q + 1) % 3, v = (q + 2) % 3;
+            double *e = r[k].e[q];
+            e[0] = X[u] * Y[v] - X[v] * Y[u], e[1] = Y[u] - Y[v], e[2] = X[v] - X[u];
+            r[k].a += e[0];
+            for (int m = 0; m < 3; m++)
+                r[k].z[m] += e[m] * t->iz[q];
+        }
+    }
+}
 
 /* Which of the pixel's regions shows at pixel-local point (x, y): the
  * frag whose triangle contains it and is nearest there (larger 1/Zc, ties
  * the lower index, the walk's rule).  The frags are exactly the triangles
  * visible in the pixel, so the one in front among them is the one in
  * front among all.  n when none (background).  Points on a shared edge
- * go to either side: a set of measure zero. */
-static size_t owner(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, double x, double y,
-                    const region *skip)
+ * go to either side: a set of measure zero.  skip: leave out the regions
+ * marked so. */
+static size_t owner(const gls_exact_frag *f, size_t n, const region *r, double x, double y, int skip)
 {
     size_t best = n;
     double bz = 0;
     for (size_t k = 0; k < n; k++) {
-        const gls_exact_tri *t = &c->t[f[k].tri];
-        if (skip && skip[k].skip)
+        const region *g = &r[k];
+        if (skip && g->skip)
             continue;
-        double X[3], Y[3], e[3];
+        double a = g->a, e[3];
         for (int q = 0; q < 3; q++)
-            X[q] = t->x[q] - px - x, Y[q] = t->y[q] - py - y;
-        for (int q = 0; q < 3; q++)
-            e[q] = X[(q + 1) % 3] * Y[(q + 2) % 3] - X[(q + 2) % 3] * Y[(q + 1) % 3];
-        double a = e[0] + e[1] + e[2];
+            e[q] = g->e[q][0] + g->e[q][1] * x + g->e[q][2] * y;
         if (a == 0 || (a > 0 ? e[0] < 0 || e[1] < 0 || e[2] < 0 : e[0] > 0 || e[1] > 0 || e[2] > 0))
             continue;
         /* e[q] / a: the point's barycentric weight of vertex q; 1/Zc is
          * affine in the image */
-        double z = (e[0] * t->iz[0] + e[1] * t->iz[1] + e[2] * t->iz[2]) / a;
+        double z = (g->z[0] + g->z[1] * x + g->z[2] * y) / a;
         if (best == n || z > bz || (z == bz && f[k].tri < f[best].tri))
             best = k, bz = z;
     }
@@ -72,8 +94,10 @@ static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_
 {
     for (size_t k = 0; k < n; k++)
         r[k].cnt = 0, r[k].sum[0] = r[k].sum[1] = r[k].sum[2] = r[k].sum[3] = 0;
+    if (!(n == 1 && f[0].area == 1.0))
+        regions_prep(c, px, py, f, n, r);
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(c, px, py, f, n, c->lx[m], c->ly[m], NULL);
+        size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(f, n, r, c->lx[m], c->ly[m], 0);
         if (k == n || !(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
             continue;
         float v[4];
@@ -146,13 +170,14 @@ static void pixel_cover(const image_ctx *c, const gls_exact_frag *f, size_t n, g
 static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r,
                         double acc[4])
 {
+    regions_prep(c, px, py, f, n, r);
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
         for (size_t k = 0; k < n; k++)
             r[k].skip = 0;
         double x = px + c->lx[m], y = py + c->ly[m];
         float v[4];
         for (;;) {
-            size_t k = owner(c, px, py, f, n, c->lx[m], c->ly[m], r);
+            size_t k = owner(f, n, r, c->lx[m], c->ly[m], 1);
             const gls_exact_tri *t = k < n ? &c->t[f[k].tri] : NULL;
             if (!t) {
                 for (int q = 0; q < 4; q++)

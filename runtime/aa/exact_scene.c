@@ -51,6 +51,11 @@ static int add_tri(gls_exact_geom *g, const gls_exact_pinhole *cam, const double
         memcpy(vc.rgba[k], col[k], sizeof vc.rgba[k]);
     }
     vc.v = v, vc.inst = id, vc.chunk = chunk;
+    for (int k = 0; k < 3; k++) {
+        const double *a = vc.P[(k + 1) % 3], *b = vc.P[(k + 2) % 3];
+        vc.C[k][0] = a[1] * b[2] - a[2] * b[1], vc.C[k][1] = a[2] * b[0] - a[0] * b[2];
+        vc.C[k][2] = a[0] * b[1] - a[1] * b[0];
+    }
     for (int k = 0; k < m; k++)
         g->v[g->n + k] = vc;
     g->n += (size_t)m;
@@ -148,23 +153,16 @@ void gls_exact_geom_free(gls_exact_geom *g)
 }
 
 /* GL's perspective-correct weights of v's vertices at image point (x,
- * y): the barycentric coordinates of the point where the camera ray
- * through (x, y) meets the triangle's plane */
+ * y): the barycentric coordinates of the point where the camera ray d
+ * through (x, y) meets the triangle's plane, each the volume
+ * det(d, P[k+1], P[k+2]) = d . C[k] over their sum */
 static void weights(const gls_exact_geom *g, const gls_exact_vcol *v, double x, double y, double w[3])
 {
-    double dy = (y - g->cy) / g->fy, d[3] = {(x - g->cx - g->skew * dy) / g->fx, dy, 1};
-    const double *A = v->P[0];
-    double e1[3], e2[3], n[3];
-    for (int r = 0; r < 3; r++)
-        e1[r] = v->P[1][r] - A[r], e2[r] = v->P[2][r] - A[r];
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2], n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    double nd = n[0] * d[0] + n[1] * d[1] + n[2] * d[2], s = (n[0] * A[0] + n[1] * A[1] + n[2] * A[2]) / nd;
-    double p[3] = {s * d[0] - A[0], s * d[1] - A[1], s * d[2] - A[2]};
-    double d00 = 0, d01 = 0, d11 = 0, d20 = 0, d21 = 0;
-    for (int r = 0; r < 3; r++)
-        d00 += e1[r] * e1[r], d01 += e1[r] * e2[r], d11 += e2[r] * e2[r], d20 += p[r] * e1[r], d21 += p[r] * e2[r];
-    double den = d00 * d11 - d01 * d01;
-    w[1] = (d11 * d20 - d01 * d21) / den, w[2] = (d00 * d21 - d01 * d20) / den, w[0] = 1 - w[1] - w[2];
+    double dy = (y - g->cy) / g->fy, d[3] = {(x - g->cx - g->skew * dy) / g->fx, dy, 1}, sum = 0;
+    for (int k = 0; k < 3; k++)
+        w[k] = d[0] * v->C[k][0] + d[1] * v->C[k][1] + d[2] * v->C[k][2], sum += w[k];
+    for (int k = 0; k < 3; k++)
+        w[k] /= sum;
 }
 
 /* The texture's base level at (s, t) as GL samples it with GL_LINEAR and
@@ -177,11 +175,9 @@ static void texel(const gls_texture *tx, double s, double t, double out[4])
     double u = s * tx->width - 0.5, v = t * tx->height - 0.5;
     double fu = floor(u), fv = floor(v), a = u - fu, b = v - fv;
     int64_t W = tx->width, H = tx->height;
-    int64_t i0 = (int64_t)fmod(fu, (double)W), j0 = (int64_t)fmod(fv, (double)H);
-    if (i0 < 0)
-        i0 += W;
-    if (j0 < 0)
-        j0 += H;
+    /* GL_REPEAT: the texel index modulo the size */
+    int64_t i0 = (int64_t)(fu - W * floor(fu / W)), j0 = (int64_t)(fv - H * floor(fv / H));
+    i0 = i0 < 0 ? 0 : i0 >= W ? W - 1 : i0, j0 = j0 < 0 ? 0 : j0 >= H ? H - 1 : j0;
     int64_t i1 = (i0 + 1) % W, j1 = (j0 + 1) % H;
     const uint8_t *r0 = tx->rgba + (size_t)(H - 1 - j0) * (size_t)W * 4, *r1 = tx->rgba + (size_t)(H - 1 - j1) * (size_t)W * 4;
     for (int q = 0; q < 4; q++)

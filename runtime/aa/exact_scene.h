@@ -25,6 +25,8 @@
 
 typedef struct {
     double P[3][3];     /* camera-space vertices of the whole triangle     */
+    double C[3][3];     /* P[k+1] x P[k+2]: a ray d meets the triangle's
+                           plane at barycentric weights d.C[k] / sum      */
     float rgba[3][4];   /* their colours, 0..1                             */
     uint32_t v;         /* its first vertex in the scene                   */
     uint32_t inst;      /* its instance                                    */
