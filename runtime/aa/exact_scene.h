@@ -11,9 +11,10 @@
  * double; the result clamped to 0..1 as the 8-bit framebuffer clamps each
  * sample): at the region's centroid for flat and vertex colours (exact
  * for flat colour), the mean over the pixel's GLS_EXACT_SHADE_M lattice
- * points in the region for textured and lit triangles (exact.h).  Shadows
- * and alpha-tested textures are not drawn this way
- * (gls_exact_scene_unsupported says why). */
+ * points in the region for textured and lit triangles (exact.h); a
+ * triangle whose texture has transparent texels (the scene's alpha test)
+ * is point-sampled at those points (GLS_EXACT_HOLES).  Shadows are not
+ * drawn this way (gls_exact_scene_unsupported says why). */
 #ifndef GLS_EXACT_SCENE_H
 #define GLS_EXACT_SCENE_H
 
@@ -46,8 +47,8 @@ typedef struct {
     double lpos[4 * GLS_MAX_LIGHTS], lcol[4 * GLS_MAX_LIGHTS], amb[3];
 } gls_exact_geom;
 
-/* NULL when gls_exact_geom_make can draw s, else why not ("shadows",
- * "a texture with transparent texels"). */
+/* NULL when gls_exact_geom_make can draw s, else why not ("shadows
+ * ..."). */
 const char *gls_exact_scene_unsupported(const gls_scene *s);
 
 /* The image triangles of s under c (ids: instance indices); textures: the
