@@ -200,9 +200,16 @@ static void light(const gls_exact_geom *g, const gls_exact_vcol *v, const double
     for (int k = 0; k < 3; k++) {
         const float *N = vattr(s, v->v + (uint32_t)k, s->normal_offset), *S = vattr(s, v->v + (uint32_t)k, s->specular_offset);
         double P[3] = {v->P[k][0], -v->P[k][1], -v->P[k][2]}; /* GL's eye axes */
+        double m[3], lm = 0, l0 = (double)N[0] * N[0] + (double)N[1] * N[1] + (double)N[2] * N[2];
+        for (int r = 0; r < 3; r++)
+            m[r] = M[3 * r] * N[0] + M[3 * r + 1] * N[1] + M[3 * r + 2] * N[2], lm += m[r] * m[r];
+        /* each vertex's normal by the normal matrix kept at its length,
+         * as lighting.c's vertex shader and render.c's normals_to_world
+         * (items near the camera) carry it */
+        double sc = lm > 0 ? sqrt(l0 / lm) : 1;
         for (int r = 0; r < 3; r++) {
             eye[r] += w[k] * P[r];
-            n[r] += w[k] * (M[3 * r] * N[0] + M[3 * r + 1] * N[1] + M[3 * r + 2] * N[2]);
+            n[r] += w[k] * m[r] * sc;
         }
         for (int q = 0; q < 4; q++)
             sp[q] += w[k] * S[q];

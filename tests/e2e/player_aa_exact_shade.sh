@@ -85,6 +85,18 @@ for s in Lit LitTex; do
     "$B/glsc" -I "$t/lib" -o "$t/$s.glsb" "$t/$s.scene" 2>"$t/err" || { fail exact_shade_compile "$(cat "$t/err")"; exit 0; }
 done
 render Lit && compare Lit exact_lit_vs_65536 0.003 1e-4
+# a non-uniformly scaled lit instance far from the camera for its size
+# (not re-anchored, render.c): GL carries its normals by the normal matrix
+# kept at their lengths, as for re-anchored items and as the exact path
+# does (lighting.c); before, their lengths weighed GL's interpolation and
+# the exact path was 0.16 off here
+mkdir -p "$t/llib/lt"
+grep -v '^ambient\|^light' "$t/Lit.scene" >"$t/llib/lt/Q.scene"
+printf 'ambient(0.1, 0.1, 0.15);\nlight(point, 0.03, -0.04, 49.7, 1, 0.9, 0.8, 5);\nlight(directional, 0.2, -0.3, -1, 0.3, 0.3, 0.3);\npush; trans(0, 0, 50); scale(1, 0.5, 1); scale(0.1, 0.1, 0.1); trans(0, 0, -5); call("lt.Q"); pop;\n' >"$t/LitFar.scene"
+"$B/glsc" -I "$t/llib" -o "$t/LitFar.glsb" "$t/LitFar.scene" 2>"$t/err" || { fail exact_shade_compile "$(cat "$t/err")"; exit 0; }
+cp "$t/c.cam" "$t/c0.cam" && sed 's/^fx 100$/fx 12000/; s/^fy 100$/fy 12000/' "$t/c0.cam" >"$t/c.cam"
+render LitFar && compare LitFar exact_lit_scaled_far_vs_65536 0.003 1e-4
+cp "$t/c0.cam" "$t/c.cam"
 render LitTex && compare LitTex exact_lit_textured_vs_65536 0.006 3e-4
 # refused: shadows (a shadow map is a sampled depth image)
 printf 'shadows(256);\n' | cat - "$t/Lit.scene" >"$t/Shadow.scene"
