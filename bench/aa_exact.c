@@ -57,7 +57,7 @@ static int run_dirs(const double *deg, long n, int offsets, const char *name)
             double th = deg[k] * M_PI / 180, nx = cos(th), ny = sin(th);
             double px = W / 2 - 0.5 + urand(), py = W / 2 - 0.5 + urand(), L = 1e4;
             gls_exact_tri t = {{px - L * ny, px + L * ny, px + L * nx}, {py + L * nx, py - L * nx, py + L * ny},
-                               {1, 1, 1}, 0, {1, 1, 1, 1}};
+                               {1, 1, 1}, 0, {1, 1, 1, 1}, 0};
             img m;
             memset(&m, 0, sizeof m);
             if (gls_exact_visit(&t, 1, W, W, pixel, &m))

@@ -32,7 +32,25 @@ typedef struct {
     double iz[3];       /* 1/Zc at the vertices, > 0; larger is nearer     */
     uint32_t id;        /* the surface's id, reported with its coverage    */
     float rgba[4];      /* flat colour (gls_exact_image without a shader) */
+    uint8_t flags;      /* GLS_EXACT_SAMPLED, GLS_EXACT_HOLES             */
 } gls_exact_tri;
+
+/* Its shaded colour is not affine in the image (texture, lighting): a
+ * region's colour is the mean of the shader at the GLS_EXACT_SHADE_M
+ * lattice points of the pixel that fall in the region
+ * (gls_exact_shade_fn). */
+#define GLS_EXACT_SAMPLED 1u
+/* Alpha-tested (GL discards where the shader's alpha is under 0.5): it
+ * hides nothing in the walk (its regions overlap what is behind it), and
+ * a pixel it shows in is point-sampled at the GLS_EXACT_SHADE_M lattice
+ * points, each the nearest surface there whose alpha passes.  Areas and
+ * coverage are not exact there: gls_exact_image only. */
+#define GLS_EXACT_HOLES 2u
+
+/* The lattice points (lattice.h) per pixel at which a sampled triangle's
+ * colour is averaged over a region: texture edges and highlights inside
+ * a region are sampled at these, its area stays exact. */
+#define GLS_EXACT_SHADE_M 64
 
 /* What one triangle shows in one pixel: the exact area (pixel units, the
  * square is 1) of the part of it that is visible, and that part's
@@ -57,7 +75,9 @@ int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pi
 /* A region's colour: the colour of triangle t (index i) at image point
  * (x, y), the centroid of what is visible of it in a pixel.  For colour
  * affine in the image (flat, or interpolated linearly in screen space)
- * that is the region's exact mean. */
+ * that is the region's exact mean.  A sampled triangle's (t->sampled)
+ * region takes the mean of the calls at the pixel's lattice points in it
+ * instead, the centroid's when none is. */
 typedef void (*gls_exact_shade_fn)(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4]);
 
 /* The box-filtered image: rgba (w * h * 4 floats, row 0 at the top) =

@@ -1,10 +1,13 @@
 /* Exact coverage: the box-filtered colour image (exact.h,
  * gls_exact_image): each pixel the sum of its visible regions' exact areas
  * times their colours, the colour of a region its triangle's at the
- * region's centroid (exact for colour affine in the image), and the
- * uncovered rest the background's. */
+ * region's centroid (exact for colour affine in the image) or, for a
+ * sampled triangle (textured, lit), the mean of its colour at the
+ * pixel's lattice points in the region, and the uncovered rest the
+ * background's. */
 #include <stdlib.h>
 #include "exact_int.h"
+#include "lattice.h"
 
 typedef struct {
     const gls_exact_tri *t;
@@ -15,7 +18,103 @@ typedef struct {
     const uint16_t *idmap;
     gls_exact_cover *cover;
     int w;
+    int oom;            /* a pixel's scratch could not be allocated      */
+    double lx[GLS_EXACT_SHADE_M], ly[GLS_EXACT_SHADE_M]; /* the lattice
+                           points, pixel-local ([-0.5, 0.5)^2)           */
 } image_ctx;
+
+/* Per region of a pixel: its lattice points' colours summed and
+ * counted, whether the alpha test has dropped it at the current point,
+ * and its colour. */
+typedef struct region {
+    double sum[4];
+    int cnt;
+    unsigned char skip;
+    float col[4];
+    /* its triangle's edge functions and 1/Zc times twice its signed
+     * area, affine in the pixel-local point: v[0] + v[1] x + v[2] y */
+    double e[3][3], z[3], a;
+} region;
+
+/* The regions' edge functions in pixel (px, py): with a = X - x, b = Y - y
+ * (X, Y the vertex pixel-local), e_q = a_{q+1} b_{q+2} - a_{q+2} b_{q+1}
+ * is affine in (x, y) (the xy terms cancel), and so is sum e_q iz_q. */
+static void regions_prep(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r)
+{
+    for (size_t k = 0; k < n; k++) {
+        const gls_exact_tri *t = &c->t[f[k].tri];
+        double X[3], Y[3];
+        for (int q = 0; q < 3; q++)
+            X[q] = t->x[q] - px, Y[q] = t->y[q] - py;
+        r[k].a = 0, r[k].z[0] = r[k].z[1] = r[k].z[2] = 0;
+        for (int q = 0; q < 3; q++) {
+            int u = (q + 1) % 3, v = (q + 2) % 3;
+            double *e = r[k].e[q];
+            e[0] = X[u] * Y[v] - X[v] * Y[u], e[1] = Y[u] - Y[v], e[2] = X[v] - X[u];
+            r[k].a += e[0];
+            for (int m = 0; m < 3; m++)
+                r[k].z[m] += e[m] * t->iz[q];
+        }
+    }
+}
+
+/* Which of the pixel's regions shows at pixel-local point (x, y): the
+ * frag whose triangle contains it and is nearest there (larger 1/Zc, ties
+ * the lower index, the walk's rule).  The frags are exactly the triangles
+ * visible in the pixel, so the one in front among them is the one in
+ * front among all.  n when none (background).  Points on a shared edge
+ * go to either side: a set of measure zero.  skip: leave out the regions
+ * marked so. */
+static size_t owner(const gls_exact_frag *f, size_t n, const region *r, double x, double y, int skip)
+{
+    size_t best = n;
+    double bz = 0;
+    for (size_t k = 0; k < n; k++) {
+        const region *g = &r[k];
+        if (skip && g->skip)
+            continue;
+        double a = g->a, e[3];
+        for (int q = 0; q < 3; q++)
+            e[q] = g->e[q][0] + g->e[q][1] * x + g->e[q][2] * y;
+        if (a == 0 || (a > 0 ? e[0] < 0 || e[1] < 0 || e[2] < 0 : e[0] > 0 || e[1] > 0 || e[2] > 0))
+            continue;
+        /* e[q] / a: the point's barycentric weight of vertex q; 1/Zc is
+         * affine in the image */
+        double z = (g->z[0] + g->z[1] * x + g->z[2] * y) / a;
+        if (best == n || z > bz || (z == bz && f[k].tri < f[best].tri))
+            best = k, bz = z;
+    }
+    return best;
+}
+
+/* The colours of the pixel's sampled regions (f[k] with a sampled
+ * triangle): the mean of the shader at the lattice points each region
+ * owns, into r[k].col; the centroid's where it owns none. */
+static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r)
+{
+    for (size_t k = 0; k < n; k++)
+        r[k].cnt = 0, r[k].sum[0] = r[k].sum[1] = r[k].sum[2] = r[k].sum[3] = 0;
+    if (!(n == 1 && f[0].area == 1.0))
+        regions_prep(c, px, py, f, n, r);
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(f, n, r, c->lx[m], c->ly[m], 0);
+        if (k == n || !(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
+            continue;
+        float v[4];
+        c->shade(c->user, &c->t[f[k].tri], f[k].tri, px + c->lx[m], py + c->ly[m], v);
+        for (int q = 0; q < 4; q++)
+            r[k].sum[q] += v[q];
+        r[k].cnt++;
+    }
+    for (size_t k = 0; k < n; k++)
+        if ((c->t[f[k].tri].flags & GLS_EXACT_SAMPLED)) {
+            if (r[k].cnt)
+                for (int q = 0; q < 4; q++)
+                    r[k].col[q] = (float)(r[k].sum[q] / r[k].cnt);
+            else
+                c->shade(c->user, &c->t[f[k].tri], f[k].tri, f[k].cx, f[k].cy, r[k].col);
+        }
+}
 
 /* The pixel's areas summed per id (a pixel shows few ids: a list, on
  * the stack up to 32, else allocated), the K largest into out.  Out of
@@ -65,6 +164,40 @@ static void pixel_cover(const image_ctx *c, const gls_exact_frag *f, size_t n, g
         free(sa), free(si);
 }
 
+/* A pixel an alpha-tested triangle shows in (GLS_EXACT_HOLES):
+ * the mean over the lattice points of the nearest surface there whose
+ * alpha passes (GL's alpha test: at least 0.5), or the background. */
+static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r,
+                        double acc[4])
+{
+    regions_prep(c, px, py, f, n, r);
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        for (size_t k = 0; k < n; k++)
+            r[k].skip = 0;
+        double x = px + c->lx[m], y = py + c->ly[m];
+        float v[4];
+        for (;;) {
+            size_t k = owner(f, n, r, c->lx[m], c->ly[m], 1);
+            const gls_exact_tri *t = k < n ? &c->t[f[k].tri] : NULL;
+            if (!t) {
+                for (int q = 0; q < 4; q++)
+                    v[q] = c->bg[q];
+                break;
+            }
+            if (c->shade)
+                c->shade(c->user, t, f[k].tri, x, y, v);
+            else
+                for (int q = 0; q < 4; q++)
+                    v[q] = t->rgba[q];
+            if (!(t->flags & GLS_EXACT_HOLES) || v[3] >= 0.5f)
+                break;
+            r[k].skip = 1;
+        }
+        for (int q = 0; q < 4; q++)
+            acc[q] += v[q] / GLS_EXACT_SHADE_M;
+    }
+}
+
 static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, size_t n)
 {
     image_ctx *c = user;
@@ -74,10 +207,34 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
         pixel_cover(c, f, n, c->cover + at * GLS_EXACT_COVER_K);
     if (!c->rgba)
         return;
+    int holes = 0, any = 0;
+    for (size_t k = 0; k < n; k++)
+        holes |= (c->t[f[k].tri].flags & GLS_EXACT_HOLES) != 0, any |= (c->t[f[k].tri].flags & GLS_EXACT_SAMPLED) != 0;
+    /* per region scratch: on the stack for up to 64 regions, else
+     * allocated (a far hillside's slivers put hundreds in a pixel) */
+    region stack_r[64], *r = stack_r;
+    if ((holes || (any && c->shade)) && n > 64 && !(r = malloc(n * sizeof *r))) {
+        c->oom = 1;
+        return;
+    }
+    if (holes) {
+        double h[4] = {0, 0, 0, 0};
+        holes_pixel(c, px, py, f, n, r, h);
+        for (int q = 0; q < 4; q++)
+            c->rgba[at * 4 + q] = (float)h[q];
+        if (r != stack_r)
+            free(r);
+        return;
+    }
+    if (any && c->shade)
+        sampled_colours(c, px, py, f, n, r);
     for (size_t k = 0; k < n; k++) {
         float col[4];
         const gls_exact_tri *t = &c->t[f[k].tri];
-        if (c->shade)
+        if (c->shade && (t->flags & GLS_EXACT_SAMPLED))
+            for (int q = 0; q < 4; q++)
+                col[q] = r[k].col[q];
+        else if (c->shade)
             c->shade(c->user, t, f[k].tri, f[k].cx, f[k].cy, col);
         else
             for (int q = 0; q < 4; q++)
@@ -91,6 +248,8 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
     float *o = c->rgba + at * 4;
     for (int q = 0; q < 4; q++)
         o[q] = (float)(acc[q] + rest * c->bg[q]);
+    if (r != stack_r)
+        free(r);
 }
 
 int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
@@ -102,6 +261,15 @@ int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float 
 int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
                      void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover)
 {
-    image_ctx c = {t, bg, shade, user, rgba, idmap, cover, w};
-    return gls_exact_visit(t, n, w, h, image_pixel, &c);
+    image_ctx c = {t, bg, shade, user, rgba, idmap, cover, w, 0, {0}, {0}};
+    /* the lattice the sampled path uses at that count (lattice.c) */
+    gls_lattice l;
+    if (gls_lattice_choose(GLS_EXACT_SHADE_M, &l))
+        return -1;
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        int64_t x, y;
+        gls_lattice_point(&l, (uint64_t)m, &x, &y);
+        c.lx[m] = (double)x / (double)l.q - 0.5, c.ly[m] = (double)y / (double)l.q - 0.5;
+    }
+    return gls_exact_visit(t, n, w, h, image_pixel, &c) || c.oom ? -1 : 0;
 }

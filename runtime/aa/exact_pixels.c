@@ -25,6 +25,7 @@
 
 struct exact_work {
     const exact_prep *prep;
+    const gls_exact_tri *tris;
     exact_pieces cur, next;
     exact_pt *buf[3];   /* clip buffers: the piece, its two parts          */
     size_t cap[3];
@@ -149,8 +150,8 @@ static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, doub
                 return -1;
     }
     for (size_t u = 0; u < nc && w->cur.np; u++) {
-        if (u == t)
-            continue;
+        if (u == t || (w->tris[c[u].tri].flags & GLS_EXACT_HOLES))
+            continue; /* an alpha-tested one hides nothing (exact.h) */
         if (c[u].zmax < c[t].zmin)
             break; /* this one and all after it are behind everywhere */
         const exact_prep *U = &w->prep[c[u].tri];
@@ -224,8 +225,9 @@ static int band_cands(const exact_prep *p, const unsigned char *ok, size_t n, in
         for (size_t t = 0; t < n; t++) {
             if (!ok[t] || p[t].j1 < j0 || p[t].j0 > j1)
                 continue;
-            /* narrower than a pixel: covers none whole, nothing for pass 1 */
-            if (pass == 1 && (p[t].xmax - p[t].xmin < 1 || p[t].ymax - p[t].ymin < 1))
+            /* narrower than a pixel: covers none whole, nothing for pass 1;
+             * an alpha-tested one (ok 2) covers nothing for certain */
+            if (pass == 1 && (ok[t] == 2 || p[t].xmax - p[t].xmin < 1 || p[t].ymax - p[t].ymin < 1))
                 continue;
             int ja = p[t].j0 > j0 ? p[t].j0 : j0, jb = p[t].j1 < j1 ? p[t].j1 : j1;
             for (int j = ja; j <= jb; j++)
@@ -307,8 +309,8 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
     int rc = -1;
     if (p && ok) {
         for (size_t k = 0; k < n; k++)
-            ok[k] = (unsigned char)exact_prep_tri(&t[k], w, h, &p[k]);
-        wk.prep = p, wk.cands = cands, wk.cuser = user;
+            ok[k] = (unsigned char)(exact_prep_tri(&t[k], w, h, &p[k]) ? (t[k].flags & GLS_EXACT_HOLES ? 2 : 1) : 0);
+        wk.prep = p, wk.tris = t, wk.cands = cands, wk.cuser = user;
         rc = run_bands(&wk, ok, n, w, h, fn, user);
     }
     exact_pieces_free(&wk.cur), exact_pieces_free(&wk.next);

@@ -4,14 +4,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include "exact_scene.h"
+#include "lighting.h"
 
 const char *gls_exact_scene_unsupported(const gls_scene *s)
 {
-    if (s->lit)
-        return "a lit scene (its lights and normals are shaded by GL)";
-    for (uint32_t k = 0; k < s->nchunks; k++)
-        if (s->chunks[k].key.texture != GLS_NONE)
-            return "a textured object (its texels are sampled by GL)";
+    /* a shadow map is a sampled depth image: its edges are no area the
+     * walk knows */
+    if (s->lit && s->shadow_res)
+        return "shadows (their maps are sampled depth images)";
     return NULL;
 }
 
@@ -22,7 +22,7 @@ static void world_of(const double W[16], const double *p, double q[3])
 }
 
 static int add_tri(gls_exact_geom *g, const gls_exact_pinhole *cam, const double P[3][3], const float col[3][4],
-                   uint32_t id)
+                   uint32_t id, uint32_t v, uint32_t chunk, unsigned flags)
 {
     if (g->n + 3 > g->cap) {
         size_t c = g->cap ? 2 * g->cap : 1024;
@@ -39,6 +39,7 @@ static int add_tri(gls_exact_geom *g, const gls_exact_pinhole *cam, const double
     gls_exact_tri proto;
     memset(&proto, 0, sizeof proto);
     proto.id = id;
+    proto.flags = (uint8_t)flags;
     memcpy(proto.rgba, col[0], sizeof proto.rgba);
     int m = gls_exact_project(cam, P, &proto, g->t + g->n);
     gls_exact_vcol vc;
@@ -49,15 +50,62 @@ static int add_tri(gls_exact_geom *g, const gls_exact_pinhole *cam, const double
             vc.P[k][r] = cam->R[3 * r] * d[0] + cam->R[3 * r + 1] * d[1] + cam->R[3 * r + 2] * d[2];
         memcpy(vc.rgba[k], col[k], sizeof vc.rgba[k]);
     }
+    vc.v = v, vc.inst = id, vc.chunk = chunk;
+    for (int k = 0; k < 3; k++) {
+        const double *a = vc.P[(k + 1) % 3], *b = vc.P[(k + 2) % 3];
+        vc.C[k][0] = a[1] * b[2] - a[2] * b[1], vc.C[k][1] = a[2] * b[0] - a[0] * b[2];
+        vc.C[k][2] = a[0] * b[1] - a[1] * b[0];
+    }
     for (int k = 0; k < m; k++)
         g->v[g->n + k] = vc;
     g->n += (size_t)m;
     return 0;
 }
 
-int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_camera *c)
+/* GL's normal matrix of instance world W seen by camera R: the inverse
+ * transpose of the modelview's 3x3, F R W^-T with F = diag(1, -1, -1)
+ * (GL's eye axes); only its direction per vertex matters, the shader
+ * normalises after interpolating, but a mirror's sign does. */
+static void normal_matrix(const double W[16], const double R[9], double N[9])
+{
+    double a[9] = {W[0], W[1], W[2], W[4], W[5], W[6], W[8], W[9], W[10]}, ct[9];
+    /* cofactors: cof(A)[r][c]; W^-T = cof / det */
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+            ct[3 * r + c] = a[3 * r1 + c1] * a[3 * r2 + c2] - a[3 * r1 + c2] * a[3 * r2 + c1];
+        }
+    double det = a[0] * ct[0] + a[1] * ct[1] + a[2] * ct[2];
+    if (det == 0)
+        det = 1;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            double v = 0;
+            for (int k = 0; k < 3; k++)
+                v += R[3 * r + k] * ct[3 * k + c] / det;
+            N[3 * r + c] = r ? -v : v;
+        }
+}
+
+int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_texture *textures, const gls_camera *c)
 {
     memset(g, 0, sizeof *g);
+    g->s = s, g->tex = textures;
+    for (uint32_t k = 0; k < s->nchunks; k++)
+        if (s->chunks[k].key.texture != GLS_NONE && !textures)
+            return -1;
+    if (s->lit) {
+        /* the lights as lighting.c hands them to GL: float uniforms */
+        g->nl = gls_lights_eye(s, c, g->lpos, g->lcol, g->amb);
+        for (uint32_t k = 0; k < 4 * g->nl; k++)
+            g->lpos[k] = (float)g->lpos[k], g->lcol[k] = (float)g->lcol[k];
+        for (int k = 0; k < 3; k++)
+            g->amb[k] = (float)g->amb[k];
+        if (!(g->nm = malloc((s->ninst ? s->ninst : 1) * 9 * sizeof *g->nm)))
+            return -1;
+        for (uint32_t i = 0; i < s->ninst; i++)
+            normal_matrix(s->inst[i].world, c->R, g->nm + 9 * (size_t)i);
+    }
     gls_exact_pinhole cam;
     memcpy(cam.R, c->R, sizeof cam.R);
     gls_camera_centre(c, cam.C);
@@ -81,7 +129,16 @@ int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_camera 
                     for (int e = 0; e < 4; e++)
                         col[q][e] = rgba[e] / 255.0f;
                 }
-                if (add_tri(g, &cam, P, col, i))
+                /* GL's alpha test (render.c, on when the scene has
+                 * transparent texels) discards where alpha < 0.5: a
+                 * triangle with such a texture, or a vertex alpha under
+                 * 0.5, has holes */
+                unsigned fl = s->lit || k->key.texture != GLS_NONE ? GLS_EXACT_SAMPLED : 0;
+                if ((s->features & GLS_FEAT_ALPHA_TEST) &&
+                    ((k->key.texture != GLS_NONE && (textures[k->key.texture].flags & GLS_TEX_ALPHA_HOLES)) ||
+                     col[0][3] < 0.5f || col[1][3] < 0.5f || col[2][3] < 0.5f))
+                    fl |= GLS_EXACT_HOLES | GLS_EXACT_SAMPLED;
+                if (add_tri(g, &cam, P, col, i, v, ch, fl))
                     return -1;
             }
         }
@@ -91,35 +148,141 @@ int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_camera 
 
 void gls_exact_geom_free(gls_exact_geom *g)
 {
-    free(g->t), free(g->v);
+    free(g->t), free(g->v), free(g->nm);
     memset(g, 0, sizeof *g);
+}
+
+/* GL's perspective-correct weights of v's vertices at image point (x,
+ * y): the barycentric coordinates of the point where the camera ray d
+ * through (x, y) meets the triangle's plane, each the volume
+ * det(d, P[k+1], P[k+2]) = d . C[k] over their sum */
+static void weights(const gls_exact_geom *g, const gls_exact_vcol *v, double x, double y, double w[3])
+{
+    double dy = (y - g->cy) / g->fy, d[3] = {(x - g->cx - g->skew * dy) / g->fx, dy, 1}, sum = 0;
+    for (int k = 0; k < 3; k++)
+        w[k] = d[0] * v->C[k][0] + d[1] * v->C[k][1] + d[2] * v->C[k][2], sum += w[k];
+    for (int k = 0; k < 3; k++)
+        w[k] /= sum;
+}
+
+/* The texture's base level at (s, t) as GL samples it with GL_LINEAR and
+ * GL_REPEAT (render.c): texel centres at (i + 1/2) / W, t = 0 the image's
+ * bottom row (render.c uploads bottom row first), 8-bit texels / 255.
+ * The sampled reference's samples see the texture magnified, so GL takes
+ * the base level there; a one-sample pass minifying it takes a mipmap. */
+static void texel(const gls_texture *tx, double s, double t, double out[4])
+{
+    double u = s * tx->width - 0.5, v = t * tx->height - 0.5;
+    double fu = floor(u), fv = floor(v), a = u - fu, b = v - fv;
+    int64_t W = tx->width, H = tx->height;
+    /* GL_REPEAT: the texel index modulo the size */
+    int64_t i0 = (int64_t)(fu - W * floor(fu / W)), j0 = (int64_t)(fv - H * floor(fv / H));
+    i0 = i0 < 0 ? 0 : i0 >= W ? W - 1 : i0, j0 = j0 < 0 ? 0 : j0 >= H ? H - 1 : j0;
+    int64_t i1 = (i0 + 1) % W, j1 = (j0 + 1) % H;
+    const uint8_t *r0 = tx->rgba + (size_t)(H - 1 - j0) * (size_t)W * 4, *r1 = tx->rgba + (size_t)(H - 1 - j1) * (size_t)W * 4;
+    for (int q = 0; q < 4; q++)
+        out[q] = ((1 - a) * (1 - b) * r0[4 * i0 + q] + a * (1 - b) * r0[4 * i1 + q] + (1 - a) * b * r1[4 * i0 + q] +
+                  a * b * r1[4 * i1 + q]) / 255.0;
+}
+
+static const float *vattr(const gls_scene *s, uint32_t v, size_t off)
+{
+    return (const float *)(const void *)(s->verts + (size_t)v * s->stride + off);
+}
+
+/* lighting.c's fragment shader in double at the point with weights w:
+ * albedo in, colour out (rgb; alpha is albedo's) */
+static void light(const gls_exact_geom *g, const gls_exact_vcol *v, const double w[3], const double al[4], double c[3])
+{
+    const gls_scene *s = g->s;
+    const double *M = g->nm + 9 * (size_t)v->inst;
+    double eye[3] = {0, 0, 0}, n[3] = {0, 0, 0}, sp[4] = {0, 0, 0, 0};
+    for (int k = 0; k < 3; k++) {
+        const float *N = vattr(s, v->v + (uint32_t)k, s->normal_offset), *S = vattr(s, v->v + (uint32_t)k, s->specular_offset);
+        double P[3] = {v->P[k][0], -v->P[k][1], -v->P[k][2]}; /* GL's eye axes */
+        double m[3], lm = 0, l0 = (double)N[0] * N[0] + (double)N[1] * N[1] + (double)N[2] * N[2];
+        for (int r = 0; r < 3; r++)
+            m[r] = M[3 * r] * N[0] + M[3 * r + 1] * N[1] + M[3 * r + 2] * N[2], lm += m[r] * m[r];
+        /* each vertex's normal by the normal matrix kept at its length,
+         * as lighting.c's vertex shader and render.c's normals_to_world
+         * (items near the camera) carry it */
+        double sc = lm > 0 ? sqrt(l0 / lm) : 1;
+        for (int r = 0; r < 3; r++) {
+            eye[r] += w[k] * P[r];
+            n[r] += w[k] * m[r] * sc;
+        }
+        for (int q = 0; q < 4; q++)
+            sp[q] += w[k] * S[q];
+    }
+    /* a flat normal is the provoking (last) vertex's, of length 2 */
+    const float *N2 = vattr(s, v->v + 2, s->normal_offset);
+    int flat = (double)N2[0] * N2[0] + (double)N2[1] * N2[1] + (double)N2[2] * N2[2] > 2.0;
+    double le = sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
+    double V[3] = {-eye[0] / le, -eye[1] / le, -eye[2] / le};
+    double ln = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int r = 0; r < 3; r++)
+        n[r] = ln > 0 ? n[r] / ln : V[r];
+    if (flat && n[0] * V[0] + n[1] * V[1] + n[2] * V[2] < 0)
+        for (int r = 0; r < 3; r++)
+            n[r] = -n[r];
+    for (int r = 0; r < 3; r++)
+        c[r] = g->amb[r] * al[r];
+    int shiny = sp[0] + sp[1] + sp[2] > 0;
+    for (uint32_t i = 0; i < g->nl; i++) {
+        const double *pos = g->lpos + 4 * i, *col = g->lcol + 4 * i;
+        double L[3] = {pos[0], pos[1], pos[2]}, att = 1;
+        if (pos[3] != 0) {
+            double d[3] = {pos[0] - eye[0], pos[1] - eye[1], pos[2] - eye[2]};
+            double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            for (int r = 0; r < 3; r++)
+                L[r] = d[r] / sqrt(d2);
+            att = 1.0 / (1.0 + col[3] * d2);
+        }
+        double nl = n[0] * L[0] + n[1] * L[1] + n[2] * L[2];
+        if (nl <= 0)
+            continue;
+        double rv = 0;
+        if (shiny) { /* reflect(-L, n) = 2 (n.L) n - L */
+            for (int r = 0; r < 3; r++)
+                rv += (2 * nl * n[r] - L[r]) * V[r];
+            rv = rv > 0 ? pow(rv, sp[3]) : 0;
+        }
+        for (int r = 0; r < 3; r++)
+            c[r] += col[r] * att * (nl * al[r] + (shiny ? sp[r] * rv : 0));
+    }
 }
 
 void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4])
 {
     const gls_exact_geom *g = user;
     const gls_exact_vcol *v = &g->v[i];
-    if (!memcmp(v->rgba[0], v->rgba[1], sizeof v->rgba[0]) && !memcmp(v->rgba[0], v->rgba[2], sizeof v->rgba[0])) {
+    if (!(t->flags & GLS_EXACT_SAMPLED) && !memcmp(v->rgba[0], v->rgba[1], sizeof v->rgba[0]) &&
+        !memcmp(v->rgba[0], v->rgba[2], sizeof v->rgba[0])) {
         memcpy(rgba, t->rgba, 4 * sizeof *rgba); /* flat: exact */
         return;
     }
-    /* the camera ray through (x, y) meets the triangle's plane at X; its
-     * barycentric coordinates there are GL's perspective-correct weights */
-    double dy = (y - g->cy) / g->fy, d[3] = {(x - g->cx - g->skew * dy) / g->fx, dy, 1};
-    const double *A = v->P[0];
-    double e1[3], e2[3], n[3];
-    for (int r = 0; r < 3; r++)
-        e1[r] = v->P[1][r] - A[r], e2[r] = v->P[2][r] - A[r];
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2], n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    double nd = n[0] * d[0] + n[1] * d[1] + n[2] * d[2], s = (n[0] * A[0] + n[1] * A[1] + n[2] * A[2]) / nd, w[3];
-    double p[3] = {s * d[0] - A[0], s * d[1] - A[1], s * d[2] - A[2]};
-    double d00 = 0, d01 = 0, d11 = 0, d20 = 0, d21 = 0;
-    for (int r = 0; r < 3; r++)
-        d00 += e1[r] * e1[r], d01 += e1[r] * e2[r], d11 += e2[r] * e2[r], d20 += p[r] * e1[r], d21 += p[r] * e2[r];
-    double den = d00 * d11 - d01 * d01;
-    w[1] = (d11 * d20 - d01 * d21) / den, w[2] = (d00 * d21 - d01 * d20) / den, w[0] = 1 - w[1] - w[2];
+    double w[3], col[4], out[4];
+    weights(g, v, x, y, w);
     for (int q = 0; q < 4; q++)
-        rgba[q] = (float)(w[0] * v->rgba[0][q] + w[1] * v->rgba[1][q] + w[2] * v->rgba[2][q]);
+        col[q] = w[0] * v->rgba[0][q] + w[1] * v->rgba[1][q] + w[2] * v->rgba[2][q];
+    const gls_drawkey *k = &g->s->chunks[v->chunk].key;
+    if (k->texture != GLS_NONE) {
+        double st[2] = {0, 0}, tc[4];
+        if (g->s->has_texcoord) /* else GL's current texture coordinate, (0, 0) */
+            for (int e = 0; e < 3; e++) {
+                const float *T = vattr(g->s, v->v + (uint32_t)e, g->s->texcoord_offset);
+                st[0] += w[e] * T[0], st[1] += w[e] * T[1];
+            }
+        texel(&g->tex[k->texture], st[0], st[1], tc);
+        for (int q = 0; q < 4; q++)
+            col[q] = k->mode == GLS_MODE_REPLACE ? tc[q] : tc[q] * col[q];
+    }
+    memcpy(out, col, sizeof out);
+    if (g->s->lit)
+        light(g, v, w, col, out);
+    /* the 8-bit framebuffer clamps every sample */
+    for (int q = 0; q < 4; q++)
+        rgba[q] = (float)(out[q] < 0 ? 0 : out[q] > 1 ? 1 : out[q]);
 }
 
 static double clamp01(float v) { return v < 0 ? 0 : v > 1 ? 1 : v; }

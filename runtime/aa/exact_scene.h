@@ -3,22 +3,35 @@
  * scene's exact positions and the instances' world transforms, cut at the
  * camera's near and far planes and projected through its pinhole
  * (exact.h), with what the region colour needs: the triangle's vertices
- * in camera space and their colours.  A region's colour is its
- * triangle's, interpolated as GL interpolates (perspective-correct), at
- * the region's centroid: exact for flat colour, sampled at the centroid
- * for vertex colours.  Lit and textured scenes are not drawn this way
- * (gls_exact_scene_unsupported says why). */
+ * in camera space, their colours, and where the scene keeps their texture
+ * coordinates, normals and specular colours.  A region's colour is its
+ * triangle's shaded as GL shades it (perspective-correct interpolation;
+ * the texture's base level bilinear with GL_REPEAT, as 8-bit texels /
+ * 255, replace or modulate; lighting.c's per-pixel Lambert and Phong in
+ * double; the result clamped to 0..1 as the 8-bit framebuffer clamps each
+ * sample): at the region's centroid for flat and vertex colours (exact
+ * for flat colour), the mean over the pixel's GLS_EXACT_SHADE_M lattice
+ * points in the region for textured and lit triangles (exact.h); a
+ * triangle whose texture has transparent texels (the scene's alpha test)
+ * is point-sampled at those points (GLS_EXACT_HOLES).  Shadows are not
+ * drawn this way (gls_exact_scene_unsupported says why). */
 #ifndef GLS_EXACT_SCENE_H
 #define GLS_EXACT_SCENE_H
 
 #include <stddef.h>
 #include "camera.h"
 #include "exact.h"
+#include "bundle.h"
 #include "scene.h"
 
 typedef struct {
     double P[3][3];     /* camera-space vertices of the whole triangle     */
+    double C[3][3];     /* P[k+1] x P[k+2]: a ray d meets the triangle's
+                           plane at barycentric weights d.C[k] / sum      */
     float rgba[3][4];   /* their colours, 0..1                             */
+    uint32_t v;         /* its first vertex in the scene                   */
+    uint32_t inst;      /* its instance                                    */
+    uint32_t chunk;     /* its chunk (texture and mode)                    */
 } gls_exact_vcol;
 
 typedef struct {
@@ -26,15 +39,22 @@ typedef struct {
     gls_exact_vcol *v;  /* per image triangle: its whole triangle's        */
     size_t n, cap;
     double fx, fy, cx, cy, skew;
+    const gls_scene *s;
+    const gls_texture *tex; /* the bundle's textures                      */
+    double *nm;         /* lit: per instance, the 3x3 normal matrix to GL's
+                           eye frame (row-major)                           */
+    uint32_t nl;        /* lit: lights as lighting.c's uniforms            */
+    double lpos[4 * GLS_MAX_LIGHTS], lcol[4 * GLS_MAX_LIGHTS], amb[3];
 } gls_exact_geom;
 
-/* NULL when gls_exact_geom_make can draw s, else why not ("a lit scene",
- * "a textured object"). */
+/* NULL when gls_exact_geom_make can draw s, else why not ("shadows
+ * ..."). */
 const char *gls_exact_scene_unsupported(const gls_scene *s);
 
-/* The image triangles of s under c (ids: instance indices).  0, or -1
- * when out of memory. */
-int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_camera *c);
+/* The image triangles of s under c (ids: instance indices); textures: the
+ * bundle's (needed when s is textured).  0, or -1 when out of memory or
+ * a textured scene comes without its textures. */
+int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_texture *textures, const gls_camera *c);
 void gls_exact_geom_free(gls_exact_geom *g);
 
 /* The shader of gls_exact_image for g (user = g). */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "distort.h"
+#include "distort_exact.h"
 #include "out_disparity.h"
 #include "play_int.h"
 #include "subframe.h"
@@ -114,6 +115,10 @@ int play_lens_check(const gls_camera *c, const char *path, const gls_aa_plan *pl
 {
     gls_distort_layout lay;
     char why[600];
+    /* --aa exact resamples its undistorted image with its own plan */
+    gls_aa_plan ep;
+    if (plan->o.exact && gls_distort_on(c) && gls_distort_exact_plan(&ep, why, sizeof why) == 0)
+        plan = &ep;
     if (gls_distort_on(c) && (gls_distort_layout_make(c, NULL, GLS_DISTORT_SCALE, 0, &lay, why, sizeof why) ||
                               gls_distort_layout_make(c, plan, GLS_DISTORT_AA_SCALE, 0, &lay, why, sizeof why))) {
         fprintf(errs, "glsplay: error: %s: %s\n", path, why);
@@ -122,14 +127,13 @@ int play_lens_check(const gls_camera *c, const char *path, const gls_aa_plan *pl
     return 0;
 }
 
-/* --aa exact projects through a pinhole at one instant onto the image
- * as it is (spec/antialiasing.md "Exact coverage in glsplay"): a lens,
- * the exposure's effects and the sensor's are refused.  0, or -1 after a
- * message. */
+/* --aa exact projects through a pinhole at one instant (spec/antialiasing.md
+ * "Exact coverage in glsplay"; a lens resamples its undistorted image,
+ * distort_exact.h): the exposure's effects and the sensor's are refused.
+ * 0, or -1 after a message. */
 int play_exact_camera_check(const gls_camera *c, const gls_exposure *e, const char *name, FILE *errs)
 {
-    const char *why = gls_distort_on(c)      ? "a lens model (distortion)"
-                      : gls_exposure_on(e)   ? "exposure effects (shutter, line_delay or aperture)"
+    const char *why = gls_exposure_on(e)     ? "exposure effects (shutter, line_delay or aperture)"
                       : c->sensor.on         ? "sensor effects"
                                              : NULL;
     if (!why)
@@ -159,6 +163,13 @@ int play_exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_camera
         char why[300];
         if (plan->o.exact && play_exact_camera_check(c, &e, names[i], errs))
             return 1;
+        /* through a lens the exact areas are the undistorted image's */
+        if (plan->o.exact && gls_distort_on(c) && (o->outputs & GLS_OUT_EXACT_ONLY)) {
+            fprintf(errs, "glsplay: error: camera %s: --outputs %s needs a pinhole camera: through a lens the exact "
+                          "areas are of the undistorted image, not of the pixels; leave out %s or the distortion\n",
+                    names[i], GLS_OUT_EXACT_WORD(o->outputs), GLS_OUT_EXACT_WORD(o->outputs));
+            return 1;
+        }
         if (gls_exposure_on(&e) && (o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EDGE_MAPS)) &&
             gls_exposure_fits(&e, plan, why, sizeof why)) {
             fprintf(errs, "glsplay: error: camera %s: %s\n", names[i], why);

@@ -81,6 +81,8 @@ typedef struct {
                                    (NULL: not counted; o->counts)      */
     gls_play_times *times;      /* --times: the marks (NULL: not asked);
                                    the first frame marks plan and draw  */
+    const gls_texture *textures; /* the bundle's, for the exact pass's
+                                   shading (NULL: not kept)            */
 } session;
 
 /* What play_scan_trajectory found, before anything was created or written. */

@@ -123,8 +123,16 @@ static int run_load_scene(run *u)
     u->times.build = gls_now(), u->times.pack = u->scene.pack_seconds;
     const char *why = u->plan.o.exact ? gls_exact_scene_unsupported(&u->scene) : NULL;
     if (why) {
-        fprintf(errs, "glsplay: error: %s: --aa exact draws flat and vertex colours only, not %s; leave out --aa "
-                      "exact (sampled anti-aliasing draws it)\n", o->bundle, why);
+        fprintf(errs, "glsplay: error: %s: --aa exact does not draw %s; leave out --aa exact (sampled "
+                      "anti-aliasing draws it)\n", o->bundle, why);
+        return 1;
+    }
+    /* alpha-tested triangles are point-sampled in the image (exact.h
+     * GLS_EXACT_HOLES): their areas are not exact, so nothing reports them */
+    if (u->plan.o.exact && (u->scene.features & GLS_FEAT_ALPHA_TEST) && (o->outputs & GLS_OUT_EXACT_ONLY)) {
+        fprintf(errs, "glsplay: error: %s: --outputs %s needs exact areas, and the scene has textures with "
+                      "transparent texels (alpha-tested, sampled in the image); leave out %s\n", o->bundle,
+                GLS_OUT_EXACT_WORD(o->outputs), GLS_OUT_EXACT_WORD(o->outputs));
         return 1;
     }
     if (play_motion_load(o, &u->ms, errs) || (!o->trajectory && play_motion_check(&u->ms, o->frame, errs)))
@@ -205,8 +213,11 @@ static int run_start(run *u)
     }
     if ((o->outputs & GLS_OUT_BOXES_ALL) && gls_box_names_init(&u->box_names, u->b, &u->scene))
         return oom(u->errs);
-    gls_bundle_free(u->b);
-    u->b = NULL;
+    /* the exact pass shades textures on the CPU: it keeps the bundle's */
+    if (!u->plan.o.exact) {
+        gls_bundle_free(u->b);
+        u->b = NULL;
+    }
     gls_renderer_set_background(u->r, o->background);
     gls_renderer_set_occlusion(u->r, (gls_occlusion_mode)o->occlusion);
     if (o->anisotropy > 1 && gls_renderer_set_anisotropy(u->r, o->anisotropy, err, sizeof err)) {
@@ -339,7 +350,7 @@ static int run_begin(run *u, const gls_play_opts *o, FILE *out, FILE *errs)
     session ses = {o,          &u->ms,  &u->scene,     &u->plan, u->r,  u->wr,    &u->json,    errs,
                    o->ncameras, 0,      u->json.t0,    0,        u->baseline, &u->gt, NULL,    NULL,
                    &u->moves,  &u->box_names, o->frame, NULL,    u->ms.moving, NULL, u->inputs, o->counts,
-                   o->times ? &u->times : NULL};
+                   o->times ? &u->times : NULL, u->b ? u->b->textures : NULL};
     u->ses = ses;
     u->rendering = 1;
     return 0;

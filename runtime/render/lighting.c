@@ -34,7 +34,11 @@ struct gls_lighting {
 
 /* gl_Normal: unit for a given normal, length 2 for a flat one (scene.h),
  * which is turned towards the camera; gl_MultiTexCoord1: the specular
- * colour and exponent. */
+ * colour and exponent.  The normal goes to the eye by gl_NormalMatrix
+ * kept at its length, as render.c's normals_to_world carries the normals
+ * of items re-anchored near the camera: under a non-uniform scale the
+ * lengths would differ from vertex to vertex and weigh the interpolation,
+ * so that an item's shading would depend on whether it was re-anchored. */
 static const char vs_src[] =
     "#version 400 compatibility\n"
     "out vec3 v_eye;\n"
@@ -46,7 +50,9 @@ static const char vs_src[] =
     "void main() {\n"
     "    gl_Position = ftransform();\n"
     "    v_eye = (gl_ModelViewMatrix * gl_Vertex).xyz;\n"
-    "    v_n = gl_NormalMatrix * gl_Normal;\n"
+    "    vec3 m = gl_NormalMatrix * gl_Normal;\n"
+    "    float lm = length(m);\n"
+    "    v_n = lm > 0.0 ? m * (length(gl_Normal) / lm) : m;\n"
     "    v_flat = dot(gl_Normal, gl_Normal) > 2.0 ? 1 : 0;\n"
     "    v_col = gl_Color;\n"
     "    v_st = gl_MultiTexCoord0.st;\n"

@@ -46,7 +46,7 @@ static void cov_free(cov *c) { free(c->cover), free(c->by_id); }
 
 static gls_exact_tri tri(double x0, double y0, double x1, double y1, double x2, double y2, double iz)
 {
-    return (gls_exact_tri){{x0, x1, x2}, {y0, y1, y2}, {iz, iz, iz}, 0, {1, 1, 1, 1}};
+    return (gls_exact_tri){{x0, x1, x2}, {y0, y1, y2}, {iz, iz, iz}, 0, {1, 1, 1, 1}, 0};
 }
 
 static uint64_t rng = 88172645463325252ull;
@@ -415,6 +415,59 @@ static void test_exact_image_flat(void)
     CHECK_NEAR(rgba[0], 0, 0);
 }
 
+/* A sampled triangle's shader for the tests below: red the point's x
+ * within its pixel (0..1) squared; id 1 (alpha-tested): 0.25 with the
+ * alpha *user, id 2: 1, opaque. */
+static void shade_test(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4])
+{
+    (void)i, (void)y;
+    double u = x - floor(x + 0.5) + 0.5;
+    rgba[0] = t->id == 1 ? 0.25f : t->id == 2 ? 1.0f : (float)(u * u);
+    rgba[1] = rgba[2] = 0;
+    rgba[3] = t->id == 1 ? *(const float *)user : 1;
+}
+
+/* A sampled region's colour is the mean of the shader at the pixel's
+ * lattice points inside it (exact.h GLS_EXACT_SAMPLED): u^2 over the
+ * pixel's 64 points is 1/3 - 1/(12 * 64^2), where the centroid gives
+ * 1/4; half the pixel (the diagonal) averages its own points. */
+static void test_exact_image_sampled(void)
+{
+    gls_exact_tri t = tri(0.5, 0.5, 3.5, 0.5, 0.5, 3.5, 1);
+    t.flags = GLS_EXACT_SAMPLED;
+    float rgba[4 * 4 * 4], bg[4] = {0, 0, 0, 1}, alpha = 1;
+    CHECK(gls_exact_image(&t, 1, 4, 4, bg, shade_test, &alpha, rgba) == 0);
+    CHECK_NEAR(rgba[(1 * 4 + 1) * 4 + 0], 1.0 / 3 - 1.0 / (12 * 64 * 64), 1e-6);
+    /* pixel (2, 2), half of it (above-left of the diagonal x + y = 4):
+     * area 1/2 times the mean of u^2 over the points there, which lie
+     * to the left, so under the whole pixel's mean */
+    double v = rgba[(2 * 4 + 2) * 4 + 0];
+    CHECK_MSG(v > 0.5 * 0.1 && v < 0.5 * (1.0 / 3), "half pixel %g", v);
+}
+
+/* An alpha-tested triangle (GLS_EXACT_HOLES) hides nothing in the walk:
+ * in front of 100 thin triangles fanning through the pixel (more than
+ * the 64 regions of the scratch on the stack), the pixel is its colour
+ * where its alpha passes and the fan's where it does not, never the sum
+ * of the overlapping areas. */
+static void test_exact_image_holes_many(void)
+{
+    gls_exact_tri t[101];
+    t[0] = tri(-2, -2, 6, -2, -2, 6, 1);
+    t[0].id = 1, t[0].flags = GLS_EXACT_HOLES | GLS_EXACT_SAMPLED;
+    for (int k = 0; k < 100; k++) {
+        double a0 = 2 * M_PI * k / 100, a1 = 2 * M_PI * (k + 1) / 100;
+        t[1 + k] = tri(1, 1, 1 + 3 * cos(a0), 1 + 3 * sin(a0), 1 + 3 * cos(a1), 1 + 3 * sin(a1), 0.5);
+        t[1 + k].id = 2;
+    }
+    float rgba[3 * 3 * 4], bg[4] = {0, 0, 0, 1}, alpha = 1;
+    CHECK(gls_exact_image(t, 101, 3, 3, bg, shade_test, &alpha, rgba) == 0);
+    CHECK_NEAR(rgba[(1 * 3 + 1) * 4 + 0], 0.25, 1e-6);
+    alpha = 0; /* dropped everywhere: the fan */
+    CHECK(gls_exact_image(t, 101, 3, 3, bg, shade_test, &alpha, rgba) == 0);
+    CHECK_NEAR(rgba[(1 * 3 + 1) * 4 + 0], 1, 1e-6);
+}
+
 /* Coverage: areas summed per id (two triangles of one id), the K largest
  * largest first (ties: the smaller id), ids mapped, 0 not counted. */
 static void test_exact_coverage(void)
@@ -465,6 +518,8 @@ int main(void)
     RUN(test_exact_far_plane);
     RUN(test_exact_far_offset);
     RUN(test_exact_image_flat);
+    RUN(test_exact_image_sampled);
+    RUN(test_exact_image_holes_many);
     RUN(test_exact_coverage);
     CHECK_EXIT();
 }

@@ -25,7 +25,7 @@ static void collect(void *user, const gls_exact_seg *s)
 
 static gls_exact_tri tri(double x0, double y0, double x1, double y1, double x2, double y2, double iz, uint32_t id)
 {
-    return (gls_exact_tri){{x0, x1, x2}, {y0, y1, y2}, {iz, iz, iz}, id, {1, 1, 1, 1}};
+    return (gls_exact_tri){{x0, x1, x2}, {y0, y1, y2}, {iz, iz, iz}, id, {1, 1, 1, 1}, 0};
 }
 
 /* the square [x0, x1] x [y0, y1] as two triangles at depth iz */
