@@ -17,8 +17,10 @@
  * equal-depth line) cut away, candidates taken front to back so that a
  * hidden triangle stops early. */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "exact_int.h"
 
 #define EXACT_BAND 16
@@ -28,8 +30,6 @@ struct exact_work {
     exact_pieces cur, next;
     exact_pt *buf[3];   /* clip buffers: the piece, its two parts          */
     size_t cap[3];
-    gls_exact_frag *frags;
-    size_t capf;
     exact_cand_fn cands; /* exact_visit_cands: the candidates, no frags   */
     void *cuser;
 };
@@ -195,11 +195,11 @@ static int cand_order(const void *pa, const void *pb)
 }
 
 /* One pixel's fragments from its candidates c[0..nc) (reordered) */
-static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, size_t *nf)
+static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, gls_exact_frag *out, size_t *nf)
 {
     *nf = 0;
     if (nc == 1 && c[0].inside) {
-        w->frags[0] = (gls_exact_frag){c[0].tri, 1.0, i, j};
+        out[0] = (gls_exact_frag){c[0].tri, 1.0, i, j};
         *nf = 1;
         return 0;
     }
@@ -209,7 +209,7 @@ static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, size_t
         if (visible(w, c, nc, t, i, j, &f))
             return -1;
         if (f.area > 0)
-            w->frags[(*nf)++] = f;
+            out[(*nf)++] = f;
     }
     return 0;
 }
@@ -249,55 +249,199 @@ static int band_cands(const exact_prep *p, const unsigned char *ok, size_t n, in
     return 0;
 }
 
-static int run_bands(exact_work *wk, const unsigned char *ok, size_t n, int w, int h, gls_exact_pixel_fn fn,
-                     void *user)
+/* One band's results: its candidates sorted by pixel (start: each
+ * pixel's first) and, unless the walk hands out candidates, its frags
+ * (fstart: each pixel's first).  Buffers are kept from band to band: no
+ * page faults for each. */
+typedef struct {
+    double *fmin;
+    size_t *start, *fstart;
+    exact_cand *c, *sorted;
+    size_t nc, capc, caps;
+    gls_exact_frag *frags;
+    size_t capf;
+} band_slot;
+
+/* Everything of band j0..j1 but handing it out: candidates, their
+ * counting sort by pixel, each pixel resolved.  wk is this thread's
+ * scratch.  0, or -1 when out of memory. */
+static int band_compute(exact_work *wk, const unsigned char *ok, size_t n, int w, int h, int j0, band_slot *b)
 {
-    size_t bandpx = (size_t)w * EXACT_BAND, nc = 0, capc = 0, caps = 0;
-    double *fmin = malloc(bandpx * sizeof *fmin);
-    size_t *start = malloc((bandpx + 1) * sizeof *start);
-    exact_cand *c = NULL, *sorted = NULL;
-    int rc = fmin && start ? 0 : -1;
-    for (int j0 = 0; j0 < h && rc == 0; j0 += EXACT_BAND) {
-        int j1 = j0 + EXACT_BAND - 1 < h - 1 ? j0 + EXACT_BAND - 1 : h - 1;
-        nc = 0;
-        if ((rc = band_cands(wk->prep, ok, n, w, j0, j1, fmin, &c, &nc, &capc)) != 0)
-            break;
-        /* counting sort of the candidates by pixel (buffers kept from band
-         * to band: no page faults for each) */
-        if (grow((void **)&sorted, &caps, nc + 1, sizeof *sorted) ||
-            grow((void **)&wk->frags, &wk->capf, nc + 1, sizeof *wk->frags)) {
-            rc = -1;
-            break;
+    int j1 = j0 + EXACT_BAND - 1 < h - 1 ? j0 + EXACT_BAND - 1 : h - 1;
+    size_t bandpx = (size_t)w * EXACT_BAND;
+    if (!b->fmin && (!(b->fmin = malloc(bandpx * sizeof *b->fmin)) ||
+                     !(b->start = malloc((bandpx + 1) * sizeof *b->start)) ||
+                     !(b->fstart = malloc((bandpx + 1) * sizeof *b->fstart))))
+        return -1;
+    b->nc = 0;
+    if (band_cands(wk->prep, ok, n, w, j0, j1, b->fmin, &b->c, &b->nc, &b->capc))
+        return -1;
+    if (grow((void **)&b->sorted, &b->caps, b->nc + 1, sizeof *b->sorted) ||
+        grow((void **)&b->frags, &b->capf, b->nc + 1, sizeof *b->frags))
+        return -1;
+    size_t *start = b->start;
+    memset(start, 0, (bandpx + 1) * sizeof *start);
+    for (size_t k = 0; k < b->nc; k++)
+        start[b->c[k].pix + 1]++;
+    for (size_t k = 0; k < bandpx; k++)
+        start[k + 1] += start[k];
+    for (size_t k = 0; k < b->nc; k++)
+        b->sorted[start[b->c[k].pix]++] = b->c[k];
+    for (size_t k = bandpx; k > 0; k--)
+        start[k] = start[k - 1];
+    start[0] = 0;
+    if (wk->cands)
+        return 0;
+    size_t nf = 0;
+    for (int j = j0; j <= j1; j++)
+        for (int i = 0; i < w; i++) {
+            size_t px = (size_t)(j - j0) * w + i, m;
+            b->fstart[px] = nf;
+            if (resolve(wk, b->sorted + start[px], start[px + 1] - start[px], i, j, b->frags + nf, &m))
+                return -1;
+            nf += m;
         }
-        memset(start, 0, (bandpx + 1) * sizeof *start);
-        for (size_t k = 0; k < nc; k++)
-            start[c[k].pix + 1]++;
-        for (size_t k = 0; k < bandpx; k++)
-            start[k + 1] += start[k];
-        for (size_t k = 0; k < nc; k++)
-            sorted[start[c[k].pix]++] = c[k];
-        for (size_t k = bandpx; k > 0; k--)
-            start[k] = start[k - 1];
-        start[0] = 0;
-        for (int j = j0; j <= j1 && rc == 0; j++)
-            for (int i = 0; i < w; i++) {
-                size_t px = (size_t)(j - j0) * w + i, nf;
-                if (wk->cands) {
-                    if ((rc = wk->cands(wk->cuser, wk->prep, sorted + start[px], start[px + 1] - start[px], i, j)))
-                        break;
-                    continue;
-                }
-                if ((rc = resolve(wk, sorted + start[px], start[px + 1] - start[px], i, j, &nf)) != 0)
-                    break;
-                fn(user, i, j, wk->frags, nf);
-            }
+    b->fstart[(size_t)(j1 - j0 + 1) * w] = nf;
+    return 0;
+}
+
+/* Hand band j0's results out, pixel by pixel in order: to fn, or to the
+ * walk's candidate callback. */
+static int band_emit(const exact_work *wk, int w, int h, int j0, band_slot *b, gls_exact_pixel_fn fn, void *user)
+{
+    int j1 = j0 + EXACT_BAND - 1 < h - 1 ? j0 + EXACT_BAND - 1 : h - 1;
+    for (int j = j0; j <= j1; j++)
+        for (int i = 0; i < w; i++) {
+            size_t px = (size_t)(j - j0) * w + i;
+            if (wk->cands) {
+                if (wk->cands(wk->cuser, wk->prep, b->sorted + b->start[px], b->start[px + 1] - b->start[px], i, j))
+                    return -1;
+            } else
+                fn(user, i, j, b->frags + b->fstart[px], b->fstart[px + 1] - b->fstart[px]);
+        }
+    return 0;
+}
+
+static void band_free(band_slot *b)
+{
+    free(b->fmin), free(b->start), free(b->fstart), free(b->c), free(b->sorted), free(b->frags);
+}
+
+static void work_free(exact_work *wk)
+{
+    exact_pieces_free(&wk->cur), exact_pieces_free(&wk->next);
+    free(wk->buf[0]), free(wk->buf[1]), free(wk->buf[2]);
+}
+
+/* Bands on worker threads: each takes the next band whose slot is free
+ * (slot b % nslot, free once band b - nslot is handed out) and computes
+ * it with its own scratch; the calling thread hands the bands out in
+ * order.  A pixel's result depends on its band's candidates only, never
+ * on the thread or the order, so the output is the same for any number
+ * of threads (test_exact's test_exact_threads). */
+#define EXACT_MAX_THREADS 64
+typedef struct {
+    const exact_work *proto;
+    const unsigned char *ok;
+    size_t n;
+    int w, h, nbands, nslot;
+    band_slot *slot;
+    int *ready;         /* per slot: the band done in it + 1, 0: none      */
+    int *rc;            /* per slot: that band's band_compute              */
+    pthread_mutex_t mu;
+    pthread_cond_t cv;
+    int next, emitted, stop;
+} sched;
+
+static void *band_worker(void *arg)
+{
+    sched *s = arg;
+    exact_work wk = {0};
+    wk.prep = s->proto->prep, wk.cands = s->proto->cands, wk.cuser = s->proto->cuser;
+    pthread_mutex_lock(&s->mu);
+    for (;;) {
+        while (!s->stop && s->next < s->nbands && s->next >= s->emitted + s->nslot)
+            pthread_cond_wait(&s->cv, &s->mu);
+        if (s->stop || s->next >= s->nbands)
+            break;
+        int b = s->next++, k = b % s->nslot;
+        pthread_mutex_unlock(&s->mu);
+        int rc = band_compute(&wk, s->ok, s->n, s->w, s->h, b * EXACT_BAND, &s->slot[k]);
+        pthread_mutex_lock(&s->mu);
+        s->rc[k] = rc, s->ready[k] = b + 1;
+        pthread_cond_broadcast(&s->cv);
     }
-    free(fmin), free(start), free(c), free(sorted);
+    pthread_mutex_unlock(&s->mu);
+    work_free(&wk);
+    return NULL;
+}
+
+static unsigned auto_threads(unsigned threads, int nbands)
+{
+    if (!threads) {
+        long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+        threads = cpus > 0 ? (unsigned)cpus : 1;
+    }
+    if (threads > EXACT_MAX_THREADS)
+        threads = EXACT_MAX_THREADS;
+    if (threads > (unsigned)nbands)
+        threads = (unsigned)nbands;
+    return threads;
+}
+
+static int run_bands(exact_work *wk, const unsigned char *ok, size_t n, int w, int h, gls_exact_pixel_fn fn,
+                     void *user, unsigned threads)
+{
+    int nbands = (h + EXACT_BAND - 1) / EXACT_BAND, rc = 0;
+    threads = auto_threads(threads, nbands);
+    if (threads <= 1) { /* here, band by band */
+        band_slot b = {0};
+        for (int k = 0; k < nbands && rc == 0; k++)
+            if ((rc = band_compute(wk, ok, n, w, h, k * EXACT_BAND, &b)) == 0)
+                rc = band_emit(wk, w, h, k * EXACT_BAND, &b, fn, user);
+        band_free(&b);
+        return rc;
+    }
+    sched s = {wk, ok, n, w, h, nbands, 2 * (int)threads, NULL, NULL, NULL, PTHREAD_MUTEX_INITIALIZER,
+               PTHREAD_COND_INITIALIZER, 0, 0, 0};
+    pthread_t th[EXACT_MAX_THREADS];
+    unsigned started = 0;
+    s.slot = calloc((size_t)s.nslot, sizeof *s.slot);
+    s.ready = calloc((size_t)s.nslot, sizeof *s.ready);
+    s.rc = calloc((size_t)s.nslot, sizeof *s.rc);
+    if (s.slot && s.ready && s.rc)
+        while (started < threads && pthread_create(&th[started], NULL, band_worker, &s) == 0)
+            started++;
+    if (!started) { /* no threads to be had: here */
+        free(s.slot), free(s.ready), free(s.rc);
+        return run_bands(wk, ok, n, w, h, fn, user, 1);
+    }
+    for (int b = 0; b < nbands && rc == 0; b++) {
+        int k = b % s.nslot;
+        pthread_mutex_lock(&s.mu);
+        while (s.ready[k] != b + 1)
+            pthread_cond_wait(&s.cv, &s.mu);
+        pthread_mutex_unlock(&s.mu);
+        rc = s.rc[k] ? s.rc[k] : band_emit(wk, w, h, b * EXACT_BAND, &s.slot[k], fn, user);
+        pthread_mutex_lock(&s.mu);
+        s.ready[k] = 0, s.emitted = b + 1, s.stop = rc != 0;
+        pthread_cond_broadcast(&s.cv);
+        pthread_mutex_unlock(&s.mu);
+    }
+    pthread_mutex_lock(&s.mu);
+    s.stop = 1;
+    pthread_cond_broadcast(&s.cv);
+    pthread_mutex_unlock(&s.mu);
+    for (unsigned k = 0; k < started; k++)
+        pthread_join(th[k], NULL);
+    for (int k = 0; k < s.nslot; k++)
+        band_free(&s.slot[k]);
+    free(s.slot), free(s.ready), free(s.rc);
     return rc;
 }
 
 static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
-                 exact_cand_fn cands)
+                 exact_cand_fn cands, unsigned threads)
 {
     if (w <= 0 || h <= 0)
         return 0;
@@ -309,19 +453,25 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
         for (size_t k = 0; k < n; k++)
             ok[k] = (unsigned char)exact_prep_tri(&t[k], w, h, &p[k]);
         wk.prep = p, wk.cands = cands, wk.cuser = user;
-        rc = run_bands(&wk, ok, n, w, h, fn, user);
+        rc = run_bands(&wk, ok, n, w, h, fn, user, threads);
     }
-    exact_pieces_free(&wk.cur), exact_pieces_free(&wk.next);
-    free(wk.buf[0]), free(wk.buf[1]), free(wk.buf[2]), free(wk.frags), free(p), free(ok);
+    work_free(&wk);
+    free(p), free(ok);
     return rc;
 }
 
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
 {
-    return visit(t, n, w, h, fn, user, NULL);
+    return visit(t, n, w, h, fn, user, NULL, 0);
+}
+
+int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
+                            unsigned threads)
+{
+    return visit(t, n, w, h, fn, user, NULL, threads);
 }
 
 int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user)
 {
-    return visit(t, n, w, h, NULL, user, fn);
+    return visit(t, n, w, h, NULL, user, fn, 0);
 }
