@@ -1,7 +1,8 @@
 /* Exact coverage: the pixels (exact.h, gls_exact_visit).
  *
- * The image is done in bands of EXACT_BAND rows, so memory is bounded by a
- * band and the candidates in it.  In a band, each triangle's pixels (its
+ * The image is done in bands of EXACT_BAND rows, on worker threads (two
+ * bands a thread at a time), so memory is bounded by those bands and the
+ * triangles' pixels in them.  In a band, each triangle's pixels (its
  * bounding box's) are classified with the conservative edge test: inside
  * (the whole square on the kept side of all three edges), outside (the
  * whole square beyond one), or crossed; the margins are widened by a
@@ -137,17 +138,31 @@ static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, doub
     static const exact_pt square[4] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
     const exact_prep *T = &w->prep[c[t].tri];
     exact_pieces_clear(&w->cur);
-    if (exact_pieces_add(&w->cur, square, 4))
-        return -1;
     exact_line l[4];
-    if (!c[t].inside) {
-        for (int k = 0; k < 3; k++)
-            l[k] = exact_line_local(&T->e[k], i, j), l[k].s = -l[k].s;
-        /* the square minus the outside of each edge: what is inside all */
-        for (int k = 0; k < 3 && w->cur.np; k++)
-            if (subtract(w, &l[k], 1))
-                return -1;
+    /* the square minus the outside of each edge: what is inside all.  One
+     * convex piece, clipped here on the stack (4 + 3 vertices at most);
+     * the same steps, the same bits, as subtract with each edge's outside
+     * would take */
+    exact_pt poly[2][8], rest[8];
+    size_t n = 4;
+    int at = 0;
+    memcpy(poly[0], square, sizeof square);
+    for (int k = 0; k < 3 && n && !c[t].inside; k++) {
+        exact_line o = exact_line_local(&T->e[k], i, j);
+        o.s = -o.s;
+        int side = exact_line_side(poly[at], n, &o);
+        if (side < 0)
+            continue; /* wholly inside this edge */
+        size_t nin, nout = 0;
+        if (side == 0)
+            exact_clip(poly[at], n, &o, rest, &nin, poly[1 - at], &nout);
+        if (nout && exact_area(poly[1 - at], nout, NULL, NULL) > 0)
+            at = 1 - at, n = nout;
+        else
+            n = 0;
     }
+    if (n && exact_pieces_add(&w->cur, poly[at], n))
+        return -1;
     for (size_t u = 0; u < nc && w->cur.np; u++) {
         if (u == t)
             continue;
@@ -220,31 +235,33 @@ static int band_cands(const exact_prep *p, const size_t *list, size_t nl, int w,
 {
     for (size_t k = 0; k < (size_t)w * (size_t)(j1 - j0 + 1); k++)
         fmin[k] = -INFINITY;
-    for (int pass = 1; pass <= 2; pass++)
-        for (size_t q = 0; q < nl; q++) {
-            size_t t = list[q];
-            /* narrower than a pixel: covers none whole, nothing for pass 1 */
-            if (pass == 1 && (p[t].xmax - p[t].xmin < 1 || p[t].ymax - p[t].ymin < 1))
-                continue;
-            int ja = p[t].j0 > j0 ? p[t].j0 : j0, jb = p[t].j1 < j1 ? p[t].j1 : j1;
-            for (int j = ja; j <= jb; j++)
-                for (int i = p[t].i0; i <= p[t].i1; i++) {
-                    int in = classify(&p[t], i, j);
-                    if (in < 0 || (pass == 1 && !in))
-                        continue;
-                    size_t px = (size_t)(j - j0) * w + i;
-                    double lo, hi;
-                    zrange(&p[t].z, i, j, &lo, &hi);
-                    if (pass == 1) {
-                        if (lo > fmin[px])
-                            fmin[px] = lo;
-                    } else if (hi >= fmin[px]) {
-                        if (grow((void **)c, capc, *nc + 1, sizeof **c))
-                            return -1;
-                        (*c)[(*nc)++] = (exact_cand){t, px, in, lo, hi};
-                    }
-                }
-        }
+    /* each pixel of each triangle classified once: every one not outside
+     * kept with its depth range while F is found (pass 1), then those
+     * behind F dropped in place (pass 2); the survivors in the order of a
+     * second walk */
+    for (size_t q = 0; q < nl; q++) {
+        size_t t = list[q];
+        int ja = p[t].j0 > j0 ? p[t].j0 : j0, jb = p[t].j1 < j1 ? p[t].j1 : j1;
+        for (int j = ja; j <= jb; j++)
+            for (int i = p[t].i0; i <= p[t].i1; i++) {
+                int in = classify(&p[t], i, j);
+                if (in < 0)
+                    continue;
+                size_t px = (size_t)(j - j0) * w + i;
+                double lo, hi;
+                zrange(&p[t].z, i, j, &lo, &hi);
+                if (in && lo > fmin[px])
+                    fmin[px] = lo;
+                if (grow((void **)c, capc, *nc + 1, sizeof **c))
+                    return -1;
+                (*c)[(*nc)++] = (exact_cand){t, px, in, lo, hi};
+            }
+    }
+    size_t kept = 0;
+    for (size_t k = 0; k < *nc; k++)
+        if ((*c)[k].zmax >= fmin[(*c)[k].pix])
+            (*c)[kept++] = (*c)[k];
+    *nc = kept;
     return 0;
 }
 
@@ -307,6 +324,10 @@ static int band_compute(exact_work *wk, const band_lists *bl, int w, int h, int 
                      !(b->fstart = malloc((bandpx + 1) * sizeof *b->fstart))))
         return -1;
     b->nc = 0;
+    /* a first guess at the band's candidates (a few a triangle and one a
+     * pixel): fewer reallocs copying the array while it grows */
+    if (grow((void **)&b->c, &b->capc, 4 * nl + bandpx, sizeof *b->c))
+        return -1;
     if (band_cands(wk->prep, list, nl, w, j0, j1, b->fmin, &b->c, &b->nc, &b->capc))
         return -1;
     if (grow((void **)&b->sorted, &b->caps, b->nc + 1, sizeof *b->sorted) ||
