@@ -175,6 +175,61 @@ static void test_glscene_aa(void)
     glscene_close(q);
 }
 
+/* aa GLSCENE_AA_EXACT: the image is exact coverage (glsplay --aa exact):
+ * the tile (x and y from -0.5 to 0.5 at z 5: 10 px a side) with the
+ * principal point 0.3 px off, so its sides lie 0.3 px into their pixels;
+ * each pixel's red share is the product of its two overlaps, the rest the
+ * wall's grey; rgb8 is rgbf rounded.  Depth stays the centre pass's. */
+static void test_glscene_exact(void)
+{
+    glscene_error e;
+    glscene_options o = {GLSCENE_BACKEND_AUTO, GLSCENE_AA_EXACT, GLSCENE_AA_LATTICE, 0, {0, 0, 0}};
+    glscene_player *p = glscene_open(bundle, &o, &e), *q = glscene_open(bundle, NULL, &e);
+    CHECK_MSG(p && q, "%s", e.message);
+    if (!p || !q) {
+        glscene_close(p);
+        glscene_close(q);
+        return;
+    }
+    glscene_camera c;
+    const double cx = CX - 0.3, cy = CY - 0.3;
+    CHECK(glscene_camera_set(&c, W, H, FX, FX, cx, cy, 0, NULL, NULL, 0.1, 100, &e) == 0);
+    static uint8_t a[W * H * 3];
+    static float za[W * H], zs[W * H], fa[W * H * 3];
+    glscene_buffers ba = {a, fa, za, NULL, NULL}, bs = {NULL, NULL, zs, NULL, NULL};
+    CHECK(glscene_render(p, &c, &ba, &e) == 0 && glscene_render(q, &c, &bs, &e) == 0);
+    CHECK(memcmp(za, zs, sizeof za) == 0);
+    double worst = 0, half = 0.5 * FX / 5;
+    int rounded = 1;
+    for (int j = 0; j < H; j++)
+        for (int i = 0; i < W; i++) {
+            double ox = fmin(i + 0.5, cx + half) - fmax(i - 0.5, cx - half);
+            double oy = fmin(j + 0.5, cy + half) - fmax(j - 0.5, cy - half);
+            double red = (ox > 0 ? ox : 0) * (oy > 0 ? oy : 0);
+            const float *f = fa + 3 * ((size_t)j * W + i);
+            double g = 128 / 255.0; /* the wall's 0.5 as the scene stores it, 8 bits */
+            double want[3] = {red + (1 - red) * g, (1 - red) * g, (1 - red) * g};
+            for (int k = 0; k < 3; k++) {
+                worst = fmax(worst, fabs(f[k] - want[k]));
+                rounded &= a[3 * ((size_t)j * W + i) + k] == (uint8_t)floor(f[k] * 255 + 0.5);
+            }
+        }
+    CHECK_MSG(worst < 1e-6, "worst %g", worst);
+    CHECK(rounded);
+    glscene_close(p);
+    glscene_close(q);
+    /* a lit scene: refused at open, saying what to do */
+    write_file("Lit.scene", "light(directional, 0, 0, -1, 1, 1, 1);\n"
+                            "poly { vert(-1, -1, 5); vert(1, -1, 5); vert(0, 1, 5); }\n");
+    const char *roots[] = {dir};
+    char lit[160];
+    snprintf(lit, sizeof lit, "%s/out/lit.glsb", dir);
+    CHECK_MSG(glscene_compile("Lit", roots, 1, lit, &e) == 0, "%s", e.message);
+    CHECK(glscene_open(lit, &o, &e) == NULL);
+    CHECK_MSG(strstr(e.message, "exact coverage (aa GLSCENE_AA_EXACT) draws flat and vertex colours only, not a lit "
+                                "scene") && strstr(e.message, "ask for samples"), "%s", e.message);
+}
+
 static void test_glscene_errors(void)
 {
     glscene_error e;
@@ -433,6 +488,7 @@ int main(void)
     RUN(test_glscene_render_depth_ids);
     RUN(test_glscene_move);
     RUN(test_glscene_aa);
+    RUN(test_glscene_exact);
     RUN(test_glscene_errors);
     RUN(test_glscene_play);
     RUN(test_glscene_play_render);
