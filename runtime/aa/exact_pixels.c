@@ -131,6 +131,22 @@ static int subtract(exact_work *w, const exact_line *l, int nl)
     return 0;
 }
 
+/* 1 when T and U have an edge with the same two endpoints (so the same
+ * canonical line, bit for bit) and keep its two opposite sides: their
+ * interiors are disjoint.  Cutting U away from T would find every piece
+ * of T beyond that line and change nothing; a mesh's neighbours are most
+ * of a crossed pixel's candidate pairs. */
+static int share_edge_apart(const exact_prep *T, const exact_prep *U)
+{
+    for (int k = 0; k < 3; k++)
+        for (int m = 0; m < 3; m++) {
+            const exact_line *a = &T->e[k], *b = &U->e[m];
+            if (a->ox == b->ox && a->oy == b->oy && a->a == b->a && a->b == b->b && a->s != b->s)
+                return 1;
+        }
+    return 0;
+}
+
 /* The visible part of candidate c[t] in pixel (i, j), against the others
  * (sorted front to back by their nearest 1/Zc): its area and centroid. */
 static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, double i, double j, gls_exact_frag *f)
@@ -169,8 +185,10 @@ static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, doub
         if (c[u].zmax < c[t].zmin)
             break; /* this one and all after it are behind everywhere */
         const exact_prep *U = &w->prep[c[u].tri];
-        /* boxes apart (within the square): U hides nothing of T */
-        if (U->xmin >= T->xmax || U->xmax <= T->xmin || U->ymin >= T->ymax || U->ymax <= T->ymin)
+        /* boxes apart (within the square), or on the two sides of an edge
+         * they share (a mesh's neighbours): U hides nothing of T */
+        if (U->xmin >= T->xmax || U->xmax <= T->xmin || U->ymin >= T->ymax || U->ymax <= T->ymin ||
+            share_edge_apart(T, U))
             continue;
         int nl = 0;
         if (!c[u].inside)
