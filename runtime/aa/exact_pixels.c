@@ -25,6 +25,9 @@
 #include "exact_int.h"
 
 #define EXACT_BAND 16
+/* a pixel whose visible parts add up to this is full: what is left of
+ * the square is below the areas' rounding (a few 1e-16 a piece) */
+#define EXACT_FULL (1 - 1e-14)
 
 struct exact_work {
     const exact_prep *prep;
@@ -237,12 +240,17 @@ static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, gls_ex
         return 0;
     }
     qsort(c, nc, sizeof *c, cand_order);
-    for (size_t t = 0; t < nc; t++) {
+    /* visible parts are disjoint: once those found fill the square (to
+     * EXACT_FULL), the rest have none.  Without this a pixel on a
+     * silhouette cut every hidden layer behind it against every one in
+     * front (make bench-aa's terrain: 2.4 million cuts, 4 a candidate) */
+    double covered = 0;
+    for (size_t t = 0; t < nc && covered < EXACT_FULL; t++) {
         gls_exact_frag f;
         if (visible(w, c, nc, t, i, j, &f))
             return -1;
         if (f.area > 0)
-            out[(*nf)++] = f;
+            out[(*nf)++] = f, covered += f.area;
     }
     return 0;
 }
