@@ -48,11 +48,19 @@ typedef enum {
  * default, as in glsplay. */
 typedef enum { GLSCENE_AA_LATTICE = 0, GLSCENE_AA_GRID = 1, GLSCENE_AA_STRATIFIED = 2 } glscene_aa_pattern;
 
+/* glscene_options' aa for exact coverage (glsplay --aa exact,
+ * spec/antialiasing.md "Exact coverage"): each pixel of the image the
+ * exact area of what is visible in it times its colour, no samples; flat
+ * and vertex colours only (glscene_open refuses a lit or textured scene).
+ * Depth, instance and normals stay the pixel centre's. */
+#define GLSCENE_AA_EXACT UINT32_MAX
+
 /* Options of glscene_open.  All zero (or NULL) is the default: automatic
  * backend, one sample a pixel, lattice pattern, black background. */
 typedef struct {
     glscene_backend backend;
-    uint32_t aa;                /* N: N x N samples a pixel (glsplay --aa N); 0 or 1: one */
+    uint32_t aa;                /* N: N x N samples a pixel (glsplay --aa N); 0 or 1: one;
+                                   GLSCENE_AA_EXACT: exact coverage (--aa exact)         */
     glscene_aa_pattern pattern; /* glsplay --pattern                                     */
     uint64_t seed;              /* stratified jitter seed (--seed)                      */
     float background[3];        /* colour where no surface is, 0..1 (--background)      */

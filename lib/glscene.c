@@ -10,6 +10,7 @@
 #include <string.h>
 #include "aa.h"
 #include "bundle.h"
+#include "exact_scene.h"
 #include "glctx.h"
 #include "glscene_internal.h"
 #include "gt_table.h"
@@ -26,6 +27,9 @@ struct glscene_player {
     gls_gt_table gt;       /* instance ids and call paths (gt_table.h)     */
     int have_gt;           /* 0: more instances draw than ids can number   */
     uint32_t drawing;      /* how many instances draw something           */
+    float background[3];   /* the exact pass's (the renderer has its own)  */
+    gls_bundle *b;         /* exact coverage only: its textures, which the
+                              exact pass shades on the CPU                 */
 };
 
 const char *glscene_version(void)
@@ -62,7 +66,9 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
         return NULL;
     }
     gls_aa_opts aa = gls_aa_defaults();
-    aa.n = opt->aa ? opt->aa : 1;
+    aa.exact = opt->aa == GLSCENE_AA_EXACT;
+    aa.n = opt->aa && !aa.exact ? opt->aa : 1;
+    memcpy(p->background, opt->background, sizeof p->background);
     aa.pattern = opt->pattern == GLSCENE_AA_GRID         ? GLS_AA_GRID
                  : opt->pattern == GLSCENE_AA_STRATIFIED ? GLS_AA_STRATIFIED
                                                          : GLS_AA_LATTICE;
@@ -86,6 +92,13 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
         gls_api_fail(e, "%s: %s", bundle_path, err);
         goto fail;
     }
+    /* glsplay's refusal (runtime/play/player.c), in the library's words */
+    const char *why = aa.exact ? gls_exact_scene_unsupported(&p->scene) : NULL;
+    if (why) {
+        gls_api_fail(e, "%s: exact coverage (aa GLSCENE_AA_EXACT) does not draw %s; ask for samples (aa N) instead",
+                     bundle_path, why);
+        goto fail;
+    }
     int k = gls_gt_table_build(&p->gt, b, &p->scene, &p->drawing);
     if (k < 0) {
         gls_api_fail(e, "out of memory");
@@ -103,7 +116,10 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
         goto fail;
     }
     gls_renderer_set_background(p->r, opt->background);
-    gls_bundle_free(b);
+    if (aa.exact)
+        p->b = b; /* the exact pass shades its textures (glscene_render) */
+    else
+        gls_bundle_free(b);
     return p;
 fail:
     gls_bundle_free(b);
@@ -121,6 +137,7 @@ void glscene_close(glscene_player *p)
     gls_glctx_destroy(p->ctx);
     gls_gt_table_free(&p->gt);
     gls_scene_free(&p->scene);
+    gls_bundle_free(p->b);
     free(p);
 }
 
@@ -188,7 +205,8 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
     unsigned outputs = (image ? GLS_OUT_IMAGE : 0u) | (out->depth ? GLS_OUT_DEPTH : 0u) |
                        (out->instance ? GLS_OUT_INSTANCE : 0u) | (out->normals ? GLS_OUT_NORMALS : 0u);
     gls_play_frame_result res;
-    if (gls_play_frame(p->r, &p->scene, &p->plan, &c, outputs, &res, err, sizeof err))
+    if (gls_play_frame(p->r, &p->scene, &p->plan, &c, outputs, p->background, p->b ? p->b->textures : NULL, &res, err,
+                       sizeof err))
         return err[0] ? gls_api_fail(e, "%s", err)
                       : gls_api_fail(e, "out of memory for a %ux%u image", c.width, c.height);
     int rc = -1;
@@ -200,7 +218,18 @@ int glscene_render(glscene_player *p, const glscene_camera *cam, const glscene_b
     /* scene instance index + 1 -> the id glsplay's instance output has */
     for (size_t i = 0; out->instance && i < n; i++)
         out->instance[i] = res.ids[i] ? p->gt.id[res.ids[i] - 1] : 0;
-    if (res.fp.aa) {
+    if (res.exact) { /* exact coverage: the conversions of glsplay's PNG and PFM */
+        if (out->rgb8) {
+            if (!(rgba = malloc(n * 4))) {
+                gls_api_fail(e, "out of memory for a %ux%u image", c.width, c.height);
+                goto done;
+            }
+            gls_exact_rgba8(res.exact, n, rgba);
+            rgba_to_rgb(rgba, n, out->rgb8);
+        }
+        if (out->rgbf)
+            gls_exact_rgbf(res.exact, n, out->rgbf);
+    } else if (res.fp.aa) {
         if (out->rgb8) {
             if (!(rgba = malloc(n * 4))) {
                 gls_api_fail(e, "out of memory for a %ux%u image", c.width, c.height);

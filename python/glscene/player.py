@@ -133,7 +133,9 @@ class Player:
         if pattern not in _PATTERNS:
             raise ValueError("pattern must be one of %s, got %r" % (", ".join(_PATTERNS), pattern))
         self._bundle = os.fspath(bundle)
-        exact = aa == "exact"  # the run's --aa exact; glscene_render has no exact mode
+        # the run's --aa exact, which has coverage and edge_segments too
+        # (glscene_render's GLSCENE_AA_EXACT has the image only)
+        exact = aa == "exact"
         self._args = ["--aa", "exact" if exact else str(int(aa)), "--pattern", pattern, "--seed", str(int(seed)),
                       "--background", ",".join(repr(float(x)) for x in background)]
         if backend != "auto":

@@ -63,14 +63,21 @@ typedef struct {
 
 /* Called once for every pixel of the image, rows top to bottom, with the
  * triangles visible in it (n 0: none; the areas sum to at most 1, the rest
- * is background).  The frags are valid during the call only. */
+ * is background, but where an alpha-tested triangle's regions overlap
+ * what is behind them, GLS_EXACT_HOLES).  The frags are valid during the call only. */
 typedef void (*gls_exact_pixel_fn)(void *user, int px, int py, const gls_exact_frag *f, size_t n);
 
 /* Visit the w x h image.  Ties (coplanar overlapping triangles): the lower
- * index is in front.  Triangles of zero image area are skipped.  Memory is
- * bounded by a band of rows and the candidates in it.  Returns 0, or -1
- * when out of memory (fn may have been called for part of the image). */
+ * index is in front.  Triangles of zero image area are skipped.  The bands
+ * of rows are worked out on one thread per online CPU, fn called on the
+ * calling thread, in order; memory is bounded by two bands of rows a
+ * thread and the candidates in them.  Returns 0, or -1 when out of memory
+ * (fn may have been called for part of the image). */
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user);
+/* The same on threads worker threads (0: one per online CPU, 1: none, on
+ * the calling thread only); the frags are the same for any number. */
+int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
+                            unsigned threads);
 
 /* A region's colour: the colour of triangle t (index i) at image point
  * (x, y), the centroid of what is visible of it in a pixel.  For colour

@@ -1,7 +1,8 @@
 /* Exact coverage: the pixels (exact.h, gls_exact_visit).
  *
- * The image is done in bands of EXACT_BAND rows, so memory is bounded by a
- * band and the candidates in it.  In a band, each triangle's pixels (its
+ * The image is done in bands of EXACT_BAND rows, on worker threads (two
+ * bands a thread at a time), so memory is bounded by those bands and the
+ * triangles' pixels in them.  In a band, each triangle's pixels (its
  * bounding box's) are classified with the conservative edge test: inside
  * (the whole square on the kept side of all three edges), outside (the
  * whole square beyond one), or crossed; the margins are widened by a
@@ -17,11 +18,16 @@
  * equal-depth line) cut away, candidates taken front to back so that a
  * hidden triangle stops early. */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "exact_int.h"
 
 #define EXACT_BAND 16
+/* a pixel whose visible parts add up to this is full: what is left of
+ * the square is below the areas' rounding (a few 1e-16 a piece) */
+#define EXACT_FULL (1 - 1e-14)
 
 struct exact_work {
     const exact_prep *prep;
@@ -29,8 +35,6 @@ struct exact_work {
     exact_pieces cur, next;
     exact_pt *buf[3];   /* clip buffers: the piece, its two parts          */
     size_t cap[3];
-    gls_exact_frag *frags;
-    size_t capf;
     exact_cand_fn cands; /* exact_visit_cands: the candidates, no frags   */
     void *cuser;
 };
@@ -131,6 +135,22 @@ static int subtract(exact_work *w, const exact_line *l, int nl)
     return 0;
 }
 
+/* 1 when T and U have an edge with the same two endpoints (so the same
+ * canonical line, bit for bit) and keep its two opposite sides: their
+ * interiors are disjoint.  Cutting U away from T would find every piece
+ * of T beyond that line and change nothing; a mesh's neighbours are most
+ * of a crossed pixel's candidate pairs. */
+static int share_edge_apart(const exact_prep *T, const exact_prep *U)
+{
+    for (int k = 0; k < 3; k++)
+        for (int m = 0; m < 3; m++) {
+            const exact_line *a = &T->e[k], *b = &U->e[m];
+            if (a->ox == b->ox && a->oy == b->oy && a->a == b->a && a->b == b->b && a->s != b->s)
+                return 1;
+        }
+    return 0;
+}
+
 /* The visible part of candidate c[t] in pixel (i, j), against the others
  * (sorted front to back by their nearest 1/Zc): its area and centroid. */
 static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, double i, double j, gls_exact_frag *f)
@@ -138,25 +158,41 @@ static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, doub
     static const exact_pt square[4] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
     const exact_prep *T = &w->prep[c[t].tri];
     exact_pieces_clear(&w->cur);
-    if (exact_pieces_add(&w->cur, square, 4))
-        return -1;
     exact_line l[4];
-    if (!c[t].inside) {
-        for (int k = 0; k < 3; k++)
-            l[k] = exact_line_local(&T->e[k], i, j), l[k].s = -l[k].s;
-        /* the square minus the outside of each edge: what is inside all */
-        for (int k = 0; k < 3 && w->cur.np; k++)
-            if (subtract(w, &l[k], 1))
-                return -1;
+    /* the square minus the outside of each edge: what is inside all.  One
+     * convex piece, clipped here on the stack (4 + 3 vertices at most);
+     * the same steps, the same bits, as subtract with each edge's outside
+     * would take */
+    exact_pt poly[2][8], rest[8];
+    size_t n = 4;
+    int at = 0;
+    memcpy(poly[0], square, sizeof square);
+    for (int k = 0; k < 3 && n && !c[t].inside; k++) {
+        exact_line o = exact_line_local(&T->e[k], i, j);
+        o.s = -o.s;
+        int side = exact_line_side(poly[at], n, &o);
+        if (side < 0)
+            continue; /* wholly inside this edge */
+        size_t nin, nout = 0;
+        if (side == 0)
+            exact_clip(poly[at], n, &o, rest, &nin, poly[1 - at], &nout);
+        if (nout && exact_area(poly[1 - at], nout, NULL, NULL) > 0)
+            at = 1 - at, n = nout;
+        else
+            n = 0;
     }
+    if (n && exact_pieces_add(&w->cur, poly[at], n))
+        return -1;
     for (size_t u = 0; u < nc && w->cur.np; u++) {
         if (u == t || (w->tris[c[u].tri].flags & GLS_EXACT_HOLES))
             continue; /* an alpha-tested one hides nothing (exact.h) */
         if (c[u].zmax < c[t].zmin)
             break; /* this one and all after it are behind everywhere */
         const exact_prep *U = &w->prep[c[u].tri];
-        /* boxes apart (within the square): U hides nothing of T */
-        if (U->xmin >= T->xmax || U->xmax <= T->xmin || U->ymin >= T->ymax || U->ymax <= T->ymin)
+        /* boxes apart (within the square), or on the two sides of an edge
+         * they share (a mesh's neighbours): U hides nothing of T */
+        if (U->xmin >= T->xmax || U->xmax <= T->xmin || U->ymin >= T->ymax || U->ymax <= T->ymin ||
+            share_edge_apart(T, U))
             continue;
         int nl = 0;
         if (!c[u].inside)
@@ -196,110 +232,298 @@ static int cand_order(const void *pa, const void *pb)
 }
 
 /* One pixel's fragments from its candidates c[0..nc) (reordered) */
-static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, size_t *nf)
+static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, gls_exact_frag *out, size_t *nf)
 {
     *nf = 0;
     if (nc == 1 && c[0].inside) {
-        w->frags[0] = (gls_exact_frag){c[0].tri, 1.0, i, j};
+        out[0] = (gls_exact_frag){c[0].tri, 1.0, i, j};
         *nf = 1;
         return 0;
     }
     qsort(c, nc, sizeof *c, cand_order);
-    for (size_t t = 0; t < nc; t++) {
+    /* visible parts are disjoint: once those found fill the square (to
+     * EXACT_FULL), the rest have none.  Without this a pixel on a
+     * silhouette cut every hidden layer behind it against every one in
+     * front (make bench-aa's terrain: 2.4 million cuts, 4 a candidate) */
+    double covered = 0;
+    for (size_t t = 0; t < nc && covered < EXACT_FULL; t++) {
         gls_exact_frag f;
         if (visible(w, c, nc, t, i, j, &f))
             return -1;
+        /* an alpha-tested one's area hides nothing behind it (exact.h) */
         if (f.area > 0)
-            w->frags[(*nf)++] = f;
+            out[(*nf)++] = f, covered += w->tris[f.tri].flags & GLS_EXACT_HOLES ? 0 : f.area;
     }
     return 0;
 }
 
 /* Passes 1 and 2 of one band (rows j0..j1) over the triangles */
-static int band_cands(const exact_prep *p, const unsigned char *ok, size_t n, int w, int j0, int j1, double *fmin,
-                      exact_cand **c, size_t *nc, size_t *capc)
+static int band_cands(const exact_prep *p, const gls_exact_tri *tris, const size_t *list, size_t nl, int w, int j0,
+                      int j1, double *fmin, exact_cand **c, size_t *nc, size_t *capc)
 {
     for (size_t k = 0; k < (size_t)w * (size_t)(j1 - j0 + 1); k++)
         fmin[k] = -INFINITY;
-    for (int pass = 1; pass <= 2; pass++)
-        for (size_t t = 0; t < n; t++) {
-            if (!ok[t] || p[t].j1 < j0 || p[t].j0 > j1)
-                continue;
-            /* narrower than a pixel: covers none whole, nothing for pass 1;
-             * an alpha-tested one (ok 2) covers nothing for certain */
-            if (pass == 1 && (ok[t] == 2 || p[t].xmax - p[t].xmin < 1 || p[t].ymax - p[t].ymin < 1))
-                continue;
-            int ja = p[t].j0 > j0 ? p[t].j0 : j0, jb = p[t].j1 < j1 ? p[t].j1 : j1;
-            for (int j = ja; j <= jb; j++)
-                for (int i = p[t].i0; i <= p[t].i1; i++) {
-                    int in = classify(&p[t], i, j);
-                    if (in < 0 || (pass == 1 && !in))
-                        continue;
-                    size_t px = (size_t)(j - j0) * w + i;
-                    double lo, hi;
-                    zrange(&p[t].z, i, j, &lo, &hi);
-                    if (pass == 1) {
-                        if (lo > fmin[px])
-                            fmin[px] = lo;
-                    } else if (hi >= fmin[px]) {
-                        if (grow((void **)c, capc, *nc + 1, sizeof **c))
-                            return -1;
-                        (*c)[(*nc)++] = (exact_cand){t, px, in, lo, hi};
-                    }
-                }
+    /* each pixel of each triangle classified once: every one not outside
+     * kept with its depth range while F is found (pass 1), then those
+     * behind F dropped in place (pass 2); the survivors in the order of a
+     * second walk */
+    for (size_t q = 0; q < nl; q++) {
+        size_t t = list[q];
+        int ja = p[t].j0 > j0 ? p[t].j0 : j0, jb = p[t].j1 < j1 ? p[t].j1 : j1;
+        for (int j = ja; j <= jb; j++)
+            for (int i = p[t].i0; i <= p[t].i1; i++) {
+                int in = classify(&p[t], i, j);
+                if (in < 0)
+                    continue;
+                size_t px = (size_t)(j - j0) * w + i;
+                double lo, hi;
+                zrange(&p[t].z, i, j, &lo, &hi);
+                /* an alpha-tested one covers nothing for certain */
+                if (in && lo > fmin[px] && !(tris[t].flags & GLS_EXACT_HOLES))
+                    fmin[px] = lo;
+                if (grow((void **)c, capc, *nc + 1, sizeof **c))
+                    return -1;
+                (*c)[(*nc)++] = (exact_cand){t, px, in, lo, hi};
+            }
+    }
+    size_t kept = 0;
+    for (size_t k = 0; k < *nc; k++)
+        if ((*c)[k].zmax >= fmin[(*c)[k].pix])
+            (*c)[kept++] = (*c)[k];
+    *nc = kept;
+    return 0;
+}
+
+/* Each band's triangles, in index order (so candidates come in the same
+ * order as from a walk over all of them): band b's are
+ * idx[start[b] .. start[b + 1]).  A band looks at its own triangles only;
+ * walking all of them for each band and pass read the whole prep array
+ * (280 bytes a triangle) 60 times on make bench-aa's scene. */
+typedef struct {
+    size_t *start, *idx;
+} band_lists;
+
+static int band_lists_make(const exact_prep *p, const unsigned char *ok, size_t n, int nbands, band_lists *l)
+{
+    l->start = calloc((size_t)nbands + 1, sizeof *l->start);
+    if (!l->start)
+        return -1;
+    for (size_t t = 0; t < n; t++)
+        if (ok[t])
+            for (int b = p[t].j0 / EXACT_BAND; b <= p[t].j1 / EXACT_BAND; b++)
+                l->start[b + 1]++;
+    for (int b = 0; b < nbands; b++)
+        l->start[b + 1] += l->start[b];
+    if (!(l->idx = malloc((l->start[nbands] ? l->start[nbands] : 1) * sizeof *l->idx)))
+        return -1;
+    for (size_t t = 0; t < n; t++)
+        if (ok[t])
+            for (int b = p[t].j0 / EXACT_BAND; b <= p[t].j1 / EXACT_BAND; b++)
+                l->idx[l->start[b]++] = t;
+    for (int b = nbands; b > 0; b--)
+        l->start[b] = l->start[b - 1];
+    l->start[0] = 0;
+    return 0;
+}
+
+/* One band's results: its candidates sorted by pixel (start: each
+ * pixel's first) and, unless the walk hands out candidates, its frags
+ * (fstart: each pixel's first).  Buffers are kept from band to band: no
+ * page faults for each. */
+typedef struct {
+    double *fmin;
+    size_t *start, *fstart;
+    exact_cand *c, *sorted;
+    size_t nc, capc, caps;
+    gls_exact_frag *frags;
+    size_t capf;
+} band_slot;
+
+/* Everything of band j0..j1 but handing it out: candidates, their
+ * counting sort by pixel, each pixel resolved.  wk is this thread's
+ * scratch.  0, or -1 when out of memory. */
+static int band_compute(exact_work *wk, const band_lists *bl, int w, int h, int j0, band_slot *b)
+{
+    const size_t *list = bl->idx + bl->start[j0 / EXACT_BAND];
+    size_t nl = bl->start[j0 / EXACT_BAND + 1] - bl->start[j0 / EXACT_BAND];
+    int j1 = j0 + EXACT_BAND - 1 < h - 1 ? j0 + EXACT_BAND - 1 : h - 1;
+    size_t bandpx = (size_t)w * EXACT_BAND;
+    if (!b->fmin && (!(b->fmin = malloc(bandpx * sizeof *b->fmin)) ||
+                     !(b->start = malloc((bandpx + 1) * sizeof *b->start)) ||
+                     !(b->fstart = malloc((bandpx + 1) * sizeof *b->fstart))))
+        return -1;
+    b->nc = 0;
+    /* a first guess at the band's candidates (a few a triangle and one a
+     * pixel): fewer reallocs copying the array while it grows */
+    if (grow((void **)&b->c, &b->capc, 4 * nl + bandpx, sizeof *b->c))
+        return -1;
+    if (band_cands(wk->prep, wk->tris, list, nl, w, j0, j1, b->fmin, &b->c, &b->nc, &b->capc))
+        return -1;
+    if (grow((void **)&b->sorted, &b->caps, b->nc + 1, sizeof *b->sorted) ||
+        grow((void **)&b->frags, &b->capf, b->nc + 1, sizeof *b->frags))
+        return -1;
+    size_t *start = b->start;
+    memset(start, 0, (bandpx + 1) * sizeof *start);
+    for (size_t k = 0; k < b->nc; k++)
+        start[b->c[k].pix + 1]++;
+    for (size_t k = 0; k < bandpx; k++)
+        start[k + 1] += start[k];
+    for (size_t k = 0; k < b->nc; k++)
+        b->sorted[start[b->c[k].pix]++] = b->c[k];
+    for (size_t k = bandpx; k > 0; k--)
+        start[k] = start[k - 1];
+    start[0] = 0;
+    if (wk->cands)
+        return 0;
+    size_t nf = 0;
+    for (int j = j0; j <= j1; j++)
+        for (int i = 0; i < w; i++) {
+            size_t px = (size_t)(j - j0) * w + i, m;
+            b->fstart[px] = nf;
+            if (resolve(wk, b->sorted + start[px], start[px + 1] - start[px], i, j, b->frags + nf, &m))
+                return -1;
+            nf += m;
+        }
+    b->fstart[(size_t)(j1 - j0 + 1) * w] = nf;
+    return 0;
+}
+
+/* Hand band j0's results out, pixel by pixel in order: to fn, or to the
+ * walk's candidate callback. */
+static int band_emit(const exact_work *wk, int w, int h, int j0, band_slot *b, gls_exact_pixel_fn fn, void *user)
+{
+    int j1 = j0 + EXACT_BAND - 1 < h - 1 ? j0 + EXACT_BAND - 1 : h - 1;
+    for (int j = j0; j <= j1; j++)
+        for (int i = 0; i < w; i++) {
+            size_t px = (size_t)(j - j0) * w + i;
+            if (wk->cands) {
+                if (wk->cands(wk->cuser, wk->prep, b->sorted + b->start[px], b->start[px + 1] - b->start[px], i, j))
+                    return -1;
+            } else
+                fn(user, i, j, b->frags + b->fstart[px], b->fstart[px + 1] - b->fstart[px]);
         }
     return 0;
 }
 
-static int run_bands(exact_work *wk, const unsigned char *ok, size_t n, int w, int h, gls_exact_pixel_fn fn,
-                     void *user)
+static void band_free(band_slot *b)
 {
-    size_t bandpx = (size_t)w * EXACT_BAND, nc = 0, capc = 0, caps = 0;
-    double *fmin = malloc(bandpx * sizeof *fmin);
-    size_t *start = malloc((bandpx + 1) * sizeof *start);
-    exact_cand *c = NULL, *sorted = NULL;
-    int rc = fmin && start ? 0 : -1;
-    for (int j0 = 0; j0 < h && rc == 0; j0 += EXACT_BAND) {
-        int j1 = j0 + EXACT_BAND - 1 < h - 1 ? j0 + EXACT_BAND - 1 : h - 1;
-        nc = 0;
-        if ((rc = band_cands(wk->prep, ok, n, w, j0, j1, fmin, &c, &nc, &capc)) != 0)
+    free(b->fmin), free(b->start), free(b->fstart), free(b->c), free(b->sorted), free(b->frags);
+}
+
+static void work_free(exact_work *wk)
+{
+    exact_pieces_free(&wk->cur), exact_pieces_free(&wk->next);
+    free(wk->buf[0]), free(wk->buf[1]), free(wk->buf[2]);
+}
+
+/* Bands on worker threads: each takes the next band whose slot is free
+ * (slot b % nslot, free once band b - nslot is handed out) and computes
+ * it with its own scratch; the calling thread hands the bands out in
+ * order.  A pixel's result depends on its band's candidates only, never
+ * on the thread or the order, so the output is the same for any number
+ * of threads (test_exact's test_exact_threads). */
+#define EXACT_MAX_THREADS 64
+typedef struct {
+    const exact_work *proto;
+    const band_lists *bl;
+    int w, h, nbands, nslot;
+    band_slot *slot;
+    int *ready;         /* per slot: the band done in it + 1, 0: none      */
+    int *rc;            /* per slot: that band's band_compute              */
+    pthread_mutex_t mu;
+    pthread_cond_t cv;
+    int next, emitted, stop;
+} sched;
+
+static void *band_worker(void *arg)
+{
+    sched *s = arg;
+    exact_work wk = {0};
+    wk.prep = s->proto->prep, wk.tris = s->proto->tris, wk.cands = s->proto->cands, wk.cuser = s->proto->cuser;
+    pthread_mutex_lock(&s->mu);
+    for (;;) {
+        while (!s->stop && s->next < s->nbands && s->next >= s->emitted + s->nslot)
+            pthread_cond_wait(&s->cv, &s->mu);
+        if (s->stop || s->next >= s->nbands)
             break;
-        /* counting sort of the candidates by pixel (buffers kept from band
-         * to band: no page faults for each) */
-        if (grow((void **)&sorted, &caps, nc + 1, sizeof *sorted) ||
-            grow((void **)&wk->frags, &wk->capf, nc + 1, sizeof *wk->frags)) {
-            rc = -1;
-            break;
-        }
-        memset(start, 0, (bandpx + 1) * sizeof *start);
-        for (size_t k = 0; k < nc; k++)
-            start[c[k].pix + 1]++;
-        for (size_t k = 0; k < bandpx; k++)
-            start[k + 1] += start[k];
-        for (size_t k = 0; k < nc; k++)
-            sorted[start[c[k].pix]++] = c[k];
-        for (size_t k = bandpx; k > 0; k--)
-            start[k] = start[k - 1];
-        start[0] = 0;
-        for (int j = j0; j <= j1 && rc == 0; j++)
-            for (int i = 0; i < w; i++) {
-                size_t px = (size_t)(j - j0) * w + i, nf;
-                if (wk->cands) {
-                    if ((rc = wk->cands(wk->cuser, wk->prep, sorted + start[px], start[px + 1] - start[px], i, j)))
-                        break;
-                    continue;
-                }
-                if ((rc = resolve(wk, sorted + start[px], start[px + 1] - start[px], i, j, &nf)) != 0)
-                    break;
-                fn(user, i, j, wk->frags, nf);
-            }
+        int b = s->next++, k = b % s->nslot;
+        pthread_mutex_unlock(&s->mu);
+        int rc = band_compute(&wk, s->bl, s->w, s->h, b * EXACT_BAND, &s->slot[k]);
+        pthread_mutex_lock(&s->mu);
+        s->rc[k] = rc, s->ready[k] = b + 1;
+        pthread_cond_broadcast(&s->cv);
     }
-    free(fmin), free(start), free(c), free(sorted);
+    pthread_mutex_unlock(&s->mu);
+    work_free(&wk);
+    return NULL;
+}
+
+static unsigned auto_threads(unsigned threads, int nbands)
+{
+    if (!threads) {
+        long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+        threads = cpus > 0 ? (unsigned)cpus : 1;
+    }
+    if (threads > EXACT_MAX_THREADS)
+        threads = EXACT_MAX_THREADS;
+    if (threads > (unsigned)nbands)
+        threads = (unsigned)nbands;
+    return threads;
+}
+
+static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exact_pixel_fn fn, void *user,
+                     unsigned threads)
+{
+    int nbands = (h + EXACT_BAND - 1) / EXACT_BAND, rc = 0;
+    threads = auto_threads(threads, nbands);
+    if (threads <= 1) { /* here, band by band */
+        band_slot b = {0};
+        for (int k = 0; k < nbands && rc == 0; k++)
+            if ((rc = band_compute(wk, bl, w, h, k * EXACT_BAND, &b)) == 0)
+                rc = band_emit(wk, w, h, k * EXACT_BAND, &b, fn, user);
+        band_free(&b);
+        return rc;
+    }
+    sched s = {wk, bl, w, h, nbands, 2 * (int)threads, NULL, NULL, NULL, PTHREAD_MUTEX_INITIALIZER,
+               PTHREAD_COND_INITIALIZER, 0, 0, 0};
+    pthread_t th[EXACT_MAX_THREADS];
+    unsigned started = 0;
+    s.slot = calloc((size_t)s.nslot, sizeof *s.slot);
+    s.ready = calloc((size_t)s.nslot, sizeof *s.ready);
+    s.rc = calloc((size_t)s.nslot, sizeof *s.rc);
+    if (s.slot && s.ready && s.rc)
+        while (started < threads && pthread_create(&th[started], NULL, band_worker, &s) == 0)
+            started++;
+    if (!started) { /* no threads to be had: here */
+        free(s.slot), free(s.ready), free(s.rc);
+        return run_bands(wk, bl, w, h, fn, user, 1);
+    }
+    for (int b = 0; b < nbands && rc == 0; b++) {
+        int k = b % s.nslot;
+        pthread_mutex_lock(&s.mu);
+        while (s.ready[k] != b + 1)
+            pthread_cond_wait(&s.cv, &s.mu);
+        pthread_mutex_unlock(&s.mu);
+        rc = s.rc[k] ? s.rc[k] : band_emit(wk, w, h, b * EXACT_BAND, &s.slot[k], fn, user);
+        pthread_mutex_lock(&s.mu);
+        s.ready[k] = 0, s.emitted = b + 1, s.stop = rc != 0;
+        pthread_cond_broadcast(&s.cv);
+        pthread_mutex_unlock(&s.mu);
+    }
+    pthread_mutex_lock(&s.mu);
+    s.stop = 1;
+    pthread_cond_broadcast(&s.cv);
+    pthread_mutex_unlock(&s.mu);
+    for (unsigned k = 0; k < started; k++)
+        pthread_join(th[k], NULL);
+    for (int k = 0; k < s.nslot; k++)
+        band_free(&s.slot[k]);
+    free(s.slot), free(s.ready), free(s.rc);
     return rc;
 }
 
 static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
-                 exact_cand_fn cands)
+                 exact_cand_fn cands, unsigned threads)
 {
     if (w <= 0 || h <= 0)
         return 0;
@@ -309,21 +533,31 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
     int rc = -1;
     if (p && ok) {
         for (size_t k = 0; k < n; k++)
-            ok[k] = (unsigned char)(exact_prep_tri(&t[k], w, h, &p[k]) ? (t[k].flags & GLS_EXACT_HOLES ? 2 : 1) : 0);
+            ok[k] = (unsigned char)exact_prep_tri(&t[k], w, h, &p[k]);
         wk.prep = p, wk.tris = t, wk.cands = cands, wk.cuser = user;
-        rc = run_bands(&wk, ok, n, w, h, fn, user);
+        band_lists bl = {0};
+        rc = band_lists_make(p, ok, n, (h + EXACT_BAND - 1) / EXACT_BAND, &bl);
+        if (rc == 0)
+            rc = run_bands(&wk, &bl, w, h, fn, user, threads);
+        free(bl.start), free(bl.idx);
     }
-    exact_pieces_free(&wk.cur), exact_pieces_free(&wk.next);
-    free(wk.buf[0]), free(wk.buf[1]), free(wk.buf[2]), free(wk.frags), free(p), free(ok);
+    work_free(&wk);
+    free(p), free(ok);
     return rc;
 }
 
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
 {
-    return visit(t, n, w, h, fn, user, NULL);
+    return visit(t, n, w, h, fn, user, NULL, 0);
+}
+
+int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
+                            unsigned threads)
+{
+    return visit(t, n, w, h, fn, user, NULL, threads);
 }
 
 int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user)
 {
-    return visit(t, n, w, h, NULL, user, fn);
+    return visit(t, n, w, h, NULL, user, fn, 0);
 }

@@ -57,18 +57,6 @@ int exact_prep_tri(const gls_exact_tri *t, int w, int h, exact_prep *p)
     return 1;
 }
 
-exact_line exact_line_local(const exact_line *l, double i, double j)
-{
-    exact_line r = *l;
-    r.ox -= i, r.oy -= j;
-    return r;
-}
-
-double exact_plane_at(const exact_plane *z, double x, double y)
-{
-    return z->z0 + z->a * (x - z->x0) + z->b * (y - z->y0);
-}
-
 /* The half of pixel (i, j) where front's 1/Zc exceeds back's (front is
  * nearer), in local coordinates: both planes' constant terms taken at the
  * pixel centre, so the difference keeps its precision. */
@@ -115,27 +103,6 @@ int exact_pieces_add(exact_pieces *p, const exact_pt *v, size_t n)
     return 0;
 }
 
-/* f at p, and 0 where its sign is not certain: |f| within the bound on
- * its rounding (a static filter in Shewchuk's sense), so a vertex on a
- * line up to rounding counts as on it, and no split makes a sliver of
- * nothing but rounding.  The bound depends on the line and the point
- * only, so two triangles sharing an edge snap alike. */
-static double line_f(const exact_line *l, exact_pt p)
-{
-    double fx = l->a * (p.x - l->ox), fy = l->b * (p.y - l->oy), f = fx + fy + l->c;
-    return fabs(f) <= 1e-15 * (fabs(fx) + fabs(fy) + fabs(l->c)) ? 0 : f;
-}
-
-int exact_line_side(const exact_pt *v, size_t n, const exact_line *l)
-{
-    int pos = 0, neg = 0;
-    for (size_t k = 0; k < n; k++) {
-        double f = l->s * line_f(l, v[k]);
-        pos |= f > 0, neg |= f < 0;
-    }
-    return pos && neg ? 0 : neg ? -1 : 1;
-}
-
 /* Where segment pq meets l, computed from its endpoints in lexicographic
  * order, so the same segment gives the same point from either side. */
 static exact_pt crossing(exact_pt p, double fp, exact_pt q, double fq)
@@ -155,7 +122,7 @@ void exact_clip(const exact_pt *v, size_t n, const exact_line *l, exact_pt *in, 
     size_t ni = 0, no = 0;
     for (size_t k = 0; k < n; k++) {
         exact_pt p = v[k], q = v[(k + 1) % n];
-        double fp = line_f(l, p), fq = line_f(l, q), sp = l->s * fp, sq = l->s * fq;
+        double fp = exact_line_f(l, p), fq = exact_line_f(l, q), sp = l->s * fp, sq = l->s * fq;
         if (sp >= 0)
             in[ni++] = p;
         if (sp <= 0)

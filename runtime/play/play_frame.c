@@ -446,19 +446,22 @@ out:
 }
 
 int gls_play_frame(gls_renderer *r, const gls_scene *scene, const gls_aa_plan *plan, const gls_camera *c,
-                   unsigned outputs, gls_play_frame_result *res, char *msg, size_t msglen)
+                   unsigned outputs, const float background[3], const gls_texture *textures,
+                   gls_play_frame_result *res, char *msg, size_t msglen)
 {
     /* a session of one still frame: no motion, no writer, no progress */
     gls_play_opts o;
     memset(&o, 0, sizeof o);
     o.outputs = outputs;
     o.aa = plan->o;
+    memcpy(o.background, background, sizeof o.background);
     motion_set ms;
     memset(&ms, 0, sizeof ms);
     ms.scene = (gls_scene *)scene;
     session s;
     memset(&s, 0, sizeof s);
     s.o = &o, s.ms = &ms, s.scene = scene, s.plan = plan, s.r = r, s.name_now = "glscene";
+    s.textures = textures;
     cam_frame cf;
     memset(&cf, 0, sizeof cf);
     memset(res, 0, sizeof *res);
@@ -471,12 +474,13 @@ int gls_play_frame(gls_renderer *r, const gls_scene *scene, const gls_aa_plan *p
     int rc = -1;
     if (frame_buffers(&cf, NULL, n))
         goto out;
-    if (frame_centre_truth(&s, c, &cf, msg, msglen) || (fp->aa && frame_colour(&s, c, &cf, msg, msglen)))
+    if (frame_centre_truth(&s, c, &cf, msg, msglen) || (fp->aa && frame_colour(&s, c, &cf, msg, msglen)) ||
+        (fp->exact && frame_exact(&s, c, &cf)))
         goto out;
     res->fp = cf.fp, res->rgba = cf.rgba, res->z = cf.z, res->ids = cf.gt_ids, res->normals = cf.normal;
-    res->acc = cf.acc;
+    res->acc = cf.acc, res->exact = cf.exact;
     memset(&cf.acc, 0, sizeof cf.acc);
-    cf.rgba = NULL, cf.z = NULL, cf.gt_ids = NULL, cf.normal = NULL;
+    cf.rgba = NULL, cf.z = NULL, cf.gt_ids = NULL, cf.normal = NULL, cf.exact = NULL;
     rc = 0;
 out:
     cam_frame_free(&cf);
@@ -489,6 +493,7 @@ void gls_play_frame_free(gls_play_frame_result *res)
     free(res->z);
     free(res->ids);
     free(res->normals);
+    free(res->exact);
     gls_accum_free(&res->acc);
     memset(res, 0, sizeof *res);
 }

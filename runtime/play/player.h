@@ -106,9 +106,14 @@ typedef struct {
     uint32_t *ids;      /* the truth pass's ids, scene instance + 1     */
     float *normals;     /* its normals, 3 a pixel                        */
     gls_accum acc;      /* the accumulated samples (fp.aa)              */
+    float *exact;       /* exact coverage's image, RGBA float (fp.exact) */
 } gls_play_frame_result;
+/* background and textures: the exact pass's (plan->o.exact; the GL
+ * passes take the renderer's); textures is the bundle's, NULL for an
+ * untextured scene */
 int gls_play_frame(gls_renderer *r, const gls_scene *scene, const gls_aa_plan *plan, const gls_camera *c,
-                   unsigned outputs, gls_play_frame_result *res, char *msg, size_t msglen);
+                   unsigned outputs, const float background[3], const gls_texture *textures,
+                   gls_play_frame_result *res, char *msg, size_t msglen);
 void gls_play_frame_free(gls_play_frame_result *res);
 
 /* Run the player.  Messages go to errs as "glsplay: error: ..." lines,

@@ -506,11 +506,106 @@ static void test_exact_coverage(void)
     CHECK(p[0].id == 9 && p[1].id == 0);
 }
 
+/* The same frags, bit for bit and in the same order, for any number of
+ * worker threads (exact.h gls_exact_visit_threads): 300 random tilted
+ * triangles passing through each other over 37 x 101 pixels (seven bands,
+ * the last short), hashed per pixel in visiting order. */
+typedef struct {
+    uint64_t hash;
+    int last;           /* the last pixel visited, in row-major order      */
+    int ordered;
+    int w;
+} frag_hash;
+
+static void hash_pixel(void *user, int px, int py, const gls_exact_frag *f, size_t n)
+{
+    frag_hash *hs = user;
+    int at = py * hs->w + px;
+    hs->ordered &= at == hs->last + 1;
+    hs->last = at;
+    for (size_t k = 0; k < n; k++) {
+        uint64_t v[4];
+        memcpy(&v[0], &f[k].area, 8), memcpy(&v[1], &f[k].cx, 8), memcpy(&v[2], &f[k].cy, 8);
+        v[3] = f[k].tri;
+        for (int q = 0; q < 4; q++)
+            hs->hash = (hs->hash ^ v[q]) * 1099511628211ull;
+    }
+    hs->hash = (hs->hash ^ (uint64_t)n) * 1099511628211ull;
+}
+
+static void test_exact_threads(void)
+{
+    enum { N = 300, W = 37, H = 101 };
+    static gls_exact_tri t[N];
+    for (int k = 0; k < N; k++) {
+        double x = urand() * W, y = urand() * H, s = 1 + urand() * 12;
+        t[k] = tri(x, y, x + s * (urand() - 0.5), y + s * (urand() - 0.5), x + s * (urand() - 0.5),
+                   y + s * (urand() - 0.5), 1);
+        for (int q = 0; q < 3; q++)
+            t[k].iz[q] = 0.5 + urand();
+        t[k].id = (uint32_t)k;
+    }
+    uint64_t first = 0;
+    for (unsigned th = 0; th <= 9; th++) {
+        frag_hash hs = {14695981039346656037ull, -1, 1, W};
+        CHECK(gls_exact_visit_threads(t, N, W, H, hash_pixel, &hs, th) == 0);
+        CHECK_MSG(hs.ordered && hs.last == W * H - 1, "threads %u: pixels out of order", th);
+        if (th == 0)
+            first = hs.hash;
+        CHECK_MSG(hs.hash == first, "threads %u: frags differ from the automatic count's", th);
+    }
+}
+
+/* Canonical orientation of shared edges (exact_int.h): two triangles on
+ * either side of one long edge, which they traverse in opposite
+ * directions, their far vertices L px away, so that every pixel of the
+ * 32 x 32 image is covered by the two exactly once.  Each edge's line is
+ * then a difference of products of size L^2: taken from its own first
+ * vertex, each triangle would round it differently and leave a crack or an
+ * overlap of about L^2 2^-53 / L px along the edge.  With the canonical
+ * line both cut each pixel at the same points.  60 random edges a length,
+ * L from 1e3 to 1e7: worst |sum - 1| over every pixel. */
+static double shared_edge_worst(double L, int reps, int *checked)
+{
+    const int W = 32;
+    double worst = 0;
+    for (int r = 0; r < reps; r++) {
+        double th = M_PI * urand(), ux = cos(th), uy = sin(th), nx = -uy, ny = ux;
+        double cx = W / 2 + urand() - 0.5, cy = W / 2 + urand() - 0.5;
+        double a = L * (0.5 + urand()), b = L * (0.5 + urand()); /* the edge's two ends */
+        double px = cx - a * ux, py = cy - a * uy, qx = cx + b * ux, qy = cy + b * uy;
+        double sx = (px + qx) / 2 + 2 * L * nx, sy = (py + qy) / 2 + 2 * L * ny; /* one side */
+        double tx = (px + qx) / 2 - 2 * L * nx, ty = (py + qy) / 2 - 2 * L * ny; /* the other */
+        gls_exact_tri t[2] = {tri(px, py, qx, qy, sx, sy, 1), tri(qx, qy, px, py, tx, ty, 1)};
+        t[1].id = 1;
+        cov c = run(t, 2, W, W);
+        for (int k = 0; k < W * W; k++)
+            worst = fmax(worst, fabs(c.cover[k] - 1));
+        *checked += W * W;
+        cov_free(&c);
+    }
+    return worst;
+}
+
+static void test_exact_shared_edge_long(void)
+{
+    double worst = 0;
+    int checked = 0;
+    for (double L = 1e3; L <= 1e7; L *= 10) {
+        double w = shared_edge_worst(L, 60, &checked);
+        printf("  shared edge, ends %.0e px away: worst |sum - 1| %.3g\n", L, w);
+        worst = fmax(worst, w);
+    }
+    CHECK(checked == 5 * 60 * 32 * 32);
+    CHECK_MSG(worst <= 1e-14, "worst %g", worst);
+}
+
 int main(void)
 {
     RUN(test_exact_area_vs_reference);
     RUN(test_exact_halfplane_sweep);
     RUN(test_exact_fan);
+    RUN(test_exact_shared_edge_long);
     RUN(test_exact_t_junction);
     RUN(test_exact_sliver);
     RUN(test_exact_interpenetrating);
@@ -521,5 +616,6 @@ int main(void)
     RUN(test_exact_image_sampled);
     RUN(test_exact_image_holes_many);
     RUN(test_exact_coverage);
+    RUN(test_exact_threads);
     CHECK_EXIT();
 }
