@@ -83,8 +83,7 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
     double cell = ldexp(GLS_SCENE_CELL, (int)s->cell_level);
     s->verts = malloc(w->ntri ? w->ntri * 3 * s->stride : 1);
     s->chunks = malloc((w->ntri ? w->ntri : 1) * sizeof *s->chunks);
-    s->exact = malloc((w->ntri ? w->ntri : 1) * 9 * sizeof *s->exact);
-    if (!s->verts || !s->chunks || !s->exact)
+    if (!s->verts || !s->chunks)
         return -1;
     for (int j = 0; j < 3; j++)
         s->lo[j] = INFINITY, s->hi[j] = -INFINITY;
@@ -116,7 +115,6 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             uint8_t *v = s->verts + (i * 3 + (size_t)k) * s->stride;
             const double *p = w->wpos + 9 * (size_t)t->idx + 3 * k;
             float off[3];
-            memcpy(s->exact + (i * 3 + (size_t)k) * 3, p, 3 * sizeof *p);
             for (int j = 0; j < 3; j++) {
                 off[j] = (float)(p[j] - ch->anchor[j]);
                 double d = fabs(p[j] - ch->anchor[j]);
@@ -151,6 +149,34 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
                 s->lo[j] = fmin(s->lo[j], s->chunks[k].lo[j]), s->hi[j] = fmax(s->hi[j], s->chunks[k].hi[j]);
             }
     }
+    return 0;
+}
+
+int gls_pack_exact(double *wpos, const gls_pack_tri *t, size_t n)
+{
+    /* in place, cycle by cycle: position i takes triangle t[i].idx's
+     * nine doubles; done[] marks the positions filled */
+    uint8_t *done = calloc(n / 8 + 1, 1);
+    if (!done)
+        return -1;
+    for (size_t i = 0; i < n; i++) {
+        if (done[i / 8] >> (i % 8) & 1)
+            continue;
+        double first[9];
+        memcpy(first, wpos + 9 * i, sizeof first);
+        size_t j = i;
+        for (;;) {
+            done[j / 8] |= (uint8_t)(1u << (j % 8));
+            size_t k = t[j].idx;
+            if (k == i) {
+                memcpy(wpos + 9 * j, first, sizeof first);
+                break;
+            }
+            memcpy(wpos + 9 * j, wpos + 9 * k, sizeof first);
+            j = k;
+        }
+    }
+    free(done);
     return 0;
 }
 
