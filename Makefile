@@ -154,6 +154,7 @@ test:
 # Unit tests: each sees and links the layers it tests.
 SEES_test_base := base
 SEES_test_bundle := format
+SEES_test_bundle_file := format
 SEES_test_compile := compiler
 SEES_test_lex := compiler
 SEES_test_aa := bench

@@ -15,6 +15,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
+/* ZSTD_d_stableOutBuffer (zstd 1.4.4 on): a parameter of the shared
+ * library's ZSTD_DCtx_setParameter, declared among the experimental ones */
+#define ZSTD_STATIC_LINKING_ONLY
 #include <zstd.h>
 #include "bundle.h"
 #include "layout.h"
@@ -194,22 +197,19 @@ static int read_positions(gls_bundle *b, cursor *c, gls_error *err)
         FAIL("position stream: %u components per vertex (must be 3 or 4)", ncomp);
     if (n > GLS_MAX_VERTICES || (uint64_t)n * ncomp * 8 != c->len - c->pos || c->bad)
         FAIL("position stream: %u vertices do not match the section size", n);
-    double *v = malloc((size_t)n * ncomp * 8 + 1);
+    /* straight into the vertices (gls_vec4: x, y, z, w doubles), no
+     * packed copy: a 300,000-vertex scene's 7 MB of fresh pages less */
+    _Static_assert(sizeof(gls_vec4) == 32, "gls_vec4 is four packed doubles");
     b->pos = malloc((size_t)n * sizeof *b->pos + 1);
-    if (!v || !b->pos) {
-        free(v);
+    if (!b->pos)
         FAIL("out of memory");
-    }
-    gls_planes_decode(c->p + c->pos, n, ncomp, 8, v);
+    gls_planes_decode(c->p + c->pos, n, sizeof *b->pos, ncomp, 8, b->pos);
     int some_w = 0;
     for (uint32_t i = 0; i < n; i++) {
-        b->pos[i].x = v[i * ncomp];
-        b->pos[i].y = v[i * ncomp + 1];
-        b->pos[i].z = v[i * ncomp + 2];
-        b->pos[i].w = ncomp == 4 ? v[i * ncomp + 3] : 1.0;
+        if (ncomp == 3)
+            b->pos[i].w = 1.0;
         some_w |= b->pos[i].w != 1.0;
     }
-    free(v);
     /* the writer stores w only when some w != 1: one encoding per content */
     if (ncomp == 4 && !some_w)
         FAIL("position stream: w stored although every w is 1");
@@ -227,7 +227,7 @@ static int read_floats(cursor *c, uint32_t *count, void **out, unsigned ncomp, c
     *out = malloc((size_t)n * ncomp * 4 + 1);
     if (!*out)
         FAIL("out of memory");
-    gls_planes_decode(c->p + c->pos, n, ncomp, 4, *out);
+    gls_planes_decode(c->p + c->pos, n, (size_t)ncomp * 4, ncomp, 4, *out);
     *count = n;
     return 0;
 fail:
@@ -377,21 +377,36 @@ static int read_normals(gls_bundle *b, cursor *c, gls_error *err)
     return 0;
 }
 
-/* The header after check_start: checksum, header size, section count
- * (into *nsect), reserved fields; version, features and top into b. */
-static int check_header(const uint8_t *data, size_t len, gls_bundle *b, uint32_t *nsect, gls_error *err)
+/* The file's CRC-32 (section 6 of spec/bundle.md): every byte, the four
+ * of the CRC field as zeros.  crc_span adds bytes [at, at + n) of the file,
+ * p holding them, to crc. */
+static uLong crc_span(uLong crc, const uint8_t *p, uint64_t at, size_t n)
+{
+    static const uint8_t zero[4];
+    while (n) {
+        /* the CRC field's bytes count as zeros */
+        if (at >= GLS_HDR_CRC && at < GLS_HDR_CRC + 4) {
+            size_t z = (size_t)(GLS_HDR_CRC + 4 - at) < n ? (size_t)(GLS_HDR_CRC + 4 - at) : n;
+            crc = crc32_z(crc, zero, z);
+            p += z, at += z, n -= z;
+            continue;
+        }
+        size_t k = at < GLS_HDR_CRC && GLS_HDR_CRC - at < n ? (size_t)(GLS_HDR_CRC - at) : n;
+        crc = crc32_z(crc, p, k);
+        p += k, at += k, n -= k;
+    }
+    return crc;
+}
+
+/* The header after check_start: checksum (crc, the file's as computed),
+ * header size, section count (into *nsect), reserved fields; version,
+ * features and top into b. */
+static int check_header(const uint8_t *data, uLong crc, gls_bundle *b, uint32_t *nsect, gls_error *err)
 {
     uint32_t version = gls_le_get_u32(data + GLS_HDR_VERSION);
-    {
-        uint8_t zero[4] = {0};
-        uLong crc = crc32(0L, Z_NULL, 0);
-        crc = crc32_z(crc, data, GLS_HDR_CRC);
-        crc = crc32_z(crc, zero, 4);
-        crc = crc32_z(crc, data + GLS_HDR_CRC + 4, len - GLS_HDR_CRC - 4);
-        if ((uint32_t)crc != gls_le_get_u32(data + GLS_HDR_CRC))
-            FAIL("bundle is corrupted: checksum mismatch (stored %08x, computed %08x)",
-                 gls_le_get_u32(data + GLS_HDR_CRC), (unsigned)crc);
-    }
+    if ((uint32_t)crc != gls_le_get_u32(data + GLS_HDR_CRC))
+        FAIL("bundle is corrupted: checksum mismatch (stored %08x, computed %08x)",
+             gls_le_get_u32(data + GLS_HDR_CRC), (unsigned)crc);
     if (gls_le_get_u32(data + GLS_HDR_HSIZE) != GLS_HEADER_SIZE)
         FAIL("bundle header size %u is not %u", gls_le_get_u32(data + GLS_HDR_HSIZE), GLS_HEADER_SIZE);
     /* every required section, and those of the optional ones present */
@@ -408,14 +423,133 @@ fail:
     return -1;
 }
 
-/* Section directory entry s: its id (in order after ids[0..s), into
- * ids[s]), its place (at *expect_off, contiguous; *expect_off moves past
- * it), its decoded size (under the limit, alone and with *total_raw, the
- * sections' before it), its codec; decoded into raw[s], rawlen[s]. */
-static int read_section(const uint8_t *data, size_t len, unsigned s, uint32_t *ids, uint64_t *expect_off,
-                        uint64_t *total_raw, uint8_t **raw, uint64_t *rawlen, gls_error *err)
+/* Where the sections' stored bytes come from: the bundle in memory (mem,
+ * gls_bundle_read), or the file fd read in order, block by block into
+ * buf (gls_bundle_read_file), its CRC-32 taken again on the way.  The
+ * file reader so holds one block of the file at a time, not the whole
+ * file: a 9 MB bundle was 9 MB of fresh pages read, checksummed and
+ * dropped, a third of glsplay's load (issue 30). */
+#define BLOCK_BYTES (256u << 10)
+typedef struct {
+    const uint8_t *mem;
+    int fd;
+    uint8_t *buf;
+    uint64_t at;           /* the file's offset fd is at                 */
+    uLong crc;             /* of the bytes read up to at                 */
+    const char *path;
+    int io_failed;         /* a read failed: its message names the file  */
+    ZSTD_DCtx *dctx;
+} source;
+
+/* n (<= BLOCK_BYTES) bytes of the file at its offset into buf, the CRC
+ * taken.  0, or -1 with the message. */
+static int src_read(source *src, size_t n, gls_error *err)
 {
-    const uint8_t *e = data + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE;
+    if (gls_read_full(src->fd, src->buf, n)) {
+        src->io_failed = 1;
+        FAIL("%s: cannot read: %s", src->path, errno ? strerror(errno) : "the file shrank while reading");
+    }
+    src->crc = crc_span(src->crc, src->buf, src->at, n);
+    src->at += n;
+    return 0;
+fail:
+    return -1;
+}
+
+/* A section's stored bytes [off, off + stored) into raw (rl bytes, the
+ * codec's checks made), from memory in one call or from the file block
+ * by block (zstd's streaming decoder writing straight into raw).  Message
+ * texts are the same either way: id names the section. */
+static int section_bytes(source *src, uint32_t id, uint32_t codec, uint64_t off, uint64_t stored, uint64_t rl,
+                         uint8_t **rawp, gls_error *err)
+{
+    size_t first = 0; /* file: the first block, read before raw is allocated */
+    if (!src->mem) {
+        first = stored < BLOCK_BYTES ? (size_t)stored : BLOCK_BYTES;
+        if (src_read(src, first, err))
+            goto fail;
+    }
+    const uint8_t *head = src->mem ? src->mem + off : src->buf;
+    if (codec == GLS_CODEC_ZSTD) {
+        unsigned long long fcs = ZSTD_getFrameContentSize(head, src->mem ? stored : first);
+        if (fcs == ZSTD_CONTENTSIZE_ERROR || fcs == ZSTD_CONTENTSIZE_UNKNOWN || fcs != rl)
+            FAIL("section %u: zstd frame header does not declare the %llu bytes the directory says", id,
+                 (unsigned long long)rl);
+    }
+    uint8_t *raw = *rawp = malloc(rl ? rl : 1);
+    if (!raw)
+        FAIL("out of memory for section %u (%llu bytes)", id, (unsigned long long)rl);
+    if (src->mem) {
+        if (codec == GLS_CODEC_RAW) {
+            memcpy(raw, head, rl);
+        } else {
+            size_t got = ZSTD_decompress(raw, rl, head, stored);
+            if (ZSTD_isError(got) || got != rl)
+                FAIL("section %u: zstd data is corrupted (%s)", id,
+                     ZSTD_isError(got) ? ZSTD_getErrorName(got) : "short");
+        }
+        return 0;
+    }
+    ZSTD_outBuffer out = {raw, rl, 0};
+    size_t zr = 1; /* ZSTD_decompressStream's last answer: 0 once a frame ends */
+    if (codec == GLS_CODEC_ZSTD) {
+        if (!src->dctx && !(src->dctx = ZSTD_createDCtx()))
+            FAIL("out of memory for section %u (%llu bytes)", id, (unsigned long long)rl);
+        ZSTD_DCtx_reset(src->dctx, ZSTD_reset_session_only);
+        /* into raw as it stands, without zstd's own window buffer */
+        ZSTD_DCtx_setParameter(src->dctx, ZSTD_d_stableOutBuffer, 1);
+    }
+    for (uint64_t left = stored;;) {
+        size_t n = first;
+        if (codec == GLS_CODEC_RAW) {
+            memcpy(raw + out.pos, src->buf, n);
+            out.pos += n;
+        } else {
+            ZSTD_inBuffer in = {src->buf, n, 0};
+            while (in.pos < in.size) {
+                zr = ZSTD_decompressStream(src->dctx, &out, &in);
+                /* an error, or more than rl bytes (no progress) */
+                if (ZSTD_isError(zr) || (zr && out.pos == out.size && in.pos < in.size))
+                    goto corrupted;
+            }
+        }
+        left -= n;
+        if (!left)
+            break;
+        first = left < BLOCK_BYTES ? (size_t)left : BLOCK_BYTES;
+        if (src_read(src, first, err))
+            goto fail;
+    }
+    if ((codec == GLS_CODEC_ZSTD && zr != 0) || out.pos != rl)
+        goto corrupted;
+    return 0;
+corrupted:
+    /* The reason in the memory reader's words: those of ZSTD_decompress
+     * on the whole section, which streaming words differently (a frame
+     * cut short, trailing bytes); read again for that, on this path only. */
+    {
+        const char *why = "short";
+        uint8_t *whole = malloc(stored ? stored : 1);
+        if (whole && pread(src->fd, whole, stored, (off_t)off) == (ssize_t)stored) {
+            size_t got = ZSTD_decompress(raw, rl, whole, stored);
+            if (ZSTD_isError(got))
+                why = ZSTD_getErrorName(got);
+        }
+        free(whole);
+        FAIL("section %u: zstd data is corrupted (%s)", id, why);
+    }
+fail:
+    return -1;
+}
+
+/* Section directory entry s (e, in the directory read): its id (in order
+ * after ids[0..s), into ids[s]), its place (at *expect_off, contiguous;
+ * *expect_off moves past it), its decoded size (under the limit, alone
+ * and with *total_raw, the sections' before it), its codec; decoded into
+ * raw[s], rawlen[s]. */
+static int read_section(const uint8_t *e, size_t len, unsigned s, uint32_t *ids, uint64_t *expect_off,
+                        uint64_t *total_raw, uint8_t **raw, uint64_t *rawlen, source *src, gls_error *err)
+{
     uint32_t id = gls_le_get_u32(e), codec = gls_le_get_u32(e + 4);
     uint64_t off = gls_le_get_u64(e + 8), stored = gls_le_get_u64(e + 16), rl = gls_le_get_u64(e + 24);
     /* the required sections in order, then optional ones in id order */
@@ -443,47 +577,32 @@ static int read_section(const uint8_t *data, size_t len, unsigned s, uint32_t *i
         if (rl != stored)
             FAIL("section %u: raw section with stored size %llu != decoded size %llu", id,
                  (unsigned long long)stored, (unsigned long long)rl);
-    } else if (codec == GLS_CODEC_ZSTD) {
-        unsigned long long fcs = ZSTD_getFrameContentSize(data + off, stored);
-        if (fcs == ZSTD_CONTENTSIZE_ERROR || fcs == ZSTD_CONTENTSIZE_UNKNOWN || fcs != rl)
-            FAIL("section %u: zstd frame header does not declare the %llu bytes the directory says", id,
-                 (unsigned long long)rl);
-    } else {
+    } else if (codec != GLS_CODEC_ZSTD) {
         FAIL("section %u: unknown codec %u", id, codec);
     }
-    raw[s] = malloc(rl ? rl : 1);
-    if (!raw[s])
-        FAIL("out of memory for section %u (%llu bytes)", id, (unsigned long long)rl);
     rawlen[s] = rl;
-    if (codec == GLS_CODEC_RAW) {
-        memcpy(raw[s], data + off, rl);
-    } else {
-        size_t got = ZSTD_decompress(raw[s], rl, data + off, stored);
-        if (ZSTD_isError(got) || got != rl)
-            FAIL("section %u: zstd data is corrupted (%s)", id, ZSTD_isError(got) ? ZSTD_getErrorName(got) : "short");
-    }
-    return 0;
+    return section_bytes(src, id, codec, off, stored, rl, &raw[s], err);
 fail:
     return -1;
 }
 
-gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
+/* After check_start and check_header (data: the header and as much of
+ * the directory as len holds): the directory, each section decoded from
+ * src, each section's content read, the whole validated.  b is freed on
+ * failure. */
+static gls_bundle *read_sections(const uint8_t *data, size_t have, size_t len, uint32_t nsect, gls_bundle *b,
+                                 source *src, gls_error *err)
 {
     uint8_t *raw[GLS_SEC_COUNT] = {0};
     uint64_t rawlen[GLS_SEC_COUNT] = {0};
-    gls_bundle *b = calloc(1, sizeof *b);
-    if (!b)
-        FAIL("out of memory");
-    uint32_t nsect;
-    if (check_start(data, len, len, err) || check_header(data, len, b, &nsect, err))
-        goto fail;
     size_t dir_end = GLS_HEADER_SIZE + nsect * GLS_DIRENT_SIZE;
-    if (len < dir_end)
+    if (len < dir_end || have < dir_end)
         FAIL("bundle is truncated inside its section directory");
     uint64_t expect_off = dir_end, total_raw = 0;
     uint32_t ids[GLS_SEC_COUNT];
     for (unsigned s = 0; s < nsect; s++)
-        if (read_section(data, len, s, ids, &expect_off, &total_raw, raw, rawlen, err))
+        if (read_section(data + GLS_HEADER_SIZE + s * GLS_DIRENT_SIZE, len, s, ids, &expect_off, &total_raw, raw,
+                         rawlen, src, err))
             goto fail;
     if (expect_off != len)
         FAIL("bundle has %llu bytes after its last section", (unsigned long long)(len - expect_off));
@@ -493,13 +612,16 @@ gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
         GLS_SECTIONS(GLS_X_SEC)
 #undef GLS_X_SEC
     };
+    /* each section's raw bytes dropped once read: the next reader's
+     * arrays take their pages */
     for (unsigned s = 0; s < nsect; s++) {
         cursor c = {raw[s], rawlen[s], 0, 0};
-        if (readers[ids[s] - GLS_SEC_OBJECTS](b, &c, err))
+        int bad = readers[ids[s] - GLS_SEC_OBJECTS](b, &c, err);
+        free(raw[s]);
+        raw[s] = NULL;
+        if (bad)
             goto fail;
     }
-    for (unsigned s = 0; s < GLS_SEC_COUNT; s++)
-        free(raw[s]);
     if (gls_bundle_validate(b, err)) {
         gls_bundle_free(b);
         return NULL;
@@ -518,13 +640,31 @@ fail:
     return NULL;
 }
 
+gls_bundle *gls_bundle_read(const uint8_t *data, size_t len, gls_error *err)
+{
+    gls_bundle *b = calloc(1, sizeof *b);
+    if (!b)
+        FAIL("out of memory");
+    uint32_t nsect;
+    if (check_start(data, len, len, err) ||
+        check_header(data, crc_span(crc32(0L, Z_NULL, 0), data, 0, len), b, &nsect, err))
+        goto fail;
+    source src = {data, -1, NULL, 0, 0, NULL, 0, NULL};
+    return read_sections(data, len, len, nsect, b, &src, err);
+fail:
+    gls_bundle_free(b);
+    return NULL;
+}
+
 gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
 {
     /* only a regular file, opened without waiting (readfile.h) */
     struct stat st;
     gls_read_error e;
     int fd = gls_file_open(path, &st, &e);
-    uint8_t *data = NULL;
+    gls_bundle *b = NULL;
+    source src = {NULL, fd, NULL, 0, crc32(0L, Z_NULL, 0), path, 0, NULL};
+    uint8_t *dir = NULL;
     if (fd < 0) {
         if (e.status == GLS_READ_OPEN)
             gls_fail(err, __LINE__, "%s: cannot open: %s", path, strerror(e.err));
@@ -547,23 +687,55 @@ gls_bundle *gls_bundle_read_file(const char *path, gls_error *err)
     }
     if (check_start(head, nh, len, err))
         goto prefix;
-    data = malloc((size_t)len);
-    if (!data) {
+    /* Then the CRC of the whole file, block by block, before anything is
+     * decoded (spec/bundle.md 6); then the file again from its start
+     * (the page cache's copy), each section decoded as it is read, its
+     * CRC taken again: a file that changed in between is refused. */
+    if (!(src.buf = malloc(BLOCK_BYTES)) || !(b = calloc(1, sizeof *b))) {
         gls_fail(err, __LINE__, "%s: out of memory (%llu bytes)", path, (unsigned long long)len);
         goto fail;
     }
-    memcpy(data, head, nh);
-    if (gls_read_full(fd, data + nh, (size_t)len - nh)) {
+    src.crc = crc_span(src.crc, head, 0, nh), src.at = nh;
+    for (uint64_t left = len - nh; left;) {
+        size_t n = left < BLOCK_BYTES ? (size_t)left : BLOCK_BYTES;
+        if (src_read(&src, n, err))
+            goto fail;
+        left -= n;
+    }
+    uint32_t nsect;
+    if (check_header(head, src.crc, b, &nsect, err))
+        goto prefix;
+    uLong whole = src.crc;
+    /* the header and the directory (at most GLS_SEC_COUNT entries) */
+    size_t have = GLS_HEADER_SIZE + nsect * GLS_DIRENT_SIZE;
+    if (have > len)
+        have = (size_t)len;
+    if (lseek(fd, 0, SEEK_SET) != 0 || !(dir = malloc(have))) {
+        gls_fail(err, __LINE__, "%s: cannot read: %s", path, errno ? strerror(errno) : "out of memory");
+        goto fail;
+    }
+    if (gls_read_full(fd, dir, have)) {
         gls_fail(err, __LINE__, "%s: cannot read: %s", path, errno ? strerror(errno) : "the file shrank while reading");
         goto fail;
     }
-    close(fd);
-    fd = -1;
-    gls_bundle *b = gls_bundle_read(data, (size_t)len, err);
-    free(data);
-    if (b)
-        return b;
-    data = NULL;
+    src.crc = crc_span(crc32(0L, Z_NULL, 0), dir, 0, have), src.at = have;
+    gls_bundle *r = read_sections(dir, have, (size_t)len, nsect, b, &src, err);
+    b = NULL; /* read_sections frees it on failure */
+    if (r && src.crc != whole) {
+        gls_bundle_free(r);
+        r = NULL;
+        gls_fail(err, __LINE__, "%s: the file changed while it was read", path);
+        goto fail;
+    }
+    if (r) {
+        free(dir);
+        free(src.buf);
+        ZSTD_freeDCtx(src.dctx);
+        close(fd);
+        return r;
+    }
+    if (src.io_failed)
+        goto fail; /* a read error's message names the file already */
 prefix:
     {
         /* prefix the file name, keeping the message one line */
@@ -574,6 +746,9 @@ prefix:
 fail:
     if (fd >= 0)
         close(fd);
-    free(data);
+    free(dir);
+    free(src.buf);
+    ZSTD_freeDCtx(src.dctx);
+    gls_bundle_free(b);
     return NULL;
 }

@@ -34,18 +34,28 @@ void gls_planes_encode(const void *in, size_t count, size_t stride, unsigned nco
     }
 }
 
-void gls_planes_decode(const uint8_t *in, size_t count, unsigned ncomp, unsigned width, void *out)
+/* One component's planes back into words, width a constant in each
+ * caller below so that the byte loop unrolls. */
+static inline void decode_comp(const uint8_t *plane, size_t count, unsigned width, uint8_t *dst, size_t stride)
+{
+    uint64_t prev = 0;
+    for (size_t i = 0; i < count; i++) {
+        uint64_t x = 0;
+        for (unsigned b = 0; b < width; b++)
+            x |= (uint64_t)plane[b * count + i] << (8 * b);
+        prev ^= x;
+        store_word(dst + i * stride, width, prev);
+    }
+}
+
+void gls_planes_decode(const uint8_t *in, size_t count, size_t stride, unsigned ncomp, unsigned width, void *out)
 {
     uint8_t *dst = out;
     for (unsigned c = 0; c < ncomp; c++) {
-        uint64_t prev = 0;
         const uint8_t *plane = in + (size_t)c * width * count;
-        for (size_t i = 0; i < count; i++) {
-            uint64_t x = 0;
-            for (unsigned b = 0; b < width; b++)
-                x |= (uint64_t)plane[b * count + i] << (8 * b);
-            prev ^= x;
-            store_word(dst + (i * ncomp + c) * width, width, prev);
-        }
+        if (width == 8)
+            decode_comp(plane, count, 8, dst + c * 8, stride);
+        else
+            decode_comp(plane, count, 4, dst + c * 4, stride);
     }
 }

@@ -898,6 +898,20 @@ static int build(const gls_bundle *b, gls_scene *s, int instanced, char *err, si
     gls_pack_input in = {w.tris, w.ntri, w.wpos, w.wcol, w.wtc, w.wnrm, w.wspec};
     int made = gls_pack_chunks(&in, s);
     if (!made)
+        made = gls_pack_exact(w.wpos, w.tris, w.ntri);
+    if (!made) {
+        /* the walk's positions are the exact ones now; its other arrays
+         * are read no more: freed before the rest is allocated */
+        double *e = gls_resize(w.wpos, w.ntri, 9 * sizeof *e); /* its length, no more */
+        if (e) {
+            s->exact = e;
+            w.wpos = NULL;
+        }
+        free(w.tris), free(w.wcol), free(w.wtc), free(w.wnrm), free(w.wspec);
+        w.tris = NULL, w.wcol = NULL, w.wtc = NULL, w.wnrm = NULL, w.wspec = NULL;
+        made = e ? 0 : -1;
+    }
+    if (!made)
         made = gls_scene_test_boxes(s);
     if (!made)
         made = gls_pack_items(s);

@@ -83,8 +83,7 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
     double cell = ldexp(GLS_SCENE_CELL, (int)s->cell_level);
     s->verts = malloc(w->ntri ? w->ntri * 3 * s->stride : 1);
     s->chunks = malloc((w->ntri ? w->ntri : 1) * sizeof *s->chunks);
-    s->exact = malloc((w->ntri ? w->ntri : 1) * 9 * sizeof *s->exact);
-    if (!s->verts || !s->chunks || !s->exact)
+    if (!s->verts || !s->chunks)
         return -1;
     for (int j = 0; j < 3; j++)
         s->lo[j] = INFINITY, s->hi[j] = -INFINITY;
@@ -116,7 +115,6 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
             uint8_t *v = s->verts + (i * 3 + (size_t)k) * s->stride;
             const double *p = w->wpos + 9 * (size_t)t->idx + 3 * k;
             float off[3];
-            memcpy(s->exact + (i * 3 + (size_t)k) * 3, p, 3 * sizeof *p);
             for (int j = 0; j < 3; j++) {
                 off[j] = (float)(p[j] - ch->anchor[j]);
                 double d = fabs(p[j] - ch->anchor[j]);
@@ -154,6 +152,34 @@ int gls_pack_chunks(const gls_pack_input *w, gls_scene *s)
     return 0;
 }
 
+int gls_pack_exact(double *wpos, const gls_pack_tri *t, size_t n)
+{
+    /* in place, cycle by cycle: position i takes triangle t[i].idx's
+     * nine doubles; done[] marks the positions filled */
+    uint8_t *done = calloc(n / 8 + 1, 1);
+    if (!done)
+        return -1;
+    for (size_t i = 0; i < n; i++) {
+        if (done[i / 8] >> (i % 8) & 1)
+            continue;
+        double first[9];
+        memcpy(first, wpos + 9 * i, sizeof first);
+        size_t j = i;
+        for (;;) {
+            done[j / 8] |= (uint8_t)(1u << (j % 8));
+            size_t k = t[j].idx;
+            if (k == i) {
+                memcpy(wpos + 9 * j, first, sizeof first);
+                break;
+            }
+            memcpy(wpos + 9 * j, wpos + 9 * k, sizeof first);
+            j = k;
+        }
+    }
+    free(done);
+    return 0;
+}
+
 int gls_pack_items(gls_scene *s)
 {
     size_t n = 0;
@@ -186,11 +212,102 @@ int gls_pack_items(gls_scene *s)
     return 0;
 }
 
+static unsigned bit_length(uint64_t v)
+{
+    unsigned b = 0;
+    while (v)
+        b++, v >>= 1;
+    return b;
+}
+
+/* tri_cmp's order by one 64-bit key a triangle, where the triangles allow
+ * it: one proto and key, in emission order (idx rising: a stable sort
+ * keeps ties as tri_cmp's last rule does), and their cells' span small
+ * enough that the coarse cell, the GLS_SCENE_CELL cell within it and the
+ * Morton code fit 64 bits (a scattered scene over kilometres: about 50).
+ * Then a stable radix sort of (key, index) pairs and a permutation in
+ * place, not qsort's comparisons (tri_cmp was 5 % of issue 30's
+ * one-camera run).  0, or -1 when it does not apply or memory is short
+ * (t unchanged: qsort then). */
+static int sort_by_keys(gls_pack_tri *t, size_t n, unsigned level)
+{
+    if (n < 2 || n > UINT32_MAX)
+        return -1;
+    int64_t lo[3], hi[3];
+    for (int j = 0; j < 3; j++)
+        lo[j] = hi[j] = coarse(t[0].cell[j], level);
+    for (size_t i = 1; i < n; i++) {
+        if (t[i].proto != t[0].proto || key_cmp(&t[i].key, &t[0].key) || t[i].idx <= t[i - 1].idx ||
+            t[i].zorder >> 30 || t[0].zorder >> 30)
+            return -1;
+        for (int j = 0; j < 3; j++) {
+            int64_t c = coarse(t[i].cell[j], level);
+            lo[j] = c < lo[j] ? c : lo[j], hi[j] = c > hi[j] ? c : hi[j];
+        }
+    }
+    unsigned bits[3], total = 3 * level + 30; /* the fine cells, the Morton code */
+    for (int j = 0; j < 3; j++)
+        total += bits[j] = bit_length((uint64_t)(hi[j] - lo[j]));
+    if (total > 64)
+        return -1;
+    uint64_t *pair = malloc(4 * n * sizeof *pair); /* key, index; twice, for the passes */
+    uint8_t *done = calloc(n / 8 + 1, 1);
+    if (!pair || !done) {
+        free(pair), free(done);
+        return -1;
+    }
+    uint64_t *a = pair, *b = pair + 2 * n;
+    for (size_t i = 0; i < n; i++) {
+        uint64_t k = 0, fine = 0;
+        for (int j = 0; j < 3; j++) {
+            int64_t c = coarse(t[i].cell[j], level);
+            k = k << bits[j] | (uint64_t)(c - lo[j]);
+            /* the GLS_SCENE_CELL cell within the coarse one: 0 .. 2^level - 1 */
+            fine = fine << level | (uint64_t)(t[i].cell[j] - c * ((int64_t)1 << level));
+        }
+        k = (k << (3 * level) | fine) << 30 | t[i].zorder;
+        a[2 * i] = k, a[2 * i + 1] = i;
+    }
+    /* least significant byte first, each pass stable */
+    for (unsigned shift = 0; shift < total; shift += 8) {
+        size_t count[257] = {0};
+        for (size_t i = 0; i < n; i++)
+            count[(a[2 * i] >> shift & 0xff) + 1]++;
+        for (int d = 0; d < 256; d++)
+            count[d + 1] += count[d];
+        for (size_t i = 0; i < n; i++) {
+            size_t at = count[a[2 * i] >> shift & 0xff]++;
+            b[2 * at] = a[2 * i], b[2 * at + 1] = a[2 * i + 1];
+        }
+        uint64_t *x = a;
+        a = b, b = x;
+    }
+    /* t[i] = the old t[a[2 i + 1]], cycle by cycle */
+    for (size_t i = 0; i < n; i++) {
+        if (done[i / 8] >> (i % 8) & 1)
+            continue;
+        gls_pack_tri first = t[i];
+        size_t j = i;
+        for (;;) {
+            done[j / 8] |= (uint8_t)(1u << (j % 8));
+            size_t k = (size_t)a[2 * j + 1];
+            if (k == i) {
+                t[j] = first;
+                break;
+            }
+            t[j] = t[k];
+            j = k;
+        }
+    }
+    free(pair), free(done);
+    return 0;
+}
+
 /* Sort t into the drawing order of level `level`. */
 static void sort_level_order(gls_pack_tri *t, size_t n, unsigned level)
 {
     sort_level = level;
-    if (n) /* qsort(NULL, 0) is undefined */
+    if (n && sort_by_keys(t, n, level)) /* qsort(NULL, 0) is undefined */
         qsort(t, n, sizeof *t, tri_cmp);
 }
 

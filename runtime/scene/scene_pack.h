@@ -53,6 +53,13 @@ unsigned gls_pack_sort(gls_pack_tri *t, size_t n, size_t budget);
  * triangles (s's layout, protos and instances set, s->cell_level the level
  * gls_pack_sort chose).  0, or -1 when out of memory. */
 int gls_pack_chunks(const gls_pack_input *w, gls_scene *s);
+/* The scene's exact positions (gls_scene.exact: 9 doubles a triangle, in
+ * drawing order) from the walk's (wpos, 9 doubles a triangle in emission
+ * order) in place, t sorted: wpos becomes them, with no second array of
+ * them (7 MB a 100,000-triangle scene, issue 30's fresh pages).  After
+ * gls_pack_chunks, which reads wpos in emission order.  0, or -1 when out
+ * of memory (wpos then unchanged). */
+int gls_pack_exact(double *wpos, const gls_pack_tri *t, size_t n);
 /* Items of every instance with geometry, sorted into drawing order.  0,
  * -1 when out of memory, -2 when there would be more than
  * GLS_SCENE_MAX_ITEMS. */

@@ -235,8 +235,62 @@ static void test_pack_budget_keys_one_cell(void)
     free(t);
 }
 
+/* The documented drawing order (scene_pack.h gls_pack_sort), for
+ * test_pack_order: proto, key, cell of the level, GLS_SCENE_CELL cell,
+ * Morton code, emission order. */
+static int by_order(const void *pa, const void *pb)
+{
+    const gls_pack_tri *a = pa, *b = pb;
+    if (a->proto != b->proto)
+        return a->proto < b->proto ? -1 : 1;
+    if (a->key.texture != b->key.texture)
+        return a->key.texture < b->key.texture ? -1 : 1;
+    for (int j = 0; j < 3; j++) {
+        int64_t x = floordiv(a->cell[j], cmp_level), y = floordiv(b->cell[j], cmp_level);
+        if (x != y)
+            return x < y ? -1 : 1;
+    }
+    for (int j = 0; j < 3; j++)
+        if (a->cell[j] != b->cell[j])
+            return a->cell[j] < b->cell[j] ? -1 : 1;
+    if (a->zorder != b->zorder)
+        return a->zorder < b->zorder ? -1 : 1;
+    return a->idx < b->idx ? -1 : a->idx > b->idx;
+}
+
+/* gls_pack_sort's order is the documented one, whichever way it sorts:
+ * one proto and key (by 64-bit keys), several keys (by comparisons),
+ * cells around the origin and far from it, Morton codes with ties, at
+ * the levels the budgets choose. */
+static void test_pack_order(void)
+{
+    size_t n = 30000;
+    gls_pack_tri *t = malloc(n * sizeof *t), *r = malloc(n * sizeof *r);
+    const int64_t far[3] = {0, -(1ll << 40), 123456789};
+    const size_t budgets[4] = {1000000, 4096, 300, 9};
+    for (int c = 0; c < 24; c++) {
+        int64_t span = c % 2 ? 90 : 7;
+        for (size_t i = 0; i < n; i++) {
+            tri_at(&t[i], i, c % 3 == 2 ? rnd(3) : 5, far[c % 3 == 1] + (int64_t)rnd((uint32_t)span) - span / 2,
+                   (int64_t)rnd((uint32_t)span) - 3, far[(c / 2) % 3] + (int64_t)rnd((uint32_t)span));
+            t[i].zorder = rnd(c % 4 < 2 ? 50 : 1u << 30);
+        }
+        memcpy(r, t, n * sizeof *t);
+        unsigned level = gls_pack_sort(t, n, budgets[c % 4]);
+        cmp_level = level;
+        qsort(r, n, sizeof *r, by_order);
+        size_t bad = 0;
+        for (size_t i = 0; i < n; i++)
+            bad += memcmp(&t[i], &r[i], sizeof *t) != 0;
+        CHECK_MSG(bad == 0, "case %d (level %u): %zu triangles out of the documented order", c, level, bad);
+    }
+    free(t);
+    free(r);
+}
+
 int main(void)
 {
+    RUN(test_pack_order);
     RUN(test_pack_budget_scattered);
     RUN(test_pack_budget_clustered);
     RUN(test_pack_budget_single_cell);
