@@ -468,6 +468,27 @@ static void test_exact_image_holes_many(void)
     CHECK_NEAR(rgba[(1 * 3 + 1) * 4 + 0], 1, 1e-6);
 }
 
+/* An alpha-tested triangle sorted after a full cover (its nearest point
+ * farther than the cover's) still shows where it is in front: the walk
+ * must not stop at the full cover (it did after the early stop of
+ * 1fe206d met the alpha test: the pixel read 1, the cover alone).  A
+ * tilted cover, 1/Zc from 1 at the pixel's left edge to 0.8 at its right,
+ * and an alpha-tested one at 0.9: in front on the right half (x > 0), so
+ * 32 of the 64 lattice points (x = (2i + 1) / 128 - 1/2) show it. */
+static void test_exact_image_holes_behind_cover(void)
+{
+    gls_exact_tri t[2];
+    t[0] = tri(-1.5, -1.5, 3, -1.5, -1.5, 3, 0);
+    for (int k = 0; k < 3; k++)
+        t[0].iz[k] = 1 - 0.2 * (t[0].x[k] + 0.5);
+    t[0].id = 2;
+    t[1] = tri(-2, -2, 6, -2, -2, 6, 0.9);
+    t[1].id = 1, t[1].flags = GLS_EXACT_HOLES | GLS_EXACT_SAMPLED;
+    float rgba[4], bg[4] = {0, 0, 0, 1}, alpha = 1;
+    CHECK(gls_exact_image(t, 2, 1, 1, bg, shade_test, &alpha, rgba) == 0);
+    CHECK_NEAR(rgba[0], (32 * 0.25 + 32 * 1.0) / 64, 1e-6);
+}
+
 /* Coverage: areas summed per id (two triangles of one id), the K largest
  * largest first (ties: the smaller id), ids mapped, 0 not counted. */
 static void test_exact_coverage(void)
@@ -615,6 +636,7 @@ int main(void)
     RUN(test_exact_image_flat);
     RUN(test_exact_image_sampled);
     RUN(test_exact_image_holes_many);
+    RUN(test_exact_image_holes_behind_cover);
     RUN(test_exact_coverage);
     RUN(test_exact_threads);
     CHECK_EXIT();
