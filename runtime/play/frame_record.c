@@ -160,12 +160,37 @@ int gls_frame_record_matches(const char *path, const char *text)
     return same;
 }
 
-void gls_frame_inputs(const gls_play_opts *o, const gls_traj_text *traj, char out[17])
+/* the files' part: the bundle, then every camera file */
+static void *inputs_files(void *arg)
 {
-    uint64_t h = GLS_DIGEST_INIT;
-    int ok = gls_digest_file(&h, o->bundle) == 0;
-    for (size_t i = 0; ok && i < o->ncameras; i++)
-        ok = gls_digest_file(&h, o->cameras[i]) == 0;
+    gls_inputs_job *j = arg;
+    j->h = GLS_DIGEST_INIT;
+    j->ok = gls_digest_file(&j->h, j->bundle) == 0;
+    for (size_t i = 0; j->ok && i < j->ncameras; i++)
+        j->ok = gls_digest_file(&j->h, j->cameras[i]) == 0;
+    return NULL;
+}
+
+void gls_frame_inputs_start(gls_inputs_job *j, const gls_play_opts *o)
+{
+    j->bundle = o->bundle, j->cameras = o->cameras, j->ncameras = o->ncameras;
+    j->threaded = pthread_create(&j->th, NULL, inputs_files, j) == 0;
+    if (!j->threaded)
+        inputs_files(j);
+}
+
+void gls_frame_inputs_join(gls_inputs_job *j)
+{
+    if (j->threaded)
+        pthread_join(j->th, NULL);
+    j->threaded = 0;
+}
+
+void gls_frame_inputs_finish(gls_inputs_job *j, const gls_play_opts *o, const gls_traj_text *traj, char out[17])
+{
+    gls_frame_inputs_join(j);
+    uint64_t h = j->h;
+    int ok = j->ok;
     if (ok && traj) /* the bytes read once (a pipe too), as a file's */
         h = gls_digest_sized(h, traj->data, traj->len);
     for (size_t i = 0; ok && i < o->nmotions; i++) {

@@ -52,6 +52,8 @@ struct gls_play_run {
     int rendering;        /* begun to render (an outdir or a sink): the
                              renderer, the writer and ses exist          */
     char inputs[17];      /* the frame records' inputs digest           */
+    gls_inputs_job inputs_job; /* its files' part, on a thread meanwhile */
+    int inputs_pending;   /* inputs_job started, not finished           */
     traj_scan scan;       /* the trajectory's frames o's range holds     */
     session ses;          /* what each frame renders with               */
     gls_play_times times; /* --times: the marks                        */
@@ -258,6 +260,8 @@ static int run_single(run *u, session *ses)
 static void run_free(run *u, int rc)
 {
     const gls_play_opts *o = u->o;
+    if (u->inputs_pending)
+        gls_frame_inputs_join(&u->inputs_job);
     /* first: it waits for the files in flight, whose jobs name the
      * cameras */
     gls_writer_destroy(u->wr);
@@ -316,6 +320,12 @@ static int run_begin(run *u, const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if (!u->cams || !u->names)
         return oom(errs);
+    /* the inputs' digest reads every input file again: on another core
+     * while this one loads them (frame_record.h gls_frame_inputs_start) */
+    if (o->outdir || o->sink) {
+        gls_frame_inputs_start(&u->inputs_job, o);
+        u->inputs_pending = 1;
+    }
     if (run_load_cameras(u) || run_load_scene(u))
         return 1;
     /* the context before the plan, which reports it */
@@ -329,7 +339,8 @@ static int run_begin(run *u, const gls_play_opts *o, FILE *out, FILE *errs)
         run_explain(u, out);
     if (!o->outdir && !o->sink)
         return 0;
-    gls_frame_inputs(o, o->trajectory ? &u->ms.traj : NULL, u->inputs);
+    gls_frame_inputs_finish(&u->inputs_job, o, o->trajectory ? &u->ms.traj : NULL, u->inputs);
+    u->inputs_pending = 0;
     /* The whole trajectory is read and checked (with --resume, the frames
      * already complete counted) before anything is created: a bad row
      * leaves no empty directory behind. */
