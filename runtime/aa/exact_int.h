@@ -125,4 +125,47 @@ typedef struct {
 typedef int (*exact_cand_fn)(void *user, const exact_prep *p, const exact_cand *c, size_t nc, int i, int j);
 int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user);
 
+/* The image is done in bands of EXACT_BAND rows (exact_pixels.c computes
+ * a band, exact_bands.c hands the bands to threads and out in order). */
+#define EXACT_BAND 16
+struct exact_work {
+    const exact_prep *prep;
+    const gls_exact_tri *tris;
+    exact_pieces cur, next;
+    exact_pt *buf[3];   /* clip buffers: the piece, its two parts          */
+    size_t cap[3];
+    exact_cand_fn cands; /* exact_visit_cands: the candidates, no frags   */
+    void *cuser;
+};
+
+/* Each band's triangles, in index order (so candidates come in the same
+ * order as from a walk over all of them): band b's are
+ * idx[start[b] .. start[b + 1]).  A band looks at its own triangles only;
+ * walking all of them for each band and pass read the whole prep array
+ * (280 bytes a triangle) 60 times on make bench-aa's scene. */
+typedef struct {
+    size_t *start, *idx;
+} band_lists;
+int exact_band_lists_make(const exact_prep *p, const unsigned char *ok, size_t n, int nbands, band_lists *l);
+
+/* One band's results: its candidates sorted by pixel (start: each
+ * pixel's first) and, unless the walk hands out candidates, its frags
+ * (fstart: each pixel's first).  Buffers are kept from band to band: no
+ * page faults for each. */
+typedef struct {
+    double *fmin;
+    size_t *start, *fstart;
+    exact_cand *c, *sorted;
+    size_t nc, capc, caps;
+    gls_exact_frag *frags;
+    size_t capf;
+} band_slot;
+
+/* Everything of band j0..j1 but handing it out: candidates, their
+ * counting sort by pixel, each pixel resolved.  wk is this thread's
+ * scratch.  0, or -1 when out of memory. */
+int exact_band_compute(exact_work *wk, const band_lists *bl, int w, int h, int j0, band_slot *b);
+/* a thread's scratch freed */
+void exact_work_free(exact_work *wk);
+
 #endif

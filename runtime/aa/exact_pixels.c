@@ -1,8 +1,8 @@
 /* Exact coverage: the pixels (exact.h, gls_exact_visit).
  *
- * The image is done in bands of EXACT_BAND rows, on worker threads (two
- * bands a thread at a time), so memory is bounded by those bands and the
- * triangles' pixels in them.  In a band, each triangle's pixels (its
+ * The image is done in bands of EXACT_BAND rows (exact_bands.c puts them
+ * on worker threads, two bands a thread at a time), so memory is bounded
+ * by those bands and the triangles' pixels in them.  In a band, each triangle's pixels (its
  * bounding box's) are classified with the conservative edge test: inside
  * (the whole square on the kept side of all three edges), outside (the
  * whole square beyond one), or crossed; the margins are widened by a
@@ -18,26 +18,13 @@
  * equal-depth line) cut away, candidates taken front to back so that a
  * hidden triangle stops early. */
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "exact_int.h"
 
-#define EXACT_BAND 16
 /* a pixel whose visible parts add up to this is full: what is left of
  * the square is below the areas' rounding (a few 1e-16 a piece) */
 #define EXACT_FULL (1 - 1e-14)
-
-struct exact_work {
-    const exact_prep *prep;
-    const gls_exact_tri *tris;
-    exact_pieces cur, next;
-    exact_pt *buf[3];   /* clip buffers: the piece, its two parts          */
-    size_t cap[3];
-    exact_cand_fn cands; /* exact_visit_cands: the candidates, no frags   */
-    void *cuser;
-};
 
 /* 1 the square of pixel (i, j) is inside, -1 outside, 0 crossed */
 static int classify(const exact_prep *p, double i, double j)
@@ -301,16 +288,7 @@ static int band_cands(const exact_prep *p, const gls_exact_tri *tris, const size
     return 0;
 }
 
-/* Each band's triangles, in index order (so candidates come in the same
- * order as from a walk over all of them): band b's are
- * idx[start[b] .. start[b + 1]).  A band looks at its own triangles only;
- * walking all of them for each band and pass read the whole prep array
- * (280 bytes a triangle) 60 times on make bench-aa's scene. */
-typedef struct {
-    size_t *start, *idx;
-} band_lists;
-
-static int band_lists_make(const exact_prep *p, const unsigned char *ok, size_t n, int nbands, band_lists *l)
+int exact_band_lists_make(const exact_prep *p, const unsigned char *ok, size_t n, int nbands, band_lists *l)
 {
     l->start = calloc((size_t)nbands + 1, sizeof *l->start);
     if (!l->start)
@@ -333,23 +311,10 @@ static int band_lists_make(const exact_prep *p, const unsigned char *ok, size_t 
     return 0;
 }
 
-/* One band's results: its candidates sorted by pixel (start: each
- * pixel's first) and, unless the walk hands out candidates, its frags
- * (fstart: each pixel's first).  Buffers are kept from band to band: no
- * page faults for each. */
-typedef struct {
-    double *fmin;
-    size_t *start, *fstart;
-    exact_cand *c, *sorted;
-    size_t nc, capc, caps;
-    gls_exact_frag *frags;
-    size_t capf;
-} band_slot;
-
 /* Everything of band j0..j1 but handing it out: candidates, their
  * counting sort by pixel, each pixel resolved.  wk is this thread's
  * scratch.  0, or -1 when out of memory. */
-static int band_compute(exact_work *wk, const band_lists *bl, int w, int h, int j0, band_slot *b)
+int exact_band_compute(exact_work *wk, const band_lists *bl, int w, int h, int j0, band_slot *b)
 {
     const size_t *list = bl->idx + bl->start[j0 / EXACT_BAND];
     size_t nl = bl->start[j0 / EXACT_BAND + 1] - bl->start[j0 / EXACT_BAND];
@@ -395,176 +360,8 @@ static int band_compute(exact_work *wk, const band_lists *bl, int w, int h, int 
     return 0;
 }
 
-/* Hand band j0's results out, pixel by pixel in order: to fn, or to the
- * walk's candidate callback. */
-static int band_emit(const exact_work *wk, int w, int h, int j0, band_slot *b, gls_exact_pixel_fn fn, void *user)
-{
-    int j1 = j0 + EXACT_BAND - 1 < h - 1 ? j0 + EXACT_BAND - 1 : h - 1;
-    for (int j = j0; j <= j1; j++)
-        for (int i = 0; i < w; i++) {
-            size_t px = (size_t)(j - j0) * w + i;
-            if (wk->cands) {
-                if (wk->cands(wk->cuser, wk->prep, b->sorted + b->start[px], b->start[px + 1] - b->start[px], i, j))
-                    return -1;
-            } else
-                fn(user, i, j, b->frags + b->fstart[px], b->fstart[px + 1] - b->fstart[px]);
-        }
-    return 0;
-}
-
-static void band_free(band_slot *b)
-{
-    free(b->fmin), free(b->start), free(b->fstart), free(b->c), free(b->sorted), free(b->frags);
-}
-
-static void work_free(exact_work *wk)
+void exact_work_free(exact_work *wk)
 {
     exact_pieces_free(&wk->cur), exact_pieces_free(&wk->next);
     free(wk->buf[0]), free(wk->buf[1]), free(wk->buf[2]);
-}
-
-/* Bands on worker threads: each takes the next band whose slot is free
- * (slot b % nslot, free once band b - nslot is handed out) and computes
- * it with its own scratch; the calling thread hands the bands out in
- * order.  A pixel's result depends on its band's candidates only, never
- * on the thread or the order, so the output is the same for any number
- * of threads (test_exact's test_exact_threads). */
-#define EXACT_MAX_THREADS 64
-typedef struct {
-    const exact_work *proto;
-    const band_lists *bl;
-    int w, h, nbands, nslot;
-    band_slot *slot;
-    int *ready;         /* per slot: the band done in it + 1, 0: none      */
-    int *rc;            /* per slot: that band's band_compute              */
-    pthread_mutex_t mu;
-    pthread_cond_t cv;
-    int next, emitted, stop;
-} sched;
-
-static void *band_worker(void *arg)
-{
-    sched *s = arg;
-    exact_work wk = {0};
-    wk.prep = s->proto->prep, wk.tris = s->proto->tris, wk.cands = s->proto->cands, wk.cuser = s->proto->cuser;
-    pthread_mutex_lock(&s->mu);
-    for (;;) {
-        while (!s->stop && s->next < s->nbands && s->next >= s->emitted + s->nslot)
-            pthread_cond_wait(&s->cv, &s->mu);
-        if (s->stop || s->next >= s->nbands)
-            break;
-        int b = s->next++, k = b % s->nslot;
-        pthread_mutex_unlock(&s->mu);
-        int rc = band_compute(&wk, s->bl, s->w, s->h, b * EXACT_BAND, &s->slot[k]);
-        pthread_mutex_lock(&s->mu);
-        s->rc[k] = rc, s->ready[k] = b + 1;
-        pthread_cond_broadcast(&s->cv);
-    }
-    pthread_mutex_unlock(&s->mu);
-    work_free(&wk);
-    return NULL;
-}
-
-static unsigned auto_threads(unsigned threads, int nbands)
-{
-    if (!threads) {
-        long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-        threads = cpus > 0 ? (unsigned)cpus : 1;
-    }
-    if (threads > EXACT_MAX_THREADS)
-        threads = EXACT_MAX_THREADS;
-    if (threads > (unsigned)nbands)
-        threads = (unsigned)nbands;
-    return threads;
-}
-
-static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exact_pixel_fn fn, void *user,
-                     unsigned threads)
-{
-    int nbands = (h + EXACT_BAND - 1) / EXACT_BAND, rc = 0;
-    threads = auto_threads(threads, nbands);
-    if (threads <= 1) { /* here, band by band */
-        band_slot b = {0};
-        for (int k = 0; k < nbands && rc == 0; k++)
-            if ((rc = band_compute(wk, bl, w, h, k * EXACT_BAND, &b)) == 0)
-                rc = band_emit(wk, w, h, k * EXACT_BAND, &b, fn, user);
-        band_free(&b);
-        return rc;
-    }
-    sched s = {wk, bl, w, h, nbands, 2 * (int)threads, NULL, NULL, NULL, PTHREAD_MUTEX_INITIALIZER,
-               PTHREAD_COND_INITIALIZER, 0, 0, 0};
-    pthread_t th[EXACT_MAX_THREADS];
-    unsigned started = 0;
-    s.slot = calloc((size_t)s.nslot, sizeof *s.slot);
-    s.ready = calloc((size_t)s.nslot, sizeof *s.ready);
-    s.rc = calloc((size_t)s.nslot, sizeof *s.rc);
-    if (s.slot && s.ready && s.rc)
-        while (started < threads && pthread_create(&th[started], NULL, band_worker, &s) == 0)
-            started++;
-    if (!started) { /* no threads to be had: here */
-        free(s.slot), free(s.ready), free(s.rc);
-        return run_bands(wk, bl, w, h, fn, user, 1);
-    }
-    for (int b = 0; b < nbands && rc == 0; b++) {
-        int k = b % s.nslot;
-        pthread_mutex_lock(&s.mu);
-        while (s.ready[k] != b + 1)
-            pthread_cond_wait(&s.cv, &s.mu);
-        pthread_mutex_unlock(&s.mu);
-        rc = s.rc[k] ? s.rc[k] : band_emit(wk, w, h, b * EXACT_BAND, &s.slot[k], fn, user);
-        pthread_mutex_lock(&s.mu);
-        s.ready[k] = 0, s.emitted = b + 1, s.stop = rc != 0;
-        pthread_cond_broadcast(&s.cv);
-        pthread_mutex_unlock(&s.mu);
-    }
-    pthread_mutex_lock(&s.mu);
-    s.stop = 1;
-    pthread_cond_broadcast(&s.cv);
-    pthread_mutex_unlock(&s.mu);
-    for (unsigned k = 0; k < started; k++)
-        pthread_join(th[k], NULL);
-    for (int k = 0; k < s.nslot; k++)
-        band_free(&s.slot[k]);
-    free(s.slot), free(s.ready), free(s.rc);
-    return rc;
-}
-
-static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
-                 exact_cand_fn cands, unsigned threads)
-{
-    if (w <= 0 || h <= 0)
-        return 0;
-    exact_prep *p = malloc((n ? n : 1) * sizeof *p);
-    unsigned char *ok = malloc(n ? n : 1);
-    exact_work wk = {0};
-    int rc = -1;
-    if (p && ok) {
-        for (size_t k = 0; k < n; k++)
-            ok[k] = (unsigned char)exact_prep_tri(&t[k], w, h, &p[k]);
-        wk.prep = p, wk.tris = t, wk.cands = cands, wk.cuser = user;
-        band_lists bl = {0};
-        rc = band_lists_make(p, ok, n, (h + EXACT_BAND - 1) / EXACT_BAND, &bl);
-        if (rc == 0)
-            rc = run_bands(&wk, &bl, w, h, fn, user, threads);
-        free(bl.start), free(bl.idx);
-    }
-    work_free(&wk);
-    free(p), free(ok);
-    return rc;
-}
-
-int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
-{
-    return visit(t, n, w, h, fn, user, NULL, 0);
-}
-
-int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
-                            unsigned threads)
-{
-    return visit(t, n, w, h, fn, user, NULL, threads);
-}
-
-int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user)
-{
-    return visit(t, n, w, h, NULL, user, fn, 0);
 }

@@ -241,15 +241,9 @@ static void test_pack_budget_keys_one_cell(void)
 static int by_order(const void *pa, const void *pb)
 {
     const gls_pack_tri *a = pa, *b = pb;
-    if (a->proto != b->proto)
-        return a->proto < b->proto ? -1 : 1;
-    if (a->key.texture != b->key.texture)
-        return a->key.texture < b->key.texture ? -1 : 1;
-    for (int j = 0; j < 3; j++) {
-        int64_t x = floordiv(a->cell[j], cmp_level), y = floordiv(b->cell[j], cmp_level);
-        if (x != y)
-            return x < y ? -1 : 1;
-    }
+    int c = by_cell(pa, pb); /* proto, key, cell of the level */
+    if (c)
+        return c;
     for (int j = 0; j < 3; j++)
         if (a->cell[j] != b->cell[j])
             return a->cell[j] < b->cell[j] ? -1 : 1;
