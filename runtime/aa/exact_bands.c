@@ -17,7 +17,9 @@ static int band_emit(const exact_work *wk, int w, int h, int j0, band_slot *b, g
         for (int i = 0; i < w; i++) {
             size_t px = (size_t)(j - j0) * w + i;
             if (wk->cands) {
-                if (wk->cands(wk->cuser, wk->prep, b->sorted + b->start[px], b->start[px + 1] - b->start[px], i, j))
+                /* the visible candidates, first in the pixel's (fstart:
+                 * their count, exact_band_compute) */
+                if (wk->cands(wk->cuser, wk->prep, b->sorted + b->start[px], b->fstart[px], i, j))
                     return -1;
             } else
                 fn(user, i, j, b->frags + b->fstart[px], b->fstart[px + 1] - b->fstart[px]);

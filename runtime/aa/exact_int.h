@@ -119,8 +119,9 @@ typedef struct {
     double zmin, zmax;  /* bounds of its 1/Zc over the square             */
 } exact_cand;
 
-/* gls_exact_visit's walk, handing each pixel's candidates (in no order)
- * to fn instead of resolving them: exact_edges.c's way in.  fn returns 0,
+/* gls_exact_visit's walk, handing each pixel's candidates that have a
+ * visible part there (area > 0, as the areas resolve them; in no order)
+ * to fn instead of their frags: exact_edges.c's way in.  fn returns 0,
  * or -1 to stop (out of memory), which exact_visit_cands returns. */
 typedef int (*exact_cand_fn)(void *user, const exact_prep *p, const exact_cand *c, size_t nc, int i, int j);
 int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user);
@@ -134,7 +135,7 @@ struct exact_work {
     exact_pieces cur, next;
     exact_pt *buf[3];   /* clip buffers: the piece, its two parts          */
     size_t cap[3];
-    exact_cand_fn cands; /* exact_visit_cands: the candidates, no frags   */
+    exact_cand_fn cands; /* exact_visit_cands: the visible candidates     */
     void *cuser;
 };
 

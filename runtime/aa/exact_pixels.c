@@ -345,16 +345,32 @@ int exact_band_compute(exact_work *wk, const band_lists *bl, int w, int h, int j
     for (size_t k = bandpx; k > 0; k--)
         start[k] = start[k - 1];
     start[0] = 0;
-    if (wk->cands)
-        return 0;
     size_t nf = 0;
     for (int j = j0; j <= j1; j++)
         for (int i = 0; i < w; i++) {
-            size_t px = (size_t)(j - j0) * w + i, m;
+            size_t px = (size_t)(j - j0) * w + i, m, n = start[px + 1] - start[px];
+            exact_cand *c = b->sorted + start[px];
             b->fstart[px] = nf;
-            if (resolve(wk, b->sorted + start[px], start[px + 1] - start[px], i, j, b->frags + nf, &m))
+            if (resolve(wk, c, n, i, j, b->frags + nf, &m))
                 return -1;
-            nf += m;
+            if (!wk->cands) {
+                nf += m;
+                continue;
+            }
+            /* the walk's candidates handed out (exact_edges.c): those with
+             * a visible part only, in place, their count in fstart.  A
+             * hidden one bounds no visible region and is in front on no
+             * side of a boundary; behind a silhouette a pixel has every
+             * layer of a terrain as candidates (make bench-aa's scene:
+             * the edges took minutes where the image takes a second) */
+            size_t kept = 0;
+            for (size_t q = 0; q < n; q++)
+                for (size_t r = 0; r < m; r++)
+                    if (b->frags[nf + r].tri == c[q].tri) {
+                        c[kept++] = c[q];
+                        break;
+                    }
+            b->fstart[px] = kept;
         }
     b->fstart[(size_t)(j1 - j0 + 1) * w] = nf;
     return 0;
