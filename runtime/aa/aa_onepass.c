@@ -14,10 +14,18 @@
 #include "progress_line.h"
 #include "units.h"
 
-/* Tile size cap for speed: llvmpipe bins a framebuffer in 64x64 blocks;
- * past a few Mpixel the bins and read-backs fall out of cache (measured
- * with make bench-aa, spec/antialiasing.md "Cost"). */
+/* The largest tile the passes are planned for: a pass's L follows from
+ * it (PASS_MAX_L below), so it fixes which samples share a pass. */
 #define TILE_MAX_SIDE 2048u
+/* The side tiles are drawn at, for speed: on llvmpipe a tile's colour and
+ * depth buffers (8 bytes a fine pixel) are allocated, zeroed and read
+ * back whole, and past about 768 x 768 (4.5 MiB) they fall out of cache.
+ * Measured on 2026-11-29 (whole glsplay runs, best of 3, 640x480): 16
+ * samples on 100k scattered triangles 0.67 s at 2048 against 0.49 s at
+ * 768; 64 and 256 samples on the terrain 0.82 and 1.18 s against 0.56
+ * and 0.77 s; 4096 samples 4.5 s at both (spec/antialiasing.md
+ * "Tiles"). */
+#define TILE_DRAW_SIDE 768u
 /* A pass's pixel footprint (sqrt(L) fine pixels a side) stays under an
  * eighth of a tile side, and L under 2^16: K passes beyond. */
 #define PASS_MAX_L 65536u
@@ -152,6 +160,8 @@ int gls_aa_fine_plan(const gls_aa_plan *p, uint32_t w, uint32_t h, uint32_t maxd
     /* the split into passes follows from the memory, not from a test's
      * tiny tiles (max_tile), which must exercise pixels straddling tiles */
     uint64_t max_l = (uint64_t)side * side / 64;
+    if (side > TILE_DRAW_SIDE)
+        side = TILE_DRAW_SIDE;
     if (fo && fo->max_tile && side > fo->max_tile)
         side = fo->max_tile;
     if (max_l > PASS_MAX_L)
