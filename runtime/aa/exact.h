@@ -76,6 +76,13 @@ typedef void (*gls_exact_pixel_fn)(void *user, int px, int py, const gls_exact_f
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user);
 /* The same on threads worker threads (0: one per online CPU, 1: none, on
  * the calling thread only); the frags are the same for any number. */
+/* gls_exact_visit with fn called on the worker threads, a band's pixels
+ * in order but the bands in any order and side by side: for an fn whose
+ * result for a pixel depends on that pixel's frags only and that writes
+ * nothing another pixel's call reads (the image's values: the pixel work
+ * is then spread over the cores too, not done on one thread while the
+ * others wait for it). */
+int gls_exact_visit_any_thread(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user);
 int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
                             unsigned threads);
 
@@ -84,8 +91,13 @@ int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_
  * affine in the image (flat, or interpolated linearly in screen space)
  * that is the region's exact mean.  A sampled triangle's (t->sampled)
  * region takes the mean of the calls at the pixel's lattice points in it
- * instead, the centroid's when none is. */
-typedef void (*gls_exact_shade_fn)(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4]);
+ * instead, the centroid's when none is.  The shader takes n points of one
+ * triangle at once, (x[p], y[p]) into rgba[p] (a pixel's lattice points
+ * in one region: what depends on the triangle only is looked up once).
+ * gls_exact_image and gls_exact_render call it from worker threads, side
+ * by side: it must only read what user points to. */
+typedef void (*gls_exact_shade_fn)(void *user, const gls_exact_tri *t, size_t i, const double *x, const double *y,
+                                   size_t n, float (*rgba)[4]);
 
 /* The box-filtered image: rgba (w * h * 4 floats, row 0 at the top) =
  * sum over each pixel's frags of area * colour(centroid) + (1 - sum of

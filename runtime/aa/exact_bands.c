@@ -1,6 +1,7 @@
 /* Exact coverage: the bands of rows on worker threads and handed out in
- * order (exact.h gls_exact_visit, gls_exact_visit_threads; exact_int.h
- * exact_visit_cands).  Each band is computed by exact_pixels.c's
+ * order, or by the workers themselves in any order (exact.h
+ * gls_exact_visit, gls_exact_visit_threads, gls_exact_visit_any_thread;
+ * exact_int.h exact_visit_cands).  Each band is computed by exact_pixels.c's
  * exact_band_compute. */
 #include <pthread.h>
 #include <stdlib.h>
@@ -42,6 +43,9 @@ static void band_free(band_slot *b)
 typedef struct {
     const exact_work *proto;
     const band_lists *bl;
+    gls_exact_pixel_fn fn; /* any_thread: the worker hands its band to fn  */
+    void *user;
+    int any_thread;
     int w, h, nbands, nslot;
     band_slot *slot;
     int *ready;         /* per slot: the band done in it + 1, 0: none      */
@@ -65,6 +69,8 @@ static void *band_worker(void *arg)
         int b = s->next++, k = b % s->nslot;
         pthread_mutex_unlock(&s->mu);
         int rc = exact_band_compute(&wk, s->bl, s->w, s->h, b * EXACT_BAND, &s->slot[k]);
+        if (rc == 0 && s->any_thread)
+            rc = band_emit(&wk, s->w, s->h, b * EXACT_BAND, &s->slot[k], s->fn, s->user);
         pthread_mutex_lock(&s->mu);
         s->rc[k] = rc, s->ready[k] = b + 1;
         pthread_cond_broadcast(&s->cv);
@@ -88,7 +94,7 @@ static unsigned auto_threads(unsigned threads, int nbands)
 }
 
 static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exact_pixel_fn fn, void *user,
-                     unsigned threads)
+                     unsigned threads, int any_thread)
 {
     int nbands = (h + EXACT_BAND - 1) / EXACT_BAND, rc = 0;
     threads = auto_threads(threads, nbands);
@@ -100,8 +106,11 @@ static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exa
         band_free(&b);
         return rc;
     }
-    sched s = {wk, bl, w, h, nbands, 2 * (int)threads, NULL, NULL, NULL, PTHREAD_MUTEX_INITIALIZER,
-               PTHREAD_COND_INITIALIZER, 0, 0, 0};
+    /* fn on the workers only for pixels' values (never the walk's
+     * candidates, which exact_edges.c takes in order) */
+    any_thread = any_thread && fn && !wk->cands;
+    sched s = {wk, bl, fn, user, any_thread, w, h, nbands, 2 * (int)threads, NULL, NULL, NULL,
+               PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, 0, 0};
     pthread_t th[EXACT_MAX_THREADS];
     unsigned started = 0;
     s.slot = calloc((size_t)s.nslot, sizeof *s.slot);
@@ -112,7 +121,7 @@ static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exa
             started++;
     if (!started) { /* no threads to be had: here */
         free(s.slot), free(s.ready), free(s.rc);
-        return run_bands(wk, bl, w, h, fn, user, 1);
+        return run_bands(wk, bl, w, h, fn, user, 1, 0);
     }
     for (int b = 0; b < nbands && rc == 0; b++) {
         int k = b % s.nslot;
@@ -120,7 +129,7 @@ static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exa
         while (s.ready[k] != b + 1)
             pthread_cond_wait(&s.cv, &s.mu);
         pthread_mutex_unlock(&s.mu);
-        rc = s.rc[k] ? s.rc[k] : band_emit(wk, w, h, b * EXACT_BAND, &s.slot[k], fn, user);
+        rc = s.rc[k] ? s.rc[k] : any_thread ? 0 : band_emit(wk, w, h, b * EXACT_BAND, &s.slot[k], fn, user);
         pthread_mutex_lock(&s.mu);
         s.ready[k] = 0, s.emitted = b + 1, s.stop = rc != 0;
         pthread_cond_broadcast(&s.cv);
@@ -139,7 +148,7 @@ static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exa
 }
 
 static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
-                 exact_cand_fn cands, unsigned threads)
+                 exact_cand_fn cands, unsigned threads, int any_thread)
 {
     if (w <= 0 || h <= 0)
         return 0;
@@ -154,7 +163,7 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
         band_lists bl = {0};
         rc = exact_band_lists_make(p, ok, n, (h + EXACT_BAND - 1) / EXACT_BAND, &bl);
         if (rc == 0)
-            rc = run_bands(&wk, &bl, w, h, fn, user, threads);
+            rc = run_bands(&wk, &bl, w, h, fn, user, threads, any_thread);
         free(bl.start), free(bl.idx);
     }
     exact_work_free(&wk);
@@ -164,16 +173,21 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
 
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
 {
-    return visit(t, n, w, h, fn, user, NULL, 0);
+    return visit(t, n, w, h, fn, user, NULL, 0, 0);
+}
+
+int gls_exact_visit_any_thread(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
+{
+    return visit(t, n, w, h, fn, user, NULL, 0, 1);
 }
 
 int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
                             unsigned threads)
 {
-    return visit(t, n, w, h, fn, user, NULL, threads);
+    return visit(t, n, w, h, fn, user, NULL, threads, 0);
 }
 
 int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user)
 {
-    return visit(t, n, w, h, NULL, user, fn, 0);
+    return visit(t, n, w, h, NULL, user, fn, 0, 0);
 }

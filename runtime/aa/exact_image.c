@@ -18,17 +18,15 @@ typedef struct {
     const uint16_t *idmap;
     gls_exact_cover *cover;
     int w;
-    int oom;            /* a pixel's scratch could not be allocated      */
+    int oom;            /* a pixel's scratch could not be allocated (set
+                           from any worker: atomically)                  */
     double lx[GLS_EXACT_SHADE_M], ly[GLS_EXACT_SHADE_M]; /* the lattice
                            points, pixel-local ([-0.5, 0.5)^2)           */
 } image_ctx;
 
-/* Per region of a pixel: its lattice points' colours summed and
- * counted, whether the alpha test has dropped it at the current point,
- * and its colour. */
+/* Per region of a pixel: whether the alpha test has dropped it at the
+ * current point, and its colour. */
 typedef struct region {
-    double sum[4];
-    int cnt;
     unsigned char skip;
     float col[4];
     /* its triangle's edge functions and 1/Zc times twice its signed
@@ -87,33 +85,51 @@ static size_t owner(const gls_exact_frag *f, size_t n, const region *r, double x
     return best;
 }
 
+/* The shader at one point */
+static void shade1(const image_ctx *c, size_t tri, double x, double y, float v[4])
+{
+    float o[1][4];
+    c->shade(c->user, &c->t[tri], tri, &x, &y, 1, o);
+    for (int q = 0; q < 4; q++)
+        v[q] = o[0][q];
+}
+
 /* The colours of the pixel's sampled regions (f[k] with a sampled
  * triangle): the mean of the shader at the lattice points each region
- * owns, into r[k].col; the centroid's where it owns none. */
+ * owns, into r[k].col; the centroid's where it owns none.  Each region's
+ * points go to the shader in one call, in lattice order, and are summed
+ * in that order. */
 static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r)
 {
-    for (size_t k = 0; k < n; k++)
-        r[k].cnt = 0, r[k].sum[0] = r[k].sum[1] = r[k].sum[2] = r[k].sum[3] = 0;
-    if (!(n == 1 && f[0].area == 1.0))
+    int full = n == 1 && f[0].area == 1.0;
+    unsigned char own[GLS_EXACT_SHADE_M];
+    if (!full)
         regions_prep(c, px, py, f, n, r);
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        size_t k = n == 1 && f[0].area == 1.0 ? 0 : owner(f, n, r, c->lx[m], c->ly[m], 0);
-        if (k == n || !(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
-            continue;
-        float v[4];
-        c->shade(c->user, &c->t[f[k].tri], f[k].tri, px + c->lx[m], py + c->ly[m], v);
-        for (int q = 0; q < 4; q++)
-            r[k].sum[q] += v[q];
-        r[k].cnt++;
+        size_t k = full ? 0 : owner(f, n, r, c->lx[m], c->ly[m], 0);
+        /* n > 64 regions: a point's owner index does not fit a byte, and
+         * such a pixel is shaded point by point below */
+        own[m] = k < 255 ? (unsigned char)k : 255;
     }
-    for (size_t k = 0; k < n; k++)
-        if ((c->t[f[k].tri].flags & GLS_EXACT_SAMPLED)) {
-            if (r[k].cnt)
+    for (size_t k = 0; k < n; k++) {
+        if (!(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
+            continue;
+        double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M], sum[4] = {0, 0, 0, 0};
+        float v[GLS_EXACT_SHADE_M][4];
+        size_t cnt = 0;
+        for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+            if (own[m] == k || (own[m] == 255 && k >= 255 && owner(f, n, r, c->lx[m], c->ly[m], 0) == k))
+                x[cnt] = px + c->lx[m], y[cnt++] = py + c->ly[m];
+        if (cnt) {
+            c->shade(c->user, &c->t[f[k].tri], f[k].tri, x, y, cnt, v);
+            for (size_t p = 0; p < cnt; p++)
                 for (int q = 0; q < 4; q++)
-                    r[k].col[q] = (float)(r[k].sum[q] / r[k].cnt);
-            else
-                c->shade(c->user, &c->t[f[k].tri], f[k].tri, f[k].cx, f[k].cy, r[k].col);
-        }
+                    sum[q] += v[p][q];
+            for (int q = 0; q < 4; q++)
+                r[k].col[q] = (float)(sum[q] / (double)cnt);
+        } else
+            shade1(c, f[k].tri, f[k].cx, f[k].cy, r[k].col);
+    }
 }
 
 /* The pixel's areas summed per id (a pixel shows few ids: a list, on
@@ -185,7 +201,7 @@ static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag
                 break;
             }
             if (c->shade)
-                c->shade(c->user, t, f[k].tri, x, y, v);
+                shade1(c, f[k].tri, x, y, v);
             else
                 for (int q = 0; q < 4; q++)
                     v[q] = t->rgba[q];
@@ -214,7 +230,7 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
      * allocated (a far hillside's slivers put hundreds in a pixel) */
     region stack_r[64], *r = stack_r;
     if ((holes || (any && c->shade)) && n > 64 && !(r = malloc(n * sizeof *r))) {
-        c->oom = 1;
+        __atomic_store_n(&c->oom, 1, __ATOMIC_RELAXED);
         return;
     }
     if (holes) {
@@ -235,7 +251,7 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
             for (int q = 0; q < 4; q++)
                 col[q] = r[k].col[q];
         else if (c->shade)
-            c->shade(c->user, t, f[k].tri, f[k].cx, f[k].cy, col);
+            shade1(c, f[k].tri, f[k].cx, f[k].cy, col);
         else
             for (int q = 0; q < 4; q++)
                 col[q] = t->rgba[q];
@@ -271,5 +287,8 @@ int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float
         gls_lattice_point(&l, (uint64_t)m, &x, &y);
         c.lx[m] = (double)x / (double)l.q - 0.5, c.ly[m] = (double)y / (double)l.q - 0.5;
     }
-    return gls_exact_visit(t, n, w, h, image_pixel, &c) || c.oom ? -1 : 0;
+    /* each pixel's value depends on its frags only and is written to its
+     * own place: the workers compute it (the shading is most of the work
+     * on textured scenes) */
+    return gls_exact_visit_any_thread(t, n, w, h, image_pixel, &c) || c.oom ? -1 : 0;
 }

@@ -175,17 +175,35 @@ void gls_exact_geom_free(gls_exact_geom *g)
     memset(g, 0, sizeof *g);
 }
 
-/* GL's perspective-correct weights of v's vertices at image point (x,
- * y): the barycentric coordinates of the point where the camera ray d
- * through (x, y) meets the triangle's plane, each the volume
- * det(d, P[k+1], P[k+2]) = d . C[k] over their sum */
-static void weights(const gls_exact_geom *g, const gls_exact_vcol *v, double x, double y, double w[3])
+/* GL's perspective-correct weights of v's vertices over the image: the
+ * barycentric coordinates of the point where the camera ray d through
+ * (x, y) meets the triangle's plane, each the volume det(d, P[k+1],
+ * P[k+2]) = d . C[k] over their sum.  d = ((x - cx - skew dy) / fx, dy,
+ * 1) with dy = (y - cy) / fy is affine in (x, y), so each d . C[k] is
+ * too: A[k] (x - cx) + B[k] (y - cy) + E[k], set up once for a
+ * triangle's points; a point then costs six multiply-adds and one
+ * division. */
+typedef struct {
+    double A[3], B[3], E[3];
+} persp;
+
+static void persp_make(const gls_exact_geom *g, const gls_exact_vcol *v, persp *q)
 {
-    double dy = (y - g->cy) / g->fy, d[3] = {(x - g->cx - g->skew * dy) / g->fx, dy, 1}, sum = 0;
+    for (int k = 0; k < 3; k++) {
+        q->A[k] = v->C[k][0] / g->fx;
+        q->B[k] = v->C[k][1] / g->fy - v->C[k][0] * g->skew / (g->fx * g->fy);
+        q->E[k] = v->C[k][2];
+    }
+}
+
+static void persp_weights(const gls_exact_geom *g, const persp *q, double x, double y, double w[3])
+{
+    double X = x - g->cx, Y = y - g->cy, sum = 0;
     for (int k = 0; k < 3; k++)
-        w[k] = d[0] * v->C[k][0] + d[1] * v->C[k][1] + d[2] * v->C[k][2], sum += w[k];
+        w[k] = q->A[k] * X + q->B[k] * Y + q->E[k], sum += w[k];
+    double inv = 1 / sum;
     for (int k = 0; k < 3; k++)
-        w[k] /= sum;
+        w[k] *= inv;
 }
 
 /* The texture's base level at (s, t) as GL samples it with GL_LINEAR and
@@ -198,14 +216,16 @@ static void texel(const gls_texture *tx, double s, double t, double out[4])
     double u = s * tx->width - 0.5, v = t * tx->height - 0.5;
     double fu = floor(u), fv = floor(v), a = u - fu, b = v - fv;
     int64_t W = tx->width, H = tx->height;
-    /* GL_REPEAT: the texel index modulo the size */
-    int64_t i0 = (int64_t)(fu - W * floor(fu / W)), j0 = (int64_t)(fv - H * floor(fv / H));
+    /* GL_REPEAT: the texel index modulo the size (inside the texture,
+     * the index itself: floor(fu / W) is 0 there, no division needed) */
+    int64_t i0 = fu >= 0 && fu < (double)W ? (int64_t)fu : (int64_t)(fu - W * floor(fu / W));
+    int64_t j0 = fv >= 0 && fv < (double)H ? (int64_t)fv : (int64_t)(fv - H * floor(fv / H));
     i0 = i0 < 0 ? 0 : i0 >= W ? W - 1 : i0, j0 = j0 < 0 ? 0 : j0 >= H ? H - 1 : j0;
-    int64_t i1 = (i0 + 1) % W, j1 = (j0 + 1) % H;
+    int64_t i1 = i0 + 1 == W ? 0 : i0 + 1, j1 = j0 + 1 == H ? 0 : j0 + 1;
     const uint8_t *r0 = tx->rgba + (size_t)(H - 1 - j0) * (size_t)W * 4, *r1 = tx->rgba + (size_t)(H - 1 - j1) * (size_t)W * 4;
+    double w00 = (1 - a) * (1 - b) / 255.0, w10 = a * (1 - b) / 255.0, w01 = (1 - a) * b / 255.0, w11 = a * b / 255.0;
     for (int q = 0; q < 4; q++)
-        out[q] = ((1 - a) * (1 - b) * r0[4 * i0 + q] + a * (1 - b) * r0[4 * i1 + q] + (1 - a) * b * r1[4 * i0 + q] +
-                  a * b * r1[4 * i1 + q]) / 255.0;
+        out[q] = w00 * r0[4 * i0 + q] + w10 * r0[4 * i1 + q] + w01 * r1[4 * i0 + q] + w11 * r1[4 * i1 + q];
 }
 
 static const float *vattr(const gls_scene *s, uint32_t v, size_t off)
@@ -275,37 +295,50 @@ static void light(const gls_exact_geom *g, const gls_exact_vcol *v, const double
     }
 }
 
-void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4])
+void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, const double *x, const double *y, size_t n,
+                          float (*rgba)[4])
 {
     const gls_exact_geom *g = user;
     const gls_exact_vcol *v = &g->v[i];
     if (!(t->flags & GLS_EXACT_SAMPLED) && !memcmp(v->rgba[0], v->rgba[1], sizeof v->rgba[0]) &&
         !memcmp(v->rgba[0], v->rgba[2], sizeof v->rgba[0])) {
-        memcpy(rgba, t->rgba, 4 * sizeof *rgba); /* flat: exact */
+        for (size_t p = 0; p < n; p++)
+            memcpy(rgba[p], t->rgba, 4 * sizeof *rgba[p]); /* flat: exact */
         return;
     }
-    double w[3], col[4], out[4];
-    weights(g, v, x, y, w);
-    for (int q = 0; q < 4; q++)
-        col[q] = w[0] * v->rgba[0][q] + w[1] * v->rgba[1][q] + w[2] * v->rgba[2][q];
+    /* what the points share, looked up once: the texture, its mode and
+     * the vertices' texture coordinates */
     const gls_drawkey *k = &g->s->chunks[v->chunk].key;
-    if (k->texture != GLS_NONE) {
-        double st[2] = {0, 0}, tc[4];
-        if (g->s->has_texcoord) /* else GL's current texture coordinate, (0, 0) */
-            for (int e = 0; e < 3; e++) {
-                const float *T = vattr(g->s, v->v + (uint32_t)e, g->s->texcoord_offset);
-                st[0] += w[e] * T[0], st[1] += w[e] * T[1];
-            }
-        texel(&g->tex[k->texture], st[0], st[1], tc);
+    const gls_texture *tex = k->texture != GLS_NONE ? &g->tex[k->texture] : NULL;
+    float T[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    if (tex && g->s->has_texcoord) /* else GL's current texture coordinate, (0, 0) */
+        for (int e = 0; e < 3; e++) {
+            const float *te = vattr(g->s, v->v + (uint32_t)e, g->s->texcoord_offset);
+            T[e][0] = te[0], T[e][1] = te[1];
+        }
+    int replace = k->mode == GLS_MODE_REPLACE;
+    persp pw;
+    persp_make(g, v, &pw);
+    for (size_t p = 0; p < n; p++) {
+        double w[3], col[4], out[4];
+        persp_weights(g, &pw, x[p], y[p], w);
         for (int q = 0; q < 4; q++)
-            col[q] = k->mode == GLS_MODE_REPLACE ? tc[q] : tc[q] * col[q];
+            col[q] = w[0] * v->rgba[0][q] + w[1] * v->rgba[1][q] + w[2] * v->rgba[2][q];
+        if (tex) {
+            double st[2] = {0, 0}, tc[4];
+            for (int e = 0; e < 3; e++)
+                st[0] += w[e] * T[e][0], st[1] += w[e] * T[e][1];
+            texel(tex, st[0], st[1], tc);
+            for (int q = 0; q < 4; q++)
+                col[q] = replace ? tc[q] : tc[q] * col[q];
+        }
+        memcpy(out, col, sizeof out);
+        if (g->s->lit)
+            light(g, v, w, col, out);
+        /* the 8-bit framebuffer clamps every sample */
+        for (int q = 0; q < 4; q++)
+            rgba[p][q] = (float)(out[q] < 0 ? 0 : out[q] > 1 ? 1 : out[q]);
     }
-    memcpy(out, col, sizeof out);
-    if (g->s->lit)
-        light(g, v, w, col, out);
-    /* the 8-bit framebuffer clamps every sample */
-    for (int q = 0; q < 4; q++)
-        rgba[q] = (float)(out[q] < 0 ? 0 : out[q] > 1 ? 1 : out[q]);
 }
 
 static double clamp01(float v) { return v < 0 ? 0 : v > 1 ? 1 : v; }

@@ -58,7 +58,8 @@ int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_texture
 void gls_exact_geom_free(gls_exact_geom *g);
 
 /* The shader of gls_exact_image for g (user = g). */
-void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4]);
+void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, const double *x, const double *y, size_t n,
+                          float (*rgba)[4]);
 
 /* The exact image (float RGBA) to the file formats: 8-bit RGBA and 16-bit
  * RGB rounded to nearest, float RGB as it is; values clamped to 0..1. */

@@ -418,13 +418,16 @@ static void test_exact_image_flat(void)
 /* A sampled triangle's shader for the tests below: red the point's x
  * within its pixel (0..1) squared; id 1 (alpha-tested): 0.25 with the
  * alpha *user, id 2: 1, opaque. */
-static void shade_test(void *user, const gls_exact_tri *t, size_t i, double x, double y, float rgba[4])
+static void shade_test(void *user, const gls_exact_tri *t, size_t i, const double *x, const double *y, size_t n,
+                       float (*rgba)[4])
 {
     (void)i, (void)y;
-    double u = x - floor(x + 0.5) + 0.5;
-    rgba[0] = t->id == 1 ? 0.25f : t->id == 2 ? 1.0f : (float)(u * u);
-    rgba[1] = rgba[2] = 0;
-    rgba[3] = t->id == 1 ? *(const float *)user : 1;
+    for (size_t p = 0; p < n; p++) {
+        double u = x[p] - floor(x[p] + 0.5) + 0.5;
+        rgba[p][0] = t->id == 1 ? 0.25f : t->id == 2 ? 1.0f : (float)(u * u);
+        rgba[p][1] = rgba[p][2] = 0;
+        rgba[p][3] = t->id == 1 ? *(const float *)user : 1;
+    }
 }
 
 /* A sampled region's colour is the mean of the shader at the pixel's
@@ -577,6 +580,49 @@ static void test_exact_threads(void)
     }
 }
 
+/* gls_exact_visit_any_thread (the image's way: each pixel's value from
+ * its own frags, computed on the workers): every pixel handed out exactly
+ * once, with the frags the ordered walk hands it.  Per pixel, a hash of
+ * its frags and a count of calls (each pixel written by the one thread
+ * that has its band). */
+typedef struct {
+    uint64_t *hash;
+    int *calls;
+    int w;
+} pixel_hashes;
+
+static void hash_each_pixel(void *user, int px, int py, const gls_exact_frag *f, size_t n)
+{
+    pixel_hashes *ph = user;
+    frag_hash one = {14695981039346656037ull, -1, 1, ph->w};
+    hash_pixel(&one, px, py, f, n);
+    ph->hash[py * ph->w + px] = one.hash;
+    ph->calls[py * ph->w + px]++;
+}
+
+static void test_exact_any_thread(void)
+{
+    enum { N = 300, W = 37, H = 101 };
+    static gls_exact_tri t[N];
+    static uint64_t h0[W * H], h1[W * H];
+    static int c0[W * H], c1[W * H];
+    for (int k = 0; k < N; k++) {
+        double x = urand() * W, y = urand() * H, s = 1 + urand() * 12;
+        t[k] = tri(x, y, x + s * (urand() - 0.5), y + s * (urand() - 0.5), x + s * (urand() - 0.5),
+                   y + s * (urand() - 0.5), 1);
+        for (int q = 0; q < 3; q++)
+            t[k].iz[q] = 0.5 + urand();
+    }
+    pixel_hashes a = {h0, c0, W}, b = {h1, c1, W};
+    CHECK(gls_exact_visit(t, N, W, H, hash_each_pixel, &a) == 0);
+    CHECK(gls_exact_visit_any_thread(t, N, W, H, hash_each_pixel, &b) == 0);
+    int once = 1, same = 1;
+    for (int k = 0; k < W * H; k++)
+        once &= c0[k] == 1 && c1[k] == 1, same &= h0[k] == h1[k];
+    CHECK_MSG(once, "a pixel handed out other than once");
+    CHECK_MSG(same, "a pixel's frags differ from the ordered walk's");
+}
+
 /* Canonical orientation of shared edges (exact_int.h): two triangles on
  * either side of one long edge, which they traverse in opposite
  * directions, their far vertices L px away, so that every pixel of the
@@ -639,5 +685,6 @@ int main(void)
     RUN(test_exact_image_holes_behind_cover);
     RUN(test_exact_coverage);
     RUN(test_exact_threads);
+    RUN(test_exact_any_thread);
     CHECK_EXIT();
 }
