@@ -6,6 +6,7 @@
  * pixel's lattice points in the region, and the uncovered rest the
  * background's. */
 #include <stdlib.h>
+#include <string.h>
 #include "exact_int.h"
 #include "lattice.h"
 
@@ -182,35 +183,67 @@ static void pixel_cover(const image_ctx *c, const gls_exact_frag *f, size_t n, g
 
 /* A pixel an alpha-tested triangle shows in (GLS_EXACT_HOLES):
  * the mean over the lattice points of the nearest surface there whose
- * alpha passes (GL's alpha test: at least 0.5), or the background. */
+ * alpha passes (GL's alpha test: at least 0.5), or the background.  The
+ * nearest surface at each point is shaded first, a region's points in
+ * one call; a point whose alpha fails is then followed on, alone, to the
+ * surfaces behind. */
 static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r,
                         double acc[4])
 {
+    size_t own[GLS_EXACT_SHADE_M];
+    float v[GLS_EXACT_SHADE_M][4];
     regions_prep(c, px, py, f, n, r);
+    for (size_t k = 0; k < n; k++)
+        r[k].skip = 0;
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+        own[m] = owner(f, n, r, c->lx[m], c->ly[m], 1);
+    for (size_t k = 0; k < n; k++) { /* each region's first-hit points */
+        const gls_exact_tri *t = &c->t[f[k].tri];
+        double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M];
+        int at[GLS_EXACT_SHADE_M];
+        size_t cnt = 0;
+        for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+            if (own[m] == k)
+                x[cnt] = px + c->lx[m], y[cnt] = py + c->ly[m], at[cnt++] = m;
+        if (!cnt)
+            continue;
+        if (c->shade) {
+            float o[GLS_EXACT_SHADE_M][4];
+            c->shade(c->user, t, f[k].tri, x, y, cnt, o);
+            for (size_t p = 0; p < cnt; p++)
+                memcpy(v[at[p]], o[p], sizeof v[0]);
+        } else
+            for (size_t p = 0; p < cnt; p++)
+                memcpy(v[at[p]], t->rgba, sizeof v[0]);
+    }
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        for (size_t k = 0; k < n; k++)
-            r[k].skip = 0;
-        double x = px + c->lx[m], y = py + c->ly[m];
-        float v[4];
-        for (;;) {
-            size_t k = owner(f, n, r, c->lx[m], c->ly[m], 1);
-            const gls_exact_tri *t = k < n ? &c->t[f[k].tri] : NULL;
-            if (!t) {
-                for (int q = 0; q < 4; q++)
-                    v[q] = c->bg[q];
-                break;
-            }
-            if (c->shade)
-                shade1(c, f[k].tri, x, y, v);
-            else
-                for (int q = 0; q < 4; q++)
-                    v[q] = t->rgba[q];
-            if (!(t->flags & GLS_EXACT_HOLES) || v[3] >= 0.5f)
-                break;
+        size_t k = own[m];
+        if (k == n)
+            memcpy(v[m], c->bg, sizeof v[m]);
+        else if ((c->t[f[k].tri].flags & GLS_EXACT_HOLES) && v[m][3] < 0.5f) {
+            /* dropped by the alpha test: the surfaces behind, in turn */
+            double x = px + c->lx[m], y = py + c->ly[m];
+            for (size_t q = 0; q < n; q++)
+                r[q].skip = 0;
             r[k].skip = 1;
+            for (;;) {
+                k = owner(f, n, r, c->lx[m], c->ly[m], 1);
+                const gls_exact_tri *t = k < n ? &c->t[f[k].tri] : NULL;
+                if (!t) {
+                    memcpy(v[m], c->bg, sizeof v[m]);
+                    break;
+                }
+                if (c->shade)
+                    shade1(c, f[k].tri, x, y, v[m]);
+                else
+                    memcpy(v[m], t->rgba, sizeof v[m]);
+                if (!(t->flags & GLS_EXACT_HOLES) || v[m][3] >= 0.5f)
+                    break;
+                r[k].skip = 1;
+            }
         }
         for (int q = 0; q < 4; q++)
-            acc[q] += v[q] / GLS_EXACT_SHADE_M;
+            acc[q] += v[m][q] / GLS_EXACT_SHADE_M;
     }
 }
 
