@@ -137,6 +137,10 @@ struct exact_work {
     size_t cap[3];
     exact_cand_fn cands; /* exact_visit_cands: the visible candidates     */
     void *cuser;
+    double (*box)[4];   /* per candidate of the pixel being resolved: the
+                           box of its part of the square, pixel-local
+                           (x0, x1, y0, y1); x0 > x1 when it has none      */
+    size_t capbox;
 };
 
 /* Each band's triangles, in index order (so candidates come in the same

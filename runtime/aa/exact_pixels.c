@@ -65,7 +65,8 @@ static int grow(void **p, size_t *cap, size_t need, size_t size)
 }
 
 /* Remove from each piece of w->cur the convex region inside all of the
- * lines l[0..nl) (their kept halves), into w->next; then swap. */
+ * lines l[0..nl) (their kept halves), into w->next; then swap.  1 when
+ * the pieces changed, 0 when not, -1 when out of memory. */
 static int subtract(exact_work *w, const exact_line *l, int nl)
 {
     /* the common case, a region beyond one of its lines from every piece,
@@ -119,7 +120,44 @@ static int subtract(exact_work *w, const exact_line *l, int nl)
     }
     exact_pieces t = w->cur;
     w->cur = w->next, w->next = t;
-    return 0;
+    return 1;
+}
+
+/* The part of T's triangle in the square of pixel (i, j), pixel-local,
+ * into poly (8 vertices): the square cut by the outside of each edge, as
+ * subtract would cut it.  Its vertex count, 0 when it has no area. */
+static size_t tri_in_square(const exact_prep *T, int inside, double i, double j, exact_pt poly[2][8], int *at)
+{
+    static const exact_pt square[4] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+    exact_pt rest[8];
+    size_t n = 4;
+    *at = 0;
+    memcpy(poly[0], square, sizeof square);
+    for (int k = 0; k < 3 && n && !inside; k++) {
+        exact_line o = exact_line_local(&T->e[k], i, j);
+        o.s = -o.s;
+        int side = exact_line_side(poly[*at], n, &o);
+        if (side < 0)
+            continue; /* wholly inside this edge */
+        size_t nin, nout = 0;
+        if (side == 0)
+            exact_clip(poly[*at], n, &o, rest, &nin, poly[1 - *at], &nout);
+        if (nout && exact_area(poly[1 - *at], nout, NULL, NULL) > 0)
+            *at = 1 - *at, n = nout;
+        else
+            n = 0;
+    }
+    return n;
+}
+
+/* the box of n vertices (x0, x1, y0, y1); x0 > x1 for none */
+static void box_of(const exact_pt *v, size_t n, double b[4])
+{
+    b[0] = b[2] = INFINITY, b[1] = b[3] = -INFINITY;
+    for (size_t k = 0; k < n; k++) {
+        b[0] = v[k].x < b[0] ? v[k].x : b[0], b[1] = v[k].x > b[1] ? v[k].x : b[1];
+        b[2] = v[k].y < b[2] ? v[k].y : b[2], b[3] = v[k].y > b[3] ? v[k].y : b[3];
+    }
 }
 
 /* 1 when T and U have an edge with the same two endpoints (so the same
@@ -139,47 +177,39 @@ static int share_edge_apart(const exact_prep *T, const exact_prep *U)
 }
 
 /* The visible part of candidate c[t] in pixel (i, j), against the others
- * (sorted front to back by their nearest 1/Zc): its area and centroid. */
+ * (sorted front to back by their nearest 1/Zc): its area and centroid.
+ * w->box holds each candidate's box in the square (resolve). */
 static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, double i, double j, gls_exact_frag *f)
 {
-    static const exact_pt square[4] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
     const exact_prep *T = &w->prep[c[t].tri];
     exact_pieces_clear(&w->cur);
     exact_line l[4];
     /* the square minus the outside of each edge: what is inside all.  One
-     * convex piece, clipped here on the stack (4 + 3 vertices at most);
-     * the same steps, the same bits, as subtract with each edge's outside
+     * convex piece, clipped on the stack (4 + 3 vertices at most); the
+     * same steps, the same bits, as subtract with each edge's outside
      * would take */
-    exact_pt poly[2][8], rest[8];
-    size_t n = 4;
-    int at = 0;
-    memcpy(poly[0], square, sizeof square);
-    for (int k = 0; k < 3 && n && !c[t].inside; k++) {
-        exact_line o = exact_line_local(&T->e[k], i, j);
-        o.s = -o.s;
-        int side = exact_line_side(poly[at], n, &o);
-        if (side < 0)
-            continue; /* wholly inside this edge */
-        size_t nin, nout = 0;
-        if (side == 0)
-            exact_clip(poly[at], n, &o, rest, &nin, poly[1 - at], &nout);
-        if (nout && exact_area(poly[1 - at], nout, NULL, NULL) > 0)
-            at = 1 - at, n = nout;
-        else
-            n = 0;
-    }
+    exact_pt poly[2][8];
+    int at;
+    size_t n = tri_in_square(T, c[t].inside, i, j, poly, &at);
     if (n && exact_pieces_add(&w->cur, poly[at], n))
         return -1;
+    /* the box of what is left of T: another candidate whose part of the
+     * square lies beyond it (or touches it along a line) cuts nothing
+     * away.  The triangles' own boxes say little in a pixel of far
+     * slivers, each spanning pixels; their parts in the square are
+     * often stacked apart (make bench-aa's road frame) */
+    double cb[4];
+    memcpy(cb, w->box[t], sizeof cb);
     for (size_t u = 0; u < nc && w->cur.np; u++) {
         if (u == t || (w->tris[c[u].tri].flags & GLS_EXACT_HOLES))
             continue; /* an alpha-tested one hides nothing (exact.h) */
         if (c[u].zmax < c[t].zmin)
             break; /* this one and all after it are behind everywhere */
         const exact_prep *U = &w->prep[c[u].tri];
-        /* boxes apart (within the square), or on the two sides of an edge
-         * they share (a mesh's neighbours): U hides nothing of T */
-        if (U->xmin >= T->xmax || U->xmax <= T->xmin || U->ymin >= T->ymax || U->ymax <= T->ymin ||
-            share_edge_apart(T, U))
+        const double *ub = w->box[u];
+        /* parts of the square apart, or on the two sides of an edge they
+         * share (a mesh's neighbours): U hides nothing of T */
+        if (ub[0] >= cb[1] || ub[1] <= cb[0] || ub[2] >= cb[3] || ub[3] <= cb[2] || share_edge_apart(T, U))
             continue;
         int nl = 0;
         if (!c[u].inside)
@@ -197,8 +227,11 @@ static int visible(exact_work *w, const exact_cand *c, size_t nc, size_t t, doub
             exact_pieces_clear(&w->cur);
             break;
         }
-        if (subtract(w, l, nl))
+        int changed = subtract(w, l, nl);
+        if (changed < 0)
             return -1;
+        if (changed) /* what is left of T: its box anew */
+            box_of(w->cur.v, w->cur.nv, cb);
     }
     double a = 0, mx = 0, my = 0;
     for (size_t k = 0; k < w->cur.np; k++) {
@@ -228,6 +261,14 @@ static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, gls_ex
         return 0;
     }
     qsort(c, nc, sizeof *c, cand_order);
+    if (grow((void **)&w->box, &w->capbox, nc, sizeof *w->box))
+        return -1;
+    for (size_t k = 0; k < nc; k++) {
+        exact_pt poly[2][8];
+        int at;
+        size_t n = tri_in_square(&w->prep[c[k].tri], c[k].inside, i, j, poly, &at);
+        box_of(poly[at], n, w->box[k]);
+    }
     /* visible parts are disjoint: once those found fill the square (to
      * EXACT_FULL), the rest have none.  Without this a pixel on a
      * silhouette cut every hidden layer behind it against every one in
@@ -379,5 +420,6 @@ int exact_band_compute(exact_work *wk, const band_lists *bl, int w, int h, int j
 void exact_work_free(exact_work *wk)
 {
     exact_pieces_free(&wk->cur), exact_pieces_free(&wk->next);
+    free(wk->box);
     free(wk->buf[0]), free(wk->buf[1]), free(wk->buf[2]);
 }
