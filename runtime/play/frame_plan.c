@@ -67,6 +67,7 @@ static void plan_passes(gls_frame_plan *fp, const gls_plan_inputs *in, const gls
         fp->passes |= GLS_PASS_FLOW_NEXT;
     if (fp->boxes)
         fp->passes |= GLS_PASS_BOXES_ALONE;
+    fp->gl = (fp->passes & ~(unsigned)GLS_PASS_EXACT) != 0 || fp->lens || fp->ex.rolling;
     if (!(out & GLS_OUT_IMAGE))
         fp->image = GLS_IMAGE_NONE;
     else if (c->sensor.on)
@@ -143,7 +144,9 @@ void gls_frame_plan_explain(FILE *out, const gls_frame_plan *fp, const gls_aa_pl
     fprintf(out, "%s\n", fp->passes ? "" : " none");
     if (fp->exact)
         fprintf(out, "  exact coverage: each pixel the exact areas of what is visible in it (box filter, double "
-                     "precision, CPU); no samples, no accumulator\n");
+                     "precision, CPU); no samples, no accumulator%s\n",
+                fp->gl ? "" : "; no GL pass (a run whose frames all need none creates no GL context and uploads "
+                              "nothing)");
     else if (!fp->aa)
         fprintf(out, "  passes: 1 per camera and frame (no anti-aliasing), jitter (0, 0); no accumulator\n");
     else

@@ -115,6 +115,11 @@ typedef struct {
     /* what the centre and ground-truth passes read back */
     int rgba, z, ids, normals, truth_z;
     int flow, boxes;       /* flow and boxes are computed this frame        */
+    int gl;                /* the frame needs GL: a pass other than exact
+                              coverage's, a lens or a rolling shutter (their
+                              set-up reads the renderer); exact coverage
+                              alone runs on the CPU, and a run whose frames
+                              need none creates no GL context (player.c)   */
     gls_image_source image;
     uint64_t bytes[GLS_BUF_COUNT]; /* each buffer's size; 0: not needed    */
     uint64_t total;        /* their sum                                     */

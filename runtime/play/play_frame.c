@@ -404,7 +404,7 @@ int play_camera(session *s, const gls_camera *c, const char *name, uint32_t fram
         memset(cnt, 0, sizeof *cnt), cnt->frames = 1;
     int rc = -1;
     s->name_now = name;
-    if (gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
+    if (fp->gl && gls_renderer_set_size(r, c->width, c->height, err, sizeof err)) {
         snprintf(msg, sizeof msg, "glsplay: error: camera %s: %s; %s", name, err, lower_size);
         goto out;
     }

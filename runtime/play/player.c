@@ -43,8 +43,8 @@ struct gls_play_run {
     gls_box_names box_names;
     gls_gt_table gt;
     double baseline;      /* disparity: B of the rectified pair            */
-    gls_glctx *ctx;
-    gls_renderer *r;
+    gls_glctx *ctx;       /* NULL when no frame needs GL (run_needs_gl)     */
+    gls_renderer *r;      /* NULL with it                                  */
     gls_writer *wr;
     size_t *made;         /* per camera: what gls_mkdir_p_made made         */
     gls_progress_json json;
@@ -201,6 +201,22 @@ static int run_make_dirs(run *u)
     return 0;
 }
 
+/* Whether any camera's frames need GL (gls_frame_plan.gl): planned as
+ * play_camera plans them, with a next row so that flow, when asked,
+ * counts. */
+static int run_needs_gl(const run *u)
+{
+    const gls_play_opts *o = u->o;
+    gls_plan_inputs pin = {o->outputs, o->image_format, &u->plan, u->ms.moving};
+    for (size_t i = 0; i < o->ncameras; i++) {
+        gls_frame_plan fp;
+        gls_frame_plan_make(&fp, &pin, &u->cams[i], 1);
+        if (fp.gl)
+            return 1;
+    }
+    return 0;
+}
+
 /* The renderer and the writer.  The bundle's texels and code are on the
  * GPU side or in the scene once the renderer exists: it is freed before
  * the per-camera buffers are allocated.  0, or 1. */
@@ -208,8 +224,8 @@ static int run_start(run *u)
 {
     const gls_play_opts *o = u->o;
     char err[1024];
-    u->r = gls_renderer_create(u->ctx, u->b, &u->scene, err, sizeof err);
-    if (!u->r) {
+    u->r = u->ctx ? gls_renderer_create(u->ctx, u->b, &u->scene, err, sizeof err) : NULL;
+    if (u->ctx && !u->r) {
         fprintf(u->errs, "glsplay: error: %s\n", err);
         return 1;
     }
@@ -220,11 +236,13 @@ static int run_start(run *u)
         gls_bundle_free(u->b);
         u->b = NULL;
     }
-    gls_renderer_set_background(u->r, o->background);
-    gls_renderer_set_occlusion(u->r, (gls_occlusion_mode)o->occlusion);
-    if (o->anisotropy > 1 && gls_renderer_set_anisotropy(u->r, o->anisotropy, err, sizeof err)) {
-        fprintf(u->errs, "glsplay: error: %s\n", err);
-        return 1;
+    if (u->r) {
+        gls_renderer_set_background(u->r, o->background);
+        gls_renderer_set_occlusion(u->r, (gls_occlusion_mode)o->occlusion);
+        if (o->anisotropy > 1 && gls_renderer_set_anisotropy(u->r, o->anisotropy, err, sizeof err)) {
+            fprintf(u->errs, "glsplay: error: %s\n", err);
+            return 1;
+        }
     }
     u->wr = gls_writer_create(o->writer_threads, err, sizeof err);
     if (!u->wr) {
@@ -328,11 +346,15 @@ static int run_begin(run *u, const gls_play_opts *o, FILE *out, FILE *errs)
     }
     if (run_load_cameras(u) || run_load_scene(u))
         return 1;
-    /* the context before the plan, which reports it */
-    u->ctx = gls_glctx_create(o->backend, err, sizeof err);
-    if (!u->ctx) {
-        fprintf(errs, "glsplay: error: %s\n", err);
-        return 1;
+    /* the context before the plan, which reports it; none when no
+     * camera's frames need GL (exact coverage alone: the CPU draws it),
+     * unless --explain asks what GL there is */
+    if (o->explain || run_needs_gl(u)) {
+        u->ctx = gls_glctx_create(o->backend, err, sizeof err);
+        if (!u->ctx) {
+            fprintf(errs, "glsplay: error: %s\n", err);
+            return 1;
+        }
     }
     u->times.context = gls_now();
     if (o->explain)
@@ -392,7 +414,7 @@ int gls_play_render_frame(gls_play_run *u, uint64_t frame, struct gls_frame_sink
     u->errs = u->ses.errs = errs;
     o->sink = sink;
     /* this thread's current context may be another run's or player's */
-    if (gls_glctx_make_current(u->ctx)) {
+    if (u->ctx && gls_glctx_make_current(u->ctx)) {
         fprintf(errs, "glsplay: error: cannot make the run's GL context current on this thread (a run renders "
                       "on the thread that began it)\n");
         return 1;

@@ -225,3 +225,27 @@ PYEOF
 rc=$?
 [ $rc -eq 2 ] && grep -q "^glsplay: error: --outputs edge_segments needs --aa exact" "$t/err" &&
     [ ! -e "$t/ns" ] && ok exact_edge_segments_needs_exact || fail exact_edge_segments_needs_exact "exit $rc: $(cat "$t/err")"
+# A run whose frames need no GL pass (exact coverage alone) creates no GL
+# context (spec/antialiasing.md "Exact coverage in glsplay"): with EGL's
+# driver made unloadable, --aa exact still renders, the same pixels, and
+# the frame plan's exact line says so; depth (a GL pass) fails there, so
+# the driver really was unloadable.  Skipped where --backend egl does not
+# render at all (a build or machine without EGL).
+if "$PLAY" "$t/vc.glsb" --camera "$t/c.cam" --aa exact --backend egl --outputs image -o "$t/gl_ok" 2>"$t/err"; then
+    LIBGL_DRIVERS_PATH="$t/no_drivers" "$PLAY" "$t/vc.glsb" --camera "$t/c.cam" --aa exact --backend egl --outputs image \
+        -o "$t/gl_none" 2>"$t/err"
+    rc=$?
+    LIBGL_DRIVERS_PATH="$t/no_drivers" "$PLAY" "$t/vc.glsb" --camera "$t/c.cam" --aa exact --backend egl \
+        --outputs image,depth -o "$t/gl_depth" 2>"$t/err2"
+    rc2=$?
+    [ $rc -eq 0 ] && [ $rc2 -ne 0 ] && cmp -s "$t/gl_ok/c/image_000000.png" "$t/gl_none/c/image_000000.png" &&
+        ok exact_without_gl_context ||
+        fail exact_without_gl_context "exit $rc (image) and $rc2 (image and depth, which needs GL): $(cat "$t/err" "$t/err2" | head -3)"
+    "$PLAY" "$t/vc.glsb" --camera "$t/c.cam" --aa exact --outputs image --explain >"$t/ex_nogl" 2>&1
+    "$PLAY" "$t/vc.glsb" --camera "$t/c.cam" --aa exact --outputs image,depth --explain >"$t/ex_gl" 2>&1
+    grep -q "^  exact coverage: .*; no GL pass (a run whose frames all need none creates no GL context" "$t/ex_nogl" &&
+        ! grep -q "no GL pass" "$t/ex_gl" && ok exact_explain_no_gl ||
+        fail exact_explain_no_gl "$(grep 'exact coverage' "$t/ex_nogl" "$t/ex_gl")"
+else
+    echo "# exact_without_gl_context: skipped (--backend egl does not render here: $(head -1 "$t/err"))"
+fi
