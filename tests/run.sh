@@ -12,7 +12,7 @@
 #     prefixed "asan:", but for the scripts marked "# sanitizers: not
 #     rerun" (they check the sources, the docs or the build itself);
 #   - every fuzz target replays its corpus and regressions, then fuzzes for
-#     GLS_FUZZ_SECONDS (default 60) under ASan+UBSan (tests/fuzz/run.sh),
+#     GLS_FUZZ_SECONDS (default 30) under ASan+UBSan (tests/fuzz/run.sh),
 #     GLS_FUZZ_JOBS (default 2) targets at a time;
 #   - glsplay renders the demo once under valgrind: no errors, no leaks
 #     outside Mesa (tests/valgrind.supp).
@@ -83,7 +83,7 @@ if [ "$CI" = true ] || [ "$GLS_FULL" = 1 ]; then
     if make --no-print-directory -s -j2 fuzz-build >build-fuzz.log 2>&1; then
         export GLS_FUZZ_JOBS=${GLS_FUZZ_JOBS:-2} # two targets at a time: the CI machine has 2 cores
         sh tests/fuzz/run.sh 0 2>&1 | sed 's/^ok fuzz_/ok fuzz_replay_/; s/^FAIL fuzz_/FAIL fuzz_replay_/' | tee -a "$log"
-        sh tests/fuzz/run.sh "${GLS_FUZZ_SECONDS:-60}" 2>&1 | tee -a "$log"
+        sh tests/fuzz/run.sh "${GLS_FUZZ_SECONDS:-30}" 2>&1 | tee -a "$log"
     else
         tail -20 build-fuzz.log
         echo "FAIL fuzz_build: see build-fuzz.log" | tee -a "$log"
