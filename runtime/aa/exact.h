@@ -76,6 +76,8 @@ typedef void (*gls_exact_pixel_fn)(void *user, int px, int py, const gls_exact_f
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user);
 /* The same on threads worker threads (0: one per online CPU, 1: none, on
  * the calling thread only); the frags are the same for any number. */
+int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
+                            unsigned threads);
 /* gls_exact_visit with fn called on the worker threads, a band's pixels
  * in order but the bands in any order and side by side: for an fn whose
  * result for a pixel depends on that pixel's frags only and that writes
@@ -83,8 +85,6 @@ int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pi
  * is then spread over the cores too, not done on one thread while the
  * others wait for it). */
 int gls_exact_visit_any_thread(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user);
-int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
-                            unsigned threads);
 
 /* A region's colour: the colour of triangle t (index i) at image point
  * (x, y), the centroid of what is visible of it in a pixel.  For colour

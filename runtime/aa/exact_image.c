@@ -95,41 +95,57 @@ static void shade1(const image_ctx *c, size_t tri, double x, double y, float v[4
         v[q] = o[0][q];
 }
 
+/* The shader at the lattice points m that region k owns (own[m] == k),
+ * in one call, into v[m] (the flat colour without a shader); their count. */
+static size_t shade_owned(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t k, const size_t *own,
+                          float (*v)[4])
+{
+    const gls_exact_tri *t = &c->t[f[k].tri];
+    double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M];
+    int at[GLS_EXACT_SHADE_M];
+    size_t cnt = 0;
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+        if (own[m] == k)
+            x[cnt] = px + c->lx[m], y[cnt] = py + c->ly[m], at[cnt++] = m;
+    if (cnt && c->shade) {
+        float o[GLS_EXACT_SHADE_M][4];
+        c->shade(c->user, t, f[k].tri, x, y, cnt, o);
+        for (size_t p = 0; p < cnt; p++)
+            memcpy(v[at[p]], o[p], sizeof v[0]);
+    } else
+        for (size_t p = 0; p < cnt; p++)
+            memcpy(v[at[p]], t->rgba, sizeof v[0]);
+    return cnt;
+}
+
 /* The colours of the pixel's sampled regions (f[k] with a sampled
  * triangle): the mean of the shader at the lattice points each region
- * owns, into r[k].col; the centroid's where it owns none.  Each region's
- * points go to the shader in one call, in lattice order, and are summed
- * in that order. */
+ * owns, into r[k].col, summed in lattice order; the centroid's where it
+ * owns none. */
 static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r)
 {
     int full = n == 1 && f[0].area == 1.0;
-    unsigned char own[GLS_EXACT_SHADE_M];
+    size_t own[GLS_EXACT_SHADE_M];
+    float v[GLS_EXACT_SHADE_M][4];
     if (!full)
         regions_prep(c, px, py, f, n, r);
-    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        size_t k = full ? 0 : owner(f, n, r, c->lx[m], c->ly[m], 0);
-        /* n > 64 regions: a point's owner index does not fit a byte, and
-         * such a pixel is shaded point by point below */
-        own[m] = k < 255 ? (unsigned char)k : 255;
-    }
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+        own[m] = full ? 0 : owner(f, n, r, c->lx[m], c->ly[m], 0);
     for (size_t k = 0; k < n; k++) {
         if (!(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
             continue;
-        double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M], sum[4] = {0, 0, 0, 0};
-        float v[GLS_EXACT_SHADE_M][4];
-        size_t cnt = 0;
-        for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
-            if (own[m] == k || (own[m] == 255 && k >= 255 && owner(f, n, r, c->lx[m], c->ly[m], 0) == k))
-                x[cnt] = px + c->lx[m], y[cnt++] = py + c->ly[m];
-        if (cnt) {
-            c->shade(c->user, &c->t[f[k].tri], f[k].tri, x, y, cnt, v);
-            for (size_t p = 0; p < cnt; p++)
-                for (int q = 0; q < 4; q++)
-                    sum[q] += v[p][q];
-            for (int q = 0; q < 4; q++)
-                r[k].col[q] = (float)(sum[q] / (double)cnt);
-        } else
+        size_t cnt = shade_owned(c, px, py, f, k, own, v);
+        if (!cnt) {
             shade1(c, f[k].tri, f[k].cx, f[k].cy, r[k].col);
+            continue;
+        }
+        double sum[4] = {0, 0, 0, 0};
+        for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+            if (own[m] == k)
+                for (int q = 0; q < 4; q++)
+                    sum[q] += v[m][q];
+        for (int q = 0; q < 4; q++)
+            r[k].col[q] = (float)(sum[q] / (double)cnt);
     }
 }
 
@@ -197,25 +213,8 @@ static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag
         r[k].skip = 0;
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
         own[m] = owner(f, n, r, c->lx[m], c->ly[m], 1);
-    for (size_t k = 0; k < n; k++) { /* each region's first-hit points */
-        const gls_exact_tri *t = &c->t[f[k].tri];
-        double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M];
-        int at[GLS_EXACT_SHADE_M];
-        size_t cnt = 0;
-        for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
-            if (own[m] == k)
-                x[cnt] = px + c->lx[m], y[cnt] = py + c->ly[m], at[cnt++] = m;
-        if (!cnt)
-            continue;
-        if (c->shade) {
-            float o[GLS_EXACT_SHADE_M][4];
-            c->shade(c->user, t, f[k].tri, x, y, cnt, o);
-            for (size_t p = 0; p < cnt; p++)
-                memcpy(v[at[p]], o[p], sizeof v[0]);
-        } else
-            for (size_t p = 0; p < cnt; p++)
-                memcpy(v[at[p]], t->rgba, sizeof v[0]);
-    }
+    for (size_t k = 0; k < n; k++) /* each region's first-hit points */
+        shade_owned(c, px, py, f, k, own, v);
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
         size_t k = own[m];
         if (k == n)

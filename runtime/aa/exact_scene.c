@@ -206,11 +206,6 @@ static void persp_weights(const gls_exact_geom *g, const persp *q, double x, dou
         w[k] *= inv;
 }
 
-/* The texture's base level at (s, t) as GL samples it with GL_LINEAR and
- * GL_REPEAT (render.c): texel centres at (i + 1/2) / W, t = 0 the image's
- * bottom row (render.c uploads bottom row first), 8-bit texels / 255.
- * The sampled reference's samples see the texture magnified, so GL takes
- * the base level there; a one-sample pass minifying it takes a mipmap. */
 /* k / 255 for each 8-bit value k, as GL reads an RGBA8 texel */
 static const double unit8[256] = {
 #define U4(k) (k) / 255.0, (k + 1) / 255.0, (k + 2) / 255.0, (k + 3) / 255.0
@@ -222,6 +217,11 @@ static const double unit8[256] = {
 #undef U4
 };
 
+/* The texture's base level at (s, t) as GL samples it with GL_LINEAR and
+ * GL_REPEAT (render.c): texel centres at (i + 1/2) / W, t = 0 the image's
+ * bottom row (render.c uploads bottom row first), 8-bit texels / 255.
+ * The sampled reference's samples see the texture magnified, so GL takes
+ * the base level there; a one-sample pass minifying it takes a mipmap. */
 static void texel(const gls_texture *tx, double s, double t, double out[4])
 {
     double u = s * tx->width - 0.5, v = t * tx->height - 0.5;

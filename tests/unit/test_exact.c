@@ -557,18 +557,25 @@ static void hash_pixel(void *user, int px, int py, const gls_exact_frag *f, size
     hs->hash = (hs->hash ^ (uint64_t)n) * 1099511628211ull;
 }
 
-static void test_exact_threads(void)
+/* n random triangles of up to 12 px over a w x h image, at random
+ * depths (passing through each other), id k the k-th */
+static void random_tris(gls_exact_tri *t, int n, int w, int h)
 {
-    enum { N = 300, W = 37, H = 101 };
-    static gls_exact_tri t[N];
-    for (int k = 0; k < N; k++) {
-        double x = urand() * W, y = urand() * H, s = 1 + urand() * 12;
+    for (int k = 0; k < n; k++) {
+        double x = urand() * w, y = urand() * h, s = 1 + urand() * 12;
         t[k] = tri(x, y, x + s * (urand() - 0.5), y + s * (urand() - 0.5), x + s * (urand() - 0.5),
                    y + s * (urand() - 0.5), 1);
         for (int q = 0; q < 3; q++)
             t[k].iz[q] = 0.5 + urand();
         t[k].id = (uint32_t)k;
     }
+}
+
+static void test_exact_threads(void)
+{
+    enum { N = 300, W = 37, H = 101 };
+    static gls_exact_tri t[N];
+    random_tris(t, N, W, H);
     uint64_t first = 0;
     for (unsigned th = 0; th <= 9; th++) {
         frag_hash hs = {14695981039346656037ull, -1, 1, W};
@@ -606,13 +613,7 @@ static void test_exact_any_thread(void)
     static gls_exact_tri t[N];
     static uint64_t h0[W * H], h1[W * H];
     static int c0[W * H], c1[W * H];
-    for (int k = 0; k < N; k++) {
-        double x = urand() * W, y = urand() * H, s = 1 + urand() * 12;
-        t[k] = tri(x, y, x + s * (urand() - 0.5), y + s * (urand() - 0.5), x + s * (urand() - 0.5),
-                   y + s * (urand() - 0.5), 1);
-        for (int q = 0; q < 3; q++)
-            t[k].iz[q] = 0.5 + urand();
-    }
+    random_tris(t, N, W, H);
     pixel_hashes a = {h0, c0, W}, b = {h1, c1, W};
     CHECK(gls_exact_visit(t, N, W, H, hash_each_pixel, &a) == 0);
     CHECK(gls_exact_visit_any_thread(t, N, W, H, hash_each_pixel, &b) == 0);
