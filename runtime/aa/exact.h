@@ -41,10 +41,10 @@ typedef struct {
  * (gls_exact_shade_fn). */
 #define GLS_EXACT_SAMPLED 1u
 /* Alpha-tested (GL discards where the shader's alpha is under 0.5): it
- * hides nothing in the walk (its regions overlap what is behind it), and
- * a pixel it shows in is point-sampled at the GLS_EXACT_SHADE_M lattice
- * points, each the nearest surface there whose alpha passes.  Areas and
- * coverage are not exact there: gls_exact_image only. */
+ * hides nothing in the walk, and a pixel it shows in is point-sampled at
+ * the GLS_EXACT_SHADE_M lattice points, each the nearest surface there
+ * whose alpha passes.  No area is computed there (the frags are the
+ * pixel's candidates, area NaN): gls_exact_image only, not coverage. */
 #define GLS_EXACT_HOLES 2u
 
 /* The lattice points (lattice.h) per pixel at which a sampled triangle's
@@ -62,9 +62,14 @@ typedef struct {
 } gls_exact_frag;
 
 /* Called once for every pixel of the image, rows top to bottom, with the
- * triangles visible in it (n 0: none; the areas sum to at most 1, the rest
- * is background, but where an alpha-tested triangle's regions overlap
- * what is behind them, GLS_EXACT_HOLES).  The frags are valid during the call only. */
+ * triangles visible in it (n 0: none; the areas sum to at most 1, the
+ * rest is background).  Where an alpha-tested triangle (GLS_EXACT_HOLES)
+ * has a visible part, the pixel is point-sampled and its frags are its
+ * candidates instead: every triangle that may show in it, a hidden one
+ * included, each with area NaN and the pixel centre for centroid (no
+ * area is worked out: the cuts of every layer behind a tree's leaves were
+ * a third of the road frame's CPU, for areas nothing used).  The frags
+ * are valid during the call only. */
 typedef void (*gls_exact_pixel_fn)(void *user, int px, int py, const gls_exact_frag *f, size_t n);
 
 /* Visit the w x h image.  Ties (coplanar overlapping triangles): the lower

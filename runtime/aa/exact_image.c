@@ -25,10 +25,8 @@ typedef struct {
                            points, pixel-local ([-0.5, 0.5)^2)           */
 } image_ctx;
 
-/* Per region of a pixel: whether the alpha test has dropped it at the
- * current point, and its colour. */
+/* Per region of a pixel: its colour. */
 typedef struct region {
-    unsigned char skip;
     float col[4];
     /* its triangle's edge functions and 1/Zc times twice its signed
      * area, affine in the pixel-local point: v[0] + v[1] x + v[2] y */
@@ -57,33 +55,51 @@ static void regions_prep(const image_ctx *c, int px, int py, const gls_exact_fra
     }
 }
 
-/* Which of the pixel's regions shows at pixel-local point (x, y): the
- * frag whose triangle contains it and is nearest there (larger 1/Zc, ties
- * the lower index, the walk's rule).  The frags are exactly the triangles
- * visible in the pixel, so the one in front among them is the one in
- * front among all.  n when none (background).  Points on a shared edge
- * go to either side: a set of measure zero.  skip: leave out the regions
- * marked so. */
-static size_t owner(const gls_exact_frag *f, size_t n, const region *r, double x, double y, int skip)
+/* Which of the pixel's regions shows at each of the lattice points
+ * ms[0..np): the frag whose triangle contains it and is nearest there
+ * (larger 1/Zc, ties the lower triangle index, the walk's rule), into
+ * own[p] (n: none, the background), with its 1/Zc and triangle in bz[p],
+ * bt[p].  The frags hold every triangle visible in the pixel, so the one
+ * in front among them is the one in front among all.  Points on a shared
+ * edge go to either side: a set of measure zero.  tz NULL: among all
+ * regions; else among those behind the point's (tz[p], tt[p]) in that
+ * order, the next surface down once the alpha test has dropped that one
+ * (holes_pixel).  A region at a time over all the points, without
+ * branches: point by point, the owners were a sixth of the road frame's
+ * CPU. */
+static void front(const image_ctx *c, const gls_exact_frag *f, size_t n, const region *r, const int *ms, size_t np,
+                  const double *tz, const size_t *tt, size_t *own, double *bz, size_t *bt)
 {
-    size_t best = n;
-    double bz = 0;
+    double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M];
+    for (size_t p = 0; p < np; p++)
+        x[p] = c->lx[ms[p]], y[p] = c->ly[ms[p]], own[p] = n, bz[p] = 0, bt[p] = 0;
     for (size_t k = 0; k < n; k++) {
         const region *g = &r[k];
-        if (skip && g->skip)
+        double a = g->a;
+        if (a == 0)
             continue;
-        double a = g->a, e[3];
+        /* the tests' sign: e < 0 outside when a > 0, e > 0 when a < 0;
+         * negating every coefficient is exact, so -e is the same value
+         * negated */
+        double sg = a > 0 ? 1 : -1, E[3][3], Z[3] = {g->z[0], g->z[1], g->z[2]};
         for (int q = 0; q < 3; q++)
-            e[q] = g->e[q][0] + g->e[q][1] * x + g->e[q][2] * y;
-        if (a == 0 || (a > 0 ? e[0] < 0 || e[1] < 0 || e[2] < 0 : e[0] > 0 || e[1] > 0 || e[2] > 0))
-            continue;
-        /* e[q] / a: the point's barycentric weight of vertex q; 1/Zc is
-         * affine in the image */
-        double z = (g->z[0] + g->z[1] * x + g->z[2] * y) / a;
-        if (best == n || z > bz || (z == bz && f[k].tri < f[best].tri))
-            best = k, bz = z;
+            for (int u = 0; u < 3; u++)
+                E[q][u] = sg * g->e[q][u];
+        size_t tri = f[k].tri;
+        for (size_t p = 0; p < np; p++) {
+            double e0 = E[0][0] + E[0][1] * x[p] + E[0][2] * y[p], e1 = E[1][0] + E[1][1] * x[p] + E[1][2] * y[p],
+                   e2 = E[2][0] + E[2][1] * x[p] + E[2][2] * y[p];
+            /* e[q] / a: the point's barycentric weight of vertex q; 1/Zc
+             * is affine in the image */
+            double z = (Z[0] + Z[1] * x[p] + Z[2] * y[p]) / a;
+            int in = !(e0 < 0) & !(e1 < 0) & !(e2 < 0);
+            int behind = tz ? (z < tz[p]) | ((z == tz[p]) & (tri > tt[p])) : 1;
+            int better = in & behind & ((own[p] == n) | (z > bz[p]) | ((z == bz[p]) & (tri < bt[p])));
+            own[p] = better ? k : own[p];
+            bz[p] = better ? z : bz[p];
+            bt[p] = better ? tri : bt[p];
+        }
     }
-    return best;
 }
 
 /* The shader at one point */
@@ -95,26 +111,37 @@ static void shade1(const image_ctx *c, size_t tri, double x, double y, float v[4
         v[q] = o[0][q];
 }
 
+/* The shader at lattice points ms[0..cnt) of triangle tri, in one call,
+ * into v[ms[p]] (the flat colour without a shader) */
+static void shade_group(const image_ctx *c, int px, int py, size_t tri, const int *ms, size_t cnt, float (*v)[4])
+{
+    const gls_exact_tri *t = &c->t[tri];
+    if (!cnt)
+        return;
+    if (c->shade) {
+        double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M];
+        float o[GLS_EXACT_SHADE_M][4];
+        for (size_t p = 0; p < cnt; p++)
+            x[p] = px + c->lx[ms[p]], y[p] = py + c->ly[ms[p]];
+        c->shade(c->user, t, tri, x, y, cnt, o);
+        for (size_t p = 0; p < cnt; p++)
+            memcpy(v[ms[p]], o[p], sizeof v[0]);
+    } else
+        for (size_t p = 0; p < cnt; p++)
+            memcpy(v[ms[p]], t->rgba, sizeof v[0]);
+}
+
 /* The shader at the lattice points m that region k owns (own[m] == k),
- * in one call, into v[m] (the flat colour without a shader); their count. */
+ * into v[m]; their count. */
 static size_t shade_owned(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t k, const size_t *own,
                           float (*v)[4])
 {
-    const gls_exact_tri *t = &c->t[f[k].tri];
-    double x[GLS_EXACT_SHADE_M], y[GLS_EXACT_SHADE_M];
     int at[GLS_EXACT_SHADE_M];
     size_t cnt = 0;
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
         if (own[m] == k)
-            x[cnt] = px + c->lx[m], y[cnt] = py + c->ly[m], at[cnt++] = m;
-    if (cnt && c->shade) {
-        float o[GLS_EXACT_SHADE_M][4];
-        c->shade(c->user, t, f[k].tri, x, y, cnt, o);
-        for (size_t p = 0; p < cnt; p++)
-            memcpy(v[at[p]], o[p], sizeof v[0]);
-    } else
-        for (size_t p = 0; p < cnt; p++)
-            memcpy(v[at[p]], t->rgba, sizeof v[0]);
+            at[cnt++] = m;
+    shade_group(c, px, py, f[k].tri, at, cnt, v);
     return cnt;
 }
 
@@ -129,8 +156,17 @@ static void sampled_colours(const image_ctx *c, int px, int py, const gls_exact_
     float v[GLS_EXACT_SHADE_M][4];
     if (!full)
         regions_prep(c, px, py, f, n, r);
-    for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
-        own[m] = full ? 0 : owner(f, n, r, c->lx[m], c->ly[m], 0);
+    if (full)
+        for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+            own[m] = 0;
+    else {
+        int ms[GLS_EXACT_SHADE_M];
+        double bz[GLS_EXACT_SHADE_M];
+        size_t bt[GLS_EXACT_SHADE_M];
+        for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
+            ms[m] = m;
+        front(c, f, n, r, ms, GLS_EXACT_SHADE_M, NULL, NULL, own, bz, bt);
+    }
     for (size_t k = 0; k < n; k++) {
         if (!(c->t[f[k].tri].flags & GLS_EXACT_SAMPLED))
             continue;
@@ -199,51 +235,53 @@ static void pixel_cover(const image_ctx *c, const gls_exact_frag *f, size_t n, g
 
 /* A pixel an alpha-tested triangle shows in (GLS_EXACT_HOLES):
  * the mean over the lattice points of the nearest surface there whose
- * alpha passes (GL's alpha test: at least 0.5), or the background.  The
- * nearest surface at each point is shaded first, a region's points in
- * one call; a point whose alpha fails is then followed on, alone, to the
- * surfaces behind. */
+ * alpha passes (GL's alpha test: at least 0.5), or the background.  Layer
+ * by layer: the points' nearest surfaces, shaded a region's points in one
+ * call; then, for the points whose alpha failed, the next surface behind
+ * each, and so on. */
 static void holes_pixel(const image_ctx *c, int px, int py, const gls_exact_frag *f, size_t n, region *r,
                         double acc[4])
 {
-    size_t own[GLS_EXACT_SHADE_M];
+    int ms[GLS_EXACT_SHADE_M];
+    size_t own[GLS_EXACT_SHADE_M], bt[GLS_EXACT_SHADE_M], tt[GLS_EXACT_SHADE_M];
+    double bz[GLS_EXACT_SHADE_M], tz[GLS_EXACT_SHADE_M];
     float v[GLS_EXACT_SHADE_M][4];
     regions_prep(c, px, py, f, n, r);
-    for (size_t k = 0; k < n; k++)
-        r[k].skip = 0;
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
-        own[m] = owner(f, n, r, c->lx[m], c->ly[m], 1);
-    for (size_t k = 0; k < n; k++) /* each region's first-hit points */
-        shade_owned(c, px, py, f, k, own, v);
-    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        size_t k = own[m];
-        if (k == n)
-            memcpy(v[m], c->bg, sizeof v[m]);
-        else if ((c->t[f[k].tri].flags & GLS_EXACT_HOLES) && v[m][3] < 0.5f) {
-            /* dropped by the alpha test: the surfaces behind, in turn */
-            double x = px + c->lx[m], y = py + c->ly[m];
-            for (size_t q = 0; q < n; q++)
-                r[q].skip = 0;
-            r[k].skip = 1;
-            for (;;) {
-                k = owner(f, n, r, c->lx[m], c->ly[m], 1);
-                const gls_exact_tri *t = k < n ? &c->t[f[k].tri] : NULL;
-                if (!t) {
-                    memcpy(v[m], c->bg, sizeof v[m]);
-                    break;
-                }
-                if (c->shade)
-                    shade1(c, f[k].tri, x, y, v[m]);
-                else
-                    memcpy(v[m], t->rgba, sizeof v[m]);
-                if (!(t->flags & GLS_EXACT_HOLES) || v[m][3] >= 0.5f)
-                    break;
-                r[k].skip = 1;
-            }
+        ms[m] = m;
+    size_t np = GLS_EXACT_SHADE_M;
+    front(c, f, n, r, ms, np, NULL, NULL, own, bz, bt);
+    for (;;) {
+        /* the points ms[0..np) at their surfaces own[], a region's in
+         * one call (each region's points picked out in turn) */
+        unsigned char done[GLS_EXACT_SHADE_M] = {0};
+        for (size_t p = 0; p < np; p++) {
+            if (done[p])
+                continue;
+            int grp[GLS_EXACT_SHADE_M];
+            size_t cnt = 0;
+            for (size_t q = p; q < np; q++)
+                if (!done[q] && own[q] == own[p])
+                    grp[cnt++] = ms[q], done[q] = 1;
+            if (own[p] == n)
+                for (size_t q = 0; q < cnt; q++)
+                    memcpy(v[grp[q]], c->bg, sizeof v[0]);
+            else
+                shade_group(c, px, py, f[own[p]].tri, grp, cnt, v);
         }
+        /* those the alpha test drops go on behind their surface */
+        size_t keep = 0;
+        for (size_t p = 0; p < np; p++)
+            if (own[p] < n && (c->t[f[own[p]].tri].flags & GLS_EXACT_HOLES) && v[ms[p]][3] < 0.5f)
+                ms[keep] = ms[p], tz[keep] = bz[p], tt[keep] = bt[p], keep++;
+        if (!keep)
+            break;
+        np = keep;
+        front(c, f, n, r, ms, np, tz, tt, own, bz, bt);
+    }
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++)
         for (int q = 0; q < 4; q++)
             acc[q] += v[m][q] / GLS_EXACT_SHADE_M;
-    }
 }
 
 static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, size_t n)

@@ -217,14 +217,13 @@ static const double unit8[256] = {
 #undef U4
 };
 
-/* The texture's base level at (s, t) as GL samples it with GL_LINEAR and
- * GL_REPEAT (render.c): texel centres at (i + 1/2) / W, t = 0 the image's
+/* The texture's base level at texel-grid point (u, v) = (s W - 1/2,
+ * t H - 1/2) as GL samples it with GL_LINEAR and GL_REPEAT (render.c): texel centres at (i + 1/2) / W, t = 0 the image's
  * bottom row (render.c uploads bottom row first), 8-bit texels / 255.
  * The sampled reference's samples see the texture magnified, so GL takes
  * the base level there; a one-sample pass minifying it takes a mipmap. */
-static void texel(const gls_texture *tx, double s, double t, double out[4])
+static void texel_uv(const gls_texture *tx, double u, double v, double out[4])
 {
-    double u = s * tx->width - 0.5, v = t * tx->height - 0.5;
     int64_t W = tx->width, H = tx->height, i0, j0;
     double a, b;
     if (fabs(u) < 0x1p52 && fabs(v) < 0x1p52) {
@@ -251,6 +250,12 @@ static void texel(const gls_texture *tx, double s, double t, double out[4])
      * the demo's CPU under --aa exact) */
     for (int q = 0; q < 4; q++)
         out[q] = w00 * unit8[p00[q]] + w10 * unit8[p10[q]] + w01 * unit8[p01[q]] + w11 * unit8[p11[q]];
+}
+
+/* texel_uv at texture coordinates (s, t) */
+static void texel(const gls_texture *tx, double s, double t, double out[4])
+{
+    texel_uv(tx, s * tx->width - 0.5, t * tx->height - 0.5, out);
 }
 
 static const float *vattr(const gls_scene *s, uint32_t v, size_t off)
@@ -320,6 +325,57 @@ static void light(const gls_exact_geom *g, const gls_exact_vcol *v, const double
     }
 }
 
+/* An unlit textured triangle's points (most of a textured scene's
+ * shading): the weights' numerators n_k = A_k X + B_k Y + E_k are affine
+ * in the point, and so are their sums against the texture coordinates in
+ * texel units (u = s W - 1/2 = sum n_k (W s_k - 1/2) / sum n_k) and
+ * against the vertex colours: a point costs three affine forms (seven
+ * with modulate's colour), one division and the texel's fetch.  The
+ * points' u and v first, a batch at a time, then their texels.  (Keeping
+ * the last point's cell of four texels, to fetch them once for the points
+ * in one cell, measured no faster on the road frame.) */
+#define SHADE_BATCH 64
+static void shade_textured(const gls_exact_geom *g, const gls_exact_vcol *v, const persp *pw, const gls_texture *tex,
+                           const float T[3][2], int replace, const double *x, const double *y, size_t n,
+                           float (*rgba)[4])
+{
+    /* rows: the weights' sum, u's and v's numerators, then modulate's
+     * r, g, b, a numerators */
+    double F[7][3] = {{0}};
+    int nf = replace ? 3 : 7;
+    for (int k = 0; k < 3; k++) {
+        double ab[3] = {pw->A[k], pw->B[k], pw->E[k]};
+        double cu = (double)T[k][0] * tex->width - 0.5, cv = (double)T[k][1] * tex->height - 0.5;
+        for (int m = 0; m < 3; m++) {
+            F[0][m] += ab[m], F[1][m] += cu * ab[m], F[2][m] += cv * ab[m];
+            for (int q = 0; q < nf - 3; q++)
+                F[3 + q][m] += (double)v->rgba[k][q] * ab[m];
+        }
+    }
+    for (size_t p0 = 0; p0 < n; p0 += SHADE_BATCH) {
+        size_t nb = n - p0 < SHADE_BATCH ? n - p0 : SHADE_BATCH;
+        double u[SHADE_BATCH], w[SHADE_BATCH], r[SHADE_BATCH];
+        for (size_t p = 0; p < nb; p++) {
+            double X = x[p0 + p] - g->cx, Y = y[p0 + p] - g->cy;
+            r[p] = 1 / (F[0][0] * X + F[0][1] * Y + F[0][2]);
+            u[p] = (F[1][0] * X + F[1][1] * Y + F[1][2]) * r[p];
+            w[p] = (F[2][0] * X + F[2][1] * Y + F[2][2]) * r[p];
+        }
+        for (size_t p = 0; p < nb; p++) {
+            double tc[4];
+            texel_uv(tex, u[p], w[p], tc);
+            if (!replace) {
+                double X = x[p0 + p] - g->cx, Y = y[p0 + p] - g->cy;
+                for (int q = 0; q < 4; q++)
+                    tc[q] *= (F[3 + q][0] * X + F[3 + q][1] * Y + F[3 + q][2]) * r[p];
+            }
+            /* the 8-bit framebuffer clamps every sample */
+            for (int q = 0; q < 4; q++)
+                rgba[p0 + p][q] = (float)(tc[q] < 0 ? 0 : tc[q] > 1 ? 1 : tc[q]);
+        }
+    }
+}
+
 void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, const double *x, const double *y, size_t n,
                           float (*rgba)[4])
 {
@@ -344,8 +400,12 @@ void gls_exact_geom_shade(void *user, const gls_exact_tri *t, size_t i, const do
     int replace = k->mode == GLS_MODE_REPLACE;
     persp pw;
     persp_make(g, v, &pw);
+    if (tex && !g->s->lit) {
+        shade_textured(g, v, &pw, tex, T, replace, x, y, n, rgba);
+        return;
+    }
     for (size_t p = 0; p < n; p++) {
-        double w[3], col[4], out[4];
+        double w[3], col[4] = {0, 0, 0, 0}, out[4];
         persp_weights(g, &pw, x[p], y[p], w);
         if (!(tex && replace)) /* replace: the texel alone */
             for (int q = 0; q < 4; q++)

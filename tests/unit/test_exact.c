@@ -492,6 +492,29 @@ static void test_exact_image_holes_behind_cover(void)
     CHECK_NEAR(rgba[0], (32 * 0.25 + 32 * 1.0) / 64, 1e-6);
 }
 
+/* An alpha-tested triangle hidden everywhere in a pixel (behind an
+ * opaque one that does not cover the pixel whole, so it stays a
+ * candidate) leaves the pixel exact: its area, not the share of lattice
+ * points (40 of 64 lie left of the edge, 0.625, where the area is
+ * 0.623).  The walk hands the candidates out unresolved only where an
+ * alpha-tested one has a visible part. */
+static void test_exact_image_holes_hidden(void)
+{
+    gls_exact_tri t[3];
+    t[0] = tri(-5, -5, 1.123, -5, 1.123, 10, 1), t[1] = tri(-5, -5, 1.123, 10, -5, 10, 1);
+    t[0].id = t[1].id = 2;
+    t[2] = tri(0.6, 0.6, 1.0, 0.6, 0.6, 1.4, 0.5);
+    t[2].id = 1, t[2].flags = GLS_EXACT_HOLES | GLS_EXACT_SAMPLED;
+    float rgba[3 * 3 * 4], bg[4] = {0, 0, 0, 1}, alpha = 1;
+    CHECK(gls_exact_image(t, 3, 3, 3, bg, shade_test, &alpha, rgba) == 0);
+    CHECK_NEAR(rgba[(1 * 3 + 1) * 4 + 0], 0.623, 1e-7); /* float output */
+    /* brought in front, it shows: the pixel is sampled (its points) */
+    for (int k = 0; k < 3; k++)
+        t[2].iz[k] = 2;
+    CHECK(gls_exact_image(t, 3, 3, 3, bg, shade_test, &alpha, rgba) == 0);
+    CHECK_MSG(fabs(rgba[(1 * 3 + 1) * 4 + 0] - 0.623) > 1e-3, "in front: %g", rgba[(1 * 3 + 1) * 4 + 0]);
+}
+
 /* Coverage: areas summed per id (two triangles of one id), the K largest
  * largest first (ties: the smaller id), ids mapped, 0 not counted. */
 static void test_exact_coverage(void)
@@ -684,6 +707,7 @@ int main(void)
     RUN(test_exact_image_sampled);
     RUN(test_exact_image_holes_many);
     RUN(test_exact_image_holes_behind_cover);
+    RUN(test_exact_image_holes_hidden);
     RUN(test_exact_coverage);
     RUN(test_exact_threads);
     RUN(test_exact_any_thread);
