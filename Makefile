@@ -542,7 +542,7 @@ bench-aa: $(B)/bench/aa_bench $(B)/bench/aa_exact $(TOOLS) $(SCENELIB)
 # The accumulator's add loops are the per-sample CPU cost of anti-aliasing;
 # -O3 vectorises them (gcc 12's -O2 leaves loops with remainders scalar).
 $(B)/runtime/aa/aa.o: CFLAGS += -O3
-$(B)/runtime/aa/exact_image.o: CFLAGS += -O3
+$(B)/runtime/aa/exact_image.o $(B)/runtime/aa/exact_scene.o: CFLAGS += -O3
 
 # glsroad (roads/, spec/road.md): road descriptions -> scene, trajectory,
 # ground truth.  Library libglsroad.a (tests link it) and the tool.
