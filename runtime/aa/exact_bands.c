@@ -158,6 +158,9 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
 {
     if (w <= 0 || h <= 0)
         return 0;
+    /* exact_cand's fields: a triangle index in 32 bits, a band's pixel in 31 */
+    if (n > UINT32_MAX || (size_t)w > ((size_t)1 << 31) / EXACT_BAND - 1)
+        return -1;
     exact_prep *p = malloc((n ? n : 1) * sizeof *p);
     unsigned char *ok = malloc(n ? n : 1);
     exact_work wk = {0};

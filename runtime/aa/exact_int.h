@@ -113,11 +113,13 @@ typedef struct exact_work exact_work;
 /* a triangle that may show in a pixel (nearer than the nearest triangle
  * covering the pixel whole somewhere in it) */
 typedef struct {
-    size_t tri;         /* index into the caller's triangles and preps    */
-    size_t pix;         /* pixel in the band                              */
-    int inside;         /* the triangle covers the pixel's square whole   */
+    uint32_t tri;       /* index into the caller's triangles and preps
+                           (visit takes fewer than 2^32)                  */
+    uint32_t pix : 31;  /* pixel in the band (a band has fewer than 2^31)  */
+    uint32_t inside : 1; /* the triangle covers the pixel's square whole  */
     double zmin, zmax;  /* bounds of its 1/Zc over the square             */
-} exact_cand;
+} exact_cand;           /* 24 bytes: a band's candidates are most of the
+                           memory the walk touches                        */
 
 /* gls_exact_visit's walk, handing each pixel's candidates that have a
  * visible part there (area > 0, as the areas resolve them; in no order)

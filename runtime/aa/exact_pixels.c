@@ -356,7 +356,7 @@ static int band_cands(const exact_prep *p, const gls_exact_tri *tris, const size
                     fmin[px] = lo;
                 if (grow((void **)c, capc, *nc + 1, sizeof **c))
                     return -1;
-                (*c)[(*nc)++] = (exact_cand){t, px, in, lo, hi};
+                (*c)[(*nc)++] = (exact_cand){(uint32_t)t, (uint32_t)px, (uint32_t)in, lo, hi};
             }
     }
     size_t kept = 0;
