@@ -77,7 +77,8 @@ typedef void (*gls_exact_pixel_fn)(void *user, int px, int py, const gls_exact_f
  * of rows are worked out on one thread per online CPU, fn called on the
  * calling thread, in order; memory is bounded by two bands of rows a
  * thread and the candidates in them.  Returns 0, or -1 when out of memory
- * (fn may have been called for part of the image). */
+ * (fn may have been called for part of the image) or given 2^32
+ * triangles or more, or an image 2^27 pixels wide or more. */
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user);
 /* The same on threads worker threads (0: one per online CPU, 1: none, on
  * the calling thread only); the frags are the same for any number. */
