@@ -12,6 +12,7 @@
 #include "check.h"
 #include "exact.h"
 #include "halfplane_area.h"
+#include "lattice.h"
 
 /* ---- rig ------------------------------------------------------------- */
 
@@ -110,6 +111,44 @@ static double ref_tri_area(const double *x, const double *y, int i, int j)
         }
     }
     return a;
+}
+
+/* Area and centroid of the triangle's part of the square [i-.5, i+.5] x
+ * [j-.5, j+.5]: the triangle cut by the square's four sides in turn
+ * (Sutherland-Hodgman), then the shoelace formula. */
+static double ref_tri_centroid(const double *x, const double *y, int i, int j, double *cx, double *cy)
+{
+    double px[16], py[16], qx[16], qy[16];
+    int n = 3;
+    for (int k = 0; k < 3; k++)
+        px[k] = x[k], py[k] = y[k];
+    for (int side = 0; side < 4 && n; side++) {
+        /* kept where d >= 0 */
+        int m = 0;
+        for (int k = 0; k < n; k++) {
+            int l = (k + 1) % n;
+            double dk = side == 0 ? px[k] - (i - 0.5) : side == 1 ? (i + 0.5) - px[k]
+                      : side == 2 ? py[k] - (j - 0.5) : (j + 0.5) - py[k];
+            double dl = side == 0 ? px[l] - (i - 0.5) : side == 1 ? (i + 0.5) - px[l]
+                      : side == 2 ? py[l] - (j - 0.5) : (j + 0.5) - py[l];
+            if (dk >= 0)
+                qx[m] = px[k], qy[m] = py[k], m++;
+            if ((dk >= 0) != (dl >= 0)) {
+                double t = dk / (dk - dl);
+                qx[m] = px[k] + t * (px[l] - px[k]), qy[m] = py[k] + t * (py[l] - py[k]), m++;
+            }
+        }
+        n = m;
+        memcpy(px, qx, sizeof px), memcpy(py, qy, sizeof py);
+    }
+    double a = 0, mx = 0, my = 0;
+    for (int k = 0; k < n; k++) {
+        int l = (k + 1) % n;
+        double c = px[k] * py[l] - px[l] * py[k];
+        a += c, mx += (px[k] + px[l]) * c, my += (py[k] + py[l]) * c;
+    }
+    *cx = a != 0 ? mx / (3 * a) : i, *cy = a != 0 ? my / (3 * a) : j;
+    return fabs(a) / 2;
 }
 
 /* the closed-form area of a half-plane in the pixel square */
@@ -448,6 +487,52 @@ static void test_exact_image_sampled(void)
     CHECK_MSG(v > 0.5 * 0.1 && v < 0.5 * (1.0 / 3), "half pixel %g", v);
 }
 
+/* A pixel of 300 sampled regions (a fan about its centre) under a shader
+ * that varies with the position (u^2): each region's colour is the mean
+ * at the lattice points in its own wedge, or its centroid's where it has
+ * none.  Worked out here from the wedges' angles, the lattice and an
+ * independent clip.  With a region's index kept in a byte (the bug of
+ * 2026-11-29, 255 meaning "255 or beyond"), region 255 took the points of
+ * every region after it; a flat shader per triangle does not show that. */
+static void test_exact_image_sampled_many_regions(void)
+{
+    enum { N = 300 };
+    static gls_exact_tri t[N];
+    const double off = 0.001; /* no lattice point on a wedge's edge */
+    for (int k = 0; k < N; k++) {
+        double a0 = off + 2 * M_PI * k / N, a1 = off + 2 * M_PI * (k + 1) / N;
+        t[k] = tri(1, 1, 1 + 3 * cos(a0), 1 + 3 * sin(a0), 1 + 3 * cos(a1), 1 + 3 * sin(a1), 1);
+        t[k].id = 3, t[k].flags = GLS_EXACT_SAMPLED;
+    }
+    float rgba[3 * 3 * 4], bg[4] = {0, 0, 0, 1}, alpha = 1;
+    CHECK(gls_exact_image(t, N, 3, 3, bg, shade_test, &alpha, rgba) == 0);
+    /* the lattice points' wedges */
+    gls_lattice l;
+    CHECK(gls_lattice_choose(GLS_EXACT_SHADE_M, &l) == 0);
+    double sum[N] = {0};
+    int cnt[N] = {0};
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        int64_t qx, qy;
+        gls_lattice_point(&l, (uint64_t)m, &qx, &qy);
+        double x = (double)qx / (double)l.q - 0.5, y = (double)qy / (double)l.q - 0.5;
+        double a = atan2(y, x) - off;
+        a = a < 0 ? a + 2 * M_PI : a;
+        int k = (int)(a / (2 * M_PI / N));
+        k = k >= N ? N - 1 : k;
+        sum[k] += (x + 0.5) * (x + 0.5), cnt[k]++;
+    }
+    double want = 0, area = 0;
+    int with_points = 0;
+    for (int k = 0; k < N; k++) {
+        double cx, cy, ar = ref_tri_centroid(t[k].x, t[k].y, 1, 1, &cx, &cy);
+        double u = cx - 1 + 0.5, col = cnt[k] ? sum[k] / cnt[k] : u * u;
+        want += ar * col, area += ar, with_points += cnt[k] > 0;
+    }
+    CHECK_NEAR(area, 1, 1e-12);
+    CHECK_MSG(with_points > 40, "%d wedges hold lattice points", with_points);
+    CHECK_NEAR(rgba[(1 * 3 + 1) * 4 + 0], want, 1e-6);
+}
+
 /* An alpha-tested triangle (GLS_EXACT_HOLES) hides nothing in the walk:
  * in front of 100 thin triangles fanning through the pixel (more than
  * the 64 regions of the scratch on the stack), the pixel is its colour
@@ -705,6 +790,7 @@ int main(void)
     RUN(test_exact_far_offset);
     RUN(test_exact_image_flat);
     RUN(test_exact_image_sampled);
+    RUN(test_exact_image_sampled_many_regions);
     RUN(test_exact_image_holes_many);
     RUN(test_exact_image_holes_behind_cover);
     RUN(test_exact_image_holes_hidden);
