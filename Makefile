@@ -83,11 +83,16 @@ $(B)/apps/glsplay_main.o: LAYER_INC = -Iinclude $(INC_base)
 # or GLS_NO_OSMESA=1 says to build as if the library were absent
 # (tests/e2e/build_backends.sh).  At least one is needed.  Every GL call
 # goes through the backend (runtime/gl/glcalls.h), so no GL library is linked:
-# only libEGL and/or libOSMesa.
+# only libEGL (libOSMesa is opened at run time, below).
 HAVE_EGL    := $(if $(filter 1,$(GLS_NO_EGL)),,$(shell pkg-config --exists egl 2>/dev/null && echo 1))
 HAVE_OSMESA := $(if $(filter 1,$(GLS_NO_OSMESA)),,$(shell pkg-config --exists osmesa 2>/dev/null && echo 1))
 GLCTX_LEFT_OUT := $(if $(HAVE_EGL),,runtime/gl/glctx_egl.c) $(if $(HAVE_OSMESA),,runtime/gl/glctx_osmesa.c)
-GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),$(shell pkg-config --libs osmesa)) -lspng -pthread
+# libOSMesa is not linked but opened by its soname when the first OSMesa
+# context is made (glctx_osmesa.c says why); the soname is the one the
+# linker would have recorded, read from the library pkg-config finds.
+OSMESA_SONAME := $(if $(HAVE_OSMESA),$(shell readelf -d "$$(pkg-config --variable=libdir osmesa)/libOSMesa.so" 2>/dev/null | sed -n 's/.*Library soname: \[\(.*\)\].*/\1/p'))
+OSMESA_SONAME := $(or $(OSMESA_SONAME),libOSMesa.so.8)
+GL_LIBS := $(if $(HAVE_EGL),$(shell pkg-config --libs egl)) $(if $(HAVE_OSMESA),-ldl) -lspng -pthread
 $(B)/runtime/gl/glctx_egl.o: CFLAGS += $(shell pkg-config --cflags egl 2>/dev/null)
 $(B)/runtime/gl/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/dev/null)
 # Which backends are in, for runtime/gl/glctx.c: written when the Makefile is
@@ -96,6 +101,11 @@ $(B)/runtime/gl/glctx_osmesa.o: CFLAGS += $(shell pkg-config --cflags osmesa 2>/
 GLCTX_CONFIG := $(B)/gen/runtime/glctx_backends.h
 GLCTX_CONFIG_TEXT := /* written by the Makefile: the GL backends of this build */\n\#define GLS_HAVE_EGL $(if $(HAVE_EGL),1,0)\n\#define GLS_HAVE_OSMESA $(if $(HAVE_OSMESA),1,0)\n
 $(shell mkdir -p $(B)/gen/runtime && { printf '$(GLCTX_CONFIG_TEXT)' | cmp -s - $(GLCTX_CONFIG) || printf '$(GLCTX_CONFIG_TEXT)' >$(GLCTX_CONFIG); })
+# the soname glctx_osmesa.c opens, in a header of its own (so that
+# switching backends recompiles glctx.c alone)
+OSMESA_CONFIG := $(B)/gen/runtime/glctx_osmesa_soname.h
+OSMESA_CONFIG_TEXT := /* written by the Makefile: the library glctx_osmesa.c opens */\n\#define GLS_OSMESA_SONAME "$(OSMESA_SONAME)"\n
+$(shell mkdir -p $(B)/gen/runtime && { printf '$(OSMESA_CONFIG_TEXT)' | cmp -s - $(OSMESA_CONFIG) || printf '$(OSMESA_CONFIG_TEXT)' >$(OSMESA_CONFIG); })
 
 BASE_SRC     := $(wildcard base/*.c)
 FORMAT_SRC   := $(wildcard format/*.c)

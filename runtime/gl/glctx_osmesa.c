@@ -1,12 +1,60 @@
 /* OSMesa backend of glctx.h: Mesa's software rasteriser (llvmpipe), no
  * display or GPU needed.  The compatibility profile keeps fixed-function
  * GL available (see render.c for why the renderer uses it).  Mesa 25.1
- * removed OSMesa; glctx_egl.c is its successor (spec/backends.md). */
+ * removed OSMesa; glctx_egl.c is its successor (spec/backends.md).
+ *
+ * libOSMesa is opened when the first OSMesa context is made, not linked:
+ * it brings LLVM and its static constructors, 90 ms at every start of a
+ * process on the CI machine, paid by every run that makes no OSMesa
+ * context (EGL's, a run that draws no GL pass, --help, an input error). */
 #include <GL/osmesa.h>
+#include <dlfcn.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "glctx_backend.h"
+#include "glctx_osmesa_soname.h" /* GLS_OSMESA_SONAME, from the Makefile */
+
+/* The four functions this file calls, from the library once it is open. */
+static struct {
+    void *lib;
+    OSMesaContext (*create)(const int *, OSMesaContext);
+    GLboolean (*make_current)(OSMesaContext, void *, GLenum, GLsizei, GLsizei);
+    void (*destroy)(OSMesaContext);
+    OSMESAproc (*get_proc)(const char *);
+    char why[200];      /* why it did not open, when it did not           */
+} osm;
+static pthread_once_t osm_once = PTHREAD_ONCE_INIT;
+
+#define OSM_SYM(dst, name)                                                    \
+    do {                                                                      \
+        void *v_ = dlsym(osm.lib, name);                                      \
+        if (!v_)                                                              \
+            ok = 0;                                                           \
+        memcpy(&(dst), &v_, sizeof v_);                                       \
+    } while (0)
+
+static void osm_open(void)
+{
+    /* RTLD_LOCAL: its GL symbols stay out of the program's namespace
+     * (glcalls.h: every call goes through OSMesaGetProcAddress) */
+    if (!(osm.lib = dlopen(GLS_OSMESA_SONAME, RTLD_NOW | RTLD_LOCAL))) {
+        const char *e = dlerror();
+        snprintf(osm.why, sizeof osm.why, "%s", e ? e : "dlopen failed");
+        return;
+    }
+    int ok = 1;
+    OSM_SYM(osm.create, "OSMesaCreateContextAttribs");
+    OSM_SYM(osm.make_current, "OSMesaMakeCurrent");
+    OSM_SYM(osm.destroy, "OSMesaDestroyContext");
+    OSM_SYM(osm.get_proc, "OSMesaGetProcAddress");
+    if (!ok) {
+        snprintf(osm.why, sizeof osm.why, "%s lacks an OSMesa function", GLS_OSMESA_SONAME);
+        dlclose(osm.lib);
+        osm.lib = NULL;
+    }
+}
 
 /* OSMesa needs a default framebuffer to make a context current; the
  * renderer never draws into it (it has its own FBO), so 1x1 will do. */
@@ -18,7 +66,7 @@ typedef struct {
 static int osmesa_make_current(void *state)
 {
     osmesa_state *s = state;
-    return OSMesaMakeCurrent(s->ctx, s->buf, GL_UNSIGNED_BYTE, 1, 1) ? 0 : -1;
+    return osm.make_current(s->ctx, s->buf, GL_UNSIGNED_BYTE, 1, 1) ? 0 : -1;
 }
 
 static void osmesa_destroy(void *state)
@@ -27,7 +75,7 @@ static void osmesa_destroy(void *state)
     if (!s)
         return;
     if (s->ctx)
-        OSMesaDestroyContext(s->ctx);
+        osm.destroy(s->ctx);
     free(s);
 }
 
@@ -36,6 +84,11 @@ static void *osmesa_create(gls_backend b, gls_glctx_info *info, char *err, size_
     (void)b;
     info->platform = "none";
     info->device = "none (software: Mesa's OSMesa)";
+    pthread_once(&osm_once, osm_open);
+    if (!osm.lib) {
+        snprintf(err, errlen, "osmesa: cannot load %s: %s", GLS_OSMESA_SONAME, osm.why);
+        return NULL;
+    }
     osmesa_state *s = calloc(1, sizeof *s);
     if (!s) {
         snprintf(err, errlen, "osmesa: out of memory");
@@ -51,7 +104,7 @@ static void *osmesa_create(gls_backend b, gls_glctx_info *info, char *err, size_
         OSMESA_CONTEXT_MINOR_VERSION, 5,
         0,
     };
-    s->ctx = OSMesaCreateContextAttribs(attribs, NULL);
+    s->ctx = osm.create(attribs, NULL);
     if (!s->ctx) {
         snprintf(err, errlen, "osmesa: cannot create a GL 4.5 compatibility context");
         free(s);
@@ -68,7 +121,7 @@ static void *osmesa_create(gls_backend b, gls_glctx_info *info, char *err, size_
 static void *osmesa_proc(void *state, const char *name)
 {
     (void)state;
-    OSMESAproc p = OSMesaGetProcAddress(name);
+    OSMESAproc p = osm.get_proc(name);
     void *v;
     GLS_PROC_AS_VOIDP(p, v);
     return v;

@@ -27,12 +27,20 @@ one() {
         return
     fi
     ok "build_backends_${name}_builds"
+    # links no GL library and not the other backend's; libEGL is linked,
+    # libOSMesa opened when the first OSMesa context is made: what a run
+    # that makes a context (--explain does) loads has its library and not
+    # the other one
+    other=$([ "$lib" = libEGL ] && echo libOSMesa || echo libEGL)
     needed=$(readelf -d "$t/b/glsplay" | grep NEEDED)
-    if echo "$needed" | grep -q "$lib" && ! echo "$needed" | grep -q -i -e libGL -e libOpenGL \
-        -e "$([ "$lib" = libEGL ] && echo libOSMesa || echo libEGL)"; then
-        ok "build_backends_${name}_links_only_$lib"
+    # shellcheck disable=SC2086
+    loaded=$(LIBGL_ALWAYS_SOFTWARE=1 LD_DEBUG=files "$t/b/glsplay" $DEMO --backend "$has" --explain 2>&1 >/dev/null |
+        grep -o 'file=[^ ]*' | sort -u | tr '\n' ' ')
+    if echo "$loaded" | grep -q "=$lib" && ! echo "$loaded" | grep -q "=$other" &&
+        ! echo "$needed" | grep -q -e 'libGL\.' -e libOpenGL -e libOSMesa -e "$other"; then
+        ok "build_backends_${name}_loads_only_$lib"
     else
-        fail "build_backends_${name}_links_only_$lib" "$(echo "$needed" | tr -s ' \n' ' ')"
+        fail "build_backends_${name}_loads_only_$lib" "needed: $(echo "$needed" | tr -s ' \n' ' '); loaded: $loaded"
     fi
     # renders, with the backend it has (on llvmpipe), the same bytes as the
     # normal build
@@ -64,6 +72,21 @@ one no_osmesa GLS_NO_OSMESA egl-surfaceless libEGL osmesa \
 "$t/b/glsplay" "$t/demo.glsb" --explain --backend egl-device >"$t/plan" 2>&1 &&
     grep -q '^backend: egl (--backend egl-device), platform: device' "$t/plan" && ok build_backends_no_osmesa_egl_device ||
     fail build_backends_no_osmesa_egl_device "$(grep -E '^backend|error' "$t/plan")"
+
+# libOSMesa (which brings LLVM: about 90 ms at each start of a process) is
+# opened only when an OSMesa context is made: not by a run that makes
+# none (--version, an input error, --aa exact alone), nor by EGL's
+files() { LD_DEBUG=files "$@" 2>&1 >/dev/null | grep -o 'file=[^ ]*' | sort -u | tr '\n' ' '; }
+v=$(files "$B/glsplay" --version)
+e=$(files "$B/glsplay" "$t/demo.glsb" --camera examples/demo/left.cam --size 160x120 --aa exact --outputs image \
+    -o "$t/lazy_exact")
+g=$(LIBGL_ALWAYS_SOFTWARE=1 files "$B/glsplay" $DEMO --backend egl -o "$t/lazy_egl")
+o=$(files "$B/glsplay" $DEMO --backend osmesa -o "$t/lazy_osmesa")
+if ! echo "$v$e$g" | grep -q libOSMesa && echo "$o" | grep -q '=libOSMesa' && [ -f "$t/lazy_exact/left/image_000000.png" ]; then
+    ok build_backends_osmesa_opened_when_used
+else
+    fail build_backends_osmesa_opened_when_used "--version: $v; exact: $e; egl: $g; osmesa: $o"
+fi
 
 # neither: the build stops with what to install
 if make --no-print-directory -s B="$t/b" GLS_NO_EGL=1 GLS_NO_OSMESA=1 "$t/b/glsplay" >"$t/log" 2>&1; then
