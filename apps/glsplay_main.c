@@ -170,6 +170,9 @@ int main(int argc, char **argv)
         rc = usage_error("%s", glscene_play_message(r));
     if (!rc)
         rc = glscene_play_run(r, stdout, stderr);
+    /* the GL driver the run loaded registered exit handlers that flush
+     * standard output (stdout_check.h): the check again, to run first */
+    gls_stdout_check_rearm();
     glscene_play_free(r);
     return rc;
 }

@@ -11,6 +11,7 @@
 
 static const char *tool_name;
 static int first_err; /* errno of the first failed gls_stdout_text */
+static int checked;   /* close_stdout has run (it may be registered twice) */
 
 void gls_stdout_write(const void *p, size_t n)
 {
@@ -26,6 +27,9 @@ void gls_stdout_text(const char *text)
 
 static void close_stdout(void)
 {
+    if (checked)
+        return;
+    checked = 1;
     int pending = __fpending(stdout) != 0;
     int failed_before = ferror(stdout);
     errno = 0;
@@ -46,4 +50,10 @@ void gls_check_stdout_at_exit(const char *tool)
 {
     tool_name = tool;
     atexit(close_stdout);
+}
+
+void gls_stdout_check_rearm(void)
+{
+    if (tool_name && !checked)
+        atexit(close_stdout);
 }

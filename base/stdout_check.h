@@ -11,6 +11,17 @@
  * tool must stay valid until exit (a string literal). */
 void gls_check_stdout_at_exit(const char *tool);
 
+/* Exit handlers run in the reverse order of their registration, and a
+ * library loaded after main started registers its own: a GL driver
+ * brings LLVM and with it libstdc++, whose exit-time destructor flushes
+ * standard output before the check above would run, so that a failed
+ * write's reason is gone by then ("a write failed" for glsplay --explain
+ * >/dev/full, since libOSMesa, which brought them at start-up, is no
+ * longer linked).  Called after such a library is loaded (glsplay, after
+ * its run), it registers the check again, to run first; it runs once.
+ * Nothing when gls_check_stdout_at_exit was not called. */
+void gls_stdout_check_rearm(void);
+
 /* Write n bytes (a bundle: glsc -o -) or a text (a help text, a version
  * line) to standard output, keeping the reason of a failure for the exit
  * check: what is longer than the stream's buffer is written past the
