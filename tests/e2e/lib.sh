@@ -4,6 +4,11 @@
 # and then has:
 #   B, BIN   the build directory ($GLS_BIN, default build); a script that
 #            needs it absolute sets BIN=$(cd "$B" && pwd) itself
+#   REF      the build whose tools compute a test's references (a 65,536-
+#            sample image an exact one is held to): $GLS_REF_BIN, default
+#            B.  The sanitizer pass (tests/run.sh) sets it to the normal
+#            build: its subject is the sanitized tool, and a reference
+#            drawn by it again costs minutes and checks nothing new
 #   PY       the Python with cv2 and numpy (python3 on PATH has neither)
 #   t        an empty temporary directory, removed on exit (a script that
 #            must undo more on exit sets its own trap, removing "$t" too)
@@ -12,6 +17,7 @@
 # and the helpers below.  Not a test itself: tests/run.sh skips it.
 B=${GLS_BIN:-build}
 BIN=$B
+REF=${GLS_REF_BIN:-$B}
 PY=${GLS_PY:-/usr/bin/python3}  # GLS_PY: another Python with cv2 and numpy (a GPU machine's)
 # (the trap removes the directory made here even where a script uses t
 # for something else later, as install.sh's loops do)

@@ -1,4 +1,5 @@
 #!/bin/sh
+# sanitizers: not rerun (it checks the build: the sanitizer pass builds no shared library, tests/run.sh)
 # libglscene (docs/api.md): the shared library has the soname
 # libglscene.so.0 and exports the public API only (glscene_*, every
 # function of include/glscene.h); no object of the library refers to the

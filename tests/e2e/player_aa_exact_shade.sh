@@ -41,7 +41,8 @@ CAM
 # render NAME: exact, 65,536 samples and one pass of $t/NAME.glsb
 render() {
     for m in "--aa exact:ex" "--aa 256:ref" "--aa 1:one"; do
-        "$PLAY" "$t/$1.glsb" --camera "$t/c.cam" ${m%%:*} --image-format pfm --outputs image -o "$t/$1_${m##*:}" \
+        p=$PLAY && [ "${m##*:}" = ref ] && p=$REF/glsplay # the reference: lib.sh's REF
+        "$p" "$t/$1.glsb" --camera "$t/c.cam" ${m%%:*} --image-format pfm --outputs image -o "$t/$1_${m##*:}" \
             2>"$t/err" || { fail exact_shade_render_$1 "${m%%:*}: $(cat "$t/err")"; return 1; }
     done
 }
