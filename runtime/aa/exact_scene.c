@@ -218,8 +218,9 @@ static const double unit8[256] = {
 };
 
 /* The texture's base level at texel-grid point (u, v) = (s W - 1/2,
- * t H - 1/2) as GL samples it with GL_LINEAR and GL_REPEAT (render.c): texel centres at (i + 1/2) / W, t = 0 the image's
- * bottom row (render.c uploads bottom row first), 8-bit texels / 255.
+ * t H - 1/2) as GL samples it with GL_LINEAR and GL_REPEAT (render.c):
+ * texel centres at (i + 1/2) / W, t = 0 the image's bottom row (render.c
+ * uploads bottom row first), 8-bit texels / 255.
  * The sampled reference's samples see the texture magnified, so GL takes
  * the base level there; a one-sample pass minifying it takes a mipmap. */
 static void texel_uv(const gls_texture *tx, double u, double v, double out[4])

@@ -27,13 +27,14 @@ static struct {
 } osm;
 static pthread_once_t osm_once = PTHREAD_ONCE_INIT;
 
-#define OSM_SYM(dst, name)                                                    \
-    do {                                                                      \
-        void *v_ = dlsym(osm.lib, name);                                      \
-        if (!v_)                                                              \
-            ok = 0;                                                           \
-        memcpy(&(dst), &v_, sizeof v_);                                       \
-    } while (0)
+/* one function of the open library into dst (a function pointer); 0 when
+ * the library lacks it */
+static int osm_sym(const char *name, void *dst)
+{
+    void *v = dlsym(osm.lib, name);
+    memcpy(dst, &v, sizeof v);
+    return v != NULL;
+}
 
 static void osm_open(void)
 {
@@ -44,12 +45,8 @@ static void osm_open(void)
         snprintf(osm.why, sizeof osm.why, "%s", e ? e : "dlopen failed");
         return;
     }
-    int ok = 1;
-    OSM_SYM(osm.create, "OSMesaCreateContextAttribs");
-    OSM_SYM(osm.make_current, "OSMesaMakeCurrent");
-    OSM_SYM(osm.destroy, "OSMesaDestroyContext");
-    OSM_SYM(osm.get_proc, "OSMesaGetProcAddress");
-    if (!ok) {
+    if (!(osm_sym("OSMesaCreateContextAttribs", &osm.create) & osm_sym("OSMesaMakeCurrent", &osm.make_current) &
+          osm_sym("OSMesaDestroyContext", &osm.destroy) & osm_sym("OSMesaGetProcAddress", &osm.get_proc))) {
         snprintf(osm.why, sizeof osm.why, "%s lacks an OSMesa function", GLS_OSMESA_SONAME);
         dlclose(osm.lib);
         osm.lib = NULL;
