@@ -331,14 +331,12 @@ static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, gls_ex
 }
 
 /* The pixels of row j that triangle T may meet, within its bounding
- * box's columns: from the x extent of its part of the strip
- * [j - 1/2, j + 1/2] (its vertices in the strip and its edges' crossings
- * of the strip's two lines), widened by a margin far above the crossings'
- * rounding.  classify still decides each pixel; this only spares it the
- * pixels of the box the triangle is nowhere near: a far hillside's
- * slivers run diagonally across boxes hundreds of pixels wide, and 79% of
- * the road frame's classified pixels were outside (88% on frame 90).  0
- * when none. */
+ * box's columns: the x extent of its part of the strip [j - 1/2, j + 1/2]
+ * (its vertices in it, its edges' crossings of its lines), widened far
+ * above the crossings' rounding.  classify still decides each pixel; this
+ * spares it the box's pixels the triangle is nowhere near (far slivers
+ * cross wide boxes diagonally: 79% of the road frame's classified pixels
+ * were outside, 88% on frame 90).  0 when none. */
 static int row_span(const exact_prep *T, int j, int *i0, int *i1)
 {
     double y0 = j - 0.5, y1 = j + 0.5, lo = INFINITY, hi = -INFINITY, big = 1;
