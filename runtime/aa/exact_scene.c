@@ -126,21 +126,17 @@ int gls_exact_geom_make(gls_exact_geom *g, const gls_scene *s, const gls_texture
      * triangle, bar the near and far cuts): grown by doubling from small,
      * 100k triangles copied 20 MB and page-faulted it in twice, an eighth
      * of --aa exact's time on make bench-aa's scene */
+    gls_exact_view vp;
+    gls_exact_view_make(&cam, c->width, c->height, &vp);
     size_t total = 0;
     for (uint32_t i = 0; i < s->ninst; i++)
-        if (s->inst[i].proto != GLS_NONE) {
-            const gls_proto *pr = &s->protos[s->inst[i].proto];
-            for (uint32_t ch = pr->first_chunk; ch < pr->first_chunk + pr->nchunks; ch++)
-                total += s->chunks[ch].count / 3;
-        }
+        for (uint32_t ch = gls_exact_view_first(&vp, &cam, s, i); ch != GLS_NONE; ch = gls_exact_view_next(&vp, &cam, s, i, ch))
+            total += s->chunks[ch].count / 3;
     if (reserve(g, total + 3))
         return -1;
     for (uint32_t i = 0; i < s->ninst; i++) {
         const gls_instance *in = &s->inst[i];
-        if (in->proto == GLS_NONE)
-            continue;
-        const gls_proto *pr = &s->protos[in->proto];
-        for (uint32_t ch = pr->first_chunk; ch < pr->first_chunk + pr->nchunks; ch++) {
+        for (uint32_t ch = gls_exact_view_first(&vp, &cam, s, i); ch != GLS_NONE; ch = gls_exact_view_next(&vp, &cam, s, i, ch)) {
             const gls_chunk *k = &s->chunks[ch];
             for (uint32_t v = k->first; v + 2 < k->first + k->count; v += 3) {
                 double P[3][3];

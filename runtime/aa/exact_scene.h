@@ -47,6 +47,28 @@ typedef struct {
     double lpos[4 * GLS_MAX_LIGHTS], lcol[4 * GLS_MAX_LIGHTS], amb[3];
 } gls_exact_geom;
 
+/* The camera's view as six half-spaces of camera space, n . X + d >= 0:
+ * the image's columns -1.5..width + 0.5 and rows -1.5..height + 0.5
+ * (a pixel's margin around its pixel squares), between the near and the
+ * far plane.  A box whose eight corners all miss one of them is outside
+ * the view (the view is their intersection, and a half-space holds a box
+ * when it holds its corners), and no triangle in it can touch a pixel:
+ * such an instance's triangles are not projected at all.  Without it a
+ * scene of many instances mostly out of view, which the GL passes cull,
+ * had every triangle of every instance projected and held (2^27 of them
+ * in tests/e2e/load_limits.sh, more memory than the machine had). */
+typedef struct {
+    double n[6][3], d[6];
+} gls_exact_view;
+
+void gls_exact_view_make(const gls_exact_pinhole *cam, uint32_t w, uint32_t h, gls_exact_view *v);
+/* Instance i's chunks that may meet the view, in order: the first
+ * (GLS_NONE: none, or the instance draws nothing or is out of view) and
+ * the one after ch. */
+uint32_t gls_exact_view_first(const gls_exact_view *v, const gls_exact_pinhole *cam, const gls_scene *s, uint32_t i);
+uint32_t gls_exact_view_next(const gls_exact_view *v, const gls_exact_pinhole *cam, const gls_scene *s, uint32_t i,
+                             uint32_t ch);
+
 /* NULL when gls_exact_geom_make can draw s, else why not ("shadows
  * ..."). */
 const char *gls_exact_scene_unsupported(const gls_scene *s);

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "check.h"
+#include "exact_scene.h"
 #include "motion.h"
 #include "player.h"
 #include "player_scene.h"
@@ -505,6 +506,70 @@ static void test_inherited_texmode(void)
     gls_bundle_free(b);
 }
 
+/* Exact coverage projects only what may meet the view (exact_view.c): a
+ * square in view and one across the image's right edge keep their
+ * triangles; one far to the side, one behind the camera and one beyond
+ * the far plane have none, until a motion brings one into view.  The
+ * triangles kept are checked against the independent model: each kept
+ * instance's, and only those, have a corner within a pixel's margin of
+ * the image. */
+static void test_exact_view_culls(void)
+{
+    tb t;
+    tb_init(&t);
+    uint32_t sq = tb_object(&t, "square", 0);
+    tb_color(&t, 1, 0, 0, 1);
+    tb_rect_z(&t, -0.5, -0.5, 0.5, 0.5, 0);
+    tb_object(&t, "top", 1);
+    /* instances 1..5: in view, across the right edge (u 57.5..77.5 of 64), far
+     * right, behind, beyond far */
+    static const double at[5][3] = {{0, 0, 5}, {1.8, 0, 5}, {50, 0, 5}, {0, 0, -5}, {0, 0, 200}};
+    for (int k = 0; k < 5; k++) {
+        tb_op0(&t, GLS_OP_PUSH);
+        tb_trans(&t, at[k][0], at[k][1], at[k][2]);
+        tb_call(&t, sq);
+        tb_op0(&t, GLS_OP_POP);
+    }
+    gls_bundle *b = tb_finish(&t);
+    gls_scene s;
+    char err[256];
+    CHECK(gls_scene_load(b, &s, err, sizeof err) == 0);
+    CHECK(s.ninst == 6);
+    double Tc[3] = {0, 0, 0};
+    gls_camera c = tb_camera(64, 48, 100, 100, 31.5, 23.5, 0, I3, Tc, 0.5, 100);
+    for (int moved = 0; moved < 2; moved++) {
+        if (moved) { /* the far-right square moved into view: the culling sees motion */
+            double T[3] = {-50, 0, 0};
+            gls_scene_move(&s, 3, I3, T);
+            gls_scene_update(&s);
+        }
+        gls_exact_geom g;
+        CHECK(gls_exact_geom_make(&g, &s, NULL, &c) == 0);
+        int tris[6] = {0};
+        for (size_t k = 0; k < g.n; k++)
+            if (g.v[k].inst < 6)
+                tris[g.v[k].inst]++;
+        int want[6] = {0, 1, 1, moved, 0, 0};
+        for (int i = 1; i < 6; i++) {
+            /* the model: does a corner of the moved square land in view? */
+            int seen = 0;
+            for (int q = 0; q < 4; q++) {
+                double P[3] = {at[i - 1][0] + (q & 1 ? 0.5 : -0.5) + (moved && i == 3 ? -50 : 0),
+                               at[i - 1][1] + (q & 2 ? 0.5 : -0.5), at[i - 1][2]}, u, v;
+                double Z = ref_project(&c, P, &u, &v);
+                seen |= Z > 0.5 && Z < 100 && u > -1.5 && u < 64.5 && v > -1.5 && v < 48.5;
+            }
+            CHECK(seen == want[i]);
+            CHECK((tris[i] > 0) == want[i]);
+            if (want[i])
+                CHECK(tris[i] == 2);
+        }
+        gls_exact_geom_free(&g);
+    }
+    gls_scene_free(&s);
+    gls_bundle_free(b);
+}
+
 int main(void)
 {
     ctx = tb_glctx(GLS_BACKEND_AUTO, "test_instances");
@@ -516,6 +581,7 @@ int main(void)
     RUN(test_replay_matches_flatten);
     RUN(test_draw_order_within_cell);
     RUN(test_inherited_texmode);
+    RUN(test_exact_view_culls);
     gls_glctx_destroy(ctx);
     CHECK_EXIT();
 }
