@@ -50,17 +50,21 @@ typedef enum { GLSCENE_AA_LATTICE = 0, GLSCENE_AA_GRID = 1, GLSCENE_AA_STRATIFIE
 
 /* glscene_options' aa for exact coverage (glsplay --aa exact,
  * spec/antialiasing.md "Exact coverage"): each pixel of the image the
- * exact area of what is visible in it times its colour, no samples; flat
- * and vertex colours only (glscene_open refuses a lit or textured scene).
+ * exact area of what is visible in it times its colour, no samples
+ * (textures, lighting and the alpha test are sampled at 64 points in the
+ * pixels they vary in; glscene_open refuses a scene with shadows).
  * Depth, instance and normals stay the pixel centre's. */
 #define GLSCENE_AA_EXACT UINT32_MAX
 
 /* Options of glscene_open.  All zero (or NULL) is the default: automatic
- * backend, one sample a pixel, lattice pattern, black background. */
+ * backend, glsplay's default anti-aliasing (--aa auto: exact coverage,
+ * or one sample a pixel for a scene with shadows), lattice pattern,
+ * black background. */
 typedef struct {
     glscene_backend backend;
-    uint32_t aa;                /* N: N x N samples a pixel (glsplay --aa N); 0 or 1: one;
-                                   GLSCENE_AA_EXACT: exact coverage (--aa exact)         */
+    uint32_t aa;                /* 0: the default (--aa auto); N: N x N samples a pixel
+                                   (glsplay --aa N), 1 one; GLSCENE_AA_EXACT: exact
+                                   coverage (--aa exact)                                 */
     glscene_aa_pattern pattern; /* glsplay --pattern                                     */
     uint64_t seed;              /* stratified jitter seed (--seed)                      */
     float background[3];        /* colour where no surface is, 0..1 (--background)      */

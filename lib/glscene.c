@@ -66,8 +66,9 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
         return NULL;
     }
     gls_aa_opts aa = gls_aa_defaults();
-    aa.exact = opt->aa == GLSCENE_AA_EXACT;
-    aa.n = opt->aa && !aa.exact ? opt->aa : 1;
+    /* 0: glsplay's default, --aa auto (chosen once the scene is read) */
+    aa.exact = opt->aa == GLSCENE_AA_EXACT ? GLS_AA_EXACT : opt->aa == 0 ? GLS_AA_AUTO : GLS_AA_SAMPLED;
+    aa.n = opt->aa && aa.exact == GLS_AA_SAMPLED ? opt->aa : 1;
     memcpy(p->background, opt->background, sizeof p->background);
     aa.pattern = opt->pattern == GLSCENE_AA_GRID         ? GLS_AA_GRID
                  : opt->pattern == GLSCENE_AA_STRATIFIED ? GLS_AA_STRATIFIED
@@ -92,12 +93,19 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
         gls_api_fail(e, "%s: %s", bundle_path, err);
         goto fail;
     }
-    /* glsplay's refusal (runtime/play/player.c), in the library's words */
-    const char *why = aa.exact ? gls_exact_scene_unsupported(&p->scene) : NULL;
-    if (why) {
+    /* glsplay's rule (runtime/play/play_aa.c), in the library's words:
+     * its cameras are pinholes without exposure or sensor effects, so
+     * the scene alone decides */
+    size_t cam;
+    const char *why = aa.exact ? gls_play_exact_blocker(&aa, &p->scene, NULL, 0, 0, &cam) : NULL;
+    if (why && aa.exact == GLS_AA_EXACT) {
         gls_api_fail(e, "%s: exact coverage (aa GLSCENE_AA_EXACT) does not draw %s; ask for samples (aa N) instead",
                      bundle_path, why);
         goto fail;
+    }
+    if (aa.exact == GLS_AA_AUTO) { /* and its bound on a pixel's cost (exact.h) */
+        aa.exact = p->plan.o.exact = why ? GLS_AA_SAMPLED : GLS_AA_EXACT;
+        p->plan.o.dense = why ? 0 : GLS_EXACT_AUTO_DENSE;
     }
     int k = gls_gt_table_build(&p->gt, b, &p->scene, &p->drawing);
     if (k < 0) {

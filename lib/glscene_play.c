@@ -59,6 +59,7 @@ glscene_play *glscene_play_new(void)
     o->writer_threads = 1;
     o->outputs = GLS_OUT_IMAGE | GLS_OUT_DEPTH | GLS_OUT_POINTS;
     o->aa = gls_aa_defaults();
+    o->aa.exact = GLS_AA_AUTO; /* exact where the run allows it (play_aa.c) */
     o->progress = GLS_PROGRESS_OFF;
     return r;
 }
@@ -92,7 +93,7 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
         return gls_play_fail(r, e, -1, "--aa, --samples and --subpixel all choose the samples; give one");
     }
     /* exact coverage is the box filter's value, with no samples */
-    if (o->aa.exact && o->aa.filter != GLS_AA_BOX)
+    if (o->aa.exact == GLS_AA_EXACT && o->aa.filter != GLS_AA_BOX)
         return gls_play_fail(r, e, -1, "--aa exact is the box filter's exact value; leave out --filter gauss");
     if ((o->outputs & GLS_OUT_EXACT_ONLY) && !o->aa.exact)
         return gls_play_fail(r, e, -1, "--outputs %s needs --aa exact (exact areas, no samples)",
@@ -109,6 +110,7 @@ int glscene_play_check(glscene_play *r, glscene_error *e)
         }
     }
     if (r->subpixel > 0) {
+        o->aa.exact = GLS_AA_SAMPLED;
         o->aa.n = gls_aa_n_for_accuracy(o->aa.filter, o->aa.pattern, o->aa.sigma, r->subpixel);
         if (!o->aa.n)
             return gls_play_fail(r, e, -1, "--subpixel given needs a window larger than 4096x4096");

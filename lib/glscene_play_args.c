@@ -186,11 +186,12 @@ static int take_uint(glscene_play *r, const option *op, const char *a, const cha
     return 2;
 }
 
-/* --aa: N, or exact (exact coverage, spec/antialiasing.md) */
+/* --aa: N, exact (exact coverage) or auto (the default: exact where the
+ * run allows it; spec/antialiasing.md "The default") */
 static int take_aa(glscene_play *r, const option *op, const char *a, const char *next, glscene_error *e)
 {
-    if (next && strcmp(next, "exact") == 0) {
-        r->o.aa.exact = 1, r->have_aa = 1;
+    if (next && (strcmp(next, "exact") == 0 || strcmp(next, "auto") == 0)) {
+        r->o.aa.exact = next[0] == 'e' ? GLS_AA_EXACT : GLS_AA_AUTO, r->o.aa.n = 1, r->have_aa = 1;
         return 2;
     }
     return take_uint(r, op, a, next, e);
@@ -215,8 +216,15 @@ static int take_choice(glscene_play *r, const option *op, const char *a, const c
     return 2;
 }
 
-static void set_aa(glscene_play *r, unsigned long long v) { r->o.aa.n = (uint32_t)v, r->o.aa.exact = 0, r->have_aa = 1; }
-static void set_samples(glscene_play *r, unsigned long long v) { r->o.aa.samples = v, r->have_samples = 1; }
+/* samples asked for: --aa N, --samples M (and --subpixel, glscene_play_check) */
+static void set_aa(glscene_play *r, unsigned long long v)
+{
+    r->o.aa.n = (uint32_t)v, r->o.aa.exact = GLS_AA_SAMPLED, r->have_aa = 1;
+}
+static void set_samples(glscene_play *r, unsigned long long v)
+{
+    r->o.aa.samples = v, r->o.aa.exact = GLS_AA_SAMPLED, r->have_samples = 1;
+}
 static void set_aa_memory(glscene_play *r, unsigned long long v) { r->o.aa_memory = (uint64_t)v << 20; }
 static void set_seed(glscene_play *r, unsigned long long v) { r->o.aa.seed = v; }
 static void set_aa_tiles(glscene_play *r, unsigned long long v) { r->o.aa_tiles = (uint32_t)v; }
@@ -408,7 +416,7 @@ static const option options[] = {
     OWN("-o", "--output", take_output, 0),
     OWN("--outputs", NULL, take_outputs, 0),
     VALUE("--size", "WxH with both in 1..16384", read_size),
-    {"--aa", NULL, take_aa, 0, "N in 1..4096", 1, GLS_AA_MAX_N, set_aa, NULL, NULL, 0, 0, 0},
+    {"--aa", NULL, take_aa, 0, "N in 1..4096, exact or auto", 1, GLS_AA_MAX_N, set_aa, NULL, NULL, 0, 0, 0},
     UINT("--samples", "M in 1..16777216", 1, GLS_AA_MAX_SAMPLES, set_samples),
     UINT("--aa-memory", "MB in 16..1048576", 16, 1048576, set_aa_memory),
     VALUE("--subpixel", "an accuracy in pixels, 0 < A <= 1 (e.g. 1/256)", read_subpixel),

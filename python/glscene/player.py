@@ -109,10 +109,12 @@ def _decode(name: str, a: _Array):
 class Player:
     """A compiled scene (.glsb) ready to render.
 
-    Player(bundle, aa=N (N x N samples a pixel, glsplay --aa) or "exact"
-    (the exact area of what is visible in each pixel: flat and vertex
-    colours through a pinhole; outputs may then include "coverage" and
-    "edge_segments"),
+    Player(bundle, aa="auto" (the default, glsplay's: exact coverage
+    where the scene and cameras allow it, else one sample a pixel), "exact"
+    (the exact area of what is visible in each pixel times its colour;
+    refuses a scene or camera it cannot draw) or N (N x N samples a pixel,
+    glsplay --aa N); with exact coverage outputs may include "coverage" and
+    "edge_segments",
     pattern="lattice"|"grid"|"stratified", backend="auto"|"egl"|"osmesa",
     background=(r, g, b) in 0..1, seed=0, options=[more glsplay
     arguments, e.g. "--image-format", "png16"]).  A context manager; close()
@@ -123,7 +125,7 @@ class Player:
     (and their files unchanged) renders in it without loading the scene
     again; other settings close it and begin theirs."""
 
-    def __init__(self, bundle: Union[str, os.PathLike], aa: Union[int, str] = 1, pattern: str = "lattice",
+    def __init__(self, bundle: Union[str, os.PathLike], aa: Union[int, str] = "auto", pattern: str = "lattice",
                  backend: str = "auto", background: Sequence[float] = (0.0, 0.0, 0.0), seed: int = 0,
                  options: Sequence[str] = ()):
         self._p = None
@@ -135,14 +137,15 @@ class Player:
         self._bundle = os.fspath(bundle)
         # the run's --aa exact, which has coverage and edge_segments too
         # (glscene_render's GLSCENE_AA_EXACT has the image only)
-        exact = aa == "exact"
-        self._args = ["--aa", "exact" if exact else str(int(aa)), "--pattern", pattern, "--seed", str(int(seed)),
+        exact, auto = aa == "exact", aa == "auto"
+        self._args = ["--aa", aa if exact or auto else str(int(aa)), "--pattern", pattern, "--seed", str(int(seed)),
                       "--background", ",".join(repr(float(x)) for x in background)]
         if backend != "auto":
             self._args += ["--backend", backend]
         self._args += [str(x) for x in options]
         self._moved = set()
-        o = _Options(_BACKENDS[backend], 1 if exact else int(aa), _PATTERNS[pattern], int(seed),
+        # glscene_open's aa: 0 is --aa auto, the same choice (play_aa.c)
+        o = _Options(_BACKENDS[backend], 1 if exact else 0 if auto else int(aa), _PATTERNS[pattern], int(seed),
                      (ctypes.c_float * 3)(*background))
         err = _Error()
         p = _lib.glscene_open(_path(bundle), ctypes.byref(o), ctypes.byref(err))

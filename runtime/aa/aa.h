@@ -39,11 +39,23 @@ typedef struct {
     double sigma;           /* Gaussian sigma in pixels (> 0)              */
     gls_aa_pattern pattern;
     uint64_t seed;          /* stratified jitter seed                      */
-    int exact;              /* exact coverage instead of samples (exact.h,
-                               spec/antialiasing.md "Exact coverage"): the
-                               plan is then one sample's, the frame plan
-                               runs the exact pass                        */
+    int exact;              /* GLS_AA_EXACT: exact coverage instead of
+                               samples (exact.h, spec/antialiasing.md
+                               "Exact coverage"): the plan is then one
+                               sample's, the frame plan runs the exact
+                               pass.  GLS_AA_AUTO (glsplay's default): exact
+                               where the run allows it, else samples;
+                               the player chooses once, before anything is
+                               drawn (play_aa.c), and the plan after that
+                               holds GLS_AA_EXACT or GLS_AA_SAMPLED       */
+    uint32_t dense;         /* exact coverage: 0, every pixel exact; or a
+                               pixel where more triangles may show is
+                               point-sampled (gls_exact_render's dense;
+                               --aa auto's GLS_EXACT_AUTO_DENSE)          */
 } gls_aa_opts;
+
+/* gls_aa_opts.exact (spec/antialiasing.md "The default") */
+enum { GLS_AA_SAMPLED = 0, GLS_AA_EXACT = 1, GLS_AA_AUTO = 2 };
 
 typedef struct {
     gls_aa_opts o;          /* o.n is sqrt(M) for grid and stratified      */

@@ -124,9 +124,17 @@ typedef struct {
 
 /* gls_exact_image (rgba NULL: no colour) that also writes cover (NULL:
  * none; w * h * GLS_EXACT_COVER_K entries), each triangle's id mapped
- * through idmap (NULL: the id as it is). */
+ * through idmap (NULL: the id as it is).  dense: 0, every pixel exact; or
+ * a pixel where more than dense triangles may show is point-sampled at
+ * the GLS_EXACT_SHADE_M lattice points, as an alpha-tested one is (the
+ * nearest surface at each point): resolving a pixel exactly costs about
+ * the square of its candidates (a fan of 65,534 triangles drawn into a
+ * 10-pixel disc took 29 s at 32 x 32).  Not with cover (its areas).
+ * glsplay's default (--aa auto) bounds it at GLS_EXACT_AUTO_DENSE; --aa
+ * exact does not. */
+#define GLS_EXACT_AUTO_DENSE 256
 int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
-                     void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover);
+                     void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover, size_t dense);
 
 /* Edge segments (spec/outputs.md "Edge segments"): the visible edges of
  * the image, from the same visibility as the areas (depth planes, ties to

@@ -60,6 +60,7 @@ static void *band_worker(void *arg)
     sched *s = arg;
     exact_work wk = {0};
     wk.prep = s->proto->prep, wk.tris = s->proto->tris, wk.cands = s->proto->cands, wk.cuser = s->proto->cuser;
+    wk.dense = s->proto->dense;
     /* a worker that hands its bands out itself keeps one slot's buffers
      * for all of them: half the memory first touched (page faults were a
      * tenth of the road frame's CPU) */
@@ -154,7 +155,7 @@ static int run_bands(exact_work *wk, const band_lists *bl, int w, int h, gls_exa
 }
 
 static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
-                 exact_cand_fn cands, unsigned threads, int any_thread)
+                 exact_cand_fn cands, unsigned threads, int any_thread, size_t dense)
 {
     if (w <= 0 || h <= 0)
         return 0;
@@ -168,7 +169,7 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
     if (p && ok) {
         for (size_t k = 0; k < n; k++)
             ok[k] = (unsigned char)exact_prep_tri(&t[k], w, h, &p[k]);
-        wk.prep = p, wk.tris = t, wk.cands = cands, wk.cuser = user;
+        wk.prep = p, wk.tris = t, wk.cands = cands, wk.cuser = user, wk.dense = dense;
         band_lists bl = {0};
         rc = exact_band_lists_make(p, ok, n, (h + EXACT_BAND - 1) / EXACT_BAND, &bl);
         if (rc == 0)
@@ -182,21 +183,26 @@ static int visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel
 
 int gls_exact_visit(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
 {
-    return visit(t, n, w, h, fn, user, NULL, 0, 0);
+    return visit(t, n, w, h, fn, user, NULL, 0, 0, 0);
+}
+
+int exact_visit_dense(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user, size_t dense)
+{
+    return visit(t, n, w, h, fn, user, NULL, 0, 1, dense);
 }
 
 int gls_exact_visit_any_thread(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user)
 {
-    return visit(t, n, w, h, fn, user, NULL, 0, 1);
+    return visit(t, n, w, h, fn, user, NULL, 0, 1, 0);
 }
 
 int gls_exact_visit_threads(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user,
                             unsigned threads)
 {
-    return visit(t, n, w, h, fn, user, NULL, threads, 0);
+    return visit(t, n, w, h, fn, user, NULL, threads, 0, 0);
 }
 
 int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user)
 {
-    return visit(t, n, w, h, NULL, user, fn, 0, 0);
+    return visit(t, n, w, h, NULL, user, fn, 0, 0, 0);
 }

@@ -293,7 +293,9 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
         pixel_cover(c, f, n, c->cover + at * GLS_EXACT_COVER_K);
     if (!c->rgba)
         return;
-    int holes = 0, any = 0;
+    /* unresolved frags (area NaN): an alpha-tested pixel's, or a dense
+     * one's (gls_exact_render's dense): point-sampled */
+    int holes = n && f[0].area != f[0].area, any = 0;
     for (size_t k = 0; k < n; k++)
         holes |= (c->t[f[k].tri].flags & GLS_EXACT_HOLES) != 0, any |= (c->t[f[k].tri].flags & GLS_EXACT_SAMPLED) != 0;
     /* per region scratch: on the stack for up to 64 regions, else
@@ -341,11 +343,11 @@ static void image_pixel(void *user, int px, int py, const gls_exact_frag *f, siz
 int gls_exact_image(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
                     void *user, float *rgba)
 {
-    return gls_exact_render(t, n, w, h, bg, shade, user, NULL, rgba, NULL);
+    return gls_exact_render(t, n, w, h, bg, shade, user, NULL, rgba, NULL, 0);
 }
 
 int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float bg[4], gls_exact_shade_fn shade,
-                     void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover)
+                     void *user, const uint16_t *idmap, float *rgba, gls_exact_cover *cover, size_t dense)
 {
     image_ctx c = {t, bg, shade, user, rgba, idmap, cover, w, 0, {0}, {0}};
     /* the lattice the sampled path uses at that count (lattice.c) */
@@ -360,5 +362,5 @@ int gls_exact_render(const gls_exact_tri *t, size_t n, int w, int h, const float
     /* each pixel's value depends on its frags only and is written to its
      * own place: the workers compute it (the shading is most of the work
      * on textured scenes) */
-    return gls_exact_visit_any_thread(t, n, w, h, image_pixel, &c) || c.oom ? -1 : 0;
+    return exact_visit_dense(t, n, w, h, image_pixel, &c, cover ? 0 : dense) || c.oom ? -1 : 0;
 }

@@ -127,6 +127,9 @@ typedef struct {
  * or -1 to stop (out of memory), which exact_visit_cands returns. */
 typedef int (*exact_cand_fn)(void *user, const exact_prep *p, const exact_cand *c, size_t nc, int i, int j);
 int exact_visit_cands(const gls_exact_tri *t, size_t n, int w, int h, exact_cand_fn fn, void *user);
+/* gls_exact_visit_any_thread where a pixel of more than dense candidates
+ * (0: none is) is handed out unresolved (gls_exact_render's dense). */
+int exact_visit_dense(const gls_exact_tri *t, size_t n, int w, int h, gls_exact_pixel_fn fn, void *user, size_t dense);
 
 /* The image is done in bands of EXACT_BAND rows (exact_pixels.c computes
  * a band, exact_bands.c hands the bands to threads and out in order). */
@@ -138,6 +141,8 @@ struct exact_work {
     exact_pt *buf[3];   /* clip buffers: the piece, its two parts          */
     size_t cap[3];
     exact_cand_fn cands; /* exact_visit_cands: the visible candidates     */
+    size_t dense;       /* 0, or a pixel of more candidates than this is
+                           handed out unresolved (gls_exact_render)       */
     void *cuser;
     double (*box)[4];   /* per candidate of the pixel being resolved: the
                            box of its part of the square, pixel-local

@@ -268,6 +268,15 @@ static int resolve(exact_work *w, exact_cand *c, size_t nc, int i, int j, gls_ex
         *nf = 1;
         return 0;
     }
+    /* a dense pixel (gls_exact_render's dense): its exact cuts would cost
+     * the square of its candidates; its candidates go out unresolved, as
+     * an alpha-tested pixel's do below, and the colour is point-sampled */
+    if (w->dense && nc > w->dense) {
+        for (size_t k = 0; k < nc; k++)
+            out[k] = (gls_exact_frag){c[k].tri, NAN, i, j};
+        *nf = nc;
+        return 0;
+    }
     qsort(c, nc, sizeof *c, cand_order);
     /* with many candidates, each one's box of its part of the square,
      * clipped (a few: the triangles' own boxes, as cheap as the cuts they

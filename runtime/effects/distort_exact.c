@@ -12,7 +12,7 @@ int gls_distort_exact_plan(gls_aa_plan *p, char *err, size_t errlen)
 }
 
 int gls_distort_exact(gls_distort_frame *fr, const gls_camera *c, const gls_scene *s, const gls_texture *textures,
-                      const float bg[4], float *rgba, char *err, size_t errlen)
+                      const float bg[4], size_t dense, float *rgba, char *err, size_t errlen)
 {
     gls_aa_plan p;
     if (gls_distort_exact_plan(&p, err, errlen) ||
@@ -30,7 +30,8 @@ int gls_distort_exact(gls_distort_frame *fr, const gls_camera *c, const gls_scen
     int rc = -1;
     if (fine && rgb && fr->rgb16 && gls_exact_geom_make(&g, s, textures, f) == 0) {
         /* the undistorted image exactly, then the lens path's reads */
-        rc = gls_exact_render(g.t, g.n, (int)f->width, (int)f->height, bg, gls_exact_geom_shade, &g, NULL, fine, NULL) ||
+        rc = gls_exact_render(g.t, g.n, (int)f->width, (int)f->height, bg, gls_exact_geom_shade, &g, NULL, fine, NULL,
+                              dense) ||
                      gls_accum_init(&acc, c->width, c->height, 0, 0)
                  ? -1
                  : 0;

@@ -23,9 +23,9 @@ int gls_distort_exact_plan(gls_aa_plan *p, char *err, size_t errlen);
 
 /* Camera c's image through its lens into rgba (c's width x height, RGBA
  * float), fr's rays already made (gls_distort_frame_render); scene s, its
- * bundle's textures, background bg.  Sets fr's anti-aliased layout and
- * fine image.  0, or -1 with a message. */
+ * bundle's textures, background bg; dense: gls_exact_render's.  Sets
+ * fr's anti-aliased layout and fine image.  0, or -1 with a message. */
 int gls_distort_exact(gls_distort_frame *fr, const gls_camera *c, const gls_scene *s, const gls_texture *textures,
-                      const float bg[4], float *rgba, char *err, size_t errlen);
+                      const float bg[4], size_t dense, float *rgba, char *err, size_t errlen);
 
 #endif

@@ -225,8 +225,21 @@ static void explain_aa(FILE *out, const gls_aa_plan *pp, const gls_play_opts *o)
     }
 }
 
-/* Camera c: its model and pose, its effects, its frame plan, and what its
- * passes read back and its files hold. */
+/* Exact coverage or samples, and for --aa auto (the default) why
+ * (play_aa.c chose before this is printed): a line when an image or
+ * exact coverage's outputs are asked for. */
+static void explain_aa_choice(FILE *out, const gls_play_opts *o)
+{
+    if (!(o->outputs & (GLS_OUT_IMAGE | GLS_OUT_EXACT_ONLY)))
+        return;
+    if (o->aa.exact)
+        fprintf(out, "anti-aliasing: exact coverage%s: each pixel the exact visible areas times their colours, "
+                     "in double on the CPU, no samples\n", o->aa_auto ? " (--aa auto, the default)" : " (--aa exact)");
+    else if (o->aa_auto)
+        fprintf(out, "anti-aliasing: one sample a pixel, as --aa 1 (--aa auto, the default, chose samples: exact "
+                     "coverage does not draw %s)\n", o->aa_auto_why);
+}
+
 /* Camera c's anti-aliasing: the fine framebuffer's passes and tiles, or
  * the jittered passes' mosaic, and what each reads back. */
 static void explain_camera_aa(FILE *out, const gls_camera *c, const gls_play_opts *o, const gls_aa_plan *pp, int aa)
@@ -347,6 +360,8 @@ static void explain_camera_writes(FILE *out, const gls_scene *s, const gls_camer
                                             : "");
 }
 
+/* Camera c: its model and pose, its effects, its frame plan, and what its
+ * passes read back and its files hold. */
 static void explain_camera(FILE *out, const gls_scene *s, const gls_camera *c, const char *name,
                            const gls_play_opts *o, const gls_aa_plan *pp)
 {
@@ -402,6 +417,7 @@ void gls_explain(FILE *out, const char *bundle_path, const gls_bundle *b, const 
     explain_instances(out, s, cams, names, n, o);
     explain_backend(out, o, ctx);
     explain_features(out, b, s, o);
+    explain_aa_choice(out, o);
     if (aa)
         explain_aa(out, &p, o);
     if (!n) {

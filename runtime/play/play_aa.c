@@ -7,6 +7,7 @@
  * anti-aliasing plan hold GLS_AA_EXACT or GLS_AA_SAMPLED, never
  * GLS_AA_AUTO, and --explain says which and why (explain.c). */
 #include <string.h>
+#include "exact.h"
 #include "exact_scene.h"
 #include "play_int.h"
 
@@ -63,7 +64,12 @@ int play_aa_choose(gls_play_opts *o, gls_aa_plan *plan, const gls_scene *s, cons
             return 1;
         }
     }
-    plan->o.exact = o->aa.exact;
+    /* the default bounds a pixel's cost (exact.h GLS_EXACT_AUTO_DENSE):
+     * one where more triangles may show is point-sampled; coverage and
+     * edge segments need every area, --aa exact asks for them all */
+    if (o->aa_auto && o->aa.exact && !(o->outputs & GLS_OUT_EXACT_ONLY))
+        o->aa.dense = GLS_EXACT_AUTO_DENSE;
+    plan->o.exact = o->aa.exact, plan->o.dense = o->aa.dense;
     /* alpha-tested triangles are point-sampled in the image (exact.h
      * GLS_EXACT_HOLES): their areas are not exact, so nothing reports them */
     if (o->aa.exact && (s->features & GLS_FEAT_ALPHA_TEST) && (o->outputs & GLS_OUT_EXACT_ONLY)) {

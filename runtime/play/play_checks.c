@@ -127,22 +127,6 @@ int play_lens_check(const gls_camera *c, const char *path, const gls_aa_plan *pl
     return 0;
 }
 
-/* --aa exact projects through a pinhole at one instant (spec/antialiasing.md
- * "Exact coverage in glsplay"; a lens resamples its undistorted image,
- * distort_exact.h): the exposure's effects and the sensor's are refused.
- * 0, or -1 after a message. */
-int play_exact_camera_check(const gls_camera *c, const gls_exposure *e, const char *name, FILE *errs)
-{
-    const char *why = gls_exposure_on(e)     ? "exposure effects (shutter, line_delay or aperture)"
-                      : c->sensor.on         ? "sensor effects"
-                                             : NULL;
-    if (!why)
-        return 0;
-    fprintf(errs, "glsplay: error: camera %s: --aa exact needs a pinhole camera without %s; leave out --aa exact "
-                  "(sampled anti-aliasing draws it) or those keys\n", name, why);
-    return -1;
-}
-
 /* The effects of every camera, before anything is drawn: a note for a
  * shutter or line_delay with nothing moving (no effect), the
  * accumulator's range, and the trajectory read whole when a camera needs
@@ -161,8 +145,6 @@ int play_exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_camera
                                                                   : "line_delay has");
         gls_exposure e = gls_exposure_of(c, ms->moving);
         char why[300];
-        if (plan->o.exact && play_exact_camera_check(c, &e, names[i], errs))
-            return 1;
         /* through a lens the exact areas are the undistorted image's */
         if (plan->o.exact && gls_distort_on(c) && (o->outputs & GLS_OUT_EXACT_ONLY)) {
             fprintf(errs, "glsplay: error: camera %s: --outputs %s needs a pinhole camera: through a lens the exact "

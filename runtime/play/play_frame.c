@@ -221,13 +221,13 @@ static int frame_exact(session *s, const gls_camera *c, cam_frame *cf)
         s->counts->passes[GLS_PASS_I_EXACT]++;
     /* coverage's ids: the instance ids of the run (gt_table.h) */
     const uint16_t *idmap = s->gt ? s->gt->id : NULL;
-    if (cf->fp.lens) { /* exact in the undistorted image the lens path resamples */
-        char err[400];
-        return cf->exact && gls_distort_exact(&cf->df, c, s->scene, s->textures, bg, cf->exact, err, sizeof err) ? -1 : 0;
-    }
+    size_t dense = s->plan->o.dense; /* aa.h */
+    char err[400];
+    if (cf->fp.lens) /* exact in the undistorted image the lens path resamples */
+        return cf->exact && gls_distort_exact(&cf->df, c, s->scene, s->textures, bg, dense, cf->exact, err, 400) ? -1 : 0;
     int rc = gls_exact_geom_make(&g, s->scene, s->textures, c) ||
              ((cf->exact || cf->cover) && gls_exact_render(g.t, g.n, (int)c->width, (int)c->height, bg,
-                                                           gls_exact_geom_shade, &g, idmap, cf->exact, cf->cover)) ||
+                                                           gls_exact_geom_shade, &g, idmap, cf->exact, cf->cover, dense)) ||
              (cf->fp.segs && (gls_exact_edges(g.t, g.n, (int)c->width, (int)c->height, idmap, keep_seg, cf) ||
                               cf->segs_oom));
     gls_exact_geom_free(&g);

@@ -12,6 +12,7 @@
  *   play_flow.c     a camera frame's flow to the next row
  *   play_motion.c   the --motion set: load, check, apply, free
  *   play_checks.c   the option and input checks before anything is drawn
+ *   play_aa.c       exact coverage or samples: --aa auto's choice
  *   play_paths.c    camera names and output file paths */
 #ifndef GLS_PLAY_INT_H
 #define GLS_PLAY_INT_H
@@ -102,11 +103,16 @@ int play_exposure_check(const motion_set *ms, const gls_camera *cams, const char
 void play_motion_apply(const motion_set *ms, uint64_t frame);
 void play_motion_free(motion_set *ms);
 
+/* play_aa.c: exact coverage or samples for the run (--aa auto resolved,
+ * --aa exact's refusals): o->aa.exact and plan->o.exact become
+ * GLS_AA_EXACT or GLS_AA_SAMPLED.  0, or 1 after a message. */
+int play_aa_choose(gls_play_opts *o, gls_aa_plan *plan, const gls_scene *s, const gls_camera *cams,
+                   const char *const *names, FILE *errs);
+
 /* play_checks.c */
 int play_rectified_check(const gls_play_opts *o, const gls_camera *cams, const char *const *names, double *B,
                          FILE *errs);
 int play_lens_outputs_check(const gls_play_opts *o, const gls_camera *c, const char *path, FILE *errs);
-int play_exact_camera_check(const gls_camera *c, const gls_exposure *e, const char *name, FILE *errs);
 int play_lens_check(const gls_camera *c, const char *path, const gls_aa_plan *plan, FILE *errs);
 int play_exposure_setup(const gls_play_opts *o, motion_set *ms, const gls_camera *cams, const char *const *names,
                         const gls_aa_plan *plan, FILE *errs);

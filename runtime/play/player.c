@@ -97,7 +97,7 @@ static int run_load_cameras(run *u)
         }
         if (o->width)
             c->width = o->width, c->height = o->height;
-        if (play_lens_check(c, o->cameras[i], &u->plan, errs) || play_lens_outputs_check(o, c, o->cameras[i], errs))
+        if (play_lens_outputs_check(o, c, o->cameras[i], errs))
             return 1;
         u->names[i] = play_camera_name(o->cameras[i]); /* usable: gls_play_check_options */
         if (!u->names[i])
@@ -123,20 +123,13 @@ static int run_load_scene(run *u)
         return 1;
     }
     u->times.build = gls_now(), u->times.pack = u->scene.pack_seconds;
-    const char *why = u->plan.o.exact ? gls_exact_scene_unsupported(&u->scene) : NULL;
-    if (why) {
-        fprintf(errs, "glsplay: error: %s: --aa exact does not draw %s; leave out --aa exact (sampled "
-                      "anti-aliasing draws it)\n", o->bundle, why);
+    /* exact coverage or samples, once (play_aa.c), and each lens checked
+     * for the anti-aliasing chosen */
+    if (play_aa_choose(&u->opts, &u->plan, &u->scene, u->cams, names, errs))
         return 1;
-    }
-    /* alpha-tested triangles are point-sampled in the image (exact.h
-     * GLS_EXACT_HOLES): their areas are not exact, so nothing reports them */
-    if (u->plan.o.exact && (u->scene.features & GLS_FEAT_ALPHA_TEST) && (o->outputs & GLS_OUT_EXACT_ONLY)) {
-        fprintf(errs, "glsplay: error: %s: --outputs %s needs exact areas, and the scene has textures with "
-                      "transparent texels (alpha-tested, sampled in the image); leave out %s\n", o->bundle,
-                GLS_OUT_EXACT_WORD(o->outputs), GLS_OUT_EXACT_WORD(o->outputs));
-        return 1;
-    }
+    for (size_t i = 0; i < o->ncameras; i++)
+        if (play_lens_check(&u->cams[i], o->cameras[i], &u->plan, errs))
+            return 1;
     if (play_motion_load(o, &u->ms, errs) || (!o->trajectory && play_motion_check(&u->ms, o->frame, errs)))
         return 1;
     if (o->trajectory && gls_traj_load(o->trajectory, &u->ms.traj, err, sizeof err)) {

@@ -76,6 +76,11 @@ typedef struct {
                                     written: no directory, record or
                                     calibration file (the library's
                                     glscene_play_render)                */
+    int aa_auto;                 /* set by the player: aa.exact was
+                                    GLS_AA_AUTO (the default), and the
+                                    player chose (play_aa.c)            */
+    char aa_auto_why[200];       /* set by the player: why --aa auto drew
+                                    samples; "" when it chose exact     */
     int bands_whole;             /* 0; tests only (glsplay never sets it):
                                     each band of rows of a rolling
                                     shutter draws and reads back the
@@ -91,6 +96,17 @@ typedef struct {
  * given two --motion.  0, or -1 with the message (no "glsplay: error: ")
  * in msg. */
 int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen);
+
+/* What keeps exact coverage from drawing with these anti-aliasing options
+ * (a Gaussian filter), this scene (shadows; s may be NULL) and these n
+ * cameras (exposure or sensor effects; moving: a trajectory or a motion,
+ * with which shutter and line_delay act): NULL when nothing does, else a
+ * phrase that follows "exact coverage does not draw", and *cam the
+ * camera's index, or SIZE_MAX when it is the options' or the scene's.
+ * The one rule behind --aa auto and --aa exact's refusals (play_aa.c),
+ * and the library's (glscene_open). */
+const char *gls_play_exact_blocker(const gls_aa_opts *aa, const gls_scene *s, const gls_camera *cams, size_t n,
+                                   int moving, size_t *cam);
 
 /* One camera frame drawn by the player's own steps into buffers the
  * caller takes (libglscene's glscene_render): the frame plan for

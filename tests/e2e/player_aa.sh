@@ -13,8 +13,10 @@ usage() { name=$1; shift; "$@" >/dev/null 2>"$t/stderr"; rc=$?
 $B/tests/test_player --write "$t" >/dev/null || { fail player_aa "cannot write test scenes"; exit 0; }
 S="$t/proj.glsb --camera $t/proj.cam"
 
-run aa_plain $PLAY $S -o "$t/plain"
-run aa_one $PLAY $S -o "$t/one" --aa 1
+# the plain one-sample render (--aa 1; the default is exact coverage,
+# player_aa_default.sh), and one lattice sample, which must be it
+run aa_plain $PLAY $S -o "$t/plain" --aa 1
+run aa_one $PLAY $S -o "$t/one" --samples 1
 cmp -s "$t/plain/proj/image_000000.png" "$t/one/proj/image_000000.png" && ok aa_one_is_plain || fail aa_one_is_plain "images differ"
 run aa_16 $PLAY $S -o "$t/a16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,edges
 run aa_16_again $PLAY $S -o "$t/b16" --aa 4 --filter gauss:0.6 --pattern stratified --seed 5 --image-format png16 --outputs image,depth,edges

@@ -171,8 +171,9 @@ PYEOF
 else
     fail exact_coverage_compile "$(cat "$t/err")"
 fi
-# coverage without --aa exact: a usage error
-"$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --outputs coverage -o "$t/nc" 2>"$t/err"
+# coverage with samples asked for: a usage error (the default, exact where
+# it can draw, writes it: player_aa_default.sh)
+"$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --aa 1 --outputs coverage -o "$t/nc" 2>"$t/err"
 rc=$?
 [ $rc -eq 2 ] && grep -q "^glsplay: error: --outputs coverage needs --aa exact" "$t/err" && ok exact_coverage_needs_exact ||
     fail exact_coverage_needs_exact "exit $rc: $(cat "$t/err")"
@@ -221,8 +222,8 @@ want = [clipped(poly[k], poly[(k + 1) % 4]) for k in range(4)]
 d = max(abs(a - b) for a, b in zip(length, want))
 res('exact_edge_segments_outline', d <= 1e-6, 'lengths %s, want %s' % (length, want))
 PYEOF
-# edge_segments without --aa exact: a usage error
-"$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --outputs edge_segments -o "$t/ns" 2>"$t/err"
+# edge_segments with samples asked for: a usage error
+"$PLAY" "$t/sq.glsb" --camera "$t/c.cam" --samples 16 --outputs edge_segments -o "$t/ns" 2>"$t/err"
 rc=$?
 [ $rc -eq 2 ] && grep -q "^glsplay: error: --outputs edge_segments needs --aa exact" "$t/err" &&
     [ ! -e "$t/ns" ] && ok exact_edge_segments_needs_exact || fail exact_edge_segments_needs_exact "exit $rc: $(cat "$t/err")"

@@ -26,7 +26,9 @@ expect() {
 [ -x "$PLAY" ] || { fail player_cli "no $PLAY"; exit 0; }
 $B/tests/test_player --write "$t" >/dev/null || { fail player_cli "cannot write test scenes"; exit 0; }
 
-expect player_renders 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/out"
+# one sample a pixel (--aa 1): check_player.py proj holds GL's pixel
+# centres to its model (the default, exact coverage, has its own tests)
+expect player_renders 0 "" -- $PLAY "$t/proj.glsb" --camera "$t/proj.cam" --aa 1 -o "$t/out"
 for f in image_000000.png depth_000000.pfm points_000000.ply; do
     [ -s "$t/out/proj/$f" ] && ok "player_writes_$f" || fail "player_writes_$f" "missing"
 done
@@ -40,11 +42,16 @@ else
     fail player_opencv "no OpenCV under $PY"
 fi
 
-# determinism: same inputs, same bytes
-$PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/again" 2>/dev/null
+# determinism: same inputs, same bytes (one sample a pixel, and the
+# default, exact coverage, drawn by threads that share its bands out)
+$PLAY "$t/proj.glsb" --camera "$t/proj.cam" --aa 1 -o "$t/again" 2>/dev/null
+$PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/def1" 2>/dev/null
+$PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/def2" 2>/dev/null
 if cmp -s "$t/out/proj/image_000000.png" "$t/again/proj/image_000000.png" &&
    cmp -s "$t/out/proj/depth_000000.pfm" "$t/again/proj/depth_000000.pfm" &&
-   cmp -s "$t/out/proj/points_000000.ply" "$t/again/proj/points_000000.ply"; then
+   cmp -s "$t/out/proj/points_000000.ply" "$t/again/proj/points_000000.ply" &&
+   [ -s "$t/def1/proj/image_000000.png" ] && cmp -s "$t/def1/proj/image_000000.png" "$t/def2/proj/image_000000.png" &&
+   cmp -s "$t/def1/proj/points_000000.ply" "$t/def2/proj/points_000000.ply"; then
     ok player_deterministic
 else fail player_deterministic "outputs differ between runs"; fi
 
@@ -219,6 +226,11 @@ if [ "$GLS_SANITIZED" != 1 ]; then
         --size 1000x1000 --aa 16 --aa-tiles 256 --pattern stratified --outputs image
     exact player_err_image_memory 1 \
         "glsplay: error: camera proj: cannot allocate a 16384x16384 framebuffer (3.0 GiB of memory); lower --size (or the camera's width and height)" -- \
+        sh -c 'ulimit -v 1500000; exec "$@"' sh $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/mem" \
+        --size 16384x16384 --outputs image --aa 1
+    # the default, exact coverage: its float image and the file's, planned
+    exact player_err_image_memory_exact 1 \
+        "glsplay: error: camera proj: out of memory for the buffers of a 16384x16384 image (about 6.0 GiB); lower --size (or the camera's width and height)" -- \
         sh -c 'ulimit -v 1500000; exec "$@"' sh $PLAY "$t/proj.glsb" --camera "$t/proj.cam" -o "$t/mem" \
         --size 16384x16384 --outputs image
 fi

@@ -38,9 +38,11 @@ done
 [ "$same" = 1 ] && ok writer_thread_same_files ||
     fail writer_thread_same_files "$(cat "$tmp/err1" "$tmp/err0" "$tmp/diff" 2>/dev/null | head -5)"
 
-# PNG pixels exact (cv2.imread): 8-bit, 16-bit and the 16-bit images of an
-# anti-aliased render against the float image of the same render
+# PNG pixels exact (cv2.imread): the 8-bit and 16-bit images of the
+# default render (exact coverage) and the 16-bit image of a sampled one
+# against the float image of the same render
 play --frames 0:1 --image-format png16 --outputs image -o "$tmp/p16" 2>>"$tmp/err"
+play --frames 0:1 --image-format pfm --outputs image -o "$tmp/pf" 2>>"$tmp/err"
 play --frames 0:1 --image-format png16 --aa 4 --outputs image -o "$tmp/a16" 2>>"$tmp/err"
 play --frames 0:1 --image-format pfm --aa 4 --outputs image -o "$tmp/af" 2>>"$tmp/err"
 if /usr/bin/python3 - "$tmp" <<'PY'
@@ -50,9 +52,13 @@ p8 = cv2.imread(t + "/png8/cam/image_000000.png", cv2.IMREAD_UNCHANGED)
 p16 = cv2.imread(t + "/p16/cam/image_000000.png", cv2.IMREAD_UNCHANGED)
 a16 = cv2.imread(t + "/a16/cam/image_000000.png", cv2.IMREAD_UNCHANGED)
 af = cv2.imread(t + "/af/cam/image_000000.pfm", cv2.IMREAD_UNCHANGED)
+pf = cv2.imread(t + "/pf/cam/image_000000.pfm", cv2.IMREAD_UNCHANGED).astype(np.float64)
 ok = p8.dtype == np.uint8 and p8.shape == (48, 64, 3) and p16.dtype == np.uint16
 ok = ok and tuple(p8[24, 32]) == (128, 128, 128) and tuple(p8[0, 0]) == (64, 64, 64)
-ok = ok and np.array_equal(p16, p8.astype(np.uint16) * 257)
+# 8 and 16 bits of the exact image: its float value rounded to nearest
+ok = ok and np.array_equal(p8, np.round(pf * 255).astype(np.uint8))
+ok = ok and np.array_equal(p16, np.round(pf * 65535).astype(np.uint16))
+ok = ok and len(np.unique(p16)) > 3  # the square's edges cut pixels
 # 16-bit of the anti-aliased image: round(v * 65535) of the float image
 ok = ok and np.array_equal(a16, np.round(af.astype(np.float64) * 65535).astype(np.uint16))
 ok = ok and len(np.unique(a16)) > 3  # edge pixels between the greys

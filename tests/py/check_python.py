@@ -190,6 +190,19 @@ result("python_exact_image_and_coverage", cov.dtype == glscene.COVERAGE_DTYPE an
        and touched.sum() > 100 and np.abs(sums[touched] - 1).max() < 1e-9,
        "%d pixels touched, worst |sum - 1| %g, image equal %s" % (touched.sum(), np.abs(sums[touched] - 1).max(),
                                                                    np.array_equal(ex["image"], want)))
+# the default (aa="auto", glsplay's): exact coverage, through glscene_render
+# (a camera from numbers) and through a run (coverage), the same image as
+# aa="exact"; aa=1 is one sample a pixel, another image
+tc = glscene.Camera.from_file(tcam)
+with glscene.Player(t) as p:
+    d_direct = p.render(glscene.Camera(64, 48, 50, 50, 31.5, 23.5), outputs="image")["image"]
+    d_run = p.render(tc, outputs=["image", "coverage"])
+with glscene.Player(t, aa=1) as p:
+    one = p.render(tc, outputs="image")["image"]
+result("python_default_is_exact", np.array_equal(d_direct, want) and np.array_equal(d_run["image"], want)
+       and np.array_equal(d_run["coverage"], cov) and not np.array_equal(one, want),
+       "direct %s, run %s, one sample differs %s" % (np.array_equal(d_direct, want), np.array_equal(d_run["image"], want),
+                                                     not np.array_equal(one, want)))
 # edge_segments: the triangle's three edges, projected: (-1,-1,5), (1,-1,5),
 # (0,1,5) through fx = fy = 50, (cx, cy) = (31.5, 23.5): each segment on one
 # of them within 1e-9 px, the triangle's id on one side and 0 on the other

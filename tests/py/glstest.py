@@ -106,7 +106,9 @@ def look_at(C, target):
 def render_green(BIN, d, R, T, size, far):
     """Compile d/Top.scene, render it through a pinhole camera (W, H, F =
     size, principal point at the centre) with R, T: the image's green
-    channel as floats."""
+    channel as floats.  One sample a pixel (--aa 1): the checks hold each
+    pixel centre to a closed form, and a scene without shadows would
+    otherwise be drawn by exact coverage (glsplay's default)."""
     import cv2
     W, H, F = size
     cam = os.path.join(d, "cam.cam")
@@ -114,8 +116,8 @@ def render_green(BIN, d, R, T, size, far):
           (W, H, F, F, (W - 1) / 2, (H - 1) / 2, " ".join(repr(float(x)) for x in R.ravel()),
            " ".join(repr(float(x)) for x in T), far))
     run(os.path.join(BIN, "glsc"), "-o", os.path.join(d, "s.glsb"), os.path.join(d, "Top.scene"))
-    run(os.path.join(BIN, "glsplay"), os.path.join(d, "s.glsb"), "--camera", cam, "--outputs", "image", "-o",
-        os.path.join(d, "out"))
+    run(os.path.join(BIN, "glsplay"), os.path.join(d, "s.glsb"), "--camera", cam, "--outputs", "image", "--aa",
+        "1", "-o", os.path.join(d, "out"))
     return cv2.imread(os.path.join(d, "out", "cam", "image_000000.png"), cv2.IMREAD_COLOR)[:, :, 1].astype(float)
 
 

@@ -487,6 +487,22 @@ static void test_exact_image_sampled(void)
     CHECK_MSG(v > 0.5 * 0.1 && v < 0.5 * (1.0 / 3), "half pixel %g", v);
 }
 
+/* The pixel-local position (x, y) of the pixel's lattice point m (of
+ * GLS_EXACT_SHADE_M, as the sampled path places them) and the wedge it
+ * falls in of a fan of n about the pixel's centre turned by off. */
+static int lattice_wedge(int m, double off, int n, double *x, double *y)
+{
+    gls_lattice l;
+    int64_t qx, qy;
+    CHECK(gls_lattice_choose(GLS_EXACT_SHADE_M, &l) == 0);
+    gls_lattice_point(&l, (uint64_t)m, &qx, &qy);
+    *x = (double)qx / (double)l.q - 0.5, *y = (double)qy / (double)l.q - 0.5;
+    double a = atan2(*y, *x) - off;
+    a = a < 0 ? a + 2 * M_PI : a;
+    int k = (int)(a / (2 * M_PI / n));
+    return k >= n ? n - 1 : k;
+}
+
 /* A pixel of 300 sampled regions (a fan about its centre) under a shader
  * that varies with the position (u^2): each region's colour is the mean
  * at the lattice points in its own wedge, or its centroid's where it has
@@ -507,18 +523,11 @@ static void test_exact_image_sampled_many_regions(void)
     float rgba[3 * 3 * 4], bg[4] = {0, 0, 0, 1}, alpha = 1;
     CHECK(gls_exact_image(t, N, 3, 3, bg, shade_test, &alpha, rgba) == 0);
     /* the lattice points' wedges */
-    gls_lattice l;
-    CHECK(gls_lattice_choose(GLS_EXACT_SHADE_M, &l) == 0);
     double sum[N] = {0};
     int cnt[N] = {0};
     for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
-        int64_t qx, qy;
-        gls_lattice_point(&l, (uint64_t)m, &qx, &qy);
-        double x = (double)qx / (double)l.q - 0.5, y = (double)qy / (double)l.q - 0.5;
-        double a = atan2(y, x) - off;
-        a = a < 0 ? a + 2 * M_PI : a;
-        int k = (int)(a / (2 * M_PI / N));
-        k = k >= N ? N - 1 : k;
+        double x, y;
+        int k = lattice_wedge(m, off, N, &x, &y);
         sum[k] += (x + 0.5) * (x + 0.5), cnt[k]++;
     }
     double want = 0, area = 0;
@@ -531,6 +540,45 @@ static void test_exact_image_sampled_many_regions(void)
     CHECK_NEAR(area, 1, 1e-12);
     CHECK_MSG(with_points > 40, "%d wedges hold lattice points", with_points);
     CHECK_NEAR(rgba[(1 * 3 + 1) * 4 + 0], want, 1e-6);
+}
+
+/* A dense pixel (gls_exact_render's dense, --aa auto's bound): a fan of
+ * 300 flat triangles about pixel (1, 1)'s centre, alternately red and
+ * green.  With dense 0 (and with dense 300, not exceeded) the pixel is
+ * exact: red is the red wedges' area (worked out here from the wedges),
+ * 0.5.  With dense 256 it is point-sampled: red is the share of the 64
+ * lattice points in a red wedge (from the points' angles), which the
+ * lattice makes other than 0.5; the pixels with fewer triangles stay
+ * exact, the same bytes. */
+static void test_exact_image_dense(void)
+{
+    enum { N = 300 };
+    static gls_exact_tri t[N];
+    const double off = 0.001; /* no lattice point on a wedge's edge */
+    for (int k = 0; k < N; k++) {
+        double a0 = off + 2 * M_PI * k / N, a1 = off + 2 * M_PI * (k + 1) / N;
+        t[k] = tri(1, 1, 1 + 3 * cos(a0), 1 + 3 * sin(a0), 1 + 3 * cos(a1), 1 + 3 * sin(a1), 1);
+        t[k].rgba[0] = k % 2 ? 0.0f : 1.0f, t[k].rgba[1] = k % 2 ? 1.0f : 0.0f, t[k].rgba[2] = 0;
+    }
+    float ex[3 * 3 * 4], at[3 * 3 * 4], dn[3 * 3 * 4], bg[4] = {0, 0, 0, 1};
+    CHECK(gls_exact_render(t, N, 3, 3, bg, NULL, NULL, NULL, ex, NULL, 0) == 0);
+    CHECK(gls_exact_render(t, N, 3, 3, bg, NULL, NULL, NULL, at, NULL, N) == 0);
+    CHECK(gls_exact_render(t, N, 3, 3, bg, NULL, NULL, NULL, dn, NULL, GLS_EXACT_AUTO_DENSE) == 0);
+    int red = 0;
+    for (int m = 0; m < GLS_EXACT_SHADE_M; m++) {
+        double x, y;
+        red += lattice_wedge(m, off, N, &x, &y) % 2 == 0;
+    }
+    double sampled = (double)red / GLS_EXACT_SHADE_M;
+    CHECK_NEAR(ex[(1 * 3 + 1) * 4 + 0], 0.5, 1e-9);
+    CHECK(memcmp(ex, at, sizeof ex) == 0);
+    CHECK_MSG(fabs(sampled - 0.5) > 1e-3, "the lattice gives %g, as the exact area", sampled);
+    CHECK_NEAR(dn[(1 * 3 + 1) * 4 + 0], sampled, 1e-6);
+    CHECK_NEAR(dn[(1 * 3 + 1) * 4 + 1], 1 - sampled, 1e-6);
+    /* the others see a quarter of the fan at most (about 75 triangles) */
+    for (int px = 0; px < 9; px++)
+        if (px != 4)
+            CHECK_MSG(memcmp(dn + 4 * px, ex + 4 * px, sizeof(float) * 4) == 0, "pixel %d", px);
 }
 
 /* An alpha-tested triangle (GLS_EXACT_HOLES) hides nothing in the walk:
@@ -617,7 +665,7 @@ static void test_exact_coverage(void)
         t[4 + k] = tri(1.5, 0.5, 1.5, 1.5, 1.5 + 0.1 * (k + 1), 0.5, 6 - k), t[4 + k].id = (uint32_t)(10 + k);
     gls_exact_cover cov[3 * 3 * GLS_EXACT_COVER_K];
     float bg[4] = {0, 0, 0, 0};
-    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, NULL, NULL, cov) == 0);
+    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, NULL, NULL, cov, 0) == 0);
     const gls_exact_cover *p = cov + (1 * 3 + 1) * GLS_EXACT_COVER_K;
     CHECK(p[0].id == 2 && p[1].id == 7 && p[2].id == 0);
     CHECK_NEAR(p[0].area, 0.5, 1e-7);
@@ -633,7 +681,7 @@ static void test_exact_coverage(void)
     /* an id map: 7 -> 0 (not counted), 2 -> 9 */
     uint16_t map[15] = {0};
     map[2] = 9;
-    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, map, NULL, cov) == 0);
+    CHECK(gls_exact_render(t, 9, 3, 3, bg, NULL, NULL, map, NULL, cov, 0) == 0);
     p = cov + (1 * 3 + 1) * GLS_EXACT_COVER_K;
     CHECK(p[0].id == 9 && p[1].id == 0);
 }
@@ -793,6 +841,7 @@ int main(void)
     RUN(test_exact_image_sampled_many_regions);
     RUN(test_exact_image_holes_many);
     RUN(test_exact_image_holes_behind_cover);
+    RUN(test_exact_image_dense);
     RUN(test_exact_image_holes_hidden);
     RUN(test_exact_coverage);
     RUN(test_exact_threads);

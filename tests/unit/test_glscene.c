@@ -276,6 +276,32 @@ static void test_glscene_exact(void)
     CHECK_MSG(strstr(e.message, "exact coverage (aa GLSCENE_AA_EXACT) does not draw shadows") &&
                   strstr(e.message, "ask for samples"),
               "%s", e.message);
+    /* the default (aa 0, glsplay's --aa auto): exact coverage's image, the
+     * same floats, for the square; one sample a pixel's for the scene with
+     * shadows, which exact coverage cannot draw */
+    glscene_options o1 = {GLSCENE_BACKEND_AUTO, 1, GLSCENE_AA_LATTICE, 0, {0, 0, 0}};
+    const char *paths[2] = {bundle, shadow};
+    for (int k = 0; k < 2; k++) {
+        glscene_player *d = glscene_open(paths[k], NULL, &e);
+        CHECK_MSG(d, "%s", e.message);
+        p = glscene_open(paths[k], k == 0 ? &o : &o1, &e);
+        CHECK_MSG(p, "%s", e.message);
+        q = glscene_open(paths[k], k == 0 ? &o1 : &o, &e); /* the other: differs, or refused */
+        if (d && p) {
+            static float fd[W * H * 3], fp[W * H * 3], fq[W * H * 3];
+            glscene_buffers bd = {NULL, fd, NULL, NULL, NULL}, bp = {NULL, fp, NULL, NULL, NULL},
+                            bq = {NULL, fq, NULL, NULL, NULL};
+            CHECK_MSG(glscene_render(d, &c, &bd, &e) == 0 && glscene_render(p, &c, &bp, &e) == 0, "%s", e.message);
+            CHECK_MSG(memcmp(fd, fp, sizeof fd) == 0, "the default is not %s", k == 0 ? "exact" : "one sample");
+            if (k == 0)
+                CHECK(q && glscene_render(q, &c, &bq, &e) == 0 && memcmp(fd, fq, sizeof fd) != 0);
+            else
+                CHECK(q == NULL);
+        }
+        glscene_close(d);
+        glscene_close(p);
+        glscene_close(q);
+    }
 }
 
 static void test_glscene_errors(void)
@@ -343,7 +369,7 @@ static void test_glscene_play(void)
     static const char progress_bar[] = "--progress=bar";
     CHECK(glscene_play_arg(r, progress_bar, progress_bar + 11, &e) == 1);
     CHECK(glscene_play_arg(r, "--aa", "0", &e) == -1);
-    CHECK_STR(e.message, "--aa needs N in 1..4096, got '0'");
+    CHECK_STR(e.message, "--aa needs N in 1..4096, exact or auto, got '0'");
     CHECK(glscene_play_arg(r, "--camera", NULL, &e) == -1);
     CHECK_STR(e.message, "--camera needs a camera file");
     CHECK(glscene_play_arg(r, "--bogus", NULL, &e) == -1);
@@ -353,7 +379,7 @@ static void test_glscene_play(void)
     static char big[3000];
     memset(big, '9', sizeof big - 1);
     CHECK(glscene_play_arg(r, "--aa", big, &e) == -1);
-    CHECK(strlen(glscene_play_message(r)) == strlen("--aa needs N in 1..4096, got ''") + sizeof big - 1);
+    CHECK(strlen(glscene_play_message(r)) == strlen("--aa needs N in 1..4096, exact or auto, got ''") + sizeof big - 1);
     CHECK(strlen(e.message) == sizeof e.message - 1 && strncmp(e.message, glscene_play_message(r), 1023) == 0);
     glscene_play_free(r);
 
