@@ -17,7 +17,7 @@ trap 'rm -rf "$tmp"' EXIT
 secs() {
     /usr/bin/time -f %e -o "$tmp/time" "$B/glsplay" "$tmp/road.glsb" --camera examples/road/rig/right.cam \
         --trajectory "$tmp/road/trajectory.txt" --frames "$FRAME:$((FRAME + 1))" --outputs image \
-        --anisotropic "$1" -o "$tmp/out" || exit 1
+        --anisotropic "$1" --aa 1 -o "$tmp/out" || exit 1
     cat "$tmp/time"
 }
 off=$( (secs 1; secs 1; secs 1) | sort -n | head -1)

@@ -149,11 +149,11 @@ once() {
     if [ -n "$TIME" ]; then
         # shellcheck disable=SC2046,SC2068,SC2086
         "$TIME" -f "%e %U %S" -o "$t/time" "$o_bin/glsplay" $(args "$o_side" "$o_scene") --camera "$o_cam" \
-            --frames "$FIRST:$((FIRST + FRAMES))" --outputs image -o "$t/out" $SIZE $@ 2>"$t/err" || { cat "$t/err" >&2; die "$what: glsplay failed"; }
+            --frames "$FIRST:$((FIRST + FRAMES))" --outputs image -o "$t/out" $SIZE --aa 1 $@ 2>"$t/err" || { cat "$t/err" >&2; die "$what: glsplay failed"; }
     else
         t0=$(date +%s.%N)
         # shellcheck disable=SC2046,SC2068,SC2086
-        "$o_bin/glsplay" $(args "$o_side" "$o_scene") --camera "$o_cam" --frames "$FIRST:$((FIRST + FRAMES))" --outputs image -o "$t/out" $SIZE $@ \
+        "$o_bin/glsplay" $(args "$o_side" "$o_scene") --camera "$o_cam" --frames "$FIRST:$((FIRST + FRAMES))" --outputs image -o "$t/out" $SIZE --aa 1 $@ \
             2>"$t/err" || { cat "$t/err" >&2; die "$what: glsplay failed"; }
         echo "$t0 $(date +%s.%N)" | awk '{ printf "%.3f - -\n", $2 - $1 }' >"$t/time"
     fi

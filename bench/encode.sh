@@ -64,8 +64,8 @@ best() {
 row() {
     name=$1 n=$2
     shift 2
-    a=$(best "$B/glsplay" "$n" "$@" --outputs image) || exit 1
-    b=$(best "$B/glsplay" "$n" "$@" --outputs image --writer-threads 0) || exit 1
+    a=$(best "$B/glsplay" "$n" "$@" --outputs image --aa 1) || exit 1
+    b=$(best "$B/glsplay" "$n" "$@" --outputs image --aa 1 --writer-threads 0) || exit 1
     c=$(best "$B/glsplay" "$n" "$@" --outputs depth) || exit 1
     d="-"
     [ -n "$BE_BASELINE" ] && { d=$(best "$BE_BASELINE" "$n" "$@" --outputs image) || exit 1; }
@@ -99,7 +99,7 @@ for s in sd hd; do
     for sc in road terrain; do
         if [ $sc = road ]; then args="$ROAD --camera $t/$s/left.cam"; else args="$TERRAIN --camera $t/$s/rig.cam"; fi
         # shellcheck disable=SC2086
-        "$B/glsplay" $args --frames 4:5 --outputs image -o "$t/f8_${sc}_$s" 2>/dev/null &&
+        "$B/glsplay" $args --frames 4:5 --outputs image --aa 1 -o "$t/f8_${sc}_$s" 2>/dev/null &&
             "$B/glsplay" $args --frames 4:5 --outputs image --aa 4 --image-format png16 -o "$t/f16_${sc}_$s" \
                 2>/dev/null || exit 1
         set -- "$@" "$t"/f8_${sc}_$s/*/image_000004.png "$t"/f16_${sc}_$s/*/image_000004.png

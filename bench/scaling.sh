@@ -38,10 +38,10 @@ fps() {
     while [ $i -lt "$np" ]; do
         if [ "$th" = default ]; then
             # shellcheck disable=SC2068
-            env -u LP_NUM_THREADS "$B/glsplay" $@ --frames "0:$FRAMES" --shard "$i/$np" --outputs image -o "$t/out" 2>"$t/err$i" &
+            env -u LP_NUM_THREADS "$B/glsplay" --aa 1 $@ --frames "0:$FRAMES" --shard "$i/$np" --outputs image -o "$t/out" 2>"$t/err$i" &
         else
             # shellcheck disable=SC2068
-            LP_NUM_THREADS=$th "$B/glsplay" $@ --frames "0:$FRAMES" --shard "$i/$np" --outputs image -o "$t/out" 2>"$t/err$i" &
+            LP_NUM_THREADS=$th "$B/glsplay" --aa 1 $@ --frames "0:$FRAMES" --shard "$i/$np" --outputs image -o "$t/out" 2>"$t/err$i" &
         fi
         pids="$pids $!"
         i=$((i + 1))
