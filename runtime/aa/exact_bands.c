@@ -9,6 +9,30 @@
 #include <unistd.h>
 #include "exact_int.h"
 
+/* Band lists (exact_int.h band_lists) of the triangles ok[] marks: 0, or -1 when out of memory */
+static int exact_band_lists_make(const exact_prep *p, const unsigned char *ok, size_t n, int nbands, band_lists *l)
+{
+    l->start = calloc((size_t)nbands + 1, sizeof *l->start);
+    if (!l->start)
+        return -1;
+    for (size_t t = 0; t < n; t++)
+        if (ok[t])
+            for (int b = p[t].j0 / EXACT_BAND; b <= p[t].j1 / EXACT_BAND; b++)
+                l->start[b + 1]++;
+    for (int b = 0; b < nbands; b++)
+        l->start[b + 1] += l->start[b];
+    if (!(l->idx = malloc((l->start[nbands] ? l->start[nbands] : 1) * sizeof *l->idx)))
+        return -1;
+    for (size_t t = 0; t < n; t++)
+        if (ok[t])
+            for (int b = p[t].j0 / EXACT_BAND; b <= p[t].j1 / EXACT_BAND; b++)
+                l->idx[l->start[b]++] = t;
+    for (int b = nbands; b > 0; b--)
+        l->start[b] = l->start[b - 1];
+    l->start[0] = 0;
+    return 0;
+}
+
 /* Hand band j0's results out, pixel by pixel in order: to fn, or to the
  * walk's candidate callback. */
 static int band_emit(const exact_work *wk, int w, int h, int j0, band_slot *b, gls_exact_pixel_fn fn, void *user)

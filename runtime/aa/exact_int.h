@@ -158,7 +158,6 @@ struct exact_work {
 typedef struct {
     size_t *start, *idx;
 } band_lists;
-int exact_band_lists_make(const exact_prep *p, const unsigned char *ok, size_t n, int nbands, band_lists *l);
 
 /* One band's results: its candidates sorted by pixel (start: each
  * pixel's first) and, unless the walk hands out candidates, its frags

@@ -412,29 +412,6 @@ static int band_cands(const exact_prep *p, const gls_exact_tri *tris, const size
     return 0;
 }
 
-int exact_band_lists_make(const exact_prep *p, const unsigned char *ok, size_t n, int nbands, band_lists *l)
-{
-    l->start = calloc((size_t)nbands + 1, sizeof *l->start);
-    if (!l->start)
-        return -1;
-    for (size_t t = 0; t < n; t++)
-        if (ok[t])
-            for (int b = p[t].j0 / EXACT_BAND; b <= p[t].j1 / EXACT_BAND; b++)
-                l->start[b + 1]++;
-    for (int b = 0; b < nbands; b++)
-        l->start[b + 1] += l->start[b];
-    if (!(l->idx = malloc((l->start[nbands] ? l->start[nbands] : 1) * sizeof *l->idx)))
-        return -1;
-    for (size_t t = 0; t < n; t++)
-        if (ok[t])
-            for (int b = p[t].j0 / EXACT_BAND; b <= p[t].j1 / EXACT_BAND; b++)
-                l->idx[l->start[b]++] = t;
-    for (int b = nbands; b > 0; b--)
-        l->start[b] = l->start[b - 1];
-    l->start[0] = 0;
-    return 0;
-}
-
 /* Everything of band j0..j1 but handing it out: candidates, their
  * counting sort by pixel, each pixel resolved.  wk is this thread's
  * scratch.  0, or -1 when out of memory. */

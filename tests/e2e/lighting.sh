@@ -106,14 +106,15 @@ fi
 # turned instances: one near the camera (re-anchored at the camera centre,
 # render.c, its normals carried into the world with it) and one far off,
 # each turned 60 degrees about y under a light along the view: each
-# shades to cos 60 = 0.5 of white, instanced as flattened
+# shades to cos 60 = 0.5 of white, instanced as flattened (GL's shading
+# at the pixel centres: --aa 1)
 mkdir -p "$t/turn"
 printf 'poly { vert(-1, -1, 0); vert(1, -1, 0); vert(1, 1, 0); vert(-1, 1, 0); }\n' >"$t/turn/Quad.scene"
 printf 'ambient(0, 0, 0);\nlight(directional, 0, 0, -1, 1, 1, 1);\npush; trans(-1.5, 0, 6); rot(60, 0, 1, 0); call("Quad"); pop;\npush; trans(6, 0, 24); rot(60, 0, 1, 0); scale(2); call("Quad"); pop;\n' >"$t/turn/Top.scene"
 printf 'width 160\nheight 120\nfx 100\nfy 100\ncx 79.5\ncy 59.5\nR 1 0 0 0 1 0 0 0 1\nT 0 0 0\nnear 0.1\nfar 100\n' >"$t/turn/c.cam"
 if "$BIN/glsc" -I "$t/turn" -o "$t/turn.glsb" "$t/turn/Top.scene" 2>"$t/err" &&
-    "$BIN/glsplay" "$t/turn.glsb" --camera "$t/turn/c.cam" -o "$t/turn_i" >/dev/null 2>>"$t/err" &&
-    "$BIN/glsplay" "$t/turn.glsb" --camera "$t/turn/c.cam" --flatten -o "$t/turn_f" >/dev/null 2>>"$t/err"; then
+    "$BIN/glsplay" "$t/turn.glsb" --camera "$t/turn/c.cam" --aa 1 -o "$t/turn_i" >/dev/null 2>>"$t/err" &&
+    "$BIN/glsplay" "$t/turn.glsb" --camera "$t/turn/c.cam" --aa 1 --flatten -o "$t/turn_f" >/dev/null 2>>"$t/err"; then
     got=$("$PY" -c '
 import sys, cv2
 i = cv2.imread(sys.argv[1]); f = cv2.imread(sys.argv[2])

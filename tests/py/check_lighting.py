@@ -43,7 +43,9 @@ def render(scene_dir, top, cam, outputs="image"):
     glsb = os.path.join(TMP, os.path.basename(scene_dir) + ".glsb")
     run(os.path.join(BIN, "glsc"), "-I", scene_dir, "-o", glsb, os.path.join(scene_dir, top))
     out = os.path.join(TMP, "out_" + os.path.basename(scene_dir))
-    run(os.path.join(BIN, "glsplay"), glsb, "--camera", cam, "--outputs", outputs, "-o", out)
+    # --aa 1: GL's shader at each pixel centre, held to the closed forms
+    # (exact coverage's lighting, the default's: player_aa_exact_shade.sh)
+    run(os.path.join(BIN, "glsplay"), glsb, "--camera", cam, "--outputs", outputs, "--aa", "1", "-o", out)
     cname = os.path.splitext(os.path.basename(cam))[0]
     return os.path.join(out, cname)
 
