@@ -24,8 +24,8 @@ for line in open(sys.argv[1]):
     P = np.hstack([R.T, (-R.T @ T).reshape(3, 1)])
     out.write(" ".join("%.17g" % x for x in P.ravel()) + "\n")
 PYEOF
-render() { # NAME TRAJECTORY
-    "$B/glsplay" "$t/r.glsb" --camera examples/road/rig/left.cam --trajectory "$2" --frames 0:3 \
+render() { # NAME TRAJECTORY (--aa 1: the poses are under test, not the anti-aliasing)
+    "$B/glsplay" "$t/r.glsb" --camera examples/road/rig/left.cam --trajectory "$2" --frames 0:3 --aa 1 \
         --outputs image,depth -o "$t/$1" >/dev/null 2>"$t/err_$1" || fail "traj_formats_render_$1" "$(head -3 "$t/err_$1")"
 }
 render glsroad "$t/road/trajectory.txt"

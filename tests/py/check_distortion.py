@@ -253,8 +253,11 @@ def truth(bindir, d):
         text = 'width %d\nheight %d\nK %s\nR %s\nT %s\nnear 0.05\nfar 5\n' % (W, H, fmt(K), fmt(R), fmt(T))
         with open(cam, 'w') as f:
             f.write(text + '%s %s\n' % (lens['key'], fmt(lens['D'])))
-        p = subprocess.run([bindir + '/glsplay', d + '/board.glsb', '--camera', cam, '--write-calib', '-o',
-                            d + '/out'], capture_output=True, text=True)
+        # --aa 1 here and below: these renders are read for their depth and
+        # calibration files or compared with each other (the lens path's
+        # exact coverage, the default: player_aa_exact.sh)
+        p = subprocess.run([bindir + '/glsplay', d + '/board.glsb', '--camera', cam, '--write-calib', '--aa', '1',
+                            '-o', d + '/out'], capture_output=True, text=True)
         if p.returncode != 0:
             result('distortion_truth_%s' % name, False, 'glsplay: %s' % p.stderr)
             continue
@@ -301,8 +304,8 @@ def truth(bindir, d):
                 f.write(text + extra)
         same = True
         for k in ('pin', 'zero'):
-            subprocess.run([bindir + '/glsplay', d + '/board.glsb', '--camera', '%s/%s.cam' % (d, k), '-o', d + '/z'],
-                           check=True, capture_output=True)
+            subprocess.run([bindir + '/glsplay', d + '/board.glsb', '--camera', '%s/%s.cam' % (d, k), '--aa', '1',
+                            '-o', d + '/z'], check=True, capture_output=True)
         for f in ('image_000000.png', 'depth_000000.pfm', 'points_000000.ply'):
             same &= open('%s/z/pin/%s' % (d, f), 'rb').read() == open('%s/z/zero/%s' % (d, f), 'rb').read()
         result('distortion_zero_is_pinhole_%s' % name, same, 'all-zero coefficients change the output')
@@ -324,8 +327,8 @@ def truth(bindir, d):
         kitti = 'camera %s has lens distortion: calib.txt (KITTI' % name in p.stderr
         result('distortion_calib_kitti_note_%s' % name, kitti, 'stderr: %r' % p.stderr)
         subprocess.run(['cp', out + 'calib_000000.yml', '%s/%s.yml' % (d, name)], check=True)
-        subprocess.run([bindir + '/glsplay', d + '/board.glsb', '--camera', '%s/%s.yml' % (d, name), '-o', d + '/re'],
-                       check=True, capture_output=True)
+        subprocess.run([bindir + '/glsplay', d + '/board.glsb', '--camera', '%s/%s.yml' % (d, name), '--aa', '1',
+                        '-o', d + '/re'], check=True, capture_output=True)
         same = open(out + 'image_000000.png', 'rb').read() == open('%s/re/%s/image_000000.png' % (d, name), 'rb').read()
         result('distortion_calib_reimport_%s' % name, same, 'the exported camera renders another image')
 
