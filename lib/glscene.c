@@ -103,9 +103,9 @@ glscene_player *glscene_open(const char *bundle_path, const glscene_options *opt
                      bundle_path, why);
         goto fail;
     }
-    if (aa.exact == GLS_AA_AUTO) { /* and its bound on a pixel's cost (exact.h) */
-        aa.exact = p->plan.o.exact = why ? GLS_AA_SAMPLED : GLS_AA_EXACT;
-        p->plan.o.dense = why ? 0 : GLS_EXACT_AUTO_DENSE;
+    if (aa.exact == GLS_AA_AUTO) { /* glscene_render writes no coverage */
+        gls_play_aa_auto(&aa, why, 0);
+        p->plan.o.exact = aa.exact, p->plan.o.dense = aa.dense;
     }
     int k = gls_gt_table_build(&p->gt, b, &p->scene, &p->drawing);
     if (k < 0) {

@@ -36,6 +36,15 @@ const char *gls_play_exact_blocker(const gls_aa_opts *aa, const gls_scene *s, co
     return NULL;
 }
 
+void gls_play_aa_auto(gls_aa_opts *aa, const char *why, unsigned outputs)
+{
+    aa->exact = why ? GLS_AA_SAMPLED : GLS_AA_EXACT;
+    /* the default bounds a pixel's cost (exact.h GLS_EXACT_AUTO_DENSE):
+     * one where more triangles may show is point-sampled; coverage and
+     * edge segments need every area, --aa exact asks for them all */
+    aa->dense = aa->exact && !(outputs & GLS_OUT_EXACT_ONLY) ? GLS_EXACT_AUTO_DENSE : 0;
+}
+
 int play_aa_choose(gls_play_opts *o, gls_aa_plan *plan, const gls_scene *s, const gls_camera *cams,
                    const char *const *names, FILE *errs)
 {
@@ -53,7 +62,7 @@ int play_aa_choose(gls_play_opts *o, gls_aa_plan *plan, const gls_scene *s, cons
     }
     if (o->aa.exact == GLS_AA_AUTO) {
         o->aa_auto = 1;
-        o->aa.exact = why ? GLS_AA_SAMPLED : GLS_AA_EXACT;
+        gls_play_aa_auto(&o->aa, why, o->outputs);
         if (why && cam != SIZE_MAX)
             snprintf(o->aa_auto_why, sizeof o->aa_auto_why, "camera %s's %s", names[cam], why);
         else if (why)
@@ -64,11 +73,6 @@ int play_aa_choose(gls_play_opts *o, gls_aa_plan *plan, const gls_scene *s, cons
             return 1;
         }
     }
-    /* the default bounds a pixel's cost (exact.h GLS_EXACT_AUTO_DENSE):
-     * one where more triangles may show is point-sampled; coverage and
-     * edge segments need every area, --aa exact asks for them all */
-    if (o->aa_auto && o->aa.exact && !(o->outputs & GLS_OUT_EXACT_ONLY))
-        o->aa.dense = GLS_EXACT_AUTO_DENSE;
     plan->o.exact = o->aa.exact, plan->o.dense = o->aa.dense;
     /* alpha-tested triangles are point-sampled in the image (exact.h
      * GLS_EXACT_HOLES): their areas are not exact, so nothing reports them */

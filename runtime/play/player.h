@@ -107,6 +107,12 @@ int gls_play_check_options(const gls_play_opts *o, char *msg, size_t msglen);
  * and the library's (glscene_open). */
 const char *gls_play_exact_blocker(const gls_aa_opts *aa, const gls_scene *s, const gls_camera *cams, size_t n,
                                    int moving, size_t *cam);
+/* --aa auto resolved, given the blocker's answer why (NULL: none) and the
+ * run's outputs: aa->exact GLS_AA_EXACT or GLS_AA_SAMPLED, and aa->dense,
+ * the default's bound on a pixel's cost (exact.h GLS_EXACT_AUTO_DENSE; 0
+ * when coverage or edge segments need every area).  glsplay's and the
+ * library's one rule (play_aa.c, glscene_open). */
+void gls_play_aa_auto(gls_aa_opts *aa, const char *why, unsigned outputs);
 
 /* One camera frame drawn by the player's own steps into buffers the
  * caller takes (libglscene's glscene_render): the frame plan for

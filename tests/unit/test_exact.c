@@ -487,6 +487,16 @@ static void test_exact_image_sampled(void)
     CHECK_MSG(v > 0.5 * 0.1 && v < 0.5 * (1.0 / 3), "half pixel %g", v);
 }
 
+/* n triangles fanning about pixel (1, 1)'s centre, radius 3 px, the
+ * first edge at angle off, each a wedge of 2 pi / n */
+static void fan_about_centre(gls_exact_tri *t, int n, double off)
+{
+    for (int k = 0; k < n; k++) {
+        double a0 = off + 2 * M_PI * k / n, a1 = off + 2 * M_PI * (k + 1) / n;
+        t[k] = tri(1, 1, 1 + 3 * cos(a0), 1 + 3 * sin(a0), 1 + 3 * cos(a1), 1 + 3 * sin(a1), 1);
+    }
+}
+
 /* The pixel-local position (x, y) of the pixel's lattice point m (of
  * GLS_EXACT_SHADE_M, as the sampled path places them) and the wedge it
  * falls in of a fan of n about the pixel's centre turned by off. */
@@ -515,11 +525,9 @@ static void test_exact_image_sampled_many_regions(void)
     enum { N = 300 };
     static gls_exact_tri t[N];
     const double off = 0.001; /* no lattice point on a wedge's edge */
-    for (int k = 0; k < N; k++) {
-        double a0 = off + 2 * M_PI * k / N, a1 = off + 2 * M_PI * (k + 1) / N;
-        t[k] = tri(1, 1, 1 + 3 * cos(a0), 1 + 3 * sin(a0), 1 + 3 * cos(a1), 1 + 3 * sin(a1), 1);
+    fan_about_centre(t, N, off);
+    for (int k = 0; k < N; k++)
         t[k].id = 3, t[k].flags = GLS_EXACT_SAMPLED;
-    }
     float rgba[3 * 3 * 4], bg[4] = {0, 0, 0, 1}, alpha = 1;
     CHECK(gls_exact_image(t, N, 3, 3, bg, shade_test, &alpha, rgba) == 0);
     /* the lattice points' wedges */
@@ -555,11 +563,9 @@ static void test_exact_image_dense(void)
     enum { N = 300 };
     static gls_exact_tri t[N];
     const double off = 0.001; /* no lattice point on a wedge's edge */
-    for (int k = 0; k < N; k++) {
-        double a0 = off + 2 * M_PI * k / N, a1 = off + 2 * M_PI * (k + 1) / N;
-        t[k] = tri(1, 1, 1 + 3 * cos(a0), 1 + 3 * sin(a0), 1 + 3 * cos(a1), 1 + 3 * sin(a1), 1);
+    fan_about_centre(t, N, off);
+    for (int k = 0; k < N; k++)
         t[k].rgba[0] = k % 2 ? 0.0f : 1.0f, t[k].rgba[1] = k % 2 ? 1.0f : 0.0f, t[k].rgba[2] = 0;
-    }
     float ex[3 * 3 * 4], at[3 * 3 * 4], dn[3 * 3 * 4], bg[4] = {0, 0, 0, 1};
     CHECK(gls_exact_render(t, N, 3, 3, bg, NULL, NULL, NULL, ex, NULL, 0) == 0);
     CHECK(gls_exact_render(t, N, 3, 3, bg, NULL, NULL, NULL, at, NULL, N) == 0);
